@@ -1,0 +1,16 @@
+// chasles: Lie groups of rigid-body motion. The umbrella header.
+//
+// Conventions (the same words in README.md and in the Python docstrings):
+// - twists xi = (v, w), linear part first (Murray, Li and Sastry);
+// - wrenches F = (f, tau), force first, so power is the dot product V . F;
+// - g_ab maps frame b to frame a; twists change frame by Ad_g = [[R, [p]R], [0, R]],
+//   wrenches by Ad_g^-T;
+// - quaternions are Eigen::Quaternion; angles are in radians.
+#pragma once
+
+#include "chasles/constants.hpp"
+#include "chasles/screw.hpp"
+#include "chasles/se3.hpp"
+#include "chasles/so3.hpp"
+#include "chasles/twist.hpp"
+#include "chasles/wrench.hpp"

@@ -1,0 +1,146 @@
+// chasles: the coefficient functions of exp and log, each written once.
+//
+// With theta = |w| and t = theta^2, the exponentials of so(3) and se(3) are
+//   exp([w])   = I + A [w] + B [w]^2                               (Rodrigues)
+//   V(w)       = I + B [w] + C [w]^2,   exp([xi]) = [exp([w]), V v; 0, 1]
+// and the inverse of V, used by the se(3) log, is
+//   V(w)^-1    = I - 1/2 [w] + D [w]^2
+// with
+//   A = sin(theta) / theta              = 1 - t/6 + t^2/120 - ...
+//   B = (1 - cos(theta)) / theta^2      = 1/2 - t/24 + t^2/720 - ...
+//   C = (theta - sin(theta)) / theta^3  = 1/6 - t/120 + t^2/5040 - ...
+//   D = (1 - (theta/2) cot(theta/2)) / theta^2 = 1/12 + t/720 + t^2/30240 + ...
+// (Murray, Li and Sastry, A Mathematical Introduction to Robotic Manipulation,
+// 1994, eqs. 2.14 and 2.36; Sola, Deray and Atchuthan, A micro Lie theory for
+// state estimation in robotics, 2018, eqs. 143 and 174.)
+//
+// Below Thresholds::taylor_theta2 the series are used: they form no 0/0, so
+// values and autodiff derivatives are exact at theta = 0. Above it the closed
+// forms are used, written without cancellation where the coefficient is
+// multiplied by something of order 1 (B via the half angle). C and D do
+// cancel near 0, but each only ever multiplies [w]^2, of size t, so the
+// absolute error it adds is a few eps: the results stay exact to a few ulps.
+#pragma once
+
+#include <cmath>
+
+#include <Eigen/Core>
+
+#include "chasles/constants.hpp"
+
+namespace chasles {
+namespace detail {
+
+/// A, B and C of the exponential at t = theta^2.
+template <typename Scalar>
+struct ExpCoefficients {
+  Scalar a;  ///< sin(theta) / theta
+  Scalar b;  ///< (1 - cos(theta)) / theta^2
+  Scalar c;  ///< (theta - sin(theta)) / theta^3
+};
+
+/// A, B, C from theta^2 alone: one sincos of theta/2 above the cutoff.
+/// The compiler drops `c` where a caller does not read it.
+template <typename Scalar>
+inline ExpCoefficients<Scalar> exp_coefficients(const Scalar& theta2) noexcept {
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
+  ExpCoefficients<Scalar> k;
+  if (theta2 < ThresholdsOf<Scalar>::taylor_theta2) {
+    const Scalar& t = theta2;
+    k.a = Scalar(1) - t * (Scalar(1) / Scalar(6) - t * (Scalar(1) / Scalar(120)));
+    k.b = Scalar(0.5) - t * (Scalar(1) / Scalar(24) - t * (Scalar(1) / Scalar(720)));
+    k.c = Scalar(1) / Scalar(6) - t * (Scalar(1) / Scalar(120) - t * (Scalar(1) / Scalar(5040)));
+  } else {
+    const Scalar theta = sqrt(theta2);
+    const Scalar sh = sin(Scalar(0.5) * theta);
+    const Scalar ch = cos(Scalar(0.5) * theta);
+    // sin(theta) = 2 sin(theta/2) cos(theta/2); 1 - cos(theta) = 2 sin^2(theta/2):
+    // no cancellation at small theta.
+    k.a = Scalar(2) * sh * ch / theta;
+    k.b = Scalar(2) * sh * sh / theta2;
+    k.c = (Scalar(1) - k.a) / theta2;
+  }
+  return k;
+}
+
+/// theta / sin(theta) as a series in s2 = sin^2(theta), for the so(3) log
+/// near the identity: asin(s)/s = 1 + s^2/6 + 3 s^4/40 + 5 s^6/112 + ...
+template <typename Scalar>
+inline Scalar theta_over_sin_series(const Scalar& s2) noexcept {
+  return Scalar(1) + s2 * (Scalar(1) / Scalar(6) + s2 * (Scalar(3) / Scalar(40)));
+}
+
+/// E and D of V^-1 = E I - 1/2 [w] + D w w^T, the inverse of V used by the
+/// se(3) log (expanding [w]^2 = w w^T - theta^2 I in I - 1/2 [w] + D [w]^2):
+///   E = 1 - D theta^2 = (theta/2) cot(theta/2) = 1 - t/12 - t^2/720 - ...
+///   D = (1 - E) / theta^2                       = 1/12 + t/720 + t^2/30240 + ...
+/// E in closed form needs no subtraction: with s = sin(theta) and
+/// one_minus_cos = 1 - cos(theta) from the so(3) log,
+/// (theta/2) cot(theta/2) = theta s / (2 (1 - cos theta)), finite at pi.
+/// D cancels near the cutoff but multiplies w w^T (of size t).
+/// `near_identity` is the so(3) log's choice of branch.
+template <typename Scalar>
+struct VInverseCoefficients {
+  Scalar e;
+  Scalar d;
+};
+
+template <typename Scalar>
+inline VInverseCoefficients<Scalar> v_inverse_coefficients(const Scalar& theta2, const Scalar& sin_theta,
+                                                           const Scalar& one_minus_cos,
+                                                           bool near_identity) noexcept {
+  using std::sqrt;
+  VInverseCoefficients<Scalar> k;
+  if (near_identity) {
+    const Scalar& t = theta2;
+    k.d = Scalar(1) / Scalar(12) + t * (Scalar(1) / Scalar(720) + t * (Scalar(1) / Scalar(30240)));
+    k.e = Scalar(1) - t * k.d;
+  } else {
+    k.e = sqrt(theta2) * sin_theta / (Scalar(2) * one_minus_cos);
+    k.d = (Scalar(1) - k.e) / theta2;
+  }
+  return k;
+}
+
+/// A rotation vector w too long for |w|^2 to be formed (|w|^2 at or above
+/// Thresholds::huge_theta2, or overflowing): its unit axis and the
+/// coefficients of exp in unit-axis form,
+///   exp([w]) = I + sin(theta) [n] + (1 - cos(theta)) [n]^2,
+///   V(w) v   = A v + (B theta) (n x v) + (1 - A) (n . v) n,
+/// from theta/2, which is finite for every finite w. The cold path of exp.
+template <typename Scalar>
+struct LongRotation {
+  Eigen::Matrix<Scalar, 3, 1> axis;  ///< n = w / |w|
+  Scalar sin_theta;                  ///< sin(theta)
+  Scalar one_minus_cos;              ///< 1 - cos(theta)
+  Scalar a;                          ///< sin(theta) / theta
+  Scalar b_theta;                    ///< (1 - cos(theta)) / theta
+};
+
+template <typename Scalar>
+inline LongRotation<Scalar> long_rotation(const Eigen::Matrix<Scalar, 3, 1>& w) noexcept {
+  using std::abs;
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
+  Scalar m = abs(w[0]);
+  if (abs(w[1]) > m) m = abs(w[1]);
+  if (abs(w[2]) > m) m = abs(w[2]);
+  const Eigen::Matrix<Scalar, 3, 1> u = w / m;  // max |u_i| = 1
+  const Scalar nu = sqrt(u.squaredNorm());      // in [1, sqrt(3)]
+  const Scalar half = (Scalar(0.5) * m) * nu;   // theta / 2, finite
+  const Scalar sh = sin(half);
+  const Scalar ch = cos(half);
+  LongRotation<Scalar> r;
+  r.axis = u / nu;
+  r.sin_theta = Scalar(2) * sh * ch;
+  r.one_minus_cos = Scalar(2) * sh * sh;
+  r.a = sh * ch / half;
+  r.b_theta = sh * sh / half;
+  return r;
+}
+
+}  // namespace detail
+}  // namespace chasles

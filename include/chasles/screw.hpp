@@ -1,0 +1,91 @@
+// chasles: screws, the geometry shared by twists (Chasles) and wrenches (Poinsot).
+#pragma once
+
+#include <limits>
+
+#include <Eigen/Core>
+
+#include "chasles/constants.hpp"
+
+namespace chasles {
+
+/// A screw: a directed line in space (through `point`, along the unit
+/// `direction`), a `pitch` and a `magnitude`.
+///
+/// For a twist it is Chasles' screw motion: rotate by `magnitude` about the
+/// line while translating `pitch * magnitude` along it; pitch = +inf is a
+/// pure translation of length `magnitude` along `direction`. For a wrench it
+/// is Poinsot's wrench: a force of size `magnitude` along the line plus a
+/// torque `pitch * magnitude` about it; pitch = +inf is a pure couple.
+/// `point` is the point of the line nearest the origin (0 for infinite pitch).
+/// The zero twist or wrench has magnitude 0, pitch 0, direction 0.
+template <typename Scalar>
+struct Screw {
+  Eigen::Matrix<Scalar, 3, 1> point;
+  Eigen::Matrix<Scalar, 3, 1> direction;
+  Scalar pitch;
+  Scalar magnitude;
+};
+
+namespace detail {
+
+/// The screw of a pair (l, m) with l the line vector and m the moment:
+/// (w, v) for a twist, (f, tau) for a wrench. With l != 0:
+///   pitch = l.m / |l|^2, point = l x m / |l|^2, direction = l / |l|,
+///   magnitude = |l|;
+/// with l = 0 (or |l|^2 underflowing): pitch = inf, direction = m / |m|,
+/// magnitude = |m|.
+template <typename Scalar>
+inline Screw<Scalar> screw_of_pair(const Eigen::Matrix<Scalar, 3, 1>& l,
+                                   const Eigen::Matrix<Scalar, 3, 1>& m) noexcept {
+  using std::sqrt;
+  Screw<Scalar> s;
+  const Scalar l2 = l.squaredNorm();
+  if (l2 > Scalar(0)) {
+    s.magnitude = sqrt(l2);
+    s.direction = l / s.magnitude;
+    s.pitch = l.dot(m) / l2;
+    s.point = l.cross(m) / l2;
+    return s;
+  }
+  s.point.setZero();
+  const Scalar m2 = m.squaredNorm();
+  if (m2 > Scalar(0)) {
+    s.magnitude = sqrt(m2);
+    s.direction = m / s.magnitude;
+    s.pitch = Scalar(std::numeric_limits<RealOf<Scalar>>::infinity());
+  } else {
+    s.magnitude = Scalar(0);
+    s.direction.setZero();
+    s.pitch = Scalar(0);
+  }
+  return s;
+}
+
+/// The inverse: the pair (l, m) = magnitude * (d, q x d + pitch d) of the
+/// screw through q along d (normalized here; a zero d gives the zero pair),
+/// and (0, magnitude d) for an infinite pitch.
+template <typename Scalar>
+inline void pair_of_screw(const Eigen::Matrix<Scalar, 3, 1>& q, const Eigen::Matrix<Scalar, 3, 1>& d,
+                          const Scalar& pitch, const Scalar& magnitude, Eigen::Matrix<Scalar, 3, 1>& l,
+                          Eigen::Matrix<Scalar, 3, 1>& m) noexcept {
+  using std::isinf;
+  using std::sqrt;
+  const Scalar d2 = d.squaredNorm();
+  if (!(d2 > Scalar(0))) {
+    l.setZero();
+    m.setZero();
+    return;
+  }
+  const Eigen::Matrix<Scalar, 3, 1> u = d / sqrt(d2);
+  if (pitch == Scalar(std::numeric_limits<RealOf<Scalar>>::infinity())) {
+    l.setZero();
+    m = magnitude * u;
+    return;
+  }
+  l = magnitude * u;
+  m = magnitude * (q.cross(u) + pitch * u);
+}
+
+}  // namespace detail
+}  // namespace chasles

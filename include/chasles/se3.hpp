@@ -1,0 +1,235 @@
+// chasles: SE(3), the group of rigid motions of R^3.
+#pragma once
+
+#include <optional>
+
+#include <Eigen/Core>
+
+#include "chasles/constants.hpp"
+#include "chasles/detail/approx.hpp"
+#include "chasles/detail/series.hpp"
+#include "chasles/so3.hpp"
+#include "chasles/twist.hpp"
+#include "chasles/wrench.hpp"
+
+namespace chasles {
+
+/// A rigid motion of R^3: an element of SE(3), stored as a rotation R (an
+/// SO3) and a translation p. Its 4x4 matrix is g = [[R, p], [0, 1]].
+///
+/// `g_ab` maps coordinates in frame b to frame a: q_a = R_ab q_b + p_ab, and
+/// composes along the frames: g_ac = g_ab * g_bc. The tangent space is the
+/// space of twists xi = (v, w), linear part first (Murray, Li and Sastry);
+/// exp([xi]) is the screw motion of Chasles' theorem. Twists change frame by
+/// Ad_g = [[R, [p] R], [0, R]]; wrenches by Ad_g^-T, so power is invariant.
+///
+/// Every operation is noexcept, allocation-free and of bounded cost.
+template <typename Scalar_>
+class SE3 {
+ public:
+  using Scalar = Scalar_;
+  using Real = RealOf<Scalar>;
+  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
+  using Vector6 = Eigen::Matrix<Scalar, 6, 1>;
+  using Matrix3 = Eigen::Matrix<Scalar, 3, 3>;
+  using Matrix4 = Eigen::Matrix<Scalar, 4, 4>;
+  using Matrix6 = Eigen::Matrix<Scalar, 6, 6>;
+  using Rotation = SO3<Scalar>;
+  static constexpr int DoF = 6;
+
+  /// The identity motion.
+  SE3() noexcept : R_(), p_(Vector3::Zero()) {}
+  /// From a rotation and a translation: g = [[R, p], [0, 1]].
+  SE3(const Rotation& R, const Vector3& p) noexcept : R_(R), p_(p) {}
+
+  static SE3 identity() noexcept { return SE3(); }
+
+  // ---- Lie algebra ------------------------------------------------------
+
+  /// [xi] = [[ [w], v ], [0, 0]] for xi = (v, w).
+  static Matrix4 hat(const Vector6& xi) noexcept { return Twist<Scalar>(xi).hat(); }
+  /// The (v, w) of a 4x4 twist matrix.
+  static Vector6 vee(const Matrix4& X) noexcept { return Twist<Scalar>::vee(X).vector(); }
+  /// ad_xi = [[ [w], [v] ], [0, [w]]], the adjoint of the algebra.
+  static Matrix6 ad(const Vector6& xi) noexcept { return Twist<Scalar>(xi).ad(); }
+
+  // ---- exp and log ------------------------------------------------------
+
+  /// exp([xi]) for xi = (v, w), theta = |w|, in closed form:
+  ///   R = exp([w]),  p = V v,  V = I + B [w] + C [w]^2
+  ///                            = A I + B [w] + C w w^T
+  /// (A, B, C in detail/series.hpp). Covers w = 0 (V = I, pure
+  /// translation) and tiny w without a branch of its own: the series keep
+  /// the B [w] v term, of order theta |v|, that a w = 0 special case drops.
+  static SE3 exp(const Vector6& xi) noexcept {
+    const Vector3 v = xi.template head<3>();
+    const Vector3 w = xi.template tail<3>();
+    const Scalar t = w.squaredNorm();
+    if (!(t < Scalar(ThresholdsOf<Scalar>::huge_theta2))) {
+      // Unit-axis form: V v = A v + (B theta) n x v + (1 - A) (n.v) n.
+      const auto r = detail::long_rotation(w);
+      const Vector3& n = r.axis;
+      return SE3(Rotation::from_matrix_unchecked(detail::rodrigues(n, r.sin_theta, r.one_minus_cos, Scalar(1))),
+                 r.a * v + r.b_theta * n.cross(v) + ((Scalar(1) - r.a) * n.dot(v)) * n);
+    }
+    const auto k = detail::exp_coefficients(t);
+    return SE3(Rotation::from_matrix_unchecked(detail::rodrigues(w, k.a, k.b, t)),
+               k.a * v + k.b * w.cross(v) + (k.c * w.dot(v)) * w);
+  }
+  static SE3 exp(const Twist<Scalar>& xi) noexcept { return exp(xi.vector()); }
+
+  /// The twist xi = (v, w) with exp([xi]) = g, rotation angle in [0, pi]:
+  /// w = log(R) (SO3::log), v = V^-1 p with
+  ///   V^-1 = I - 1/2 [w] + D [w]^2 = E I - 1/2 [w] + D w w^T,
+  ///   E = (theta/2) cot(theta/2), D = (1 - E) / theta^2,
+  /// from the sin and cos the rotation's log already has (no second sincos).
+  Vector6 log() const noexcept {
+    const auto r = detail::so3_log(R_.matrix());
+    const auto k = detail::v_inverse_coefficients(r.theta2, r.sin_theta, r.one_minus_cos, r.near_identity);
+    const Vector3& w = r.omega;
+    Vector6 xi;
+    xi << k.e * p_ - Scalar(0.5) * w.cross(p_) + (k.d * w.dot(p_)) * w, w;
+    return xi;
+  }
+
+  // ---- group operations -------------------------------------------------
+
+  /// g^-1 = [[R^T, -R^T p], [0, 1]].
+  SE3 inverse() const noexcept {
+    const Rotation Rt = R_.inverse();
+    return SE3(Rt, -(Rt.matrix() * p_));
+  }
+
+  /// Composition g_ab * g_bc = g_ac = [[R_ab R_bc, R_ab p_bc + p_ab], [0, 1]].
+  SE3 operator*(const SE3& other) const noexcept {
+    return SE3(R_ * other.R_, R_.matrix() * other.p_ + p_);
+  }
+  SE3& operator*=(const SE3& other) noexcept {
+    p_ = R_.matrix() * other.p_ + p_;
+    R_ *= other.R_;
+    return *this;
+  }
+
+  /// Action on a point: q_a = R q_b + p.
+  Vector3 act(const Vector3& q) const noexcept { return R_.matrix() * q + p_; }
+  Vector3 operator*(const Vector3& q) const noexcept { return act(q); }
+
+  /// A twist from frame b to frame a: xi_a = Ad_g xi_b = (R v + p x R w, R w).
+  Twist<Scalar> act(const Twist<Scalar>& xi) const noexcept {
+    const Vector3 Rw = R_.matrix() * xi.angular();
+    return Twist<Scalar>(Vector3(R_.matrix() * xi.linear() + p_.cross(Rw)), Rw);
+  }
+  /// A twist from frame a to frame b: xi_b = Ad_g^-1 xi_a = (R^T (v - p x w), R^T w).
+  Twist<Scalar> act_inv(const Twist<Scalar>& xi) const noexcept {
+    const auto Rt = R_.matrix().transpose();
+    return Twist<Scalar>(Vector3(Rt * (xi.linear() - p_.cross(xi.angular()))), Vector3(Rt * xi.angular()));
+  }
+  /// A wrench from frame b to frame a: F_a = Ad_g^-T F_b = (R f, p x R f + R tau).
+  Wrench<Scalar> act(const Wrench<Scalar>& F) const noexcept {
+    const Vector3 Rf = R_.matrix() * F.force();
+    return Wrench<Scalar>(Rf, Vector3(p_.cross(Rf) + R_.matrix() * F.torque()));
+  }
+  /// A wrench from frame a to frame b: F_b = Ad_g^T F_a = (R^T f, R^T (tau - p x f)).
+  Wrench<Scalar> act_inv(const Wrench<Scalar>& F) const noexcept {
+    const auto Rt = R_.matrix().transpose();
+    return Wrench<Scalar>(Vector3(Rt * F.force()), Vector3(Rt * (F.torque() - p_.cross(F.force()))));
+  }
+
+  /// Ad_g = [[R, [p] R], [0, R]] (6x6), so that g [xi] g^-1 = [Ad_g xi].
+  Matrix6 adjoint() const noexcept {
+    Matrix6 A;
+    const Matrix3& R = R_.matrix();
+    A.template topLeftCorner<3, 3>() = R;
+    A.template topRightCorner<3, 3>() = Rotation::hat(p_) * R;
+    A.template bottomLeftCorner<3, 3>().setZero();
+    A.template bottomRightCorner<3, 3>() = R;
+    return A;
+  }
+
+  // ---- access and conversions -------------------------------------------
+
+  const Rotation& rotation() const noexcept { return R_; }
+  const Vector3& translation() const noexcept { return p_; }
+
+  /// g = [[R, p], [0, 1]] (4x4).
+  Matrix4 matrix() const noexcept {
+    Matrix4 g;
+    g.template topLeftCorner<3, 3>() = R_.matrix();
+    g.template topRightCorner<3, 1>() = p_;
+    g.template bottomRows<1>() << Scalar(0), Scalar(0), Scalar(0), Scalar(1);
+    return g;
+  }
+
+  /// How far a 4x4 matrix is from a rigid motion: the rotation defect of its
+  /// top-left block (SO3::rotation_defect) or the largest deviation of its
+  /// bottom row from (0, 0, 0, 1), whichever is larger.
+  static Scalar transform_defect(const Matrix4& M) noexcept {
+    using std::abs;
+    Scalar d = Rotation::rotation_defect(M.template topLeftCorner<3, 3>());
+    for (int j = 0; j < 4; ++j) {
+      const Scalar e = abs(M(3, j) - Scalar(j == 3 ? 1 : 0));
+      if (!(e <= d)) d = e;
+    }
+    return d;
+  }
+
+  /// Checked construction: M itself if `transform_defect(M) <= tolerance`,
+  /// otherwise nothing (default tolerance sqrt(eps), constants.hpp).
+  static std::optional<SE3> from_matrix(
+      const Matrix4& M, const Scalar& tolerance = Scalar(ThresholdsOf<Scalar>::rotation_tolerance)) noexcept {
+    if (transform_defect(M) <= tolerance) return from_matrix_unchecked(M);
+    return std::nullopt;
+  }
+
+  /// Unchecked construction from [[R, p], [*, *]]: for valid data; the
+  /// bottom row is not read.
+  static SE3 from_matrix_unchecked(const Matrix4& M) noexcept {
+    return SE3(Rotation::from_matrix_unchecked(M.template topLeftCorner<3, 3>()),
+               M.template topRightCorner<3, 1>());
+  }
+
+  /// Projecting construction: the nearest rotation to the top-left block
+  /// (SO3::from_matrix_projected) and the translation column; the bottom row
+  /// is not read.
+  static SE3 from_matrix_projected(const Matrix4& M) noexcept {
+    return SE3(Rotation::from_matrix_projected(M.template topLeftCorner<3, 3>()),
+               M.template topRightCorner<3, 1>());
+  }
+
+  /// The screw motion about the axis through q along w_hat (normalized),
+  /// pitch h, by theta: exp(theta * (-w_hat x q + h w_hat, w_hat));
+  /// h = +inf is the translation theta * w_hat.
+  static SE3 from_screw(const Vector3& q, const Vector3& w_hat, const Scalar& h, const Scalar& theta) noexcept {
+    return exp(Twist<Scalar>::from_screw(q, w_hat, h, theta));
+  }
+
+  /// The same motion with the nearest rotation (removes drift).
+  SE3 normalized() const noexcept { return SE3(R_.normalized(), p_); }
+
+  template <typename NewScalar>
+  SE3<NewScalar> cast() const noexcept {
+    return SE3<NewScalar>(R_.template cast<NewScalar>(), p_.template cast<NewScalar>());
+  }
+
+  /// Rotations within tol (absolute) and translations within
+  /// tol * max(1, |p|_max) (relative beyond unit scale). No `==`.
+  bool is_approx(const SE3& other, const Real& tol) const noexcept {
+    return R_.is_approx(other.R_, tol) && detail::approx_equal(p_, other.p_, tol);
+  }
+
+ private:
+  Rotation R_;
+  Vector3 p_;
+};
+
+/// Geodesic (screw) interpolation: a exp(t log(a^-1 b)); t = 0 gives a,
+/// t = 1 gives b, and the motion in between is one screw motion.
+template <typename Scalar>
+inline SE3<Scalar> interpolate(const SE3<Scalar>& a, const SE3<Scalar>& b, const Scalar& t) noexcept {
+  return a * SE3<Scalar>::exp(Eigen::Matrix<Scalar, 6, 1>(t * (a.inverse() * b).log()));
+}
+
+using SE3f = SE3<float>;
+using SE3d = SE3<double>;
+
+}  // namespace chasles
