@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Runs every test of chasles on a fresh Debian/Ubuntu machine: installs what
+# it needs (apt-get for Eigen, GoogleTest, Google Benchmark), then configures,
+# builds and runs the C++ suite with ctest.
+#
+#   bash tests/run.sh            # from the repository root
+#
+# BUILD_DIR (default build/tests) and JOBS (default: nproc) can be set.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+ROOT=$PWD
+BUILD_DIR=${BUILD_DIR:-$ROOT/build/tests}
+JOBS=${JOBS:-$(nproc)}
+
+need_apt=()
+for pkg in libeigen3-dev libgtest-dev libbenchmark-dev cmake g++; do
+  dpkg -s "$pkg" >/dev/null 2>&1 || need_apt+=("$pkg")
+done
+if [ ${#need_apt[@]} -gt 0 ]; then
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO=sudo
+  $SUDO apt-get update
+  $SUDO apt-get install -y --no-install-recommends "${need_apt[@]}"
+fi
+
+echo "== C++: configure, build, ctest"
+cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DCHASLES_BUILD_TESTS=ON
+cmake --build "$BUILD_DIR" -j "$JOBS"
+ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"
