@@ -1,0 +1,15 @@
+// chasles._core: what the bind_*.cpp files share.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+namespace chasles_py {
+
+namespace py = pybind11;
+
+void bind_so3(py::module_& m);           // bind_so3.cpp: class SO3
+void bind_se3(py::module_& m);           // bind_se3.cpp: class SE3
+void bind_twist_wrench(py::module_& m);  // bind_twist_wrench.cpp: classes Twist, Wrench, Screw
+void bind_batch(py::module_& m);         // bind_batch.cpp: broadcasting array functions
+
+}  // namespace chasles_py

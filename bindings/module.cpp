@@ -1,0 +1,11 @@
+// chasles._core: registers the bindings; each concept lives in its own bind_*.cpp.
+#include "bindings.hpp"
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "chasles C++ kernels (use the chasles package, which re-exports them).";
+  m.attr("__version__") = CHASLES_VERSION;
+  chasles_py::bind_so3(m);
+  chasles_py::bind_se3(m);
+  chasles_py::bind_twist_wrench(m);
+  chasles_py::bind_batch(m);
+}
