@@ -87,9 +87,7 @@ class SE3 {
     const auto r = detail::so3_log(R_.matrix());
     const auto k = detail::v_inverse_coefficients(r.theta2, r.sin_theta, r.one_minus_cos, r.near_identity);
     const Vector3& w = r.omega;
-    Vector6 xi;
-    xi << k.e * p_ - Scalar(0.5) * w.cross(p_) + (k.d * w.dot(p_)) * w, w;
-    return xi;
+    return detail::stack<Scalar>(k.e * p_ - Scalar(0.5) * w.cross(p_) + (k.d * w.dot(p_)) * w, w);
   }
 
   // ---- group operations -------------------------------------------------

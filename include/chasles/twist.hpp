@@ -34,7 +34,7 @@ class Twist {
   /// The zero twist.
   Twist() noexcept : xi_(Vector6::Zero()) {}
   /// From the linear part v and the angular part w.
-  Twist(const Vector3& v, const Vector3& w) noexcept { xi_ << v, w; }
+  Twist(const Vector3& v, const Vector3& w) noexcept : xi_(detail::stack<Scalar>(v, w)) {}
   /// From the 6-vector (v, w).
   explicit Twist(const Vector6& xi) noexcept : xi_(xi) {}
 
@@ -47,9 +47,7 @@ class Twist {
 
   /// (w, v), the Modern Robotics order.
   Vector6 to_modern_robotics() const noexcept {
-    Vector6 out;
-    out << angular(), linear();
-    return out;
+    return detail::stack<Scalar>(angular(), linear());
   }
   /// From (w, v), the Modern Robotics order.
   static Twist from_modern_robotics(const Vector6& wv) noexcept {
@@ -131,7 +129,6 @@ class Twist {
   Twist operator-(const Twist& o) const noexcept { return Twist(Vector6(xi_ - o.xi_)); }
   Twist operator-() const noexcept { return Twist(Vector6(-xi_)); }
   Twist operator*(const Scalar& s) const noexcept { return Twist(Vector6(xi_ * s)); }
-  friend Twist operator*(const Scalar& s, const Twist& x) noexcept { return x * s; }
 
   /// max |xi - other| <= tol * max(1, max |xi|, max |other|).
   bool is_approx(const Twist& other, const RealOf<Scalar>& tol) const noexcept {
@@ -141,6 +138,12 @@ class Twist {
  private:
   Vector6 xi_;
 };
+
+/// s * x, the same as x * s.
+template <typename Scalar>
+inline Twist<Scalar> operator*(const typename Twist<Scalar>::Scalar& s, const Twist<Scalar>& x) noexcept {
+  return x * s;
+}
 
 using Twistf = Twist<float>;
 using Twistd = Twist<double>;

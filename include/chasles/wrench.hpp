@@ -27,7 +27,7 @@ class Wrench {
   /// The zero wrench.
   Wrench() noexcept : F_(Vector6::Zero()) {}
   /// From the force f and the torque tau.
-  Wrench(const Vector3& f, const Vector3& tau) noexcept { F_ << f, tau; }
+  Wrench(const Vector3& f, const Vector3& tau) noexcept : F_(detail::stack<Scalar>(f, tau)) {}
   /// From the 6-vector (f, tau).
   explicit Wrench(const Vector6& F) noexcept : F_(F) {}
 
@@ -70,7 +70,6 @@ class Wrench {
   Wrench operator-(const Wrench& o) const noexcept { return Wrench(Vector6(F_ - o.F_)); }
   Wrench operator-() const noexcept { return Wrench(Vector6(-F_)); }
   Wrench operator*(const Scalar& s) const noexcept { return Wrench(Vector6(F_ * s)); }
-  friend Wrench operator*(const Scalar& s, const Wrench& x) noexcept { return x * s; }
 
   /// max |F - other| <= tol * max(1, max |F|, max |other|).
   bool is_approx(const Wrench& other, const RealOf<Scalar>& tol) const noexcept {
@@ -85,6 +84,12 @@ class Wrench {
 template <typename Scalar>
 inline Scalar power(const Twist<Scalar>& V, const Wrench<Scalar>& F) noexcept {
   return F.power(V);
+}
+
+/// s * x, the same as x * s.
+template <typename Scalar>
+inline Wrench<Scalar> operator*(const typename Wrench<Scalar>::Scalar& s, const Wrench<Scalar>& x) noexcept {
+  return x * s;
 }
 
 using Wrenchf = Wrench<float>;

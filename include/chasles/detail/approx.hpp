@@ -1,4 +1,5 @@
-// chasles: the one approximate comparison behind every is_approx.
+// chasles: small helpers on fixed-size vectors: the one approximate comparison
+// behind every is_approx, and stacking two 3-vectors into a 6-vector.
 #pragma once
 
 #include <cmath>
@@ -28,6 +29,20 @@ inline bool approx_equal(const Eigen::MatrixBase<DerivedA>& a, const Eigen::Matr
     for (Eigen::Index i = 0; i < a.rows(); ++i)
       if (!(abs(a(i, j) - b(i, j)) <= tol * scale)) return false;
   return true;
+}
+
+/// (a, b) as one 6-vector, element by element. (Eigen's comma initializer
+/// of a float 6-vector from two 3-vectors trips GCC 12's -Warray-bounds
+/// with SSE packets, a false positive that -Werror users would inherit.)
+template <typename Scalar, typename DerivedA, typename DerivedB>
+inline Eigen::Matrix<Scalar, 6, 1> stack(const Eigen::MatrixBase<DerivedA>& a,
+                                         const Eigen::MatrixBase<DerivedB>& b) noexcept {
+  Eigen::Matrix<Scalar, 6, 1> out;
+  for (int i = 0; i < 3; ++i) {
+    out[i] = a[i];
+    out[i + 3] = b[i];
+  }
+  return out;
 }
 
 }  // namespace detail

@@ -1,0 +1,84 @@
+// Calls every public operation of chasles once, for the real-time tests:
+// test_no_allocation.cpp runs it with allocation forbidden, strict_compile.cpp
+// compiles it with -fno-exceptions -fno-rtti -Wpedantic -Werror.
+#pragma once
+
+#include <chasles/chasles.hpp>
+
+namespace chasles_test {
+
+/// Every public operation of every class for one Scalar; returns a checksum
+/// so that nothing is optimized away.
+template <typename S>
+S exercise_all() noexcept {
+  using namespace chasles;
+  using V3 = Eigen::Matrix<S, 3, 1>;
+  using V6 = Eigen::Matrix<S, 6, 1>;
+  using M3 = Eigen::Matrix<S, 3, 3>;
+  S sum(0);
+  const V3 w(S(0.3), S(-0.2), S(0.1)), p(S(1), S(2), S(3));
+  const V6 xi = Twist<S>(p, w).vector();
+
+  // SO3
+  const SO3<S> R = SO3<S>::exp(w), I = SO3<S>::identity(), R0;
+  sum += R.log().sum() + SO3<S>::exp(V3(S(3.14159), S(0), S(0))).log().sum();  // near pi branch
+  sum += SO3<S>::exp(V3(S(1e-9), S(0), S(0))).log().sum();                   // series branch
+  sum += SO3<S>::hat(w).sum() + SO3<S>::vee(SO3<S>::hat(w)).sum() + SO3<S>::ad(w).sum();
+  sum += SO3<S>::bracket(w, p).sum();
+  sum += (R * R.inverse()).matrix().sum() + (R * p).sum() + R.act(p).sum() + R.adjoint().sum();
+  SO3<S> Rm = R;
+  Rm *= R;
+  sum += Rm.matrix().sum();
+  sum += SO3<S>::from_quaternion(R.quaternion()).matrix().sum();
+  sum += SO3<S>::rotation_defect(R.matrix());
+  const auto checked = SO3<S>::from_matrix(R.matrix());
+  sum += checked ? checked->matrix().sum() : S(0);
+  sum += SO3<S>::from_matrix_unchecked(R.matrix()).matrix().sum();
+  sum += SO3<S>::from_matrix_projected(M3(R.matrix() * S(1.01))).matrix().sum();
+  sum += R.normalized().matrix().sum() + R.template cast<S>().matrix().sum();
+  sum += S(R.is_approx(I, RealOf<S>(1e-3)) ? 1 : 0) + S(R0.is_approx(I, RealOf<S>(0)) ? 1 : 0);
+  sum += interpolate(R, I, S(0.3)).matrix().sum();
+
+  // SE3
+  const SE3<S> g = SE3<S>::exp(xi), h(R, p), e = SE3<S>::identity();
+  sum += g.log().sum() + SE3<S>::exp(Twist<S>(xi)).translation().sum();
+  sum += SE3<S>::hat(xi).sum() + SE3<S>::vee(SE3<S>::hat(xi)).sum() + SE3<S>::ad(xi).sum();
+  sum += (g * h.inverse()).matrix().sum() + (g * p).sum() + g.act(p).sum() + g.adjoint().sum();
+  SE3<S> gm = g;
+  gm *= h;
+  sum += gm.matrix().sum() + g.rotation().matrix().sum() + g.translation().sum();
+  const Twist<S> tw(xi), tw2(p, w);
+  const Wrench<S> F(xi), F2(p, w);
+  sum += g.act(tw).vector().sum() + g.act_inv(tw).vector().sum();
+  sum += g.act(F).vector().sum() + g.act_inv(F).vector().sum();
+  sum += SE3<S>::transform_defect(g.matrix());
+  const auto gc = SE3<S>::from_matrix(g.matrix());
+  sum += gc ? gc->translation().sum() : S(0);
+  sum += SE3<S>::from_matrix_unchecked(g.matrix()).translation().sum();
+  sum += SE3<S>::from_matrix_projected(g.matrix()).translation().sum();
+  sum += SE3<S>::from_screw(p, w, S(0.1), S(0.5)).translation().sum();
+  sum += g.normalized().translation().sum() + g.template cast<S>().translation().sum();
+  sum += S(g.is_approx(e, RealOf<S>(1e-3)) ? 1 : 0) + interpolate(g, h, S(0.7)).translation().sum();
+
+  // Twist
+  sum += tw.vector().sum() + tw.linear().sum() + tw.angular().sum() + tw2.to_modern_robotics().sum();
+  sum += Twist<S>::from_modern_robotics(xi).vector().sum() + tw.hat().sum() + Twist<S>::vee(tw.hat()).vector().sum();
+  sum += tw.ad().sum() + tw.bracket(tw2).vector().sum() + tw.pitch();
+  const Screw<S> sc = tw.screw();
+  sum += sc.point.sum() + sc.direction.sum() + sc.magnitude;
+  sum += Twist<S>::from_screw(sc).vector().sum() + Twist<S>::from_screw(p, w, S(0), S(1)).vector().sum();
+  sum += Twist<S>(V6(V6::Zero())).screw().magnitude + Twist<S>(p, V3::Zero()).screw().magnitude;
+  sum += Twist<S>::spatial(g, g.matrix()).vector().sum() + Twist<S>::body(g, g.matrix()).vector().sum();
+  sum += (tw + tw2 - tw * S(2) + S(3) * (-tw)).vector().sum() + tw.template cast<S>().vector().sum();
+  sum += S(tw.is_approx(tw2, RealOf<S>(1e-6)) ? 1 : 0);
+
+  // Wrench
+  sum += F.vector().sum() + F.force().sum() + F.torque().sum() + F.power(tw) + power(tw2, F2) + F.pitch();
+  const Screw<S> fs = F.screw();
+  sum += Wrench<S>::from_screw(fs).vector().sum() + Wrench<S>::from_screw(p, w, S(0.2), S(2)).vector().sum();
+  sum += (F + F2 - F * S(2) + S(3) * (-F)).vector().sum() + F.template cast<S>().vector().sum();
+  sum += S(F.is_approx(F2, RealOf<S>(1e-6)) ? 1 : 0);
+  return sum;
+}
+
+}  // namespace chasles_test
