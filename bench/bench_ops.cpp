@@ -1,0 +1,211 @@
+// chasles C++ benchmarks: each operation on inputs cycled through 1024
+// pre-generated elements (nothing constant-folds), results kept alive with
+// DoNotOptimize, beside the baselines a C++ user has without chasles
+// (Eigen's AngleAxis, Quaternion, Isometry3) and the floors (one sincos, one
+// atan2, a 3x3 by 3x3 and a 3x3 by 3 product).
+//
+//   build/bench/chasles_bench_portable --benchmark_repetitions=5
+//     --benchmark_report_aggregates_only=true   (one line)
+//
+// Names: <group>/<op>/<input>/<scalar>, e.g. SO3/log/near_pi/double.
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include <Eigen/Geometry>
+
+#include "chasles/chasles.hpp"
+
+namespace {
+
+constexpr std::size_t kN = 1024;  // power of two: index with i & (kN - 1)
+constexpr double kPi = 3.14159265358979323846;
+
+/// Rotation vectors of a given kind: generic (angle uniform in (0.1, 3)),
+/// tiny (~1e-9) or near pi (pi - 1e-6).
+template <typename S>
+std::vector<Eigen::Matrix<S, 3, 1>> rotation_vectors(const std::string& kind, std::uint32_t seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> n(0, 1);
+  std::uniform_real_distribution<double> u(0.1, 3.0);
+  std::vector<Eigen::Matrix<S, 3, 1>> out;
+  for (std::size_t i = 0; i < kN; ++i) {
+    Eigen::Vector3d axis(n(rng), n(rng), n(rng));
+    axis.normalize();
+    const double angle = kind == "tiny" ? 1e-9 * (1 + u(rng)) : kind == "near_pi" ? kPi - 1e-6 : u(rng);
+    out.push_back((angle * axis).cast<S>());
+  }
+  return out;
+}
+
+template <typename S>
+std::vector<Eigen::Matrix<S, 6, 1>> twists(const std::string& kind, std::uint32_t seed) {
+  std::mt19937_64 rng(seed + 7);
+  std::normal_distribution<double> n(0, 1);
+  std::vector<Eigen::Matrix<S, 6, 1>> out;
+  for (const auto& w : rotation_vectors<S>(kind, seed)) {
+    Eigen::Matrix<S, 6, 1> xi;
+    xi.template head<3>() = Eigen::Vector3d(n(rng), n(rng), n(rng)).cast<S>();
+    xi.template tail<3>() = w;
+    out.push_back(xi);
+  }
+  return out;
+}
+
+/// Runs op(inputs[i]) over the cycled inputs.
+template <typename In, typename Op>
+void run(benchmark::State& state, const std::vector<In>& in, Op op) {
+  std::size_t i = 0;
+  for (auto _ : state) {
+    auto r = op(in[i & (kN - 1)]);
+    benchmark::DoNotOptimize(r);
+    ++i;
+  }
+}
+
+template <typename In, typename Op>
+void add(const std::string& name, std::vector<In> in, Op op) {
+  benchmark::RegisterBenchmark(name.c_str(), [in = std::move(in), op](benchmark::State& s) { run(s, in, op); });
+}
+
+template <typename S>
+void register_all(const std::string& sn) {
+  using namespace chasles;
+  using V3 = Eigen::Matrix<S, 3, 1>;
+  using M3 = Eigen::Matrix<S, 3, 3>;
+  using Q = Eigen::Quaternion<S>;
+  using Iso = Eigen::Transform<S, 3, Eigen::Isometry>;
+
+  // ---- SO3
+  for (const std::string kind : {"generic", "tiny", "near_pi"}) {
+    const auto ws = rotation_vectors<S>(kind, 1);
+    add("SO3/exp/" + kind + "/" + sn, ws, [](const V3& w) { return SO3<S>::exp(w); });
+    std::vector<SO3<S>> Rs;
+    for (const auto& w : ws) Rs.push_back(SO3<S>::exp(w));
+    add("SO3/log/" + kind + "/" + sn, Rs, [](const SO3<S>& R) { return R.log(); });
+    if (kind == "generic") {
+      add("Eigen/AngleAxis_to_matrix/" + kind + "/" + sn, ws, [](const V3& w) {
+        const S a = w.norm();
+        return Eigen::AngleAxis<S>(a, w / a).toRotationMatrix();
+      });
+      add("Eigen/quaternion_exp_to_matrix/" + kind + "/" + sn, ws, [](const V3& w) {
+        const S a = w.norm();
+        return Q(Eigen::AngleAxis<S>(a, w / a)).toRotationMatrix();
+      });
+    }
+    std::vector<M3> Ms;
+    for (const auto& R : Rs) Ms.push_back(R.matrix());
+    add("Eigen/AngleAxis_from_matrix/" + kind + "/" + sn, Ms, [](const M3& M) {
+      const Eigen::AngleAxis<S> aa(M);
+      return V3(aa.angle() * aa.axis());
+    });
+  }
+  const auto ws = rotation_vectors<S>("generic", 2);
+  std::vector<SO3<S>> Rs;
+  std::vector<std::pair<SO3<S>, SO3<S>>> Rpairs;
+  std::vector<std::pair<SO3<S>, V3>> Rpoints;
+  std::vector<std::pair<Q, Q>> Qpairs;
+  std::vector<std::pair<Q, V3>> Qpoints;
+  std::vector<Q> Qs;
+  for (std::size_t i = 0; i < kN; ++i) {
+    Rs.push_back(SO3<S>::exp(ws[i]));
+    Qs.push_back(Rs.back().quaternion());
+  }
+  for (std::size_t i = 0; i < kN; ++i) {
+    Rpairs.emplace_back(Rs[i], Rs[(i + 1) & (kN - 1)]);
+    Rpoints.emplace_back(Rs[i], ws[(i + 3) & (kN - 1)]);
+    Qpairs.emplace_back(Qs[i], Qs[(i + 1) & (kN - 1)]);
+    Qpoints.emplace_back(Qs[i], ws[(i + 3) & (kN - 1)]);
+  }
+  add("SO3/compose/generic/" + sn, Rpairs, [](const auto& p) { return p.first * p.second; });
+  add("SO3/inverse/generic/" + sn, Rs, [](const SO3<S>& R) { return R.inverse(); });
+  add("SO3/act/generic/" + sn, Rpoints, [](const auto& p) { return V3(p.first * p.second); });
+  add("SO3/as_quaternion/generic/" + sn, Rs, [](const SO3<S>& R) { return R.quaternion(); });
+  add("SO3/from_quaternion/generic/" + sn, Qs, [](const Q& q) { return SO3<S>::from_quaternion(q); });
+  add("SO3/interpolate/generic/" + sn, Rpairs,
+      [](const auto& p) { return interpolate(p.first, p.second, S(0.3)); });
+  add("SO3/normalized/generic/" + sn, Rs, [](const SO3<S>& R) { return R.normalized(); });
+  add("Eigen/quaternion_compose/generic/" + sn, Qpairs, [](const auto& p) { return Q(p.first * p.second); });
+  add("Eigen/quaternion_act/generic/" + sn, Qpoints, [](const auto& p) { return V3(p.first * p.second); });
+  add("Eigen/quaternion_to_matrix/generic/" + sn, Qs, [](const Q& q) { return q.toRotationMatrix(); });
+  add("Eigen/matrix_to_quaternion/generic/" + sn, Rs, [](const SO3<S>& R) { return Q(R.matrix()); });
+  add("Eigen/quaternion_slerp/generic/" + sn, Qpairs, [](const auto& p) { return p.first.slerp(S(0.3), p.second); });
+
+  // ---- SE3
+  for (const std::string kind : {"generic", "tiny", "near_pi"}) {
+    const auto xs = twists<S>(kind, 3);
+    add("SE3/exp/" + kind + "/" + sn, xs, [](const Eigen::Matrix<S, 6, 1>& xi) { return SE3<S>::exp(xi); });
+    std::vector<SE3<S>> gs;
+    for (const auto& xi : xs) gs.push_back(SE3<S>::exp(xi));
+    add("SE3/log/" + kind + "/" + sn, gs, [](const SE3<S>& g) { return g.log(); });
+  }
+  const auto xs = twists<S>("generic", 4);
+  std::vector<SE3<S>> gs;
+  std::vector<Iso> isos;
+  for (const auto& xi : xs) {
+    gs.push_back(SE3<S>::exp(xi));
+    Iso T = Iso::Identity();
+    T.linear() = gs.back().rotation().matrix();
+    T.translation() = gs.back().translation();
+    isos.push_back(T);
+  }
+  std::vector<std::pair<SE3<S>, SE3<S>>> gpairs;
+  std::vector<std::pair<SE3<S>, V3>> gpoints;
+  std::vector<std::pair<SE3<S>, Twist<S>>> gtwists;
+  std::vector<std::pair<SE3<S>, Wrench<S>>> gwrenches;
+  std::vector<std::pair<Iso, Iso>> isopairs;
+  std::vector<std::pair<Iso, V3>> isopoints;
+  for (std::size_t i = 0; i < kN; ++i) {
+    const std::size_t j = (i + 1) & (kN - 1), k = (i + 5) & (kN - 1);
+    gpairs.emplace_back(gs[i], gs[j]);
+    gpoints.emplace_back(gs[i], xs[k].template head<3>());
+    gtwists.emplace_back(gs[i], Twist<S>(xs[k]));
+    gwrenches.emplace_back(gs[i], Wrench<S>(xs[k]));
+    isopairs.emplace_back(isos[i], isos[j]);
+    isopoints.emplace_back(isos[i], xs[k].template head<3>());
+  }
+  add("SE3/compose/generic/" + sn, gpairs, [](const auto& p) { return p.first * p.second; });
+  add("SE3/inverse/generic/" + sn, gs, [](const SE3<S>& g) { return g.inverse(); });
+  add("SE3/act/generic/" + sn, gpoints, [](const auto& p) { return V3(p.first * p.second); });
+  add("SE3/adjoint/generic/" + sn, gs, [](const SE3<S>& g) { return g.adjoint(); });
+  add("SE3/act_twist/generic/" + sn, gtwists, [](const auto& p) { return p.first.act(p.second); });
+  add("SE3/act_wrench/generic/" + sn, gwrenches, [](const auto& p) { return p.first.act_inv(p.second); });
+  add("SE3/interpolate/generic/" + sn, gpairs, [](const auto& p) { return interpolate(p.first, p.second, S(0.3)); });
+  add("Eigen/Isometry3_compose/generic/" + sn, isopairs, [](const auto& p) { return Iso(p.first * p.second); });
+  add("Eigen/Isometry3_inverse/generic/" + sn, isos, [](const Iso& T) { return Iso(T.inverse(Eigen::Isometry)); });
+  add("Eigen/Isometry3_act/generic/" + sn, isopoints, [](const auto& p) { return V3(p.first * p.second); });
+
+  // ---- floors
+  std::vector<S> angles;
+  for (const auto& w : ws) angles.push_back(w.norm());
+  add("floor/sincos/generic/" + sn, angles, [](S a) {
+    using std::cos;
+    using std::sin;
+    return std::make_pair(sin(a), cos(a));
+  });
+  add("floor/atan2/generic/" + sn, ws, [](const V3& w) {
+    using std::atan2;
+    return atan2(w[0], w[1]);
+  });
+  std::vector<std::pair<M3, M3>> mpairs;
+  for (const auto& p : Rpairs) mpairs.emplace_back(p.first.matrix(), p.second.matrix());
+  add("floor/matmul_3x3_3x3/generic/" + sn, mpairs, [](const auto& p) { return M3(p.first * p.second); });
+  std::vector<std::pair<M3, V3>> mpoints;
+  for (const auto& p : Rpoints) mpoints.emplace_back(p.first.matrix(), p.second);
+  add("floor/matmul_3x3_3/generic/" + sn, mpoints, [](const auto& p) { return V3(p.first * p.second); });
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  register_all<double>("double");
+  register_all<float>("float");
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
