@@ -1,21 +1,28 @@
 #!/usr/bin/env bash
 # Runs every test of chasles on a fresh Debian/Ubuntu machine: installs what
-# it needs (apt-get for Eigen, GoogleTest, Google Benchmark), then configures,
-# builds and runs the C++ suite with ctest.
+# it needs (apt-get for Eigen, GoogleTest, Google Benchmark; pip for the
+# Python side), then
+#   1. configures, builds and runs the C++ suite with ctest;
+#   2. builds the Python package into a fresh virtual environment (pip
+#      install .[test], scikit-build-core and pybind11 from PyPI) and runs
+#      pytest on it from outside the source tree.
 #
 #   bash tests/run.sh            # from the repository root
 #
-# BUILD_DIR (default build/tests) and JOBS (default: nproc) can be set.
+# BUILD_DIR (default build/tests), VENV (default build/venv) and JOBS
+# (default: nproc) can be set.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$PWD
 BUILD_DIR=${BUILD_DIR:-$ROOT/build/tests}
+VENV=${VENV:-$ROOT/build/venv}
 JOBS=${JOBS:-$(nproc)}
 
 need_apt=()
 for pkg in libeigen3-dev libgtest-dev libbenchmark-dev cmake g++; do
   dpkg -s "$pkg" >/dev/null 2>&1 || need_apt+=("$pkg")
 done
+python3 -c "import venv, ensurepip" >/dev/null 2>&1 || need_apt+=(python3-venv)
 if [ ${#need_apt[@]} -gt 0 ]; then
   SUDO=""
   [ "$(id -u)" -ne 0 ] && SUDO=sudo
@@ -27,3 +34,9 @@ echo "== C++: configure, build, ctest"
 cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DCHASLES_BUILD_TESTS=ON
 cmake --build "$BUILD_DIR" -j "$JOBS"
 ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"
+
+echo "== Python: pip install .[test] into a fresh virtual environment, pytest"
+rm -rf "$VENV"
+python3 -m venv "$VENV"
+"$VENV/bin/python" -m pip install --quiet "$ROOT[test]"
+(cd "$VENV" && "$VENV/bin/python" -m pytest "$ROOT/tests/python" -p no:cacheprovider)
