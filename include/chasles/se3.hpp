@@ -94,8 +94,8 @@ class SE3 {
 
   /// g^-1 = [[R^T, -R^T p], [0, 1]].
   SE3 inverse() const noexcept {
-    const Rotation Rt = R_.inverse();
-    return SE3(Rt, -(Rt.matrix() * p_));
+    // -R^T p from the stored R (reading back a just-stored R^T stalls).
+    return SE3(R_.inverse(), -(R_.matrix().transpose() * p_));
   }
 
   /// Composition g_ab * g_bc = g_ac = [[R_ab R_bc, R_ab p_bc + p_ab], [0, 1]].

@@ -215,48 +215,50 @@ class SO3 {
   /// Unit quaternion by Shepperd's method: the largest of 4w^2, 4x^2, 4y^2,
   /// 4z^2 (they sum to 4, so it is >= 1) gives one component, the others are
   /// divided by it: no small divisor for any input. The sign is the one that
-  /// makes that largest component positive.
+  /// makes that largest component positive. Unit to rounding for a
+  /// rotation (the class invariant); for a matrix off SO(3) by d (from
+  /// from_matrix_unchecked) the norm is off by O(d^2).
   Quaternion quaternion() const noexcept {
     using std::sqrt;
     const Matrix3& R = R_;
-    const Scalar k[4] = {
-        Scalar(1) + R(0, 0) + R(1, 1) + R(2, 2), Scalar(1) + R(0, 0) - R(1, 1) - R(2, 2),
-        Scalar(1) - R(0, 0) + R(1, 1) - R(2, 2), Scalar(1) - R(0, 0) - R(1, 1) + R(2, 2)};
-    int i = 0;
-    for (int j = 1; j < 4; ++j)
-      if (k[j] > k[i]) i = j;
-    const Scalar r = sqrt(k[i]);    // = 2 |q_i| >= 1
-    const Scalar f = Scalar(0.5) / r;  // so that q_j = f * (pair sum), q_i = r / 2
+    const Scalar kw = Scalar(1) + R(0, 0) + R(1, 1) + R(2, 2);  // 4 w^2
+    const Scalar kx = Scalar(1) + R(0, 0) - R(1, 1) - R(2, 2);  // 4 x^2
+    const Scalar ky = Scalar(1) - R(0, 0) + R(1, 1) - R(2, 2);  // 4 y^2
+    const Scalar kz = Scalar(1) - R(0, 0) - R(1, 1) + R(2, 2);  // 4 z^2
     Scalar w, x, y, z;
-    switch (i) {
-      case 0:
-        w = Scalar(0.5) * r;
-        x = f * (R(2, 1) - R(1, 2));
-        y = f * (R(0, 2) - R(2, 0));
-        z = f * (R(1, 0) - R(0, 1));
-        break;
-      case 1:
-        x = Scalar(0.5) * r;
-        w = f * (R(2, 1) - R(1, 2));
-        y = f * (R(0, 1) + R(1, 0));
-        z = f * (R(0, 2) + R(2, 0));
-        break;
-      case 2:
-        y = Scalar(0.5) * r;
-        w = f * (R(0, 2) - R(2, 0));
-        x = f * (R(0, 1) + R(1, 0));
-        z = f * (R(1, 2) + R(2, 1));
-        break;
-      default:
-        z = Scalar(0.5) * r;
-        w = f * (R(1, 0) - R(0, 1));
-        x = f * (R(0, 2) + R(2, 0));
-        y = f * (R(1, 2) + R(2, 1));
-        break;
+    // r = 2 |q_i| >= 1 for the largest; f = 1 / (2 r) scales the pair sums.
+    if (!(kw < kx) && !(kw < ky) && !(kw < kz)) {
+      const Scalar r = sqrt(kw), f = Scalar(0.5) / r;
+      w = Scalar(0.5) * r;
+      x = f * (R(2, 1) - R(1, 2));
+      y = f * (R(0, 2) - R(2, 0));
+      z = f * (R(1, 0) - R(0, 1));
+    } else if (!(kx < ky) && !(kx < kz)) {
+      const Scalar r = sqrt(kx), f = Scalar(0.5) / r;
+      x = Scalar(0.5) * r;
+      w = f * (R(2, 1) - R(1, 2));
+      y = f * (R(0, 1) + R(1, 0));
+      z = f * (R(0, 2) + R(2, 0));
+    } else if (!(ky < kz)) {
+      const Scalar r = sqrt(ky), f = Scalar(0.5) / r;
+      y = Scalar(0.5) * r;
+      w = f * (R(0, 2) - R(2, 0));
+      x = f * (R(0, 1) + R(1, 0));
+      z = f * (R(1, 2) + R(2, 1));
+    } else {
+      const Scalar r = sqrt(kz), f = Scalar(0.5) / r;
+      z = Scalar(0.5) * r;
+      w = f * (R(1, 0) - R(0, 1));
+      x = f * (R(0, 2) + R(2, 0));
+      y = f * (R(1, 2) + R(2, 1));
     }
-    Quaternion q(w, x, y, z);
-    q.coeffs() /= sqrt(q.coeffs().squaredNorm());  // >= 1/2: safe
-    return q;
+    // For a rotation |q|^2 = 1 + delta with delta of order eps: one Newton
+    // step for 1/sqrt, (3 - |q|^2) / 2, normalizes it to rounding with
+    // multiplies only (a sqrt and a divide here would triple the cost).
+    // Scaled as scalars, before the quaternion is built: scaling its stored
+    // coefficients stalls on store forwarding.
+    const Scalar n = Scalar(0.5) * (Scalar(3) - (w * w + x * x + y * y + z * z));
+    return Quaternion(n * w, n * x, n * y, n * z);
   }
 
   /// From a quaternion of any nonzero norm (it is normalized; the zero
