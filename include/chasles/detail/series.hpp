@@ -58,9 +58,10 @@ inline ExpCoefficients<Scalar> exp_coefficients(const Scalar& theta2) noexcept {
     const Scalar ch = cos(Scalar(0.5) * theta);
     // sin(theta) = 2 sin(theta/2) cos(theta/2); 1 - cos(theta) = 2 sin^2(theta/2):
     // no cancellation at small theta.
-    k.a = Scalar(2) * sh * ch / theta;
-    k.b = Scalar(2) * sh * sh / theta2;
-    k.c = (Scalar(1) - k.a) / theta2;
+    const Scalar inv = Scalar(1) / theta;  // one divide for all three
+    k.a = Scalar(2) * sh * ch * inv;
+    k.b = Scalar(2) * sh * sh * inv * inv;
+    k.c = (Scalar(1) - k.a) * inv * inv;
   }
   return k;
 }
