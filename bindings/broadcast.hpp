@@ -1,0 +1,338 @@
+// chasles._core: the one broadcasting loop behind every array function of
+// bind_batch.cpp.
+//
+// Semantics are those of numpy's generalized ufuncs (np.linalg): each operand
+// has a fixed trailing "core" shape (3 for a rotation vector, (4, 4) for a
+// pose, ...), its leading axes are the batch axes, and the batch axes of all
+// operands broadcast together as np.broadcast_shapes does. The result has
+// shape batch + the result's core shape, in a fresh C-contiguous array.
+//
+//   apply<Core<3, 3>>("so3_exp", kernel, in<Core<3>>("w", w))
+//
+// calls `kernel(w_i)` (an Eigen::Matrix<T, 3, 1>) for every batch index i and
+// stores the returned 3x3 matrix. The kernel is a generic lambda, instantiated
+// for T = float and T = double; it calls the chasles C++ API and nothing here
+// knows any of the mathematics.
+//
+// dtypes: float32 operands give float32 results (the float kernels); any
+// float64 operand makes the call float64; integer and bool arrays are
+// converted to float64; Python int/float scalars are "weak" (NEP 50) and do
+// not change the result type. Anything else is a TypeError.
+//
+// Memory: operands are read in place through their byte strides (any strides,
+// negative, zero, unaligned, read-only, Fortran order: no copy). Only a dtype
+// conversion makes a copy. The GIL is released around the loop once every
+// Python object has been dealt with (for more than kGilThreshold elements, as
+// numpy's ufuncs do: below that, releasing costs more than the loop).
+#pragma once
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstddef>
+#include <cstring>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "bindings.hpp"
+
+namespace chasles_py {
+namespace batch {
+
+using ssize = py::ssize_t;
+
+/// Below this many elements the GIL is kept (numpy's ufunc threshold).
+constexpr ssize kGilThreshold = 500;
+
+// ---- core shapes ------------------------------------------------------------
+
+/// The fixed trailing shape of an operand or of a result: `Core<>` a scalar,
+/// `Core<3>` a vector of 3, `Core<4, 4>` a 4x4 matrix. `Value<T>` is what the
+/// kernel receives (T, Eigen::Matrix<T, N, 1>, Eigen::Matrix<T, R, C>).
+template <int... Dims>
+struct Core;
+
+template <>
+struct Core<> {
+  static constexpr int ndim = 0, rows = 1, cols = 1, size = 1;
+  template <typename T>
+  using Value = T;
+  static std::vector<ssize> dims() { return {}; }
+};
+
+template <int N>
+struct Core<N> {
+  static constexpr int ndim = 1, rows = N, cols = 1, size = N;
+  template <typename T>
+  using Value = Eigen::Matrix<T, N, 1>;
+  static std::vector<ssize> dims() { return {N}; }
+};
+
+template <int R, int C>
+struct Core<R, C> {
+  static constexpr int ndim = 2, rows = R, cols = C, size = R * C;
+  template <typename T>
+  using Value = Eigen::Matrix<T, R, C>;
+  static std::vector<ssize> dims() { return {R, C}; }
+};
+
+/// An operand as passed by the caller: its name (for messages) and the object.
+template <typename C>
+struct In {
+  const char* name;
+  py::handle obj;
+};
+
+template <typename C>
+In<C> in(const char* name, py::handle obj) {
+  return {name, obj};
+}
+
+// ---- messages ---------------------------------------------------------------
+
+/// "(5, 3)", "(5,)", "()", as Python prints a shape; `ellipsis` prefixes "...".
+inline std::string shape_str(const ssize* dims, ssize n, bool ellipsis = false) {
+  std::string s = "(";
+  if (ellipsis) s += n ? "..., " : "...";
+  for (ssize k = 0; k < n; ++k) {
+    if (k) s += ", ";
+    s += std::to_string(dims[k]);
+  }
+  if (n == 1 && !ellipsis) s += ",";
+  return s + ")";
+}
+
+// ---- element access ---------------------------------------------------------
+
+/// Reads one core element at p, entry (r, c) at p + r * s[0] + c * s[1]
+/// bytes. memcpy: no alignment assumed, compiles to a plain load.
+template <typename C, typename T>
+inline typename C::template Value<T> load(const char* p, const std::array<ssize, 2>& s) noexcept {
+  typename C::template Value<T> v;
+  if constexpr (C::ndim == 0) {
+    std::memcpy(&v, p, sizeof(T));
+  } else {
+    for (int r = 0; r < C::rows; ++r)
+      for (int c = 0; c < C::cols; ++c) std::memcpy(&v(r, c), p + r * s[0] + c * s[1], sizeof(T));
+  }
+  return v;
+}
+
+/// Writes one core element, C order, at o.
+template <typename C, typename T, typename V>
+inline void store(const V& v, T* o) noexcept {
+  if constexpr (C::ndim == 0) {
+    *o = v;
+  } else {
+    const typename C::template Value<T> m = v;
+    for (int r = 0; r < C::rows; ++r)
+      for (int c = 0; c < C::cols; ++c) o[r * C::cols + c] = m(r, c);
+  }
+}
+
+// ---- operands ---------------------------------------------------------------
+
+enum class Kind { f32, f64, integer };
+
+/// One operand after np.asarray, its dtype class and core shape checked.
+struct Operand {
+  const char* name;
+  py::array arr;
+  Kind kind;
+  bool weak;      ///< a Python int/float/bool scalar: does not set the dtype
+  int core_ndim;  ///< 0, 1 or 2
+};
+
+inline Operand prepare(const char* fname, const char* name, py::handle obj, int core_ndim,
+                       const std::vector<ssize>& core) {
+  // Python scalars are weak, as in numpy >= 2 (NEP 50); numpy's own scalar
+  // types (np.float64 derives from float) are not.
+  PyObject* o = obj.ptr();
+  const bool weak = PyFloat_CheckExact(o) || PyLong_CheckExact(o) || PyBool_Check(o);
+  Operand op{name, py::array(py::reinterpret_borrow<py::object>(obj)), Kind::f64, weak, core_ndim};
+
+  const py::dtype dt = op.arr.dtype();
+  const char k = dt.kind();
+  if (k == 'f' && dt.itemsize() == 4) {
+    op.kind = Kind::f32;
+  } else if (k == 'f' && dt.itemsize() == 8) {
+    op.kind = Kind::f64;
+  } else if (k == 'i' || k == 'u' || k == 'b') {
+    op.kind = Kind::integer;
+  } else {
+    throw py::type_error(std::string(fname) + ": " + name + " has dtype " + py::str(dt).cast<std::string>() +
+                         "; expected float32 or float64 (integer and bool arrays are converted to float64)");
+  }
+
+  const ssize nd = op.arr.ndim();
+  bool ok = nd >= core_ndim;
+  for (int j = 0; ok && j < core_ndim; ++j) ok = op.arr.shape(nd - core_ndim + j) == core[j];
+  if (!ok) {
+    throw py::value_error(std::string(fname) + ": expected " + name + " of shape " +
+                          shape_str(core.data(), core_ndim, true) + ", got " + shape_str(op.arr.shape(), nd));
+  }
+  return op;
+}
+
+// ---- the loop ---------------------------------------------------------------
+
+/// Everything the loop needs, in plain C++ (no Python object): the batch
+/// shape after coalescing, and per operand its data pointer, batch byte
+/// strides (0 along broadcast axes) and core byte strides.
+template <std::size_t N>
+struct Plan {
+  std::vector<ssize> shape;                    ///< batch axes, outermost first
+  std::array<std::vector<ssize>, N> strides;   ///< per operand, per batch axis
+  std::array<const char*, N> data;
+  std::array<std::array<ssize, 2>, N> core;    ///< byte strides of the core axes
+};
+
+/// Drops the batch axes of length 1 and merges neighbours that every operand
+/// (and the C-ordered output) walks as one, so the inner loop is as long as
+/// possible: (N, M) contiguous becomes one axis of N * M.
+template <std::size_t N>
+void coalesce(Plan<N>& p) {
+  std::vector<ssize> shape;
+  std::array<std::vector<ssize>, N> strides;
+  for (std::size_t k = 0; k < p.shape.size(); ++k) {
+    if (p.shape[k] == 1) continue;
+    bool merge = !shape.empty();
+    for (std::size_t j = 0; merge && j < N; ++j) merge = strides[j].back() == p.strides[j][k] * p.shape[k];
+    if (merge) {
+      shape.back() *= p.shape[k];
+      for (std::size_t j = 0; j < N; ++j) strides[j].back() = p.strides[j][k];
+    } else {
+      shape.push_back(p.shape[k]);
+      for (std::size_t j = 0; j < N; ++j) strides[j].push_back(p.strides[j][k]);
+    }
+  }
+  p.shape = std::move(shape);
+  p.strides = std::move(strides);
+}
+
+/// Calls the kernel for every batch index in C order, writing the results
+/// one after the other from `out`. Operands that do not move along the inner
+/// axis (one pose acting on many points) are read once per inner run.
+template <typename OutCore, typename T, typename... Cores, typename Kernel, std::size_t... I>
+void run_loop(const Plan<sizeof...(Cores)>& p, const Kernel& kernel, T* out, std::index_sequence<I...>) {
+  constexpr std::size_t N = sizeof...(Cores);
+  const int nd = static_cast<int>(p.shape.size());
+  const ssize inner = nd ? p.shape[nd - 1] : 1;
+  std::array<ssize, N> step{};
+  if (nd) ((step[I] = p.strides[I][nd - 1]), ...);
+  std::vector<ssize> idx(nd > 1 ? nd - 1 : 0, 0);
+  std::array<const char*, N> base = p.data;
+  std::tuple<typename Cores::template Value<T>...> args;
+  for (;;) {
+    ((std::get<I>(args) = load<Cores, T>(base[I], p.core[I])), ...);
+    for (ssize i = 0; i < inner; ++i) {
+      if (i) ((step[I] ? (void)(std::get<I>(args) = load<Cores, T>(base[I] + i * step[I], p.core[I])) : (void)0), ...);
+      store<OutCore>(kernel(std::get<I>(args)...), out);
+      out += OutCore::size;
+    }
+    int k = nd - 2;
+    for (; k >= 0; --k) {
+      ((base[I] += p.strides[I][k]), ...);
+      if (++idx[k] < p.shape[k]) break;
+      ((base[I] -= p.strides[I][k] * p.shape[k]), ...);
+      idx[k] = 0;
+    }
+    if (k < 0) break;
+  }
+}
+
+/// Broadcasts the operands (already of dtype class T) and runs the kernel.
+template <typename OutCore, typename T, typename... Cores, typename Kernel, std::size_t... I>
+py::array run(const char* fname, const Kernel& kernel, std::array<Operand, sizeof...(Cores)>& ops,
+              std::index_sequence<I...> seq) {
+  constexpr std::size_t N = sizeof...(Cores);
+  const py::dtype want = py::dtype::of<T>();
+  for (auto& op : ops) {
+    const py::dtype dt = op.arr.dtype();
+    const bool native = dt.byteorder() == '=' || dt.byteorder() == '|';
+    if (!(dt.kind() == 'f' && dt.itemsize() == static_cast<ssize>(sizeof(T)) && native))
+      op.arr = py::array(op.arr.attr("astype")(want));
+  }
+
+  // The batch shape, as np.broadcast_shapes of the operands' leading axes.
+  std::array<ssize, N> bnd{};
+  ssize nd = 0;
+  for (std::size_t j = 0; j < N; ++j) {
+    bnd[j] = ops[j].arr.ndim() - ops[j].core_ndim;
+    if (bnd[j] > nd) nd = bnd[j];
+  }
+  std::vector<ssize> shape(nd, 1);
+  std::vector<int> setter(nd, -1);  // which operand fixed each axis, for the message
+  for (std::size_t j = 0; j < N; ++j) {
+    for (ssize a = 0; a < bnd[j]; ++a) {
+      const ssize k = nd - bnd[j] + a, d = ops[j].arr.shape(a);
+      if (d == 1) continue;
+      if (shape[k] == 1) {
+        shape[k] = d;
+        setter[k] = static_cast<int>(j);
+      } else if (d != shape[k]) {
+        const Operand& o = ops[setter[k]];
+        throw py::value_error(std::string(fname) + ": cannot broadcast the batch shapes of " + o.name + " " +
+                              shape_str(o.arr.shape(), o.arr.ndim() - o.core_ndim) + " and " + ops[j].name +
+                              " " + shape_str(ops[j].arr.shape(), bnd[j]) +
+                              " (the leading axes, before the core shapes)");
+      }
+    }
+  }
+
+  std::vector<ssize> out_shape = shape;
+  for (ssize d : OutCore::dims()) out_shape.push_back(d);
+  py::array_t<T, py::array::c_style> out(out_shape);
+  ssize count = 1;
+  for (ssize d : shape) count *= d;
+  if (count == 0) return std::move(out);
+
+  Plan<N> p;
+  p.shape = shape;
+  for (std::size_t j = 0; j < N; ++j) {
+    const py::array& a = ops[j].arr;
+    p.data[j] = static_cast<const char*>(a.data());
+    p.strides[j].assign(nd, 0);
+    for (ssize ax = 0; ax < bnd[j]; ++ax)
+      if (a.shape(ax) != 1) p.strides[j][nd - bnd[j] + ax] = a.strides(ax);
+    const int c = ops[j].core_ndim;
+    p.core[j] = {c >= 1 ? a.strides(a.ndim() - c) : 0, c == 2 ? a.strides(a.ndim() - 1) : 0};
+  }
+  coalesce(p);
+  T* dst = out.mutable_data();
+
+  if (count > kGilThreshold) {
+    py::gil_scoped_release release;
+    run_loop<OutCore, T, Cores...>(p, kernel, dst, seq);
+  } else {
+    run_loop<OutCore, T, Cores...>(p, kernel, dst, seq);
+  }
+  return std::move(out);
+}
+
+/// The entry point of every array function: checks and converts the
+/// operands, picks float or double, broadcasts and loops. `kernel` is a
+/// generic lambda taking the operands' `Core::Value<T>` and returning
+/// something assignable to `OutCore::Value<T>`.
+template <typename OutCore, typename Kernel, typename... Cores>
+py::array apply(const char* fname, const Kernel& kernel, In<Cores>... ins) {
+  constexpr std::size_t N = sizeof...(Cores);
+  std::array<Operand, N> ops{prepare(fname, ins.name, ins.obj, Cores::ndim, Cores::dims())...};
+  bool any_strong = false, all_f32 = true;
+  for (const Operand& op : ops) {
+    if (op.weak) continue;
+    any_strong = true;
+    all_f32 = all_f32 && op.kind == Kind::f32;
+  }
+  const auto seq = std::make_index_sequence<N>();
+  if (any_strong && all_f32) return run<OutCore, float, Cores...>(fname, kernel, ops, seq);
+  return run<OutCore, double, Cores...>(fname, kernel, ops, seq);
+}
+
+}  // namespace batch
+}  // namespace chasles_py
