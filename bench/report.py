@@ -1,0 +1,128 @@
+#!/usr/bin/env python3
+"""Prints the benchmark tables of chasles, one per language, in markdown.
+
+    python3 bench/report.py              # C++ (builds bench/ with CMake) and Python
+    python3 bench/report.py --cpp-only   # or --python-only
+
+C++: runs the Google Benchmark binaries (portable -O3 and -march=native) with
+repetitions and reports the median ns/op of every chasles operation beside
+the best Eigen baseline measured in the same run, the floor (one sincos, one
+atan2, a 3x3 product) and the target of the benchmark issue. Python: runs
+bench/bench_python.py (per-call latency of the objects, per-element time of
+the array functions, against scipy, numpy, and pin / pytransform3d when
+installed). Medians, and ratios against a peer measured in the same run:
+machines are shared and noisy, absolute numbers move, ratios much less.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import platform
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+
+# op -> (Eigen baselines that do the same job, floor, target ns for double).
+CPP_OPS: dict[str, tuple[list[str], str | None, float | None]] = {
+    "SO3/exp": (["Eigen/AngleAxis_to_matrix", "Eigen/quaternion_exp_to_matrix"], "floor/sincos", 17),
+    "SO3/log": (["Eigen/AngleAxis_from_matrix"], "floor/atan2", 22),
+    "SO3/compose": (["Eigen/quaternion_compose"], "floor/matmul_3x3_3x3", 4),
+    "SO3/inverse": ([], None, None),
+    "SO3/act": (["Eigen/quaternion_act"], "floor/matmul_3x3_3", 2.2),
+    "SO3/as_quaternion": (["Eigen/matrix_to_quaternion"], None, None),
+    "SO3/from_quaternion": (["Eigen/quaternion_to_matrix"], None, None),
+    "SO3/interpolate": (["Eigen/quaternion_slerp"], None, None),
+    "SO3/normalized": ([], None, None),
+    "SE3/exp": ([], "floor/sincos", 30),
+    "SE3/log": ([], "floor/atan2", 45),
+    "SE3/compose": (["Eigen/Isometry3_compose"], "floor/matmul_3x3_3x3", 7),
+    "SE3/inverse": (["Eigen/Isometry3_inverse"], "floor/matmul_3x3_3", 3),
+    "SE3/act": (["Eigen/Isometry3_act"], "floor/matmul_3x3_3", 2.2),
+    "SE3/adjoint": ([], "floor/matmul_3x3_3x3", 15),
+    "SE3/act_twist": ([], "floor/matmul_3x3_3", None),
+    "SE3/act_wrench": ([], "floor/matmul_3x3_3", None),
+    "SE3/interpolate": ([], None, None),
+}
+
+
+def run_cpp(build_dir: Path, repetitions: int, min_time: float) -> dict[str, dict[str, float]]:
+    """Builds and runs both benchmark binaries; returns {variant: {name: median ns}}."""
+    subprocess.run(["cmake", "-S", str(ROOT), "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release",
+                    "-DCHASLES_BUILD_BENCH=ON"], check=True, stdout=subprocess.DEVNULL)
+    subprocess.run(["cmake", "--build", str(build_dir), "-j", str(os.cpu_count() or 2)], check=True,
+                   stdout=subprocess.DEVNULL)
+    results: dict[str, dict[str, float]] = {}
+    for variant in ("portable", "native"):
+        exe = build_dir / "bench" / f"chasles_bench_{variant}"
+        out = subprocess.run([str(exe), "--benchmark_format=json", f"--benchmark_repetitions={repetitions}",
+                              f"--benchmark_min_time={min_time}", "--benchmark_report_aggregates_only=true"],
+                             check=True, capture_output=True, text=True).stdout
+        medians = {}
+        for b in json.loads(out)["benchmarks"]:
+            if b.get("aggregate_name") == "median":
+                medians[b["run_name"]] = b["real_time"] if b["time_unit"] == "ns" else float("nan")
+        results[variant] = medians
+    return results
+
+
+def cpp_table(medians: dict[str, float], scalar: str) -> str:
+    rows = ["| op | input | chasles ns | best Eigen peer | peer ns | ratio | floor ns | x floor | target ns |",
+            "| --- | --- | ---: | --- | ---: | ---: | ---: | ---: | ---: |"]
+    for op, (peers, floor, target) in CPP_OPS.items():
+        for kind in ("generic", "tiny", "near_pi"):
+            name = f"{op}/{kind}/{scalar}"
+            if name not in medians:
+                continue
+            t = medians[name]
+            peer_times = [(medians[f"{p}/{kind}/{scalar}"], p.split("/", 1)[1]) for p in peers
+                          if f"{p}/{kind}/{scalar}" in medians]
+            best = min(peer_times) if peer_times else None
+            f = medians.get(f"{floor}/generic/{scalar}") if floor else None
+            rows.append("| {} | {} | {:.1f} | {} | {} | {} | {} | {} | {} |".format(
+                op, kind, t, best[1] if best else "", f"{best[0]:.1f}" if best else "",
+                f"{t / best[0]:.2f}" if best else "", f"{f:.1f}" if f else "", f"{t / f:.1f}" if f else "",
+                (f"{target:g}" if target and scalar == "double" and kind == "generic" else "")))
+    return "\n".join(rows)
+
+
+def machine() -> str:
+    cpu = platform.processor() or platform.machine()
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                cpu = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    return f"{cpu}, {os.cpu_count()} cores, {platform.system()} {platform.release()}"
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--cpp-only", action="store_true")
+    ap.add_argument("--python-only", action="store_true")
+    ap.add_argument("--build-dir", type=Path, default=ROOT / "build" / "bench")
+    ap.add_argument("--repetitions", type=int, default=5)
+    ap.add_argument("--min-time", type=float, default=0.1, help="seconds per repetition (C++)")
+    args = ap.parse_args()
+    print(f"Machine: {machine()}\n")
+    if not args.python_only:
+        results = run_cpp(args.build_dir, args.repetitions, args.min_time)
+        for variant, medians in results.items():
+            for scalar in ("double", "float"):
+                flags = "-O3 -DNDEBUG" + (" -march=native" if variant == "native" else "")
+                print(f"### C++, {scalar}, {flags} (median of {args.repetitions}, ns/op)\n")
+                print(cpp_table(medians, scalar))
+                print()
+    if not args.cpp_only:
+        script = ROOT / "bench" / "bench_python.py"
+        return subprocess.run([sys.executable, str(script)], check=False).returncode
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
