@@ -41,6 +41,19 @@ std::vector<Eigen::Matrix<Real, 3, 1>> rotation_vectors(int n_random = 64, std::
   return out;
 }
 
+/// (a, b) as one 6-vector, element by element: Eigen's comma initializer of a
+/// float 6-vector from two 3-vectors trips GCC 12's -Warray-bounds (a false
+/// positive, fatal under -Werror), as noted in include/chasles/detail/approx.hpp.
+template <typename Real>
+Eigen::Matrix<Real, 6, 1> stack6(const Eigen::Matrix<Real, 3, 1>& a, const Eigen::Matrix<Real, 3, 1>& b) {
+  Eigen::Matrix<Real, 6, 1> out;
+  for (int i = 0; i < 3; ++i) {
+    out[i] = a[i];
+    out[i + 3] = b[i];
+  }
+  return out;
+}
+
 /// Twists (v, w): the rotation vectors above paired with translations of
 /// size 0, 1e-6, 1 and 100 in random directions, pure translations, and
 /// random twists.
@@ -52,14 +65,10 @@ std::vector<Eigen::Matrix<Real, 6, 1>> twists(int n_random = 64, std::uint32_t s
   const Real sizes[] = {Real(0), Real(1e-6), Real(1), Real(100)};
   int k = 0;
   for (const auto& w : rotation_vectors<Real>(n_random, seed)) {
-    V6 xi;
-    xi << sizes[k++ % 4] * random_unit<Real>(rng), w;
-    out.push_back(xi);
+    out.push_back(stack6<Real>(sizes[k++ % 4] * random_unit<Real>(rng), w));
   }
   for (Real s : sizes) {
-    V6 xi;
-    xi << s * random_unit<Real>(rng), Eigen::Matrix<Real, 3, 1>::Zero();
-    out.push_back(xi);
+    out.push_back(stack6<Real>(s * random_unit<Real>(rng), Eigen::Matrix<Real, 3, 1>::Zero()));
   }
   return out;
 }
