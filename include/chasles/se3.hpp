@@ -1,6 +1,7 @@
 // chasles: SE(3), the group of rigid motions of R^3.
 #pragma once
 
+#include <limits>
 #include <optional>
 
 #include <Eigen/Core>
@@ -160,13 +161,15 @@ class SE3 {
 
   /// How far a 4x4 matrix is from a rigid motion: the rotation defect of its
   /// top-left block (SO3::rotation_defect) or the largest deviation of its
-  /// bottom row from (0, 0, 0, 1), whichever is larger.
+  /// bottom row from (0, 0, 0, 1), whichever is larger; +inf when an entry
+  /// of M is not finite.
   static Scalar transform_defect(const Matrix4& M) noexcept {
     using std::abs;
+    if (!detail::all_finite(M)) return Scalar(std::numeric_limits<Real>::infinity());
     Scalar d = Rotation::rotation_defect(M.template topLeftCorner<3, 3>());
     for (int j = 0; j < 4; ++j) {
       const Scalar e = abs(M(3, j) - Scalar(j == 3 ? 1 : 0));
-      if (!(e <= d)) d = e;
+      if (e > d) d = e;
     }
     return d;
   }

@@ -1,6 +1,7 @@
 // chasles: SO(3), the group of rotations of R^3.
 #pragma once
 
+#include <limits>
 #include <optional>
 
 #include <Eigen/Core>
@@ -277,14 +278,15 @@ class SO3 {
 
   /// How far M is from a rotation: max(|M^T M - I|_max, |det M - 1|).
   /// 0 for a rotation, about 2d for a rotation whose entries are off by d,
-  /// 2 for a reflection.
+  /// 2 for a reflection, +inf when an entry of M is not finite.
   static Scalar rotation_defect(const Matrix3& M) noexcept {
     using std::abs;
+    if (!detail::all_finite(M)) return Scalar(std::numeric_limits<Real>::infinity());
     Scalar d = abs(M.determinant() - Scalar(1));
     const Matrix3 E = M.transpose() * M - Matrix3::Identity();
     for (int j = 0; j < 3; ++j)
       for (int i = 0; i < 3; ++i)
-        if (!(abs(E(i, j)) <= d)) d = abs(E(i, j));  // NaN propagates
+        if (abs(E(i, j)) > d) d = abs(E(i, j));
     return d;
   }
 

@@ -1,5 +1,5 @@
-// chasles: small helpers on fixed-size vectors: the one approximate comparison
-// behind every is_approx, and stacking two 3-vectors into a 6-vector.
+// chasles: small helpers on fixed-size matrices: the one approximate comparison
+// behind every is_approx, the finiteness check, and stacking two 3-vectors.
 #pragma once
 
 #include <cmath>
@@ -28,6 +28,17 @@ inline bool approx_equal(const Eigen::MatrixBase<DerivedA>& a, const Eigen::Matr
   for (Eigen::Index j = 0; j < a.cols(); ++j)
     for (Eigen::Index i = 0; i < a.rows(); ++i)
       if (!(abs(a(i, j) - b(i, j)) <= tol * scale)) return false;
+  return true;
+}
+
+/// Whether every entry is finite: x - x is 0 for finite x and NaN for inf
+/// and NaN. (Eigen's allFinite() calls isfinite, which autodiff scalars lack.)
+template <typename Derived>
+inline bool all_finite(const Eigen::MatrixBase<Derived>& a) noexcept {
+  using Scalar = typename Derived::Scalar;
+  for (Eigen::Index j = 0; j < a.cols(); ++j)
+    for (Eigen::Index i = 0; i < a.rows(); ++i)
+      if (!(a(i, j) - a(i, j) == Scalar(0))) return false;
   return true;
 }
 
