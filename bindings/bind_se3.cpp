@@ -1,7 +1,525 @@
+// chasles._core: class SE3 over chasles::SE3d (include/chasles/se3.hpp), and
+// the module-level interpolate. SE3's actions on Twist and Wrench are added in
+// bind_twist_wrench.cpp, once those classes exist.
+#include <chasles/se3.hpp>
+
+#include <cmath>
+#include <string>
+
 #include "bindings.hpp"
+#include "conventions.hpp"
+#include "convert.hpp"
 
 namespace chasles_py {
 
-void bind_se3(py::module_& m) { (void)m; }
+namespace {
+
+using chasles::SE3d;
+using chasles::SO3d;
+using chasles::Twistd;
+using Vector3 = Eigen::Vector3d;
+using Vector6 = Eigen::Matrix<double, 6, 1>;
+using Matrix3 = Eigen::Matrix3d;
+using Matrix4 = Eigen::Matrix4d;
+
+constexpr double kRotationTolerance = chasles::Thresholds<double>::rotation_tolerance;
+
+const char* const kClassDoc = R"doc(A rigid motion of R^3: an element of SE(3), stored as a rotation R (an SO3)
+and a translation p (float64). Its 4x4 matrix is g = [[R, p], [0, 1]].
+
+``g_ab`` maps coordinates in frame b to frame a: ``q_a = R_ab q_b + p_ab``
+(``g @ q``), and composes along the frames: ``g_ac = g_ab @ g_bc``. The
+tangent space is the space of twists xi = (v, w), linear part first (Murray,
+Li and Sastry); exp([xi]) is the screw motion of Chasles' theorem. Twists
+change frame by Ad_g = [[R, [p] R], [0, R]] (``g.act(twist)``); wrenches by
+Ad_g^-T (``g.act(wrench)``), so power is invariant.
+
+Example:
+    >>> g = SE3(SO3.exp([0.0, 0.0, np.pi / 2]), [1.0, 2.0, 3.0])
+    >>> np.round(g @ [1.0, 0.0, 0.0], 12) + 0.0
+    array([1., 3., 3.])
+    >>> SE3.exp(g.log()).is_approx(g)
+    True
+)doc";
+
+std::string class_doc() { return std::string(kClassDoc) + kConventions; }
+
+/// The Twist inside h, or nullptr (also before the Twist class is bound).
+const Twistd* twist_or_null(py::handle h) {
+  py::detail::make_caster<Twistd> caster;
+  if (!caster.load(h, false)) return nullptr;
+  return &py::detail::cast_op<const Twistd&>(caster);
+}
+
+/// A twist (v, w) given as a Twist or as anything array-like of shape (6,).
+Vector6 twist_vector(py::handle h, const char* what) {
+  if (is_native_float64_array(h.ptr())) return to_finite_eigen<6>(h, what);
+  if (const Twistd* xi = twist_or_null(h)) return xi->vector();
+  return to_finite_eigen<6>(h, what);
+}
+
+[[noreturn]] void raise_not_rigid(const Matrix4& M, double tol) {
+  const double rot = SO3d::rotation_defect(M.topLeftCorner<3, 3>());
+  const double det = M.topLeftCorner<3, 3>().determinant();
+  double row = 0.0;
+  for (int j = 0; j < 4; ++j) row = std::max(row, std::abs(M(3, j) - (j == 3 ? 1.0 : 0.0)));
+  std::string msg = "SE3.from_matrix: not a rigid motion: the top-left 3x3 block has rotation defect "
+                    "max(|R^T R - I|, |det R - 1|) = " +
+                    short_float(rot) + " (det R = " + det_string(det) +
+                    ") and the bottom row differs from (0, 0, 0, 1) by " + short_float(row) + "; tol = " +
+                    short_float(tol) + ". ";
+  if (det < 0) msg += "A negative determinant is a reflection, not a rotation. ";
+  if (row > tol) msg += "A rigid motion's bottom row is exactly (0, 0, 0, 1). ";
+  msg += "Use SE3.from_matrix_projected(matrix) for the nearest rotation (it ignores the bottom row), or pass a "
+         "larger tol.";
+  raise_value_error(msg);
+}
+
+}  // namespace
+
+void bind_se3(py::module_& m) {
+  const std::string doc = class_doc();
+  py::class_<SE3d> cls(m, "SE3", doc.c_str());
+  cls.attr("__array_ufunc__") = py::none();  // numpy defers operators to us
+
+  cls.def(py::init([](Obj<SO3d> rotation, ArrayLike translation) {
+            return SE3d(*rotation, to_finite_eigen<3>(translation.obj, "SE3(translation)"));
+          }),
+          py::arg_v("rotation", SO3d(), "SO3()"),
+          py::arg_v("translation", py::make_tuple(0.0, 0.0, 0.0), "(0.0, 0.0, 0.0)"),
+          R"doc(The rigid motion g = [[R, p], [0, 1]] of a rotation and a translation.
+
+Args:
+    rotation: SO3, R (default: the identity).
+    translation: shape (3,), p, finite (default: 0).
+
+Example:
+    >>> SE3(translation=[1.0, 2.0, 3.0]).translation()
+    array([1., 2., 3.])
+)doc");
+
+  cls.def_static("identity", &SE3d::identity, R"doc(The identity motion.
+
+Returns:
+    SE3: the identity.
+)doc");
+
+  // ---- exp and log --------------------------------------------------------
+
+  cls.def_static(
+      "exp", [](ArrayLike xi) { return SE3d::exp(twist_vector(xi.obj, "SE3.exp(xi)")); }, py::arg("xi"),
+      R"doc(The screw motion exp([xi]) of a twist xi = (v, w), linear part first.
+
+In closed form, with theta = |w|: R = exp([w]), p = V v,
+V = I + ((1 - cos theta) / theta^2) [w] + ((theta - sin theta) / theta^3) [w]^2;
+w = 0 (pure translation) and tiny w included, exact to a few ulps.
+
+Args:
+    xi: twist coordinates (v, w), shape (6,), finite; or a Twist.
+
+Returns:
+    SE3: exp([xi]).
+
+Example:
+    >>> g = SE3.exp([1.0, 0.0, 0.0, 0.0, 0.0, np.pi / 2])
+    >>> np.round(g.translation(), 12) + 0.0
+    array([0.63661977, 0.63661977, 0.        ])
+)doc");
+
+  cls.def(
+      "log", [](Obj<SE3d> g) { return vec_out<6>(g->log()); },
+      R"doc(The twist xi = (v, w) with exp([xi]) = g, rotation angle |w| in [0, pi].
+
+w = log(R); v = V^-1 p. At a rotation angle of exactly pi either axis sign is
+returned, never NaN.
+
+Returns:
+    ndarray: xi = (v, w), shape (6,), linear part first.
+
+Example:
+    >>> SE3(translation=[1.0, 2.0, 3.0]).log()
+    array([1., 2., 3., 0., 0., 0.])
+)doc");
+
+  cls.def_static(
+      "hat", [](ArrayLike xi) { return mat_out<4, 4>(SE3d::hat(to_eigen<6>(xi.obj, "SE3.hat(xi)"))); },
+      py::arg("xi"),
+      R"doc(The 4x4 matrix [xi] = [[ [w], v ], [0, 0]] of a twist xi = (v, w).
+
+Args:
+    xi: shape (6,), (v, w).
+
+Returns:
+    ndarray: shape (4, 4).
+
+Example:
+    >>> SE3.hat([1.0, 2.0, 3.0, 0.0, 0.0, 1.0])
+    array([[ 0., -1.,  0.,  1.],
+           [ 1.,  0.,  0.,  2.],
+           [ 0.,  0.,  0.,  3.],
+           [ 0.,  0.,  0.,  0.]])
+)doc");
+
+  cls.def_static(
+      "vee", [](ArrayLike X) { return vec_out<6>(SE3d::vee(to_eigen<4, 4>(X.obj, "SE3.vee(matrix)"))); },
+      py::arg("matrix"),
+      R"doc(The twist (v, w) of a 4x4 matrix [[S, v], [*, *]]: the inverse of hat.
+
+w is read from the antisymmetric part of S; the bottom row is ignored.
+
+Args:
+    matrix: shape (4, 4).
+
+Returns:
+    ndarray: xi = (v, w), shape (6,).
+)doc");
+
+  // ---- group operations ---------------------------------------------------
+
+  cls.def(
+      "inverse", [](Obj<SE3d> x) { return x->inverse(); },
+      R"doc(The inverse motion g^-1 = [[R^T, -R^T p], [0, 1]].
+
+Returns:
+    SE3: g^-1.
+
+Example:
+    >>> g = SE3.exp([0.1, 0.2, 0.3, 0.4, 0.5, 0.6])
+    >>> (g @ g.inverse()).is_approx(SE3.identity())
+    True
+)doc");
+
+  cls.def(
+      "__matmul__", [](Obj<SE3d> a, Obj<SE3d> b) { return *a * *b; }, py::arg("other"), py::is_operator(),
+      R"doc(Composition: g_ab @ g_bc = g_ac.
+
+Args:
+    other: SE3.
+
+Returns:
+    SE3: the composed motion.
+)doc");
+
+  const auto act_points = [](const SE3d& g, ArrayLike points, const char* what) {
+    if (!is_native_float64_array(points.obj.ptr()) && is_bound_object(points.obj))
+      raise_type_error(std::string(what) + ": expected points of shape (3,) or (N, 3), got " + type_name(points.obj) +
+                       " (an SE3 composes with an SE3 by @; it acts on a Twist or a Wrench by g.act(x))");
+    return map_points(points.obj, what, [&g](const double* q, double* out) {
+      Eigen::Map<Vector3> image(out);
+      image = g.act(Vector3(Eigen::Map<const Vector3>(q)));
+    });
+  };
+
+  cls.def(
+      "__matmul__", [act_points](Obj<SE3d> g, ArrayLike points) { return act_points(*g, points, "SE3 @ points"); },
+      py::arg("points"),
+      R"doc(Action on points: q_a = R q_b + p.
+
+Args:
+    points: shape (3,) or (N, 3) (any leading axes).
+
+Returns:
+    ndarray: the moved points, same shape.
+)doc");
+
+  cls.def(
+      "act", [act_points](Obj<SE3d> g, ArrayLike points) { return act_points(*g, points, "SE3.act(points)"); },
+      py::arg("points"),
+      R"doc(Action on points: q_a = R q_b + p (the same as ``g @ points``).
+
+Args:
+    points: shape (3,) or (N, 3) (any leading axes).
+
+Returns:
+    ndarray: the moved points, same shape, float64.
+
+Example:
+    >>> g = SE3(translation=[1.0, 0.0, 0.0])
+    >>> g.act([[0.0, 0.0, 0.0], [1.0, 1.0, 1.0]])
+    array([[1., 0., 0.],
+           [2., 1., 1.]])
+)doc");
+
+  cls.def(
+      "act_inv",
+      [](Obj<SE3d> g_, ArrayLike points) {
+        const SE3d& g = *g_;
+        if (!is_native_float64_array(points.obj.ptr()) && is_bound_object(points.obj))
+          raise_type_error("SE3.act_inv(points): expected points of shape (3,) or (N, 3), got " +
+                           type_name(points.obj));
+        const SE3d inv = g.inverse();
+        return map_points(points.obj, "SE3.act_inv(points)", [&inv](const double* q, double* out) {
+          Eigen::Map<Vector3> image(out);
+          image = inv.act(Vector3(Eigen::Map<const Vector3>(q)));
+        });
+      },
+      py::arg("points"),
+      R"doc(Inverse action on points: q_b = R^T (q_a - p), i.e. g^-1 @ q_a.
+
+Args:
+    points: shape (3,) or (N, 3) (any leading axes).
+
+Returns:
+    ndarray: same shape.
+)doc");
+
+  cls.def(
+      "adjoint", [](Obj<SE3d> g) { return mat_out<6, 6>(g->adjoint()); },
+      R"doc(The adjoint Ad_g = [[R, [p] R], [0, R]] (6x6, Murray-Li-Sastry order).
+
+g [xi] g^-1 = [Ad_g xi]: twists change frame by xi_a = Ad_g xi_b; wrenches
+by F_b = Ad_g^T F_a.
+
+Returns:
+    ndarray: shape (6, 6).
+)doc");
+
+  // ---- access and conversions ---------------------------------------------
+
+  cls.def("rotation", [](Obj<SE3d> g) { return g->rotation(); }, R"doc(The rotation R.
+
+Returns:
+    SO3: R.
+)doc");
+
+  cls.def(
+      "translation", [](Obj<SE3d> g) { return vec_out<3>(g->translation()); },
+      R"doc(The translation p.
+
+Returns:
+    ndarray: p, shape (3,).
+)doc");
+
+  cls.def(
+      "as_matrix", [](Obj<SE3d> g) { return mat_out<4, 4>(g->matrix()); },
+      R"doc(The homogeneous matrix g = [[R, p], [0, 1]].
+
+Returns:
+    ndarray: shape (4, 4), float64 (a new array).
+)doc");
+
+  cls.def_static(
+      "from_matrix",
+      [](ArrayLike matrix, RealLike tol) {
+        const Matrix4 M = to_finite_eigen<4, 4>(matrix.obj, "SE3.from_matrix(matrix)");
+        const double t = to_tolerance(tol.obj, "SE3.from_matrix(tol)");
+        const auto g = SE3d::from_matrix(M, t);
+        if (!g) raise_not_rigid(M, t);
+        return *g;
+      },
+      py::arg("matrix"), py::arg_v("tol", kRotationTolerance),
+      R"doc(Checked construction from a 4x4 homogeneous matrix [[R, p], [0, 1]].
+
+Accepts M when the rotation defect of its top-left block,
+max(|R^T R - I|_max, |det R - 1|), and the deviation of its bottom row from
+(0, 0, 0, 1) are both at most tol (default sqrt(eps) = 1.49e-08).
+
+Args:
+    matrix: shape (4, 4), finite.
+    tol: the largest accepted defect.
+
+Returns:
+    SE3: the motion.
+
+Raises:
+    ValueError: M is not a rigid motion within tol (the message gives both
+        defects; use ``SE3.from_matrix_projected`` for the nearest rotation),
+        or M is not finite, or not of shape (4, 4).
+
+Example:
+    >>> SE3.from_matrix(np.eye(4)).is_approx(SE3())
+    True
+)doc");
+
+  cls.def_static(
+      "from_matrix_projected",
+      [](ArrayLike matrix) {
+        return SE3d::from_matrix_projected(to_finite_eigen<4, 4>(matrix.obj, "SE3.from_matrix_projected(matrix)"));
+      },
+      py::arg("matrix"),
+      R"doc(The nearest rotation to the top-left block, and the translation column.
+
+The bottom row is not read.
+
+Args:
+    matrix: shape (4, 4), finite.
+
+Returns:
+    SE3: the projected motion.
+)doc");
+
+  cls.def_static(
+      "from_matrix_unchecked",
+      [](ArrayLike matrix) {
+        return SE3d::from_matrix_unchecked(to_finite_eigen<4, 4>(matrix.obj, "SE3.from_matrix_unchecked(matrix)"));
+      },
+      py::arg("matrix"),
+      R"doc(Construction without a check from [[R, p], [*, *]], for valid data.
+
+Only the shape and finiteness are checked; the bottom row is not read.
+
+Args:
+    matrix: shape (4, 4), finite.
+
+Returns:
+    SE3: the motion.
+)doc");
+
+  cls.def_static(
+      "transform_defect",
+      [](ArrayLike matrix) {
+        return SE3d::transform_defect(to_eigen<4, 4>(matrix.obj, "SE3.transform_defect(matrix)"));
+      },
+      py::arg("matrix"),
+      R"doc(How far a 4x4 matrix is from a rigid motion.
+
+The rotation defect of its top-left block (SO3.rotation_defect) or the
+largest deviation of its bottom row from (0, 0, 0, 1), whichever is larger.
+
+Args:
+    matrix: shape (4, 4).
+
+Returns:
+    float: the defect.
+)doc");
+
+  cls.def_static(
+      "from_screw",
+      [](ArrayLike point, ArrayLike direction, RealLike pitch, RealLike theta) {
+        const Vector3 q = to_finite_eigen<3>(point.obj, "SE3.from_screw(point)");
+        const Vector3 d = to_finite_eigen<3>(direction.obj, "SE3.from_screw(direction)");
+        const double h = to_pitch(pitch.obj, "SE3.from_screw(pitch)");
+        const double t = to_finite_real(theta.obj, "SE3.from_screw(theta)");
+        return SE3d::from_screw(q, d, h, t);
+      },
+      py::arg("point"), py::arg("direction"), py::arg("pitch"), py::arg("theta"),
+      R"doc(The screw motion about an axis: exp(theta * (-d x q + h d, d)).
+
+Rotates by theta about the line through q along d (normalized here) while
+translating by h * theta along it; pitch = inf is the pure translation
+theta * d. A zero direction gives the identity (the screw of the zero
+twist).
+
+Args:
+    point: q, a point of the axis, shape (3,).
+    direction: d, the axis direction, shape (3,) (any nonzero length).
+    pitch: h, translation per radian; ``math.inf`` for a translation.
+    theta: the rotation angle in radians (the distance for pitch = inf).
+
+Returns:
+    SE3: the screw motion.
+
+Example:
+    >>> g = SE3.from_screw([0.0, 2.0, 0.0], [0.0, 0.0, 1.0], 0.0, np.pi / 2)
+    >>> np.round(g.translation(), 12) + 0.0
+    array([2., 2., 0.])
+    >>> np.round(g @ [0.0, 2.0, 5.0], 12) + 0.0
+    array([0., 2., 5.])
+)doc");
+
+  cls.def("normalized", &SE3d::normalized, R"doc(The same motion with the nearest rotation (removes drift).
+
+Returns:
+    SE3: the projected motion.
+)doc");
+
+  cls.def_static(
+      "interpolate",
+      [](Obj<SE3d> a, Obj<SE3d> b, RealLike t) {
+        return chasles::interpolate(*a, *b, to_finite_real(t.obj, "SE3.interpolate(t)"));
+      },
+      py::arg("a"), py::arg("b"), py::arg("t"),
+      R"doc(Geodesic (screw) interpolation a exp(t log(a^-1 b)).
+
+t = 0 gives a, t = 1 gives b, and the motion in between is one screw motion.
+
+Args:
+    a: SE3, the start.
+    b: SE3, the end.
+    t: the fraction, finite.
+
+Returns:
+    SE3: the interpolated motion.
+
+Example:
+    >>> a, b = SE3(), SE3(translation=[2.0, 0.0, 0.0])
+    >>> SE3.interpolate(a, b, 0.5).translation()
+    array([1., 0., 0.])
+)doc");
+
+  cls.def(
+      "is_approx",
+      [](Obj<SE3d> a, Obj<SE3d> b, RealLike tol) {
+        return a->is_approx(*b, to_tolerance(tol.obj, "SE3.is_approx(tol)"));
+      },
+      py::arg("other"), py::arg_v("tol", 1e-9),
+      R"doc(Whether two motions are equal within tol.
+
+Rotation matrices within tol (absolute), translations within
+tol * max(1, |p|_max) (relative beyond unit scale). ``==`` is deliberately
+not defined (it is object identity).
+
+Args:
+    other: SE3.
+    tol: the tolerance (>= 0).
+
+Returns:
+    bool.
+)doc");
+
+  // ---- Python protocols ---------------------------------------------------
+
+  cls.def("__repr__", [](Obj<SE3d> g_) {
+    const SE3d& g = *g_;
+    return "SE3(rotation=" + array_repr(mat_out<3, 3>(g.rotation().matrix())) +
+           ", translation=" + array_repr(vec_out<3>(g.translation())) + ")";
+  });
+  cls.def(
+      "__array__",
+      [](Obj<SE3d> g_, DTypeLike dtype, CopyFlag copy) {
+        const SE3d& g = *g_;
+        return array_protocol(mat_out<4, 4>(g.matrix()), dtype, copy, "SE3");
+      },
+      py::arg_v("dtype", py::none(), "None"), py::arg_v("copy", py::none(), "None"),
+      "The homogeneous matrix, shape (4, 4), for np.asarray (numpy's dtype and copy keywords).");
+  cls.def("__copy__", [](Obj<SE3d> g) { return *g; });
+  cls.def("__deepcopy__", [](Obj<SE3d> g, const py::object&) { return *g; }, py::arg("memo"));
+  cls.def(py::pickle(
+      [](Obj<SE3d> g_) {
+        const SE3d& g = *g_;
+        py::tuple t(12);
+        const Matrix3& R = g.rotation().matrix();
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) t[3 * i + j] = py::float_(R(i, j));
+        for (int i = 0; i < 3; ++i) t[9 + i] = py::float_(g.translation()[i]);
+        return t;
+      },
+      [](const py::object& state) {
+        const py::tuple t = state_tuple(state, 12, "SE3");
+        Eigen::Matrix<double, 3, 3, Eigen::RowMajor> R;
+        Vector3 p;
+        read_state(t, 0, 9, R.data(), "SE3");
+        read_state(t, 9, 3, p.data(), "SE3");
+        return SE3d(SO3d::from_matrix_unchecked(R), p);
+      }));
+  add_reduce(cls);
+
+  // ---- module level -------------------------------------------------------
+
+  m.def(
+      "interpolate",
+      [](Obj<SO3d> a, Obj<SO3d> b, RealLike t) {
+        return chasles::interpolate(*a, *b, to_finite_real(t.obj, "interpolate(t)"));
+      },
+      py::arg("a"), py::arg("b"), py::arg("t"),
+      "Geodesic interpolation of rotations a exp(t log(a^-1 b)) (SO3.interpolate).");
+  m.def(
+      "interpolate",
+      [](Obj<SE3d> a, Obj<SE3d> b, RealLike t) {
+        return chasles::interpolate(*a, *b, to_finite_real(t.obj, "interpolate(t)"));
+      },
+      py::arg("a"), py::arg("b"), py::arg("t"),
+      "Screw interpolation of rigid motions a exp(t log(a^-1 b)) (SE3.interpolate).");
+}
 
 }  // namespace chasles_py

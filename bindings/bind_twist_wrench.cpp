@@ -1,7 +1,624 @@
+// chasles._core: classes Screw, Twist and Wrench over include/chasles/
+// screw.hpp, twist.hpp and wrench.hpp, and SE3's actions on twists and
+// wrenches (SE3 is bound before this file runs; see module.cpp).
+#include <chasles/se3.hpp>
+#include <chasles/twist.hpp>
+#include <chasles/wrench.hpp>
+
+#include <cmath>
+#include <string>
+
 #include "bindings.hpp"
+#include "conventions.hpp"
+#include "convert.hpp"
 
 namespace chasles_py {
 
-void bind_twist_wrench(py::module_& m) { (void)m; }
+namespace {
+
+using chasles::SE3d;
+using chasles::Twistd;
+using chasles::Wrenchd;
+using Screwd = chasles::Screw<double>;
+using Vector3 = Eigen::Vector3d;
+using Vector6 = Eigen::Matrix<double, 6, 1>;
+using Matrix4 = Eigen::Matrix4d;
+
+/// A scalar operand of * or /: true and a finite `out` for a real number
+/// (float, int, numpy real scalar or 0-d array); false for anything else (the
+/// operator then returns NotImplemented, and Python raises TypeError).
+bool scalar_operand(py::handle h, double& out, const char* what) {
+  PyObject* o = h.ptr();
+  if (PyFloat_Check(o)) {
+    out = PyFloat_AS_DOUBLE(o);
+  } else {
+    if (npy().PyArray_Check_(o)) {
+      if (py::reinterpret_borrow<py::array>(h).ndim() != 0) return false;
+    } else if (h.is_none() || is_bound_object(h) || PySequence_Check(o) || PyComplex_Check(o)) {
+      return false;
+    }
+    try {
+      out = to_real(h, what);
+    } catch (py::type_error&) {
+      return false;
+    }
+  }
+  require_finite(out, what);
+  return true;
+}
+
+/// x itself, or ValueError when an operation overflowed to infinity.
+template <typename T>
+T finite_result(T x, const char* what) {
+  if (!x.vector().allFinite()) raise_value_error(std::string(what) + ": the result overflows float64");
+  return x;
+}
+
+py::object not_implemented() { return py::reinterpret_borrow<py::object>(Py_NotImplemented); }
+
+const char* const kScrewDoc = R"doc(A screw: a directed line in space (through ``point``, along the unit
+``direction``), a ``pitch`` and a ``magnitude``.
+
+For a twist it is Chasles' screw motion: rotate by ``magnitude`` about the
+line while translating ``pitch * magnitude`` along it; pitch = inf is a pure
+translation of length ``magnitude`` along ``direction``. For a wrench it is
+Poinsot's wrench: a force of size ``magnitude`` along the line plus a torque
+``pitch * magnitude`` about it; pitch = inf is a pure couple. ``point`` is
+the point of the line nearest the origin (0 for infinite pitch). The zero
+twist or wrench has magnitude 0, pitch 0, direction 0.
+
+A Screw unpacks as ``point, direction, pitch, magnitude = screw``, so
+``SE3.from_screw(*twist.screw())`` rebuilds the motion.
+
+Example:
+    >>> s = Twist(v=[2.0, 0.0, 0.0], w=[0.0, 0.0, 1.0]).screw()
+    >>> s.point, s.direction, s.pitch, s.magnitude
+    (array([0., 2., 0.]), array([0., 0., 1.]), 0.0, 1.0)
+)doc";
+
+const char* const kTwistDoc = R"doc(A twist xi = (v, w) in se(3): linear part first, angular part second
+(Murray, Li and Sastry's order; Modern Robotics writes (w, v), see
+``to_modern_robotics``). Its 4x4 matrix is [xi] = [[ [w], v ], [0, 0]].
+
+A twist is a velocity (spatial: (g' g^-1)^vee, body: (g^-1 g')^vee) or,
+scaled by theta, exponential coordinates of a rigid motion: SE3.exp(xi).
+Twists change frame by the adjoint, xi_a = Ad_{g_ab} xi_b (``g.act(xi)``);
+wrenches change frame by its inverse transpose. Twists add, subtract and
+scale by real numbers.
+
+Example:
+    >>> xi = Twist(v=[1.0, 0.0, 0.0], w=[0.0, 0.0, 1.0])
+    >>> xi.vector
+    array([1., 0., 0., 0., 0., 1.])
+    >>> xi.to_modern_robotics()
+    array([0., 0., 1., 1., 0., 0.])
+)doc";
+
+const char* const kWrenchDoc = R"doc(A wrench F = (f, tau): force first, torque second, so that the power of a
+twist V = (v, w) on it is the plain dot product V . F = v.f + w.tau.
+
+Wrenches change frame by the transpose of the adjoint: F_b = Ad_{g_ab}^T F_a
+(``g.act_inv(F)``), F_a = Ad_{g_ab}^-T F_b (``g.act(F)``), which is what keeps
+the power V . F the same in every frame. Wrenches add, subtract and scale by
+real numbers.
+
+Example:
+    >>> F = Wrench(f=[0.0, 0.0, -9.81], tau=[0.0, 0.0, 0.0])
+    >>> F.power(Twist(v=[0.0, 0.0, -1.0], w=[0.0, 0.0, 0.0]))
+    9.81
+)doc";
+
+/// Arithmetic, comparison, copy, pickle, __array__ and __repr__ of a
+/// 6-vector type (Twist or Wrench). `a` and `b` are the names of its halves.
+template <typename T>
+void bind_six_vector_protocols(py::class_<T>& cls, const char* cls_name, const char* a, const char* b) {
+  cls.attr("__array_ufunc__") = py::none();  // numpy defers 2.0 * x to x.__rmul__
+  // Arithmetic keeps the invariant of the constructors: finite numbers only.
+  const std::string add_what = std::string(cls_name) + " + " + cls_name;
+  const std::string sub_what = std::string(cls_name) + " - " + cls_name;
+  cls.def(
+      "__add__", [add_what](Obj<T> x, Obj<T> y) { return finite_result(*x + *y, add_what.c_str()); },
+      py::arg("other"), py::is_operator());
+  cls.def(
+      "__sub__", [sub_what](Obj<T> x, Obj<T> y) { return finite_result(*x - *y, sub_what.c_str()); },
+      py::arg("other"), py::is_operator());
+  cls.def("__neg__", [](Obj<T> x) { return -*x; });
+  cls.def("__pos__", [](Obj<T> x) { return *x; });
+  const std::string mul_what = std::string(cls_name) + " * scalar";
+  const auto mul = [mul_what](Obj<T> x, RealLike s) -> Returns<T> {
+    double k;
+    if (!scalar_operand(s.obj, k, mul_what.c_str())) return {not_implemented()};
+    return {py::cast(finite_result(*x * k, mul_what.c_str()))};
+  };
+  cls.def("__mul__", mul, py::arg("scalar"));
+  cls.def("__rmul__", mul, py::arg("scalar"));
+  const std::string div_what = std::string(cls_name) + " / scalar";
+  cls.def(
+      "__truediv__",
+      [div_what](Obj<T> x, RealLike s) -> Returns<T> {
+        double k;
+        if (!scalar_operand(s.obj, k, div_what.c_str())) return {not_implemented()};
+        if (k == 0.0) {
+          PyErr_SetString(PyExc_ZeroDivisionError, (div_what + ": division by zero").c_str());
+          throw py::error_already_set();
+        }
+        return {py::cast(finite_result(T(Vector6(x->vector() / k)), div_what.c_str()))};
+      },
+      py::arg("scalar"));
+  const std::string tol_what = std::string(cls_name) + ".is_approx(tol)";
+  cls.def(
+      "is_approx",
+      [tol_what](Obj<T> x, Obj<T> y, RealLike tol) {
+        return x->is_approx(*y, to_tolerance(tol.obj, tol_what.c_str()));
+      },
+      py::arg("other"), py::arg_v("tol", 1e-9),
+      R"doc(Whether two 6-vectors are equal within tol: max |x - y| <= tol * max(1, max |x|, max |y|).
+
+``==`` is deliberately not defined (it is object identity).
+
+Args:
+    other: the same type.
+    tol: the tolerance (>= 0).
+
+Returns:
+    bool.
+)doc");
+  const std::string name(cls_name), an(a), bn(b);
+  cls.def("__repr__", [name, an, bn](Obj<T> x_) {
+    const T& x = *x_;
+    return name + "(" + an + "=" + array_repr(vec_out<3>(Vector3(x.vector().template head<3>()))) + ", " + bn + "=" +
+           array_repr(vec_out<3>(Vector3(x.vector().template tail<3>()))) + ")";
+  });
+  cls.def(
+      "__array__",
+      [name](Obj<T> x_, DTypeLike dtype, CopyFlag copy) {
+        const T& x = *x_;
+        return array_protocol(vec_out<6>(x.vector()), dtype, copy, name.c_str());
+      },
+      py::arg_v("dtype", py::none(), "None"), py::arg_v("copy", py::none(), "None"),
+      "The 6-vector, shape (6,), for np.asarray (numpy's dtype and copy keywords).");
+  cls.def("__copy__", [](Obj<T> x) { return *x; });
+  cls.def("__deepcopy__", [](Obj<T> x, const py::object&) { return *x; }, py::arg("memo"));
+  cls.def(py::pickle([](Obj<T> x) { return float_tuple(x->vector()); },
+                     [name](const py::object& state) {
+                       const py::tuple t = state_tuple(state, 6, name.c_str());
+                       Vector6 v;
+                       read_state(t, 0, 6, v.data(), name.c_str());
+                       return T(v);
+                     }));
+  add_reduce(cls);
+}
+
+void bind_screw(py::module_& m) {
+  py::class_<Screwd> cls(m, "Screw", kScrewDoc);
+  cls.def(py::init([](ArrayLike point, ArrayLike direction, RealLike pitch, RealLike magnitude) {
+            Screwd s;
+            s.point = to_finite_eigen<3>(point.obj, "Screw(point)");
+            s.direction = to_finite_eigen<3>(direction.obj, "Screw(direction)");
+            s.pitch = to_pitch(pitch.obj, "Screw(pitch)");
+            s.magnitude = to_finite_real(magnitude.obj, "Screw(magnitude)");
+            return s;
+          }),
+          py::arg("point"), py::arg("direction"), py::arg("pitch"), py::arg("magnitude"),
+          R"doc(A screw from its parameters (stored as given).
+
+Args:
+    point: a point of the axis, shape (3,), finite.
+    direction: the axis direction, shape (3,), finite (unit length by
+        convention; from_screw normalizes it).
+    pitch: translation (or torque) per unit of magnitude; inf allowed.
+    magnitude: rotation angle (twist) or force size (wrench), finite.
+)doc");
+  cls.def_property_readonly(
+      "point", [](const Screwd& s) { return vec_out<3>(s.point); },
+      "ndarray: the point of the axis nearest the origin, shape (3,).");
+  cls.def_property_readonly(
+      "direction", [](const Screwd& s) { return vec_out<3>(s.direction); },
+      "ndarray: the unit direction of the axis, shape (3,).");
+  cls.def_property_readonly(
+      "pitch", [](const Screwd& s) { return s.pitch; }, "float: the pitch (inf for a translation or a couple).");
+  cls.def_property_readonly(
+      "magnitude", [](const Screwd& s) { return s.magnitude; }, "float: the magnitude.");
+  cls.def("__iter__", [](const Screwd& s) {
+    return py::iter(py::make_tuple(vec_out<3>(s.point), vec_out<3>(s.direction), s.pitch, s.magnitude));
+  });
+  cls.def("__len__", [](const Screwd&) { return 4; });
+  cls.def("__repr__", [](const Screwd& s) {
+    return "Screw(point=" + array_repr(vec_out<3>(s.point)) + ", direction=" + array_repr(vec_out<3>(s.direction)) +
+           ", pitch=" + float_repr(s.pitch) + ", magnitude=" + float_repr(s.magnitude) + ")";
+  });
+  cls.def(
+      "is_approx",
+      [](const Screwd& a, const Screwd& b, RealLike tol) {
+        const double t = to_tolerance(tol.obj, "Screw.is_approx(tol)");
+        const auto close = [t](double x, double y) {
+          return x == y || std::abs(x - y) <= t * std::max({1.0, std::abs(x), std::abs(y)});
+        };
+        for (int i = 0; i < 3; ++i)
+          if (!close(a.point[i], b.point[i]) || !close(a.direction[i], b.direction[i])) return false;
+        return close(a.pitch, b.pitch) && close(a.magnitude, b.magnitude);
+      },
+      py::arg("other"), py::arg_v("tol", 1e-9),
+      R"doc(Whether two screws have the same parameters within tol (relative beyond unit scale).
+
+Args:
+    other: Screw.
+    tol: the tolerance (>= 0).
+
+Returns:
+    bool.
+)doc");
+  cls.def("__copy__", [](const Screwd& s) { return s; });
+  cls.def("__deepcopy__", [](const Screwd& s, const py::object&) { return s; }, py::arg("memo"));
+  cls.def(py::pickle(
+      [](const Screwd& s) {
+        return py::make_tuple(s.point[0], s.point[1], s.point[2], s.direction[0], s.direction[1], s.direction[2],
+                              s.pitch, s.magnitude);
+      },
+      [](const py::object& state) {
+        const py::tuple t = state_tuple(state, 8, "Screw");
+        double v[8];
+        read_state(t, 0, 8, v, "Screw");
+        Screwd s;
+        s.point = Vector3(v[0], v[1], v[2]);
+        s.direction = Vector3(v[3], v[4], v[5]);
+        s.pitch = v[6];
+        s.magnitude = v[7];
+        return s;
+      }));
+  add_reduce(cls);
+}
+
+void bind_twist(py::module_& m) {
+  const std::string doc = std::string(kTwistDoc) + kConventions;
+  py::class_<Twistd> cls(m, "Twist", doc.c_str());
+  const auto zero3 = py::make_tuple(0.0, 0.0, 0.0);
+
+  cls.def(py::init([](ArrayLike v, ArrayLike w) {
+            return Twistd(to_finite_eigen<3>(v.obj, "Twist(v)"), to_finite_eigen<3>(w.obj, "Twist(w)"));
+          }),
+          py::arg_v("v", zero3, "(0.0, 0.0, 0.0)"), py::arg_v("w", zero3, "(0.0, 0.0, 0.0)"),
+          R"doc(The twist xi = (v, w) (the zero twist by default).
+
+Args:
+    v: linear part, shape (3,), finite.
+    w: angular part, shape (3,), finite.
+)doc");
+
+  cls.def_static(
+      "from_vector", [](ArrayLike xi) { return Twistd(to_finite_eigen<6>(xi.obj, "Twist.from_vector(xi)")); },
+      py::arg("xi"),
+      R"doc(The twist of a 6-vector (v, w), linear part first.
+
+Args:
+    xi: shape (6,), finite.
+
+Returns:
+    Twist.
+
+Example:
+    >>> Twist.from_vector([1.0, 2.0, 3.0, 4.0, 5.0, 6.0]).angular
+    array([4., 5., 6.])
+)doc");
+
+  cls.def_property_readonly(
+      "vector", [](Obj<Twistd> x) { return vec_out<6>(x->vector()); },
+      "ndarray: the 6-vector (v, w), linear part first, shape (6,).");
+  cls.def_property_readonly(
+      "linear", [](Obj<Twistd> x) { return vec_out<3>(Vector3(x->linear())); }, "ndarray: v, shape (3,).");
+  cls.def_property_readonly(
+      "angular", [](Obj<Twistd> x) { return vec_out<3>(Vector3(x->angular())); }, "ndarray: w, shape (3,).");
+
+  cls.def(
+      "to_modern_robotics", [](Obj<Twistd> x) { return vec_out<6>(x->to_modern_robotics()); },
+      R"doc(The 6-vector in the Modern Robotics order (w, v), angular part first.
+
+Returns:
+    ndarray: shape (6,).
+)doc");
+  cls.def_static(
+      "from_modern_robotics",
+      [](ArrayLike wv) {
+        return Twistd::from_modern_robotics(to_finite_eigen<6>(wv.obj, "Twist.from_modern_robotics(wv)"));
+      },
+      py::arg("wv"),
+      R"doc(The twist of a 6-vector in the Modern Robotics order (w, v).
+
+Args:
+    wv: shape (6,), angular part first.
+
+Returns:
+    Twist.
+
+Example:
+    >>> Twist.from_modern_robotics([0.0, 0.0, 1.0, 2.0, 0.0, 0.0]).vector
+    array([2., 0., 0., 0., 0., 1.])
+)doc");
+
+  cls.def(
+      "hat", [](Obj<Twistd> x) { return mat_out<4, 4>(x->hat()); },
+      R"doc(The 4x4 matrix [xi] = [[ [w], v ], [0, 0]].
+
+Returns:
+    ndarray: shape (4, 4).
+)doc");
+  cls.def_static(
+      "vee", [](ArrayLike X) { return Twistd::vee(to_finite_eigen<4, 4>(X.obj, "Twist.vee(matrix)")); },
+      py::arg("matrix"),
+      R"doc(The twist of a 4x4 matrix [[S, v], [*, *]]: v and the w of S's antisymmetric part.
+
+The bottom row is ignored.
+
+Args:
+    matrix: shape (4, 4), finite.
+
+Returns:
+    Twist.
+)doc");
+  cls.def(
+      "ad", [](Obj<Twistd> x) { return mat_out<6, 6>(x->ad()); },
+      R"doc(The adjoint of the algebra ad_xi = [[ [w], [v] ], [0, [w]]] (6x6).
+
+ad_xi eta = [xi, eta] (``xi.bracket(eta)``).
+
+Returns:
+    ndarray: shape (6, 6).
+)doc");
+  cls.def(
+      "bracket", [](Obj<Twistd> xi, Obj<Twistd> eta) { return xi->bracket(*eta); }, py::arg("other"),
+          R"doc(The Lie bracket [xi, eta] = ([xi][eta] - [eta][xi])^vee = (w1 x v2 + v1 x w2, w1 x w2).
+
+Args:
+    other: Twist, eta.
+
+Returns:
+    Twist.
+)doc");
+
+  cls.def("screw", &Twistd::screw, R"doc(The screw of the twist (Chasles).
+
+With w != 0: pitch w.v / |w|^2, axis through w x v / |w|^2 along w / |w|,
+magnitude |w|; with w = 0: pitch inf, direction v / |v|, magnitude |v|.
+
+Returns:
+    Screw.
+
+Example:
+    >>> s = Twist(v=[0.0, 0.0, 0.5], w=[0.0, 0.0, 1.0]).screw()
+    >>> s.pitch, s.magnitude
+    (0.5, 1.0)
+)doc");
+  cls.def_property_readonly("pitch", &Twistd::pitch, "float: w.v / |w|^2 (inf for w = 0, 0 for the zero twist).");
+
+  cls.def_static(
+      "from_screw",
+      [](ArrayLike point, ArrayLike direction, RealLike pitch, RealLike theta) {
+        return Twistd::from_screw(to_finite_eigen<3>(point.obj, "Twist.from_screw(point)"),
+                                  to_finite_eigen<3>(direction.obj, "Twist.from_screw(direction)"),
+                                  to_pitch(pitch.obj, "Twist.from_screw(pitch)"),
+                                  to_finite_real(theta.obj, "Twist.from_screw(theta)"));
+      },
+      py::arg("point"), py::arg("direction"), py::arg("pitch"), py::arg("theta"),
+      R"doc(The unit twist of a screw times theta: theta * (-d x q + h d, d).
+
+For the axis through q along d (normalized here), pitch h; with h = inf, the
+translation theta * (d, 0). A zero direction gives the zero twist.
+
+Args:
+    point: q, shape (3,).
+    direction: d, shape (3,).
+    pitch: h; ``math.inf`` for a translation.
+    theta: the magnitude.
+
+Returns:
+    Twist.
+
+Example:
+    >>> Twist.from_screw([0.0, 1.0, 0.0], [0.0, 0.0, 1.0], 0.0, 1.0).vector
+    array([1., 0., 0., 0., 0., 1.])
+)doc");
+
+  cls.def_static(
+      "spatial",
+      [](Obj<SE3d> g_, ArrayLike g_dot) {
+        const SE3d& g = *g_;
+        return Twistd::spatial(g, to_finite_eigen<4, 4>(g_dot.obj, "Twist.spatial(g_dot)"));
+      },
+      py::arg("g"), py::arg("g_dot"),
+      R"doc(The spatial twist of a trajectory at (g, g'): V^s = (g' g^-1)^vee.
+
+w^s = (R' R^T)^vee, v^s = p' - w^s x p. V^s = Ad_g V^b.
+
+Args:
+    g: SE3, the configuration.
+    g_dot: its time derivative, shape (4, 4).
+
+Returns:
+    Twist.
+)doc");
+  cls.def_static(
+      "body",
+      [](Obj<SE3d> g_, ArrayLike g_dot) {
+        const SE3d& g = *g_;
+        return Twistd::body(g, to_finite_eigen<4, 4>(g_dot.obj, "Twist.body(g_dot)"));
+      },
+      py::arg("g"), py::arg("g_dot"),
+      R"doc(The body twist of a trajectory at (g, g'): V^b = (g^-1 g')^vee.
+
+w^b = (R^T R')^vee, v^b = R^T p'.
+
+Args:
+    g: SE3, the configuration.
+    g_dot: its time derivative, shape (4, 4).
+
+Returns:
+    Twist.
+)doc");
+
+  bind_six_vector_protocols(cls, "Twist", "v", "w");
+}
+
+void bind_wrench(py::module_& m) {
+  const std::string doc = std::string(kWrenchDoc) + kConventions;
+  py::class_<Wrenchd> cls(m, "Wrench", doc.c_str());
+  const auto zero3 = py::make_tuple(0.0, 0.0, 0.0);
+
+  cls.def(py::init([](ArrayLike f, ArrayLike tau) {
+            return Wrenchd(to_finite_eigen<3>(f.obj, "Wrench(f)"), to_finite_eigen<3>(tau.obj, "Wrench(tau)"));
+          }),
+          py::arg_v("f", zero3, "(0.0, 0.0, 0.0)"), py::arg_v("tau", zero3, "(0.0, 0.0, 0.0)"),
+          R"doc(The wrench F = (f, tau) (the zero wrench by default).
+
+Args:
+    f: force, shape (3,), finite.
+    tau: torque, shape (3,), finite.
+)doc");
+
+  cls.def_static(
+      "from_vector", [](ArrayLike F) { return Wrenchd(to_finite_eigen<6>(F.obj, "Wrench.from_vector(F)")); },
+      py::arg("F"),
+      R"doc(The wrench of a 6-vector (f, tau), force first.
+
+Args:
+    F: shape (6,), finite.
+
+Returns:
+    Wrench.
+)doc");
+
+  cls.def_property_readonly(
+      "vector", [](Obj<Wrenchd> x) { return vec_out<6>(x->vector()); },
+      "ndarray: the 6-vector (f, tau), force first, shape (6,).");
+  cls.def_property_readonly(
+      "force", [](Obj<Wrenchd> x) { return vec_out<3>(Vector3(x->force())); }, "ndarray: f, shape (3,).");
+  cls.def_property_readonly(
+      "torque", [](Obj<Wrenchd> x) { return vec_out<3>(Vector3(x->torque())); }, "ndarray: tau, shape (3,).");
+
+  cls.def(
+      "power", [](Obj<Wrenchd> F, Obj<Twistd> V) { return F->power(*V); }, py::arg("twist"),
+          R"doc(The power V . F = v.f + w.tau of a twist on this wrench (same frame).
+
+Args:
+    twist: Twist, V.
+
+Returns:
+    float.
+)doc");
+
+  cls.def("screw", &Wrenchd::screw, R"doc(The screw of the wrench (Poinsot).
+
+With f != 0, a force along the line through f x tau / |f|^2 with direction
+f / |f|, magnitude |f|, plus a torque pitch * f about it,
+pitch = f.tau / |f|^2; with f = 0, a pure couple: pitch inf, direction
+tau / |tau|, magnitude |tau|.
+
+Returns:
+    Screw.
+)doc");
+  cls.def_property_readonly("pitch", &Wrenchd::pitch, "float: f.tau / |f|^2 (inf for f = 0, 0 for the zero wrench).");
+
+  cls.def_static(
+      "from_screw",
+      [](ArrayLike point, ArrayLike direction, RealLike pitch, RealLike magnitude) {
+        return Wrenchd::from_screw(to_finite_eigen<3>(point.obj, "Wrench.from_screw(point)"),
+                                   to_finite_eigen<3>(direction.obj, "Wrench.from_screw(direction)"),
+                                   to_pitch(pitch.obj, "Wrench.from_screw(pitch)"),
+                                   to_finite_real(magnitude.obj, "Wrench.from_screw(magnitude)"));
+      },
+      py::arg("point"), py::arg("direction"), py::arg("pitch"), py::arg("magnitude"),
+      R"doc(The wrench of a screw: magnitude * (d, q x d + h d).
+
+For the line through q along d (normalized here), pitch h; with h = inf, the
+couple (0, magnitude * d). A zero direction gives the zero wrench.
+
+Args:
+    point: q, shape (3,).
+    direction: d, shape (3,).
+    pitch: h; ``math.inf`` for a pure couple.
+    magnitude: the force size (the torque for h = inf).
+
+Returns:
+    Wrench.
+
+Example:
+    >>> Wrench.from_screw([0.0, 1.0, 0.0], [1.0, 0.0, 0.0], 0.0, 2.0).vector
+    array([ 2.,  0.,  0.,  0.,  0., -2.])
+)doc");
+
+  bind_six_vector_protocols(cls, "Wrench", "f", "tau");
+}
+
+/// SE3's actions on twists and wrenches, put before its action on points in
+/// the overload order (a Twist is array-like too, through __array__).
+void bind_se3_actions(py::module_& m) {
+  auto se3 = py::reinterpret_borrow<py::class_<SE3d>>(m.attr("SE3"));
+  // Prepended in reverse: the final order is Twist, Wrench, points.
+  se3.def(
+      "act", [](Obj<SE3d> g, Obj<Wrenchd> F) { return g->act(*F); }, py::arg("wrench"), py::prepend(),
+      R"doc(A wrench from frame b to frame a: F_a = Ad_g^-T F_b = (R f, p x R f + R tau).
+
+Args:
+    wrench: Wrench, F_b.
+
+Returns:
+    Wrench: F_a.
+)doc");
+  se3.def(
+      "act", [](Obj<SE3d> g, Obj<Twistd> xi) { return g->act(*xi); }, py::arg("twist"), py::prepend(),
+      R"doc(A twist from frame b to frame a: xi_a = Ad_g xi_b = (R v + p x R w, R w).
+
+Args:
+    twist: Twist, xi_b.
+
+Returns:
+    Twist: xi_a.
+)doc");
+  se3.def(
+      "act_inv", [](Obj<SE3d> g, Obj<Wrenchd> F) { return g->act_inv(*F); }, py::arg("wrench"), py::prepend(),
+      R"doc(A wrench from frame a to frame b: F_b = Ad_g^T F_a = (R^T f, R^T (tau - p x f)).
+
+Args:
+    wrench: Wrench, F_a.
+
+Returns:
+    Wrench: F_b.
+)doc");
+  se3.def(
+      "act_inv", [](Obj<SE3d> g, Obj<Twistd> xi) { return g->act_inv(*xi); }, py::arg("twist"), py::prepend(),
+      R"doc(A twist from frame a to frame b: xi_b = Ad_g^-1 xi_a = (R^T (v - p x w), R^T w).
+
+Args:
+    twist: Twist, xi_a.
+
+Returns:
+    Twist: xi_b.
+)doc");
+}
+
+}  // namespace
+
+void bind_twist_wrench(py::module_& m) {
+  bind_screw(m);
+  bind_twist(m);
+  bind_wrench(m);
+
+  // Defined here because each needs the other class.
+  py::class_<Twistd>(py::reinterpret_borrow<py::class_<Twistd>>(m.attr("Twist")))
+      .def("power", [](Obj<Twistd> V, Obj<Wrenchd> F) { return F->power(*V); }, py::arg("wrench"),
+           R"doc(The power V . F = v.f + w.tau of this twist on a wrench (same frame).
+
+Args:
+    wrench: Wrench, F.
+
+Returns:
+    float.
+
+Example:
+    >>> Twist(v=[1.0, 0.0, 0.0]).power(Wrench(f=[2.0, 0.0, 0.0]))
+    2.0
+)doc");
+
+  bind_se3_actions(m);
+}
 
 }  // namespace chasles_py

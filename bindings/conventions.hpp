@@ -1,0 +1,25 @@
+// chasles._core: the conventions paragraph every class docstring carries,
+// in the words of include/chasles/chasles.hpp and README.md.
+#pragma once
+
+namespace chasles_py {
+
+/// Appended to each class docstring (Google style "Conventions:" section).
+inline constexpr const char* kConventions = R"doc(
+Conventions (the same in C++, in README.md and in every docstring):
+    - twists xi = (v, w), linear part first (Murray, Li and Sastry); the
+      Modern Robotics order (w, v) only through Twist.to_modern_robotics /
+      Twist.from_modern_robotics;
+    - wrenches F = (f, tau), force first, so power is the dot product V . F;
+    - g_ab maps frame b to frame a: q_a = g_ab q_b, g_ac = g_ab @ g_bc;
+      twists change frame by Ad_g = [[R, [p]R], [0, R]], wrenches by Ad_g^-T;
+    - hat(w) = [w] with [w] p = w x p; [xi] = [[ [w], v ], [0, 0]];
+    - quaternions are (x, y, z, w), scalar last, as in scipy; pass
+      scalar_first=True for (w, x, y, z); angles are in radians.
+
+Values are float64 and immutable. ``==`` is not defined (it is object
+identity): compare with ``is_approx(other, tol)``. Objects pickle and copy
+bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
+)doc";
+
+}  // namespace chasles_py

@@ -1,0 +1,614 @@
+// chasles._core: turning Python arguments into Eigen fixed-size types and
+// results back into numpy arrays, with the errors the Python layer promises.
+//
+// Shared by the bind_*.cpp files. What a caller gets:
+// - `to_eigen<R, C>(obj, what)`: anything array-like of shape (R,) (C = 1) or
+//   (R, C) as an Eigen::Matrix<double, R, C>. A native float64 ndarray of the
+//   right shape (any strides) is read straight from its buffer, a list or
+//   tuple of Python floats and ints straight from the objects; everything
+//   else goes through numpy.asarray (bool, integer and floating dtypes are
+//   converted to float64). Errors:
+//     TypeError  "<what>: expected real numbers (float64), got dtype complex128 (list)"
+//                (complex, object, str, bytes, datetime, void, None);
+//     ValueError "<what>: expected shape (3,), got (4,)".
+//   `to_finite_eigen` adds `require_finite`: ValueError "<what>: expected
+//   finite numbers, got [nan, 0.0, 0.0]".
+// - `to_real(obj, what)`: a Python float or int, a numpy real scalar or 0-d
+//   array, or any object with __float__ (not complex), as a double.
+// - `map_points(obj, what, f)`: f applied to every point of a (3,) or (..., 3)
+//   array-like, into a new array of the same shape (GIL released when large).
+// - `new_array(nd, dims)`, `vec_out(v)`, `mat_out(M)`: new C-contiguous
+//   float64 arrays, built with numpy's C API directly (no shape vectors).
+// - Argument types whose conversion (and error) happens in the function body,
+//   naming the argument, and which read well in signatures and stubs:
+//   `ArrayLike` (numpy.typing.ArrayLike), `RealLike` (float), `Obj<T>` (the
+//   bound class T, checked with one type test: fast to reject in overload
+//   sets), `Returns<T>` (a T or NotImplemented, shown as T).
+// - Protocol helpers: `array_protocol` (__array__ with numpy 2's dtype and
+//   copy), `array_repr`, `float_tuple` / `state_tuple` / `read_state`
+//   (bit-exact pickling), `add_reduce` (pickling at every protocol).
+//
+// `what` is the argument as the user wrote it, e.g. "SO3.exp(w)".
+#pragma once
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include <Eigen/Core>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#if defined(__GNUC__) || defined(__clang__)
+#define CHASLES_PY_HIDDEN __attribute__((visibility("hidden")))  // as pybind11's own types
+#else
+#define CHASLES_PY_HIDDEN
+#endif
+
+namespace chasles_py {
+
+namespace py = pybind11;
+
+/// An argument taken as any array-like object, converted in the function body.
+struct CHASLES_PY_HIDDEN ArrayLike {
+  py::handle obj;
+};
+
+/// An argument taken as any real number, converted in the function body.
+struct CHASLES_PY_HIDDEN RealLike {
+  py::handle obj;
+};
+
+/// A dtype argument (numpy's __array__ protocol), taken as any object.
+struct CHASLES_PY_HIDDEN DTypeLike {
+  py::handle obj;
+};
+
+/// The copy argument of __array__: True, False or None.
+struct CHASLES_PY_HIDDEN CopyFlag {
+  py::handle obj;
+};
+
+/// A result that is a T, or NotImplemented for an operator whose operand
+/// it does not take; signatures show T.
+template <typename T>
+struct CHASLES_PY_HIDDEN Returns {
+  py::object obj;
+};
+
+/// An argument that must be an instance of the bound class T (or of a Python
+/// subclass), checked with one PyObject_TypeCheck. pybind11's generic caster
+/// looks the type up in its registry on every call, and takes about 1 us to
+/// reject an object of an unregistered type such as an ndarray: that cost
+/// lands on every call of an overload set like `g @ h` / `g @ points`.
+/// Signatures show T's Python name. T must be bound before the first call.
+template <typename T>
+struct CHASLES_PY_HIDDEN Obj {
+  const T* ptr = nullptr;
+  const T& operator*() const { return *ptr; }
+  const T* operator->() const { return ptr; }
+};
+
+}  // namespace chasles_py
+
+namespace pybind11 {
+namespace detail {
+
+template <>
+struct type_caster<chasles_py::DTypeLike> {
+  PYBIND11_TYPE_CASTER(chasles_py::DTypeLike, const_name("numpy.typing.DTypeLike"));
+  bool load(handle src, bool /*convert*/) {
+    value.obj = src;
+    return static_cast<bool>(src);
+  }
+  static handle cast(const chasles_py::DTypeLike& src, return_value_policy, handle) {
+    return src.obj.inc_ref();
+  }
+};
+
+template <>
+struct type_caster<chasles_py::CopyFlag> {
+  PYBIND11_TYPE_CASTER(chasles_py::CopyFlag, const_name("bool | None"));
+  bool load(handle src, bool /*convert*/) {
+    value.obj = src;
+    return static_cast<bool>(src);
+  }
+  static handle cast(const chasles_py::CopyFlag& src, return_value_policy, handle) {
+    return src.obj.inc_ref();
+  }
+};
+
+template <typename T>
+struct type_caster<chasles_py::Returns<T>> {
+  static constexpr auto name = make_caster<T>::name;
+  static handle cast(const chasles_py::Returns<T>& src, return_value_policy, handle) {
+    return src.obj.inc_ref();
+  }
+};
+
+template <typename T>
+struct type_caster<chasles_py::Obj<T>> {
+  static constexpr auto name = make_caster<T>::name;
+  chasles_py::Obj<T> value;
+
+  bool load(handle src, bool /*convert*/) {
+    static PyTypeObject* const type = reinterpret_cast<PyTypeObject*>(get_type_handle(typeid(T), true).ptr());
+    if (!PyObject_TypeCheck(src.ptr(), type)) return false;
+    auto* inst = reinterpret_cast<instance*>(src.ptr());
+    value.ptr = static_cast<const T*>(inst->get_value_and_holder().value_ptr());
+    return value.ptr != nullptr;  // null for an instance whose __init__ has not run
+  }
+
+  operator chasles_py::Obj<T>&() { return value; }
+  template <typename U>
+  using cast_op_type = chasles_py::Obj<T>&;
+};
+
+template <>
+struct type_caster<chasles_py::ArrayLike> {
+  PYBIND11_TYPE_CASTER(chasles_py::ArrayLike, const_name("numpy.typing.ArrayLike"));
+  bool load(handle src, bool /*convert*/) {
+    value.obj = src;
+    return static_cast<bool>(src);
+  }
+  static handle cast(const chasles_py::ArrayLike& src, return_value_policy, handle) {
+    return src.obj.inc_ref();
+  }
+};
+
+template <>
+struct type_caster<chasles_py::RealLike> {
+  PYBIND11_TYPE_CASTER(chasles_py::RealLike, const_name("float"));
+  bool load(handle src, bool /*convert*/) {
+    value.obj = src;
+    return static_cast<bool>(src);
+  }
+  static handle cast(const chasles_py::RealLike& src, return_value_policy, handle) {
+    return src.obj.inc_ref();
+  }
+};
+
+}  // namespace detail
+}  // namespace pybind11
+
+namespace chasles_py {
+
+[[noreturn]] inline void raise_value_error(const std::string& msg) { throw py::value_error(msg); }
+[[noreturn]] inline void raise_type_error(const std::string& msg) { throw py::type_error(msg); }
+
+/// numpy's C API table (pybind11 loads it once).
+inline const py::detail::npy_api& npy() { return py::detail::npy_api::get(); }
+
+/// "(3,)", "(3, 3)", "()": a shape as Python prints it.
+inline std::string shape_string(const Py_intptr_t* dims, int nd) {
+  std::string s = "(";
+  for (int i = 0; i < nd; ++i) {
+    if (i > 0) s += ", ";
+    s += std::to_string(static_cast<long long>(dims[i]));
+  }
+  if (nd == 1) s += ",";
+  return s + ")";
+}
+
+template <int R, int C>
+inline std::string expected_shape_string() {
+  return C == 1 ? "(" + std::to_string(R) + ",)" : "(" + std::to_string(R) + ", " + std::to_string(C) + ")";
+}
+
+/// repr() of a double, shortest round trip ("0.1", "nan", "inf").
+inline std::string float_repr(double x) {
+  char* s = PyOS_double_to_string(x, 'r', 0, Py_DTSF_ADD_DOT_0, nullptr);
+  if (s == nullptr) throw py::error_already_set();
+  std::string out(s);
+  PyMem_Free(s);
+  return out;
+}
+
+/// A short form of a double for error messages ("0.0123", "1.49e-08").
+inline std::string short_float(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
+}
+
+/// A determinant for error messages, with enough digits to show how far it
+/// is from 1 ("1.003", "0.999999", "-1").
+inline std::string det_string(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.9g", x);
+  return buf;
+}
+
+/// "[1.0, nan, 0.0]" (row-major, nested for matrices).
+template <typename Derived>
+inline std::string values_string(const Eigen::MatrixBase<Derived>& m) {
+  std::string s = "[";
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    if (i > 0) s += ", ";
+    if (m.cols() > 1) s += "[";
+    for (Eigen::Index j = 0; j < m.cols(); ++j) {
+      if (j > 0) s += ", ";
+      s += float_repr(m(i, j));
+    }
+    if (m.cols() > 1) s += "]";
+  }
+  return s + "]";
+}
+
+/// The Python type name of an object ("list", "numpy.ndarray", "NoneType").
+inline std::string type_name(py::handle h) {
+  PyTypeObject* t = Py_TYPE(h.ptr());
+  return t->tp_name;
+}
+
+/// numpy.<name>, looked up once and kept for the life of the process.
+inline PyObject* numpy_attr(const char* name) {
+  return py::module_::import("numpy").attr(name).cast<py::object>().release().ptr();
+}
+
+/// True for an ndarray of native-endian float64.
+inline bool is_native_float64_array(PyObject* o) {
+  const auto& api = npy();
+  if (!api.PyArray_Check_(o)) return false;
+  const auto* d = py::detail::array_descriptor_proxy(py::detail::array_proxy(o)->descr);
+  if (d->type_num != py::detail::npy_api::NPY_DOUBLE_) return false;
+  const char native = PY_LITTLE_ENDIAN ? '<' : '>';
+  return d->byteorder == '=' || d->byteorder == '|' || d->byteorder == native;
+}
+
+/// numpy.asarray(obj) as a float64 ndarray of any shape, for real input
+/// (bool, integer and floating dtypes). TypeError for anything else, naming
+/// what was expected and what came.
+inline py::array as_float64_array(py::handle h, const char* what) {
+  if (h.is_none()) raise_type_error(std::string(what) + ": expected real numbers (float64), got None");
+  if (PyUnicode_Check(h.ptr()) || PyBytes_Check(h.ptr()))
+    raise_type_error(std::string(what) + ": expected real numbers (float64), got " + type_name(h));
+  if (is_native_float64_array(h.ptr())) return py::reinterpret_borrow<py::array>(h);
+  static PyObject* asarray = numpy_attr("asarray");
+  py::object arr;
+  try {
+    arr = py::reinterpret_borrow<py::object>(asarray)(h);
+  } catch (py::error_already_set& e) {
+    const std::string msg = std::string(what) +
+                            ": expected an array-like of real numbers (float64), could not convert " +
+                            type_name(h) + " to an array";
+    if (e.matches(PyExc_TypeError)) {
+      py::raise_from(e, PyExc_TypeError, msg.c_str());
+    } else {
+      py::raise_from(e, PyExc_ValueError, msg.c_str());
+    }
+    throw py::error_already_set();
+  }
+  if (!npy().PyArray_Check_(arr.ptr()))
+    raise_type_error(std::string(what) + ": expected real numbers (float64), got " + type_name(h));
+  py::array a = py::reinterpret_borrow<py::array>(arr);
+  const py::dtype dt = a.dtype();
+  const char kind = dt.kind();
+  if (kind != 'b' && kind != 'i' && kind != 'u' && kind != 'f') {
+    raise_type_error(std::string(what) + ": expected real numbers (float64), got dtype " +
+                     std::string(py::str(dt)) + " (" + type_name(h) + ")");
+  }
+  if (is_native_float64_array(a.ptr())) return a;
+  return py::reinterpret_steal<py::array>(a.attr("astype")(py::dtype::of<double>()).release());
+}
+
+/// Reads an (R,) or (R, C) float64 array of the right shape with its strides.
+template <int R, int C>
+inline void read_array(PyObject* o, Eigen::Matrix<double, R, C>& out) {
+  const auto* a = py::detail::array_proxy(o);
+  const char* data = a->data;
+  const Py_intptr_t s0 = a->strides[0];
+  if (C == 1) {
+    for (int i = 0; i < R; ++i) std::memcpy(&out(i, 0), data + i * s0, sizeof(double));
+  } else {
+    const Py_intptr_t s1 = a->strides[1];
+    for (int i = 0; i < R; ++i)
+      for (int j = 0; j < C; ++j) std::memcpy(&out(i, j), data + i * s0 + j * s1, sizeof(double));
+  }
+}
+
+template <int R, int C>
+inline bool has_shape(PyObject* o) {
+  const auto* a = py::detail::array_proxy(o);
+  constexpr int nd = C == 1 ? 1 : 2;
+  return a->nd == nd && a->dimensions[0] == R && (nd == 1 || a->dimensions[1] == C);
+}
+
+/// A list or tuple of R Python floats or ints (exact types) read directly;
+/// false (and nothing raised) for anything else.
+template <int R>
+inline bool read_flat_sequence(PyObject* o, Eigen::Matrix<double, R, 1>& out) {
+  const bool is_list = PyList_CheckExact(o);
+  if (!is_list && !PyTuple_CheckExact(o)) return false;
+  if ((is_list ? PyList_GET_SIZE(o) : PyTuple_GET_SIZE(o)) != R) return false;
+  for (int i = 0; i < R; ++i) {
+    PyObject* x = is_list ? PyList_GET_ITEM(o, i) : PyTuple_GET_ITEM(o, i);
+    if (PyFloat_CheckExact(x)) {
+      out[i] = PyFloat_AS_DOUBLE(x);
+    } else if (PyLong_CheckExact(x)) {
+      const double d = PyLong_AsDouble(x);
+      if (d == -1.0 && PyErr_Occurred()) {
+        PyErr_Clear();
+        return false;
+      }
+      out[i] = d;
+    } else {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Any array-like of shape (R,) (C = 1) or (R, C) as a double Eigen matrix.
+template <int R, int C = 1>
+inline Eigen::Matrix<double, R, C> to_eigen(py::handle h, const char* what) {
+  Eigen::Matrix<double, R, C> out;
+  PyObject* o = h.ptr();
+  if (is_native_float64_array(o) && has_shape<R, C>(o)) {  // the fast path
+    read_array<R, C>(o, out);
+    return out;
+  }
+  if constexpr (C == 1) {
+    if (read_flat_sequence<R>(o, out)) return out;
+  }
+  const py::array a = as_float64_array(h, what);
+  if (!has_shape<R, C>(a.ptr())) {
+    raise_value_error(std::string(what) + ": expected shape " + expected_shape_string<R, C>() + ", got " +
+                      shape_string(a.shape(), static_cast<int>(a.ndim())));
+  }
+  read_array<R, C>(a.ptr(), out);
+  return out;
+}
+
+/// ValueError unless every entry of m is finite.
+template <typename Derived>
+inline void require_finite(const Eigen::MatrixBase<Derived>& m, const char* what) {
+  if (!m.allFinite()) raise_value_error(std::string(what) + ": expected finite numbers, got " + values_string(m));
+}
+
+/// The same, for a scalar.
+inline void require_finite(double x, const char* what) {
+  if (!std::isfinite(x)) raise_value_error(std::string(what) + ": expected a finite number, got " + float_repr(x));
+}
+
+/// A finite array-like of shape (R,) or (R, C): to_eigen, then require_finite.
+template <int R, int C = 1>
+inline Eigen::Matrix<double, R, C> to_finite_eigen(py::handle h, const char* what) {
+  Eigen::Matrix<double, R, C> m = to_eigen<R, C>(h, what);
+  require_finite(m, what);
+  return m;
+}
+
+/// A real number: float, int, bool, numpy real scalar or 0-d array, or an
+/// object with __float__ (fractions.Fraction, decimal.Decimal).
+inline double to_real(py::handle h, const char* what) {
+  PyObject* o = h.ptr();
+  if (PyFloat_Check(o)) return PyFloat_AS_DOUBLE(o);
+  if (PyLong_Check(o)) {
+    const double d = PyLong_AsDouble(o);
+    if (d == -1.0 && PyErr_Occurred()) {
+      PyErr_Clear();
+      raise_value_error(std::string(what) + ": integer too large for a float64");
+    }
+    return d;
+  }
+  if (h.is_none()) raise_type_error(std::string(what) + ": expected a real number (float), got None");
+  static PyObject* np_generic = numpy_attr("generic");
+  const int is_np_scalar = PyObject_IsInstance(o, np_generic);
+  if (is_np_scalar < 0) throw py::error_already_set();
+  if (npy().PyArray_Check_(o) || is_np_scalar || PySequence_Check(o)) {
+    const py::array a = as_float64_array(h, what);
+    if (a.ndim() != 0)
+      raise_value_error(std::string(what) + ": expected a real number (shape ()), got shape " +
+                        shape_string(a.shape(), static_cast<int>(a.ndim())));
+    double x;
+    std::memcpy(&x, py::detail::array_proxy(a.ptr())->data, sizeof(double));
+    return x;
+  }
+  if (!PyComplex_Check(o) && Py_TYPE(o)->tp_as_number != nullptr && Py_TYPE(o)->tp_as_number->nb_float != nullptr) {
+    const double d = PyFloat_AsDouble(o);
+    if (d == -1.0 && PyErr_Occurred()) throw py::error_already_set();
+    return d;
+  }
+  raise_type_error(std::string(what) + ": expected a real number (float), got " + type_name(h));
+}
+
+/// A finite real number (to_real, then require_finite).
+inline double to_finite_real(py::handle h, const char* what) {
+  const double x = to_real(h, what);
+  require_finite(x, what);
+  return x;
+}
+
+/// A screw pitch: a real number, NaN and -inf refused (+inf is a pure
+/// translation or a pure couple).
+inline double to_pitch(py::handle h, const char* what) {
+  const double pitch = to_real(h, what);
+  if (std::isnan(pitch) || pitch == -HUGE_VAL)
+    raise_value_error(std::string(what) + ": expected a finite pitch or +inf, got " + float_repr(pitch));
+  return pitch;
+}
+
+/// A tolerance: a real number >= 0 (inf allowed).
+inline double to_tolerance(py::handle h, const char* what) {
+  const double tol = to_real(h, what);
+  if (!(tol >= 0.0)) raise_value_error(std::string(what) + ": expected a tolerance >= 0, got " + float_repr(tol));
+  return tol;
+}
+
+/// True for an instance of a class bound with pybind11 (an SO3, an SE3, a
+/// Twist, ...): such objects are never taken as points, even when they
+/// support __array__.
+inline bool is_bound_object(py::handle h) {
+  return py::detail::get_type_info(Py_TYPE(h.ptr())) != nullptr;
+}
+
+/// A new, uninitialized, C-contiguous float64 array.
+inline py::array_t<double> new_array(int nd, const Py_intptr_t* dims) {
+  const auto& api = npy();
+  static PyObject* descr = api.PyArray_DescrFromType_(py::detail::npy_api::NPY_DOUBLE_);  // kept for the process
+  Py_INCREF(descr);  // PyArray_NewFromDescr steals a reference
+  PyObject* a = api.PyArray_NewFromDescr_(api.PyArray_Type_, descr, nd, dims, nullptr, nullptr, 0, nullptr);
+  if (a == nullptr) throw py::error_already_set();
+  return py::reinterpret_steal<py::array_t<double>>(a);
+}
+
+/// The data pointer of an array made by new_array.
+inline double* array_data(const py::array& a) {
+  return reinterpret_cast<double*>(py::detail::array_proxy(a.ptr())->data);
+}
+
+/// A vector as a new (N,) array.
+template <int N>
+inline py::array_t<double> vec_out(const Eigen::Matrix<double, N, 1>& v) {
+  const Py_intptr_t dims[1] = {N};
+  py::array_t<double> a = new_array(1, dims);
+  std::memcpy(array_data(a), v.data(), N * sizeof(double));
+  return a;
+}
+
+/// A matrix as a new (R, C) C-contiguous array.
+template <int R, int C>
+inline py::array_t<double> mat_out(const Eigen::Matrix<double, R, C>& m) {
+  const Py_intptr_t dims[2] = {R, C};
+  py::array_t<double> a = new_array(2, dims);
+  Eigen::Map<Eigen::Matrix<double, R, C, Eigen::RowMajor>>(array_data(a)) = m;
+  return a;
+}
+
+/// Applies `f(const double* p, double* q)` (q = image of the 3-vector p) to
+/// every point of an array-like of shape (3,) or (..., 3) and returns a new
+/// array of the same shape. Rows are read with the input's strides; the GIL
+/// is released for large inputs (f must not touch Python objects).
+template <typename F>
+inline py::array_t<double> map_points(py::handle h, const char* what, const F& f) {
+  PyObject* o = h.ptr();
+  py::array a;
+  if (is_native_float64_array(o)) {
+    a = py::reinterpret_borrow<py::array>(h);
+  } else {
+    Eigen::Matrix<double, 3, 1> p;
+    if (read_flat_sequence<3>(o, p)) {
+      const Py_intptr_t dims[1] = {3};
+      py::array_t<double> out = new_array(1, dims);
+      f(p.data(), array_data(out));
+      return out;
+    }
+    a = as_float64_array(h, what);
+  }
+  const int nd = static_cast<int>(a.ndim());
+  if (nd < 1 || a.shape(nd - 1) != 3) {
+    raise_value_error(std::string(what) + ": expected shape (3,) or (N, 3), got " + shape_string(a.shape(), nd));
+  }
+  if (nd > 2) {
+    static PyObject* ascontiguousarray = numpy_attr("ascontiguousarray");
+    a = py::reinterpret_steal<py::array>(py::reinterpret_borrow<py::object>(ascontiguousarray)(a).release());
+  }
+  py::array_t<double> out = new_array(nd, a.shape());
+  double* q = array_data(out);
+  const auto* in = py::detail::array_proxy(a.ptr());
+  const char* data = in->data;
+  const Py_intptr_t n = nd == 1 ? 1 : static_cast<Py_intptr_t>(a.size() / 3);
+  const Py_intptr_t row_stride = nd == 1 ? 0 : (nd == 2 ? in->strides[0] : Py_intptr_t(3 * sizeof(double)));
+  const Py_intptr_t col_stride = in->strides[nd - 1];
+  auto run = [&]() {
+    double p[3];
+    for (Py_intptr_t k = 0; k < n; ++k) {
+      const char* row = data + k * row_stride;
+      for (int j = 0; j < 3; ++j) std::memcpy(&p[j], row + j * col_stride, sizeof(double));
+      f(p, q + 3 * k);
+    }
+  };
+  if (n >= 4096) {
+    py::gil_scoped_release release;
+    run();
+  } else {
+    run();
+  }
+  return out;
+}
+
+/// numpy's __array__ protocol for an object whose value lives in C++:
+/// `value` is a fresh array; dtype converts it; copy=False cannot be honoured
+/// (numpy 2 semantics: raise ValueError rather than silently copy).
+inline py::array array_protocol(py::array_t<double> value, DTypeLike dtype, CopyFlag copy, const char* cls) {
+  const int truth = copy.obj.is_none() ? 1 : PyObject_IsTrue(copy.obj.ptr());
+  if (truth < 0) throw py::error_already_set();
+  if (truth == 0) {
+    raise_value_error(std::string("np.asarray(") + cls + ", copy=False): a " + cls +
+                      " keeps its numbers in C++, so an array of them is always a copy; use copy=None or True");
+  }
+  if (dtype.obj.is_none()) return std::move(value);
+  return value.attr("astype")(dtype.obj);
+}
+
+/// __reduce_ex__ and __reduce__ returning (copyreg.__newobj__, (cls,), state)
+/// for every pickle protocol. The default reduction of protocols 0 and 1
+/// calls the pybind11 base type with the object, which aborts the process
+/// (pybind11 3.1: "instance allocation failed"); this one is what protocol 2
+/// does anyway: T.__new__(T), then __setstate__(state).
+template <typename Class>
+void add_reduce(Class& cls) {
+  const auto reduce = [](const py::object& self) {
+    static PyObject* newobj = py::module_::import("copyreg").attr("__newobj__").cast<py::object>().release().ptr();
+    return py::make_tuple(py::reinterpret_borrow<py::object>(newobj), py::make_tuple(py::type::handle_of(self)),
+                          self.attr("__getstate__")());
+  };
+  cls.def(
+      "__reduce_ex__", [reduce](const py::object& self, int /*protocol*/) { return reduce(self); },
+      py::arg("protocol"), "Pickle support (every protocol): (copyreg.__newobj__, (cls,), state).");
+  cls.def("__reduce__", reduce, "Pickle support: (copyreg.__newobj__, (cls,), state).");
+}
+
+/// A numpy array as a one-line string with numpy's print options:
+/// "[[1., 0., 0.], [0., 1., 0.], [0., 0., 1.]]".
+inline std::string array_repr(const py::array& a) {
+  static PyObject* array2string = numpy_attr("array2string");
+  std::string s = py::str(py::reinterpret_borrow<py::object>(array2string)(a, py::arg("separator") = ", "));
+  std::string out;
+  out.reserve(s.size());
+  bool after_newline = false;
+  for (char c : s) {
+    if (c == '\n') {
+      out += ' ';
+      after_newline = true;
+    } else if (after_newline && c == ' ') {
+      continue;  // the indentation numpy puts after a row break
+    } else {
+      out += c;
+      after_newline = false;
+    }
+  }
+  return out;
+}
+
+/// A tuple of Python floats (exact: a float is a double) from m, row-major.
+template <typename Derived>
+inline py::tuple float_tuple(const Eigen::MatrixBase<Derived>& m) {
+  py::tuple t(m.size());
+  Eigen::Index k = 0;
+  for (Eigen::Index i = 0; i < m.rows(); ++i)
+    for (Eigen::Index j = 0; j < m.cols(); ++j) t[k++] = py::float_(m(i, j));
+  return t;
+}
+
+/// Reads `n` Python floats from a pickled state tuple, starting at `offset`.
+inline void read_state(const py::tuple& t, py::ssize_t offset, py::ssize_t n, double* out, const char* cls) {
+  for (py::ssize_t k = 0; k < n; ++k) {
+    PyObject* x = PyTuple_GET_ITEM(t.ptr(), offset + k);
+    if (!PyFloat_Check(x))
+      raise_type_error(std::string(cls) + ".__setstate__: expected a tuple of floats, got " +
+                       type_name(py::handle(x)) + " at position " + std::to_string(offset + k));
+    out[k] = PyFloat_AS_DOUBLE(x);
+  }
+}
+
+/// The state tuple of __setstate__, checked for its length.
+inline py::tuple state_tuple(py::handle state, py::ssize_t n, const char* cls) {
+  if (!PyTuple_Check(state.ptr()) || PyTuple_GET_SIZE(state.ptr()) != n)
+    raise_value_error(std::string(cls) + ".__setstate__: expected a tuple of " + std::to_string(n) + " floats");
+  return py::reinterpret_borrow<py::tuple>(state);
+}
+
+}  // namespace chasles_py
