@@ -1,5 +1,93 @@
-"""chasles: Lie groups of rigid-body motion."""
+"""chasles: Lie groups of rigid-body motion, SO(3) and SE(3), with twists,
+wrenches and screws, over the C++ headers of the same name.
 
-from chasles._core import __version__
+Two layers over the same C++ kernels:
 
-__all__ = ["__version__"]
+- objects for one element: ``SO3``, ``SE3``, ``Twist``, ``Wrench`` and
+  ``Screw``, with ``@`` for composition and action (``g @ h``, ``g @ p``);
+- array functions for batches, broadcasting over leading axes like
+  ``numpy.linalg``: ``so3_exp``, ``se3_log``, ``se3_compose``, ...
+
+Conventions (the same in C++, in README.md and in every docstring):
+
+- twists xi = (v, w), linear part first (Murray, Li and Sastry); the Modern
+  Robotics order (w, v) only through ``Twist.to_modern_robotics`` /
+  ``Twist.from_modern_robotics``;
+- wrenches F = (f, tau), force first, so power is the dot product V . F;
+- g_ab maps frame b to frame a; twists change frame by
+  Ad_g = [[R, [p]R], [0, R]], wrenches by Ad_g^-T;
+- quaternions are (x, y, z, w), scalar last, as in scipy
+  (``scalar_first=True`` for (w, x, y, z)); angles are in radians.
+
+Example:
+    >>> import numpy as np
+    >>> import chasles
+    >>> g = chasles.SE3.from_screw([0.0, 2.0, 0.0], [0.0, 0.0, 1.0], 0.0, np.pi / 2)
+    >>> np.round(g @ [0.0, 2.0, 5.0], 12) + 0.0
+    array([0., 2., 5.])
+
+``python -m chasles`` runs a demo: the worked screw-motion example of the
+documentation and the screw of a random rigid motion.
+"""
+
+from chasles._core import (
+    SE3,
+    SO3,
+    Screw,
+    Twist,
+    Wrench,
+    __version__,
+    interpolate,
+    se3_act,
+    se3_act_twist,
+    se3_act_wrench,
+    se3_adjoint,
+    se3_compose,
+    se3_exp,
+    se3_interpolate,
+    se3_inverse,
+    se3_log,
+    so3_act,
+    so3_as_quat,
+    so3_compose,
+    so3_exp,
+    so3_from_quat,
+    so3_hat,
+    so3_interpolate,
+    so3_inverse,
+    so3_log,
+    so3_vee,
+    twist_hat,
+    twist_vee,
+)
+
+__all__ = [
+    "SE3",
+    "SO3",
+    "Screw",
+    "Twist",
+    "Wrench",
+    "__version__",
+    "interpolate",
+    "se3_act",
+    "se3_act_twist",
+    "se3_act_wrench",
+    "se3_adjoint",
+    "se3_compose",
+    "se3_exp",
+    "se3_interpolate",
+    "se3_inverse",
+    "se3_log",
+    "so3_act",
+    "so3_as_quat",
+    "so3_compose",
+    "so3_exp",
+    "so3_from_quat",
+    "so3_hat",
+    "so3_interpolate",
+    "so3_inverse",
+    "so3_log",
+    "so3_vee",
+    "twist_hat",
+    "twist_vee",
+]
