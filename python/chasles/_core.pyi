@@ -1,0 +1,2106 @@
+"""
+chasles C++ kernels (use the chasles package, which re-exports them).
+"""
+from __future__ import annotations
+import collections.abc
+import numpy
+import numpy.typing
+import typing
+__all__: list[str] = ['SE3', 'SO3', 'Screw', 'Twist', 'Wrench', 'interpolate', 'se3_act', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_exp', 'se3_interpolate', 'se3_inverse', 'se3_log', 'so3_act', 'so3_as_quat', 'so3_compose', 'so3_exp', 'so3_from_quat', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee', 'twist_hat', 'twist_vee']
+class SO3:
+    """
+    A rotation of R^3: an element of SO(3), stored as its 3x3 matrix (float64).
+    
+    ``R_ab`` maps coordinates in frame b to frame a: ``p_a = R_ab @ p_b``; its
+    columns are b's axes written in a. Composition follows the frames:
+    ``R_ac = R_ab @ R_bc``. The tangent space is R^3 (angular velocity, rotation
+    vector w), with ``hat(w) @ p = w x p``.
+    
+    Build one with ``SO3()`` / ``SO3.identity()``, ``SO3.exp(w)``,
+    ``SO3.from_quat(q)`` or from a matrix in one of three explicit forms:
+    ``from_matrix`` (checked: refuses a matrix that is not a rotation and says by
+    how much), ``from_matrix_projected`` (the nearest rotation) and
+    ``from_matrix_unchecked`` (no check, for data known to be valid).
+    
+    Example:
+        >>> R = SO3.exp([0.0, 0.0, np.pi / 2])
+        >>> np.round(R @ [1.0, 0.0, 0.0], 12) + 0.0
+        array([0., 1., 0.])
+        >>> np.allclose(R.inverse() @ R @ [1.0, 2.0, 3.0], [1.0, 2.0, 3.0])
+        True
+    
+    Conventions (the same in C++, in README.md and in every docstring):
+        - twists xi = (v, w), linear part first (Murray, Li and Sastry); the
+          Modern Robotics order (w, v) only through Twist.to_modern_robotics /
+          Twist.from_modern_robotics;
+        - wrenches F = (f, tau), force first, so power is the dot product V . F;
+        - g_ab maps frame b to frame a: q_a = g_ab q_b, g_ac = g_ab @ g_bc;
+          twists change frame by Ad_g = [[R, [p]R], [0, R]], wrenches by Ad_g^-T;
+        - hat(w) = [w] with [w] p = w x p; [xi] = [[ [w], v ], [0, 0]];
+        - quaternions are (x, y, z, w), scalar last, as in scipy; pass
+          scalar_first=True for (w, x, y, z); angles are in radians.
+    
+    Values are float64 and immutable. ``==`` is not defined (it is object
+    identity): compare with ``is_approx(other, tol)``. Objects pickle and copy
+    bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
+    """
+    __array_ufunc__ = None
+    @staticmethod
+    def exp(w: numpy.typing.ArrayLike) -> SO3:
+        """
+        The rotation exp([w]) of a rotation vector, by Rodrigues' formula.
+        
+        R = I + (sin theta / theta) [w] + ((1 - cos theta) / theta^2) [w]^2 with
+        theta = |w|, exact to a few ulps for every w (Taylor series near 0).
+        
+        Args:
+            w: rotation vector, shape (3,): unit axis times angle in radians.
+        
+        Returns:
+            SO3: exp([w]).
+        
+        Raises:
+            ValueError: w is not of shape (3,), or not finite.
+            TypeError: w is not real (complex, object, str, None).
+        
+        Example:
+            >>> R = SO3.exp([0.0, 0.0, np.pi / 2])
+            >>> np.round(R.as_matrix(), 12) + 0.0
+            array([[ 0., -1.,  0.],
+                   [ 1.,  0.,  0.],
+                   [ 0.,  0.,  1.]])
+        """
+    @staticmethod
+    def from_matrix(matrix: numpy.typing.ArrayLike, tol: float = 1.4901161193847656e-08) -> SO3:
+        """
+        Checked construction from a rotation matrix.
+        
+        Accepts M when its rotation defect max(|M^T M - I|_max, |det M - 1|) is at
+        most tol (default sqrt(eps) = 1.49e-08: data printed with about 9 significant
+        digits passes). Keeps M as it is (no projection).
+        
+        Args:
+            matrix: shape (3, 3), finite.
+            tol: the largest accepted defect.
+        
+        Returns:
+            SO3: the rotation M.
+        
+        Raises:
+            ValueError: M is not a rotation within tol (the message gives the defect
+                and det M; use ``SO3.from_matrix_projected`` for the nearest
+                rotation), or M is not finite, or not of shape (3, 3).
+        
+        Example:
+            >>> R = SO3.from_matrix([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+            >>> np.round(R.log(), 12) + 0.0
+            array([0.        , 0.        , 1.57079633])
+        """
+    @staticmethod
+    def from_matrix_projected(matrix: numpy.typing.ArrayLike) -> SO3:
+        """
+        The rotation nearest to a matrix in the Frobenius norm.
+        
+        For det M > 0 this is the orthogonal polar factor; it is defined for every
+        finite M, reflections and singular matrices included.
+        
+        Args:
+            matrix: shape (3, 3), finite.
+        
+        Returns:
+            SO3: the nearest rotation.
+        
+        Example:
+            >>> M = SO3.exp([0.1, 0.2, 0.3]).as_matrix() + 1e-4
+            >>> SO3.from_matrix_projected(M).is_approx(SO3.exp([0.1, 0.2, 0.3]), tol=1e-3)
+            True
+        """
+    @staticmethod
+    def from_matrix_unchecked(matrix: numpy.typing.ArrayLike) -> SO3:
+        """
+        Construction without a check, for data known to be a rotation.
+        
+        Only the shape and finiteness are checked. Operations on an SO3 built from a
+        matrix that is not a rotation give meaningless results.
+        
+        Args:
+            matrix: shape (3, 3), finite.
+        
+        Returns:
+            SO3: the matrix as it is.
+        """
+    @staticmethod
+    def from_quat(quat: numpy.typing.ArrayLike, *, scalar_first: bool = False) -> SO3:
+        """
+        The rotation of a quaternion of any nonzero norm (it is normalized).
+        
+        Args:
+            quat: shape (4,): (x, y, z, w), scalar last, as in scipy; or
+                (w, x, y, z) with scalar_first=True. Finite and nonzero.
+            scalar_first: whether the scalar part comes first.
+        
+        Returns:
+            SO3: the rotation.
+        
+        Raises:
+            ValueError: the zero quaternion, a non-finite one, or a wrong shape.
+        
+        Example:
+            >>> s = np.sqrt(0.5)
+            >>> np.round(SO3.from_quat([0.0, 0.0, s, s]).log(), 12) + 0.0
+            array([0.        , 0.        , 1.57079633])
+            >>> SO3.from_quat([1.0, 0.0, 0.0, 0.0], scalar_first=True).is_approx(SO3())
+            True
+        """
+    @staticmethod
+    def hat(w: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The skew-symmetric matrix [w] of w, so that [w] @ p = w x p.
+        
+        Args:
+            w: vector, shape (3,).
+        
+        Returns:
+            ndarray: [w] = [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]], shape (3, 3).
+        
+        Example:
+            >>> SO3.hat([1.0, 2.0, 3.0])
+            array([[ 0., -3.,  2.],
+                   [ 3.,  0., -1.],
+                   [-2.,  1.,  0.]])
+        """
+    @staticmethod
+    def identity() -> SO3:
+        """
+        The identity rotation.
+        
+        Returns:
+            SO3: the identity.
+        
+        Example:
+            >>> SO3.identity().is_approx(SO3.exp([0.0, 0.0, 0.0]))
+            True
+        """
+    @staticmethod
+    def interpolate(a: SO3, b: SO3, t: float) -> SO3:
+        """
+        Geodesic interpolation a exp(t log(a^-1 b)).
+        
+        t = 0 gives a, t = 1 gives b; in between, the rotation about one fixed axis
+        (slerp). Values outside [0, 1] extrapolate.
+        
+        Args:
+            a: SO3, the start.
+            b: SO3, the end.
+            t: the fraction, finite.
+        
+        Returns:
+            SO3: the interpolated rotation.
+        
+        Example:
+            >>> a, b = SO3(), SO3.exp([0.0, 0.0, 1.0])
+            >>> np.round(SO3.interpolate(a, b, 0.25).log(), 12) + 0.0
+            array([0.  , 0.  , 0.25])
+        """
+    @staticmethod
+    def rotation_defect(matrix: numpy.typing.ArrayLike) -> float:
+        """
+        How far a matrix is from a rotation: max(|M^T M - I|_max, |det M - 1|).
+        
+        0 for a rotation, about 2d for a rotation whose entries are off by d, 2 for
+        a reflection, inf for a matrix that is not finite.
+        
+        Args:
+            matrix: shape (3, 3).
+        
+        Returns:
+            float: the defect.
+        
+        Example:
+            >>> SO3.rotation_defect(np.diag([1.0, 1.0, -1.0]))
+            2.0
+        """
+    @staticmethod
+    def vee(matrix: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The vector w of a skew-symmetric matrix [w]: the inverse of hat.
+        
+        Reads the antisymmetric part (W - W^T)/2, so a matrix that is not exactly
+        skew gives the w of its nearest skew matrix.
+        
+        Args:
+            matrix: shape (3, 3).
+        
+        Returns:
+            ndarray: w, shape (3,).
+        
+        Example:
+            >>> SO3.vee(SO3.hat([1.0, 2.0, 3.0]))
+            array([1., 2., 3.])
+        """
+    def __array__(self, dtype: numpy.typing.DTypeLike = None, copy: bool | None = None) -> numpy.ndarray:
+        """
+        The rotation matrix, shape (3, 3), for np.asarray (numpy's dtype and copy keywords).
+        """
+    def __copy__(self) -> SO3:
+        ...
+    def __deepcopy__(self, memo: typing.Any) -> SO3:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self) -> None:
+        """
+        The identity rotation.
+        
+        Example:
+            >>> SO3().as_matrix()
+            array([[1., 0., 0.],
+                   [0., 1., 0.],
+                   [0., 0., 1.]])
+        """
+    @typing.overload
+    def __matmul__(self, other: SO3) -> SO3:
+        """
+        Composition: R_ab @ R_bc = R_ac.
+        
+        Args:
+            other: SO3.
+        
+        Returns:
+            SO3: the composed rotation.
+        """
+    @typing.overload
+    def __matmul__(self, points: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        Action on points or vectors: p_a = R_ab @ p_b.
+        
+        Args:
+            points: shape (3,) or (N, 3) (any leading axes).
+        
+        Returns:
+            ndarray: the rotated points, same shape.
+        """
+    def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support: (copyreg.__newobj__, (cls,), state).
+        """
+    def __reduce_ex__(self, protocol: typing.SupportsInt | typing.SupportsIndex) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support (every protocol): (copyreg.__newobj__, (cls,), state).
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: typing.Any) -> None:
+        ...
+    def act(self, points: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        Action on points or vectors: p_a = R_ab p_b (the same as ``R @ points``).
+        
+        Args:
+            points: shape (3,) or (N, 3) (any leading axes).
+        
+        Returns:
+            ndarray: the rotated points, same shape, float64.
+        
+        Example:
+            >>> R = SO3.exp([0.0, 0.0, np.pi])
+            >>> np.round(R.act([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]), 12) + 0.0
+            array([[-1.,  0.,  0.],
+                   [ 0.,  0.,  1.]])
+        """
+    def adjoint(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The adjoint Ad_R = R (3x3), so that R exp([w]) R^T = exp([R w]).
+        
+        Returns:
+            ndarray: shape (3, 3).
+        """
+    def as_matrix(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The rotation matrix.
+        
+        Returns:
+            ndarray: R, shape (3, 3), float64 (a new array).
+        """
+    def as_quat(self, *, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The unit quaternion of the rotation (Shepperd's method).
+        
+        q and -q are the same rotation; the sign returned makes the component of
+        largest magnitude positive.
+        
+        Args:
+            scalar_first: False (default) for (x, y, z, w), as in scipy; True for
+                (w, x, y, z).
+        
+        Returns:
+            ndarray: shape (4,), unit norm.
+        
+        Example:
+            >>> SO3().as_quat()
+            array([0., 0., 0., 1.])
+            >>> SO3().as_quat(scalar_first=True)
+            array([1., 0., 0., 0.])
+        """
+    def inverse(self) -> SO3:
+        """
+        The inverse rotation R^-1 = R^T.
+        
+        Returns:
+            SO3: R^T.
+        
+        Example:
+            >>> R = SO3.exp([0.3, 0.2, 0.1])
+            >>> (R @ R.inverse()).is_approx(SO3.identity())
+            True
+        """
+    def is_approx(self, other: SO3, tol: float = 1e-09) -> bool:
+        """
+        Whether two rotations are equal within tol: max |R_a - R_b| <= tol.
+        
+        ``==`` is deliberately not defined (it is object identity).
+        
+        Args:
+            other: SO3.
+            tol: the largest accepted difference of matrix entries (>= 0).
+        
+        Returns:
+            bool.
+        """
+    def log(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The rotation vector w with exp([w]) = R and |w| in [0, pi].
+        
+        At exactly pi both axis signs are correct; one of them is returned, never
+        NaN. Accurate to a few ulps, and to O(d) for a matrix off SO(3) by d.
+        
+        Returns:
+            ndarray: w, shape (3,), float64.
+        
+        Example:
+            >>> SO3.exp([0.1, -0.2, 0.3]).log()
+            array([ 0.1, -0.2,  0.3])
+        """
+    def normalized(self) -> SO3:
+        """
+        The nearest rotation to the stored matrix.
+        
+        Removes the drift that accumulates over many compositions.
+        
+        Returns:
+            SO3: the projected rotation.
+        """
+class SE3:
+    """
+    A rigid motion of R^3: an element of SE(3), stored as a rotation R (an SO3)
+    and a translation p (float64). Its 4x4 matrix is g = [[R, p], [0, 1]].
+    
+    ``g_ab`` maps coordinates in frame b to frame a: ``q_a = R_ab q_b + p_ab``
+    (``g @ q``), and composes along the frames: ``g_ac = g_ab @ g_bc``. The
+    tangent space is the space of twists xi = (v, w), linear part first (Murray,
+    Li and Sastry); exp([xi]) is the screw motion of Chasles' theorem. Twists
+    change frame by Ad_g = [[R, [p] R], [0, R]] (``g.act(twist)``); wrenches by
+    Ad_g^-T (``g.act(wrench)``), so power is invariant.
+    
+    Example:
+        >>> g = SE3(SO3.exp([0.0, 0.0, np.pi / 2]), [1.0, 2.0, 3.0])
+        >>> np.round(g @ [1.0, 0.0, 0.0], 12) + 0.0
+        array([1., 3., 3.])
+        >>> SE3.exp(g.log()).is_approx(g)
+        True
+    
+    Conventions (the same in C++, in README.md and in every docstring):
+        - twists xi = (v, w), linear part first (Murray, Li and Sastry); the
+          Modern Robotics order (w, v) only through Twist.to_modern_robotics /
+          Twist.from_modern_robotics;
+        - wrenches F = (f, tau), force first, so power is the dot product V . F;
+        - g_ab maps frame b to frame a: q_a = g_ab q_b, g_ac = g_ab @ g_bc;
+          twists change frame by Ad_g = [[R, [p]R], [0, R]], wrenches by Ad_g^-T;
+        - hat(w) = [w] with [w] p = w x p; [xi] = [[ [w], v ], [0, 0]];
+        - quaternions are (x, y, z, w), scalar last, as in scipy; pass
+          scalar_first=True for (w, x, y, z); angles are in radians.
+    
+    Values are float64 and immutable. ``==`` is not defined (it is object
+    identity): compare with ``is_approx(other, tol)``. Objects pickle and copy
+    bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
+    """
+    __array_ufunc__ = None
+    @staticmethod
+    def exp(xi: numpy.typing.ArrayLike) -> SE3:
+        """
+        The screw motion exp([xi]) of a twist xi = (v, w), linear part first.
+        
+        In closed form, with theta = |w|: R = exp([w]), p = V v,
+        V = I + ((1 - cos theta) / theta^2) [w] + ((theta - sin theta) / theta^3) [w]^2;
+        w = 0 (pure translation) and tiny w included, exact to a few ulps.
+        
+        Args:
+            xi: twist coordinates (v, w), shape (6,), finite; or a Twist.
+        
+        Returns:
+            SE3: exp([xi]).
+        
+        Example:
+            >>> g = SE3.exp([1.0, 0.0, 0.0, 0.0, 0.0, np.pi / 2])
+            >>> np.round(g.translation(), 12) + 0.0
+            array([0.63661977, 0.63661977, 0.        ])
+        """
+    @staticmethod
+    def from_matrix(matrix: numpy.typing.ArrayLike, tol: float = 1.4901161193847656e-08) -> SE3:
+        """
+        Checked construction from a 4x4 homogeneous matrix [[R, p], [0, 1]].
+        
+        Accepts M when the rotation defect of its top-left block,
+        max(|R^T R - I|_max, |det R - 1|), and the deviation of its bottom row from
+        (0, 0, 0, 1) are both at most tol (default sqrt(eps) = 1.49e-08).
+        
+        Args:
+            matrix: shape (4, 4), finite.
+            tol: the largest accepted defect.
+        
+        Returns:
+            SE3: the motion.
+        
+        Raises:
+            ValueError: M is not a rigid motion within tol (the message gives both
+                defects; use ``SE3.from_matrix_projected`` for the nearest rotation),
+                or M is not finite, or not of shape (4, 4).
+        
+        Example:
+            >>> SE3.from_matrix(np.eye(4)).is_approx(SE3())
+            True
+        """
+    @staticmethod
+    def from_matrix_projected(matrix: numpy.typing.ArrayLike) -> SE3:
+        """
+        The nearest rotation to the top-left block, and the translation column.
+        
+        The bottom row is not read.
+        
+        Args:
+            matrix: shape (4, 4), finite.
+        
+        Returns:
+            SE3: the projected motion.
+        """
+    @staticmethod
+    def from_matrix_unchecked(matrix: numpy.typing.ArrayLike) -> SE3:
+        """
+        Construction without a check from [[R, p], [*, *]], for valid data.
+        
+        Only the shape and finiteness are checked; the bottom row is not read.
+        
+        Args:
+            matrix: shape (4, 4), finite.
+        
+        Returns:
+            SE3: the motion.
+        """
+    @staticmethod
+    def from_screw(point: numpy.typing.ArrayLike, direction: numpy.typing.ArrayLike, pitch: float, theta: float) -> SE3:
+        """
+        The screw motion about an axis: exp(theta * (-d x q + h d, d)).
+        
+        Rotates by theta about the line through q along d (normalized here) while
+        translating by h * theta along it; pitch = inf is the pure translation
+        theta * d. A zero direction gives the identity (the screw of the zero
+        twist).
+        
+        Args:
+            point: q, a point of the axis, shape (3,).
+            direction: d, the axis direction, shape (3,) (any nonzero length).
+            pitch: h, translation per radian; ``math.inf`` for a translation.
+            theta: the rotation angle in radians (the distance for pitch = inf).
+        
+        Returns:
+            SE3: the screw motion.
+        
+        Example:
+            >>> g = SE3.from_screw([0.0, 2.0, 0.0], [0.0, 0.0, 1.0], 0.0, np.pi / 2)
+            >>> np.round(g.translation(), 12) + 0.0
+            array([2., 2., 0.])
+            >>> np.round(g @ [0.0, 2.0, 5.0], 12) + 0.0
+            array([0., 2., 5.])
+        """
+    @staticmethod
+    def hat(xi: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The 4x4 matrix [xi] = [[ [w], v ], [0, 0]] of a twist xi = (v, w).
+        
+        Args:
+            xi: shape (6,), (v, w).
+        
+        Returns:
+            ndarray: shape (4, 4).
+        
+        Example:
+            >>> SE3.hat([1.0, 2.0, 3.0, 0.0, 0.0, 1.0])
+            array([[ 0., -1.,  0.,  1.],
+                   [ 1.,  0.,  0.,  2.],
+                   [ 0.,  0.,  0.,  3.],
+                   [ 0.,  0.,  0.,  0.]])
+        """
+    @staticmethod
+    def identity() -> SE3:
+        """
+        The identity motion.
+        
+        Returns:
+            SE3: the identity.
+        """
+    @staticmethod
+    def interpolate(a: SE3, b: SE3, t: float) -> SE3:
+        """
+        Geodesic (screw) interpolation a exp(t log(a^-1 b)).
+        
+        t = 0 gives a, t = 1 gives b, and the motion in between is one screw motion.
+        
+        Args:
+            a: SE3, the start.
+            b: SE3, the end.
+            t: the fraction, finite.
+        
+        Returns:
+            SE3: the interpolated motion.
+        
+        Example:
+            >>> a, b = SE3(), SE3(translation=[2.0, 0.0, 0.0])
+            >>> SE3.interpolate(a, b, 0.5).translation()
+            array([1., 0., 0.])
+        """
+    @staticmethod
+    def transform_defect(matrix: numpy.typing.ArrayLike) -> float:
+        """
+        How far a 4x4 matrix is from a rigid motion.
+        
+        The rotation defect of its top-left block (SO3.rotation_defect) or the
+        largest deviation of its bottom row from (0, 0, 0, 1), whichever is larger.
+        
+        Args:
+            matrix: shape (4, 4).
+        
+        Returns:
+            float: the defect.
+        """
+    @staticmethod
+    def vee(matrix: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The twist (v, w) of a 4x4 matrix [[S, v], [*, *]]: the inverse of hat.
+        
+        w is read from the antisymmetric part of S; the bottom row is ignored.
+        
+        Args:
+            matrix: shape (4, 4).
+        
+        Returns:
+            ndarray: xi = (v, w), shape (6,).
+        """
+    def __array__(self, dtype: numpy.typing.DTypeLike = None, copy: bool | None = None) -> numpy.ndarray:
+        """
+        The homogeneous matrix, shape (4, 4), for np.asarray (numpy's dtype and copy keywords).
+        """
+    def __copy__(self) -> SE3:
+        ...
+    def __deepcopy__(self, memo: typing.Any) -> SE3:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, rotation: SO3 = ..., translation: numpy.typing.ArrayLike = (0.0, 0.0, 0.0)) -> None:
+        """
+        The rigid motion g = [[R, p], [0, 1]] of a rotation and a translation.
+        
+        Args:
+            rotation: SO3, R (default: the identity).
+            translation: shape (3,), p, finite (default: 0).
+        
+        Example:
+            >>> SE3(translation=[1.0, 2.0, 3.0]).translation()
+            array([1., 2., 3.])
+        """
+    @typing.overload
+    def __matmul__(self, other: SE3) -> SE3:
+        """
+        Composition: g_ab @ g_bc = g_ac.
+        
+        Args:
+            other: SE3.
+        
+        Returns:
+            SE3: the composed motion.
+        """
+    @typing.overload
+    def __matmul__(self, points: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        Action on points: q_a = R q_b + p.
+        
+        Args:
+            points: shape (3,) or (N, 3) (any leading axes).
+        
+        Returns:
+            ndarray: the moved points, same shape.
+        """
+    def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support: (copyreg.__newobj__, (cls,), state).
+        """
+    def __reduce_ex__(self, protocol: typing.SupportsInt | typing.SupportsIndex) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support (every protocol): (copyreg.__newobj__, (cls,), state).
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: typing.Any) -> None:
+        ...
+    @typing.overload
+    def act(self, twist: Twist) -> Twist:
+        """
+        A twist from frame b to frame a: xi_a = Ad_g xi_b = (R v + p x R w, R w).
+        
+        Args:
+            twist: Twist, xi_b.
+        
+        Returns:
+            Twist: xi_a.
+        """
+    @typing.overload
+    def act(self, wrench: Wrench) -> Wrench:
+        """
+        A wrench from frame b to frame a: F_a = Ad_g^-T F_b = (R f, p x R f + R tau).
+        
+        Args:
+            wrench: Wrench, F_b.
+        
+        Returns:
+            Wrench: F_a.
+        """
+    @typing.overload
+    def act(self, points: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        Action on points: q_a = R q_b + p (the same as ``g @ points``).
+        
+        Args:
+            points: shape (3,) or (N, 3) (any leading axes).
+        
+        Returns:
+            ndarray: the moved points, same shape, float64.
+        
+        Example:
+            >>> g = SE3(translation=[1.0, 0.0, 0.0])
+            >>> g.act([[0.0, 0.0, 0.0], [1.0, 1.0, 1.0]])
+            array([[1., 0., 0.],
+                   [2., 1., 1.]])
+        """
+    @typing.overload
+    def act_inv(self, twist: Twist) -> Twist:
+        """
+        A twist from frame a to frame b: xi_b = Ad_g^-1 xi_a = (R^T (v - p x w), R^T w).
+        
+        Args:
+            twist: Twist, xi_a.
+        
+        Returns:
+            Twist: xi_b.
+        """
+    @typing.overload
+    def act_inv(self, wrench: Wrench) -> Wrench:
+        """
+        A wrench from frame a to frame b: F_b = Ad_g^T F_a = (R^T f, R^T (tau - p x f)).
+        
+        Args:
+            wrench: Wrench, F_a.
+        
+        Returns:
+            Wrench: F_b.
+        """
+    @typing.overload
+    def act_inv(self, points: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        Inverse action on points: q_b = R^T (q_a - p), i.e. g^-1 @ q_a.
+        
+        Args:
+            points: shape (3,) or (N, 3) (any leading axes).
+        
+        Returns:
+            ndarray: same shape.
+        """
+    def adjoint(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The adjoint Ad_g = [[R, [p] R], [0, R]] (6x6, Murray-Li-Sastry order).
+        
+        g [xi] g^-1 = [Ad_g xi]: twists change frame by xi_a = Ad_g xi_b; wrenches
+        by F_b = Ad_g^T F_a.
+        
+        Returns:
+            ndarray: shape (6, 6).
+        """
+    def as_matrix(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The homogeneous matrix g = [[R, p], [0, 1]].
+        
+        Returns:
+            ndarray: shape (4, 4), float64 (a new array).
+        """
+    def inverse(self) -> SE3:
+        """
+        The inverse motion g^-1 = [[R^T, -R^T p], [0, 1]].
+        
+        Returns:
+            SE3: g^-1.
+        
+        Example:
+            >>> g = SE3.exp([0.1, 0.2, 0.3, 0.4, 0.5, 0.6])
+            >>> (g @ g.inverse()).is_approx(SE3.identity())
+            True
+        """
+    def is_approx(self, other: SE3, tol: float = 1e-09) -> bool:
+        """
+        Whether two motions are equal within tol.
+        
+        Rotation matrices within tol (absolute), translations within
+        tol * max(1, |p|_max) (relative beyond unit scale). ``==`` is deliberately
+        not defined (it is object identity).
+        
+        Args:
+            other: SE3.
+            tol: the tolerance (>= 0).
+        
+        Returns:
+            bool.
+        """
+    def log(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The twist xi = (v, w) with exp([xi]) = g, rotation angle |w| in [0, pi].
+        
+        w = log(R); v = V^-1 p. At a rotation angle of exactly pi either axis sign is
+        returned, never NaN.
+        
+        Returns:
+            ndarray: xi = (v, w), shape (6,), linear part first.
+        
+        Example:
+            >>> SE3(translation=[1.0, 2.0, 3.0]).log()
+            array([1., 2., 3., 0., 0., 0.])
+        """
+    def normalized(self) -> SE3:
+        """
+        The same motion with the nearest rotation (removes drift).
+        
+        Returns:
+            SE3: the projected motion.
+        """
+    def rotation(self) -> SO3:
+        """
+        The rotation R.
+        
+        Returns:
+            SO3: R.
+        """
+    def translation(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The translation p.
+        
+        Returns:
+            ndarray: p, shape (3,).
+        """
+class Screw:
+    """
+    A screw: a directed line in space (through ``point``, along the unit
+    ``direction``), a ``pitch`` and a ``magnitude``.
+    
+    For a twist it is Chasles' screw motion: rotate by ``magnitude`` about the
+    line while translating ``pitch * magnitude`` along it; pitch = inf is a pure
+    translation of length ``magnitude`` along ``direction``. For a wrench it is
+    Poinsot's wrench: a force of size ``magnitude`` along the line plus a torque
+    ``pitch * magnitude`` about it; pitch = inf is a pure couple. ``point`` is
+    the point of the line nearest the origin (0 for infinite pitch). The zero
+    twist or wrench has magnitude 0, pitch 0, direction 0.
+    
+    A Screw unpacks as ``point, direction, pitch, magnitude = screw``, so
+    ``SE3.from_screw(*twist.screw())`` rebuilds the motion.
+    
+    Example:
+        >>> s = Twist(v=[2.0, 0.0, 0.0], w=[0.0, 0.0, 1.0]).screw()
+        >>> s.point, s.direction, s.pitch, s.magnitude
+        (array([0., 2., 0.]), array([0., 0., 1.]), 0.0, 1.0)
+    """
+    def __copy__(self) -> Screw:
+        ...
+    def __deepcopy__(self, memo: typing.Any) -> Screw:
+        ...
+    def __getstate__(self) -> tuple[float, float, float, float, float, float, float, float]:
+        ...
+    def __init__(self, point: numpy.typing.ArrayLike, direction: numpy.typing.ArrayLike, pitch: float, magnitude: float) -> None:
+        """
+        A screw from its parameters (stored as given).
+        
+        Args:
+            point: a point of the axis, shape (3,), finite.
+            direction: the axis direction, shape (3,), finite (unit length by
+                convention; from_screw normalizes it).
+            pitch: translation (or torque) per unit of magnitude; inf allowed.
+            magnitude: rotation angle (twist) or force size (wrench), finite.
+        """
+    def __iter__(self) -> collections.abc.Iterator:
+        ...
+    def __len__(self) -> int:
+        ...
+    def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support: (copyreg.__newobj__, (cls,), state).
+        """
+    def __reduce_ex__(self, protocol: typing.SupportsInt | typing.SupportsIndex) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support (every protocol): (copyreg.__newobj__, (cls,), state).
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: typing.Any) -> None:
+        ...
+    def is_approx(self, other: Screw, tol: float = 1e-09) -> bool:
+        """
+        Whether two screws have the same parameters within tol (relative beyond unit scale).
+        
+        Args:
+            other: Screw.
+            tol: the tolerance (>= 0).
+        
+        Returns:
+            bool.
+        """
+    @property
+    def direction(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        ndarray: the unit direction of the axis, shape (3,).
+        """
+    @property
+    def magnitude(self) -> float:
+        """
+        float: the magnitude.
+        """
+    @property
+    def pitch(self) -> float:
+        """
+        float: the pitch (inf for a translation or a couple).
+        """
+    @property
+    def point(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        ndarray: the point of the axis nearest the origin, shape (3,).
+        """
+class Twist:
+    """
+    A twist xi = (v, w) in se(3): linear part first, angular part second
+    (Murray, Li and Sastry's order; Modern Robotics writes (w, v), see
+    ``to_modern_robotics``). Its 4x4 matrix is [xi] = [[ [w], v ], [0, 0]].
+    
+    A twist is a velocity (spatial: (g' g^-1)^vee, body: (g^-1 g')^vee) or,
+    scaled by theta, exponential coordinates of a rigid motion: SE3.exp(xi).
+    Twists change frame by the adjoint, xi_a = Ad_{g_ab} xi_b (``g.act(xi)``);
+    wrenches change frame by its inverse transpose. Twists add, subtract and
+    scale by real numbers.
+    
+    Example:
+        >>> xi = Twist(v=[1.0, 0.0, 0.0], w=[0.0, 0.0, 1.0])
+        >>> xi.vector
+        array([1., 0., 0., 0., 0., 1.])
+        >>> xi.to_modern_robotics()
+        array([0., 0., 1., 1., 0., 0.])
+    
+    Conventions (the same in C++, in README.md and in every docstring):
+        - twists xi = (v, w), linear part first (Murray, Li and Sastry); the
+          Modern Robotics order (w, v) only through Twist.to_modern_robotics /
+          Twist.from_modern_robotics;
+        - wrenches F = (f, tau), force first, so power is the dot product V . F;
+        - g_ab maps frame b to frame a: q_a = g_ab q_b, g_ac = g_ab @ g_bc;
+          twists change frame by Ad_g = [[R, [p]R], [0, R]], wrenches by Ad_g^-T;
+        - hat(w) = [w] with [w] p = w x p; [xi] = [[ [w], v ], [0, 0]];
+        - quaternions are (x, y, z, w), scalar last, as in scipy; pass
+          scalar_first=True for (w, x, y, z); angles are in radians.
+    
+    Values are float64 and immutable. ``==`` is not defined (it is object
+    identity): compare with ``is_approx(other, tol)``. Objects pickle and copy
+    bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
+    """
+    __array_ufunc__ = None
+    @staticmethod
+    def body(g: SE3, g_dot: numpy.typing.ArrayLike) -> Twist:
+        """
+        The body twist of a trajectory at (g, g'): V^b = (g^-1 g')^vee.
+        
+        w^b = (R^T R')^vee, v^b = R^T p'.
+        
+        Args:
+            g: SE3, the configuration.
+            g_dot: its time derivative, shape (4, 4).
+        
+        Returns:
+            Twist.
+        """
+    @staticmethod
+    def from_modern_robotics(wv: numpy.typing.ArrayLike) -> Twist:
+        """
+        The twist of a 6-vector in the Modern Robotics order (w, v).
+        
+        Args:
+            wv: shape (6,), angular part first.
+        
+        Returns:
+            Twist.
+        
+        Example:
+            >>> Twist.from_modern_robotics([0.0, 0.0, 1.0, 2.0, 0.0, 0.0]).vector
+            array([2., 0., 0., 0., 0., 1.])
+        """
+    @staticmethod
+    def from_screw(point: numpy.typing.ArrayLike, direction: numpy.typing.ArrayLike, pitch: float, theta: float) -> Twist:
+        """
+        The unit twist of a screw times theta: theta * (-d x q + h d, d).
+        
+        For the axis through q along d (normalized here), pitch h; with h = inf, the
+        translation theta * (d, 0). A zero direction gives the zero twist.
+        
+        Args:
+            point: q, shape (3,).
+            direction: d, shape (3,).
+            pitch: h; ``math.inf`` for a translation.
+            theta: the magnitude.
+        
+        Returns:
+            Twist.
+        
+        Example:
+            >>> Twist.from_screw([0.0, 1.0, 0.0], [0.0, 0.0, 1.0], 0.0, 1.0).vector
+            array([1., 0., 0., 0., 0., 1.])
+        """
+    @staticmethod
+    def from_vector(xi: numpy.typing.ArrayLike) -> Twist:
+        """
+        The twist of a 6-vector (v, w), linear part first.
+        
+        Args:
+            xi: shape (6,), finite.
+        
+        Returns:
+            Twist.
+        
+        Example:
+            >>> Twist.from_vector([1.0, 2.0, 3.0, 4.0, 5.0, 6.0]).angular
+            array([4., 5., 6.])
+        """
+    @staticmethod
+    def spatial(g: SE3, g_dot: numpy.typing.ArrayLike) -> Twist:
+        """
+        The spatial twist of a trajectory at (g, g'): V^s = (g' g^-1)^vee.
+        
+        w^s = (R' R^T)^vee, v^s = p' - w^s x p. V^s = Ad_g V^b.
+        
+        Args:
+            g: SE3, the configuration.
+            g_dot: its time derivative, shape (4, 4).
+        
+        Returns:
+            Twist.
+        """
+    @staticmethod
+    def vee(matrix: numpy.typing.ArrayLike) -> Twist:
+        """
+        The twist of a 4x4 matrix [[S, v], [*, *]]: v and the w of S's antisymmetric part.
+        
+        The bottom row is ignored.
+        
+        Args:
+            matrix: shape (4, 4), finite.
+        
+        Returns:
+            Twist.
+        """
+    def __add__(self, other: Twist) -> Twist:
+        ...
+    def __array__(self, dtype: numpy.typing.DTypeLike = None, copy: bool | None = None) -> numpy.ndarray:
+        """
+        The 6-vector, shape (6,), for np.asarray (numpy's dtype and copy keywords).
+        """
+    def __copy__(self) -> Twist:
+        ...
+    def __deepcopy__(self, memo: typing.Any) -> Twist:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, v: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), w: numpy.typing.ArrayLike = (0.0, 0.0, 0.0)) -> None:
+        """
+        The twist xi = (v, w) (the zero twist by default).
+        
+        Args:
+            v: linear part, shape (3,), finite.
+            w: angular part, shape (3,), finite.
+        """
+    def __mul__(self, scalar: float) -> Twist:
+        ...
+    def __neg__(self) -> Twist:
+        ...
+    def __pos__(self) -> Twist:
+        ...
+    def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support: (copyreg.__newobj__, (cls,), state).
+        """
+    def __reduce_ex__(self, protocol: typing.SupportsInt | typing.SupportsIndex) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support (every protocol): (copyreg.__newobj__, (cls,), state).
+        """
+    def __repr__(self) -> str:
+        ...
+    def __rmul__(self, scalar: float) -> Twist:
+        ...
+    def __setstate__(self, arg0: typing.Any) -> None:
+        ...
+    def __sub__(self, other: Twist) -> Twist:
+        ...
+    def __truediv__(self, scalar: float) -> Twist:
+        ...
+    def ad(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The adjoint of the algebra ad_xi = [[ [w], [v] ], [0, [w]]] (6x6).
+        
+        ad_xi eta = [xi, eta] (``xi.bracket(eta)``).
+        
+        Returns:
+            ndarray: shape (6, 6).
+        """
+    def bracket(self, other: Twist) -> Twist:
+        """
+        The Lie bracket [xi, eta] = ([xi][eta] - [eta][xi])^vee = (w1 x v2 + v1 x w2, w1 x w2).
+        
+        Args:
+            other: Twist, eta.
+        
+        Returns:
+            Twist.
+        """
+    def hat(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The 4x4 matrix [xi] = [[ [w], v ], [0, 0]].
+        
+        Returns:
+            ndarray: shape (4, 4).
+        """
+    def is_approx(self, other: Twist, tol: float = 1e-09) -> bool:
+        """
+        Whether two 6-vectors are equal within tol: max |x - y| <= tol * max(1, max |x|, max |y|).
+        
+        ``==`` is deliberately not defined (it is object identity).
+        
+        Args:
+            other: the same type.
+            tol: the tolerance (>= 0).
+        
+        Returns:
+            bool.
+        """
+    def power(self, wrench: Wrench) -> float:
+        """
+        The power V . F = v.f + w.tau of this twist on a wrench (same frame).
+        
+        Args:
+            wrench: Wrench, F.
+        
+        Returns:
+            float.
+        
+        Example:
+            >>> Twist(v=[1.0, 0.0, 0.0]).power(Wrench(f=[2.0, 0.0, 0.0]))
+            2.0
+        """
+    def screw(self) -> Screw:
+        """
+        The screw of the twist (Chasles).
+        
+        With w != 0: pitch w.v / |w|^2, axis through w x v / |w|^2 along w / |w|,
+        magnitude |w|; with w = 0: pitch inf, direction v / |v|, magnitude |v|.
+        
+        Returns:
+            Screw.
+        
+        Example:
+            >>> s = Twist(v=[0.0, 0.0, 0.5], w=[0.0, 0.0, 1.0]).screw()
+            >>> s.pitch, s.magnitude
+            (0.5, 1.0)
+        """
+    def to_modern_robotics(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The 6-vector in the Modern Robotics order (w, v), angular part first.
+        
+        Returns:
+            ndarray: shape (6,).
+        """
+    @property
+    def angular(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        ndarray: w, shape (3,).
+        """
+    @property
+    def linear(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        ndarray: v, shape (3,).
+        """
+    @property
+    def pitch(self) -> float:
+        """
+        float: w.v / |w|^2 (inf for w = 0, 0 for the zero twist).
+        """
+    @property
+    def vector(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        ndarray: the 6-vector (v, w), linear part first, shape (6,).
+        """
+class Wrench:
+    """
+    A wrench F = (f, tau): force first, torque second, so that the power of a
+    twist V = (v, w) on it is the plain dot product V . F = v.f + w.tau.
+    
+    Wrenches change frame by the transpose of the adjoint: F_b = Ad_{g_ab}^T F_a
+    (``g.act_inv(F)``), F_a = Ad_{g_ab}^-T F_b (``g.act(F)``), which is what keeps
+    the power V . F the same in every frame. Wrenches add, subtract and scale by
+    real numbers.
+    
+    Example:
+        >>> F = Wrench(f=[0.0, 0.0, -9.81], tau=[0.0, 0.0, 0.0])
+        >>> F.power(Twist(v=[0.0, 0.0, -1.0], w=[0.0, 0.0, 0.0]))
+        9.81
+    
+    Conventions (the same in C++, in README.md and in every docstring):
+        - twists xi = (v, w), linear part first (Murray, Li and Sastry); the
+          Modern Robotics order (w, v) only through Twist.to_modern_robotics /
+          Twist.from_modern_robotics;
+        - wrenches F = (f, tau), force first, so power is the dot product V . F;
+        - g_ab maps frame b to frame a: q_a = g_ab q_b, g_ac = g_ab @ g_bc;
+          twists change frame by Ad_g = [[R, [p]R], [0, R]], wrenches by Ad_g^-T;
+        - hat(w) = [w] with [w] p = w x p; [xi] = [[ [w], v ], [0, 0]];
+        - quaternions are (x, y, z, w), scalar last, as in scipy; pass
+          scalar_first=True for (w, x, y, z); angles are in radians.
+    
+    Values are float64 and immutable. ``==`` is not defined (it is object
+    identity): compare with ``is_approx(other, tol)``. Objects pickle and copy
+    bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
+    """
+    __array_ufunc__ = None
+    @staticmethod
+    def from_screw(point: numpy.typing.ArrayLike, direction: numpy.typing.ArrayLike, pitch: float, magnitude: float) -> Wrench:
+        """
+        The wrench of a screw: magnitude * (d, q x d + h d).
+        
+        For the line through q along d (normalized here), pitch h; with h = inf, the
+        couple (0, magnitude * d). A zero direction gives the zero wrench.
+        
+        Args:
+            point: q, shape (3,).
+            direction: d, shape (3,).
+            pitch: h; ``math.inf`` for a pure couple.
+            magnitude: the force size (the torque for h = inf).
+        
+        Returns:
+            Wrench.
+        
+        Example:
+            >>> Wrench.from_screw([0.0, 1.0, 0.0], [1.0, 0.0, 0.0], 0.0, 2.0).vector
+            array([ 2.,  0.,  0.,  0.,  0., -2.])
+        """
+    @staticmethod
+    def from_vector(F: numpy.typing.ArrayLike) -> Wrench:
+        """
+        The wrench of a 6-vector (f, tau), force first.
+        
+        Args:
+            F: shape (6,), finite.
+        
+        Returns:
+            Wrench.
+        """
+    def __add__(self, other: Wrench) -> Wrench:
+        ...
+    def __array__(self, dtype: numpy.typing.DTypeLike = None, copy: bool | None = None) -> numpy.ndarray:
+        """
+        The 6-vector, shape (6,), for np.asarray (numpy's dtype and copy keywords).
+        """
+    def __copy__(self) -> Wrench:
+        ...
+    def __deepcopy__(self, memo: typing.Any) -> Wrench:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, f: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), tau: numpy.typing.ArrayLike = (0.0, 0.0, 0.0)) -> None:
+        """
+        The wrench F = (f, tau) (the zero wrench by default).
+        
+        Args:
+            f: force, shape (3,), finite.
+            tau: torque, shape (3,), finite.
+        """
+    def __mul__(self, scalar: float) -> Wrench:
+        ...
+    def __neg__(self) -> Wrench:
+        ...
+    def __pos__(self) -> Wrench:
+        ...
+    def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support: (copyreg.__newobj__, (cls,), state).
+        """
+    def __reduce_ex__(self, protocol: typing.SupportsInt | typing.SupportsIndex) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support (every protocol): (copyreg.__newobj__, (cls,), state).
+        """
+    def __repr__(self) -> str:
+        ...
+    def __rmul__(self, scalar: float) -> Wrench:
+        ...
+    def __setstate__(self, arg0: typing.Any) -> None:
+        ...
+    def __sub__(self, other: Wrench) -> Wrench:
+        ...
+    def __truediv__(self, scalar: float) -> Wrench:
+        ...
+    def is_approx(self, other: Wrench, tol: float = 1e-09) -> bool:
+        """
+        Whether two 6-vectors are equal within tol: max |x - y| <= tol * max(1, max |x|, max |y|).
+        
+        ``==`` is deliberately not defined (it is object identity).
+        
+        Args:
+            other: the same type.
+            tol: the tolerance (>= 0).
+        
+        Returns:
+            bool.
+        """
+    def power(self, twist: Twist) -> float:
+        """
+        The power V . F = v.f + w.tau of a twist on this wrench (same frame).
+        
+        Args:
+            twist: Twist, V.
+        
+        Returns:
+            float.
+        """
+    def screw(self) -> Screw:
+        """
+        The screw of the wrench (Poinsot).
+        
+        With f != 0, a force along the line through f x tau / |f|^2 with direction
+        f / |f|, magnitude |f|, plus a torque pitch * f about it,
+        pitch = f.tau / |f|^2; with f = 0, a pure couple: pitch inf, direction
+        tau / |tau|, magnitude |tau|.
+        
+        Returns:
+            Screw.
+        """
+    @property
+    def force(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        ndarray: f, shape (3,).
+        """
+    @property
+    def pitch(self) -> float:
+        """
+        float: f.tau / |f|^2 (inf for f = 0, 0 for the zero wrench).
+        """
+    @property
+    def torque(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        ndarray: tau, shape (3,).
+        """
+    @property
+    def vector(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        ndarray: the 6-vector (f, tau), force first, shape (6,).
+        """
+@typing.overload
+def interpolate(a: SO3, b: SO3, t: float) -> SO3:
+    """
+    Geodesic interpolation of rotations a exp(t log(a^-1 b)) (SO3.interpolate).
+    """
+@typing.overload
+def interpolate(a: SE3, b: SE3, t: float) -> SE3:
+    """
+    Screw interpolation of rigid motions a exp(t log(a^-1 b)) (SE3.interpolate).
+    """
+def se3_act(g: typing.Any, points: typing.Any) -> numpy.ndarray:
+    """
+    Transformed points: q_a = R_ab q_b + p_ab.
+    
+    Broadcasts: one pose of shape (4, 4) with points of shape (N, 3), N poses
+    with N points, (N, 1, 4, 4) with (M, 3) for every pair, ...
+    
+    Args:
+        g: array_like of shape (..., 4, 4): homogeneous matrices.
+        points: array_like of shape (..., 3): points.
+    
+    Returns:
+        numpy.ndarray of shape (..., 3): the transformed points.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (complex, object and string arrays are refused).
+        ValueError: an operand's trailing (core) shape is wrong, or the leading
+            (batch) shapes of the operands do not broadcast.
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def se3_act_twist(g: typing.Any, xi: typing.Any) -> numpy.ndarray:
+    """
+    Twists changed from frame b to frame a: xi_a = Ad_g xi_b.
+    
+    xi_a = (R v + p x R w, R w) for xi_b = (v, w), linear part first.
+    
+    Args:
+        g: array_like of shape (..., 4, 4): homogeneous matrices g_ab.
+        xi: array_like of shape (..., 6): twists (v, w) in frame b.
+    
+    Returns:
+        numpy.ndarray of shape (..., 6): the twists (v, w) in frame a.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (complex, object and string arrays are refused).
+        ValueError: an operand's trailing (core) shape is wrong, or the leading
+            (batch) shapes of the operands do not broadcast.
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def se3_act_wrench(g: typing.Any, F: typing.Any) -> numpy.ndarray:
+    """
+    Wrenches changed from frame b to frame a: F_a = Ad_g^-T F_b.
+    
+    F_a = (R f, p x R f + R tau) for F_b = (f, tau), force first, so that the
+    power xi . F is the same in both frames.
+    
+    Args:
+        g: array_like of shape (..., 4, 4): homogeneous matrices g_ab.
+        F: array_like of shape (..., 6): wrenches (f, tau) in frame b.
+    
+    Returns:
+        numpy.ndarray of shape (..., 6): the wrenches (f, tau) in frame a.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (complex, object and string arrays are refused).
+        ValueError: an operand's trailing (core) shape is wrong, or the leading
+            (batch) shapes of the operands do not broadcast.
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def se3_adjoint(g: typing.Any) -> numpy.ndarray:
+    """
+    Adjoint matrices: Ad_g = [[R, [p] R], [0, R]] (6x6).
+    
+    Twist order (v, w), linear part first: twists change frame by
+    xi_a = Ad_g xi_b, wrenches by F_b = Ad_g^T F_a.
+    
+    Args:
+        g: array_like of shape (..., 4, 4): homogeneous matrices.
+    
+    Returns:
+        numpy.ndarray of shape (..., 6, 6): the adjoint matrices.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (complex, object and string arrays are refused).
+        ValueError: an operand's trailing (core) shape is wrong, or the leading
+            (batch) shapes of the operands do not broadcast.
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def se3_compose(a: typing.Any, b: typing.Any) -> numpy.ndarray:
+    """
+    Composition of rigid motions: a @ b (g_ac = g_ab g_bc).
+    
+    Args:
+        a: array_like of shape (..., 4, 4): homogeneous matrices.
+        b: array_like of shape (..., 4, 4): homogeneous matrices.
+    
+    Returns:
+        numpy.ndarray of shape (..., 4, 4): the products [[R_a R_b, R_a p_b +
+        p_a], [0, 1]], the batch shape being the broadcast of a's and b's.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (complex, object and string arrays are refused).
+        ValueError: an operand's trailing (core) shape is wrong, or the leading
+            (batch) shapes of the operands do not broadcast.
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def se3_exp(xi: typing.Any) -> numpy.ndarray:
+    """
+    Rigid motions of twists: g = exp([xi]) (4x4).
+    
+    Twist order xi = (v, w), linear part first (Murray, Li and Sastry). In
+    closed form: R = exp([w]), p = V v with V = I + B [w] + C [w]^2; w = 0 is a
+    pure translation.
+    
+    Args:
+        xi: array_like of shape (..., 6): twists (v, w), linear part first.
+    
+    Returns:
+        numpy.ndarray of shape (..., 4, 4): the homogeneous matrices
+        [[R, p], [0, 1]].
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (complex, object and string arrays are refused).
+        ValueError: an operand's trailing (core) shape is wrong, or the leading
+            (batch) shapes of the operands do not broadcast.
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def se3_interpolate(a: typing.Any, b: typing.Any, t: typing.Any) -> numpy.ndarray:
+    """
+    Screw interpolation of rigid motions: a exp(t log(a^-1 b)).
+    
+    t = 0 gives a, t = 1 gives b, one screw motion in between.
+    
+    Args:
+        a: array_like of shape (..., 4, 4): homogeneous matrices at t = 0.
+        b: array_like of shape (..., 4, 4): homogeneous matrices at t = 1.
+        t: array_like of shape (...): the parameters (a Python float keeps
+            the dtype of a and b).
+    
+    Returns:
+        numpy.ndarray of shape (..., 4, 4): the interpolated motions.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (complex, object and string arrays are refused).
+        ValueError: an operand's trailing (core) shape is wrong, or the leading
+            (batch) shapes of the operands do not broadcast.
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def se3_inverse(g: typing.Any) -> numpy.ndarray:
+    """
+    Inverse rigid motions: g^-1 = [[R^T, -R^T p], [0, 1]].
+    
+    Args:
+        g: array_like of shape (..., 4, 4): homogeneous matrices.
+    
+    Returns:
+        numpy.ndarray of shape (..., 4, 4): the inverses.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (complex, object and string arrays are refused).
+        ValueError: an operand's trailing (core) shape is wrong, or the leading
+            (batch) shapes of the operands do not broadcast.
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def se3_log(g: typing.Any) -> numpy.ndarray:
+    """
+    Twists of rigid motions: xi = log(g)^vee, xi = (v, w).
+    
+    Rotation angle |w| in [0, pi] (at exactly pi, either axis sign); v = V^-1 p.
+    
+    Args:
+        g: array_like of shape (..., 4, 4): homogeneous matrices [[R, p], [0, 1]].
+    
+    Returns:
+        numpy.ndarray of shape (..., 6): the twists (v, w), linear part first.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (complex, object and string arrays are refused).
+        ValueError: an operand's trailing (core) shape is wrong, or the leading
+            (batch) shapes of the operands do not broadcast.
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def so3_act(R: typing.Any, p: typing.Any) -> numpy.ndarray:
+    """
+    Rotated points or vectors: p_a = R_ab p_b.
+    
+    Broadcasts: one rotation of shape (3, 3) with points of shape (N, 3), N
+    rotations with N points, (N, 1, 3, 3) with (M, 3) for every pair, ...
+    
+    Args:
+        R: array_like of shape (..., 3, 3): rotation matrices.
+        p: array_like of shape (..., 3): points or vectors.
+    
+    Returns:
+        numpy.ndarray of shape (..., 3): the rotated points.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (complex, object and string arrays are refused).
+        ValueError: an operand's trailing (core) shape is wrong, or the leading
+            (batch) shapes of the operands do not broadcast.
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def so3_as_quat(R: typing.Any, *, scalar_first: bool = False) -> numpy.ndarray:
+    """
+    Unit quaternions of rotation matrices, as scipy's Rotation.as_quat.
+    
+    Shepperd's method (no small divisor for any input). Of the two quaternions
+    q and -q of a rotation, the one whose largest component is positive.
+    
+    Args:
+        R: array_like of shape (..., 3, 3): rotation matrices.
+        scalar_first: if True, return (w, x, y, z) instead of (x, y, z, w).
+    
+    Returns:
+        numpy.ndarray of shape (..., 4): the quaternions, scalar-last (x, y, z,
+        w) by default, as scipy.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (complex, object and string arrays are refused).
+        ValueError: an operand's trailing (core) shape is wrong, or the leading
+            (batch) shapes of the operands do not broadcast.
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def so3_compose(a: typing.Any, b: typing.Any) -> numpy.ndarray:
+    """
+    Composition of rotations: a @ b (R_ac = R_ab R_bc).
+    
+    Args:
+        a: array_like of shape (..., 3, 3): rotation matrices.
+        b: array_like of shape (..., 3, 3): rotation matrices.
+    
+    Returns:
+        numpy.ndarray of shape (..., 3, 3): the products, the batch shape being
+        the broadcast of a's and b's.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (complex, object and string arrays are refused).
+        ValueError: an operand's trailing (core) shape is wrong, or the leading
+            (batch) shapes of the operands do not broadcast.
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def so3_exp(w: typing.Any) -> numpy.ndarray:
+    """
+    Rotation matrices of rotation vectors: R = exp([w]).
+    
+    Rodrigues' formula, R = I + (sin t / t) [w] + ((1 - cos t) / t^2) [w]^2 with
+    t = |w|, exact to a few ulps for every w (Taylor series near 0).
+    
+    Args:
+        w: array_like of shape (..., 3): rotation vectors, axis times angle in
+            radians.
+    
+    Returns:
+        numpy.ndarray of shape (..., 3, 3): the rotation matrices.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (complex, object and string arrays are refused).
+        ValueError: an operand's trailing (core) shape is wrong, or the leading
+            (batch) shapes of the operands do not broadcast.
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def so3_from_quat(q: typing.Any, *, scalar_first: bool = False) -> numpy.ndarray:
+    """
+    Rotation matrices of quaternions, as scipy's Rotation.from_quat.
+    
+    Quaternions of any nonzero norm are normalized. A zero or non-finite
+    quaternion gives a matrix of NaN.
+    
+    Args:
+        q: array_like of shape (..., 4): quaternions, scalar-last (x, y, z, w)
+            by default, as scipy.
+        scalar_first: if True, q is read as (w, x, y, z).
+    
+    Returns:
+        numpy.ndarray of shape (..., 3, 3): the rotation matrices.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (complex, object and string arrays are refused).
+        ValueError: an operand's trailing (core) shape is wrong, or the leading
+            (batch) shapes of the operands do not broadcast.
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def so3_hat(w: typing.Any) -> numpy.ndarray:
+    """
+    Skew-symmetric matrices: [w] = [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]].
+    
+    So that [w] p = w x p.
+    
+    Args:
+        w: array_like of shape (..., 3): vectors of so(3).
+    
+    Returns:
+        numpy.ndarray of shape (..., 3, 3): the matrices [w].
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (complex, object and string arrays are refused).
+        ValueError: an operand's trailing (core) shape is wrong, or the leading
+            (batch) shapes of the operands do not broadcast.
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def so3_interpolate(a: typing.Any, b: typing.Any, t: typing.Any) -> numpy.ndarray:
+    """
+    Geodesic interpolation of rotations: a exp(t log(a^-1 b)).
+    
+    t = 0 gives a, t = 1 gives b, constant angular velocity in between.
+    
+    Args:
+        a: array_like of shape (..., 3, 3): rotation matrices at t = 0.
+        b: array_like of shape (..., 3, 3): rotation matrices at t = 1.
+        t: array_like of shape (...): the parameters (a Python float keeps
+            the dtype of a and b).
+    
+    Returns:
+        numpy.ndarray of shape (..., 3, 3): the interpolated rotations.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (complex, object and string arrays are refused).
+        ValueError: an operand's trailing (core) shape is wrong, or the leading
+            (batch) shapes of the operands do not broadcast.
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def so3_inverse(R: typing.Any) -> numpy.ndarray:
+    """
+    Inverse rotations: R^-1 = R^T.
+    
+    Args:
+        R: array_like of shape (..., 3, 3): rotation matrices.
+    
+    Returns:
+        numpy.ndarray of shape (..., 3, 3): the inverses.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (complex, object and string arrays are refused).
+        ValueError: an operand's trailing (core) shape is wrong, or the leading
+            (batch) shapes of the operands do not broadcast.
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def so3_log(R: typing.Any) -> numpy.ndarray:
+    """
+    Rotation vectors of rotation matrices: w = log(R)^vee.
+    
+    The angle |w| is in [0, pi]; at exactly pi either axis sign is returned,
+    never NaN. Robust near 0 and near pi (axis from the symmetric part).
+    
+    Args:
+        R: array_like of shape (..., 3, 3): rotation matrices.
+    
+    Returns:
+        numpy.ndarray of shape (..., 3): the rotation vectors (axis times angle).
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (complex, object and string arrays are refused).
+        ValueError: an operand's trailing (core) shape is wrong, or the leading
+            (batch) shapes of the operands do not broadcast.
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def so3_vee(W: typing.Any) -> numpy.ndarray:
+    """
+    The vectors of skew-symmetric matrices: vee([w]) = w.
+    
+    Reads the antisymmetric part (W - W^T) / 2, so a matrix that is not exactly
+    skew gives the w of its nearest skew matrix.
+    
+    Args:
+        W: array_like of shape (..., 3, 3): skew-symmetric matrices.
+    
+    Returns:
+        numpy.ndarray of shape (..., 3): the vectors w.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (complex, object and string arrays are refused).
+        ValueError: an operand's trailing (core) shape is wrong, or the leading
+            (batch) shapes of the operands do not broadcast.
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def twist_hat(xi: typing.Any) -> numpy.ndarray:
+    """
+    Matrices of twists: [xi] = [[ [w], v ], [0, 0]] (4x4).
+    
+    Args:
+        xi: array_like of shape (..., 6): twists (v, w), linear part first.
+    
+    Returns:
+        numpy.ndarray of shape (..., 4, 4): the matrices [xi].
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (complex, object and string arrays are refused).
+        ValueError: an operand's trailing (core) shape is wrong, or the leading
+            (batch) shapes of the operands do not broadcast.
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def twist_vee(X: typing.Any) -> numpy.ndarray:
+    """
+    Twists of 4x4 matrices: [xi]^vee = (v, w), linear part first.
+    
+    v is the last column's top three entries, w the vee of the antisymmetric
+    part of the top-left 3x3 block; the bottom row is not read.
+    
+    Args:
+        X: array_like of shape (..., 4, 4): matrices [[ [w], v ], [0, 0]].
+    
+    Returns:
+        numpy.ndarray of shape (..., 6): the twists (v, w).
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (complex, object and string arrays are refused).
+        ValueError: an operand's trailing (core) shape is wrong, or the leading
+            (batch) shapes of the operands do not broadcast.
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+__version__: str = '0.1.0'
