@@ -484,10 +484,7 @@ inline py::array_t<double> mat_out(const Eigen::Matrix<double, R, C>& m) {
 template <typename F>
 inline py::array_t<double> map_points(py::handle h, const char* what, const F& f) {
   PyObject* o = h.ptr();
-  py::array a;
-  if (is_native_float64_array(o)) {
-    a = py::reinterpret_borrow<py::array>(h);
-  } else {
+  if (!is_native_float64_array(o)) {
     Eigen::Matrix<double, 3, 1> p;
     if (read_flat_sequence<3>(o, p)) {
       const Py_intptr_t dims[1] = {3};
@@ -495,8 +492,9 @@ inline py::array_t<double> map_points(py::handle h, const char* what, const F& f
       f(p.data(), array_data(out));
       return out;
     }
-    a = as_float64_array(h, what);
   }
+  // (Not a default-constructed py::array: that allocates an empty ndarray.)
+  py::array a = is_native_float64_array(o) ? py::reinterpret_borrow<py::array>(h) : as_float64_array(h, what);
   const int nd = static_cast<int>(a.ndim());
   if (nd < 1 || a.shape(nd - 1) != 3) {
     raise_value_error(std::string(what) + ": expected shape (3,) or (N, 3), got " + shape_string(a.shape(), nd));
