@@ -1,0 +1,27 @@
+"""pytest configuration of the chasles Python tests.
+
+The hypothesis strategies live in strategies.py, beside this file; with
+``--import-mode=importlib`` the test directory is not on sys.path, so it is
+added here and test modules do ``from strategies import ...``.
+
+Hypothesis profiles (select with HYPOTHESIS_PROFILE): "chasles", the default (100
+examples, no deadline: the machines that run the suite are shared) and "thorough"
+(2000 examples).
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+
+from hypothesis import HealthCheck, settings
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+settings.register_profile(
+    "chasles", max_examples=100, deadline=None, suppress_health_check=[HealthCheck.too_slow]
+)
+settings.register_profile(
+    "thorough", max_examples=2000, deadline=None, suppress_health_check=[HealthCheck.too_slow]
+)
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "chasles"))

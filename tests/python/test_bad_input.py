@@ -1,0 +1,526 @@
+"""Bad input to the objects (SO3, SE3, Twist, Wrench, Screw): every
+constructor and method that takes numbers refuses wrong shapes (ValueError
+naming the expected and the received shape), non-real dtypes and None
+(TypeError naming float64), NaN and infinities where it builds an object
+(ValueError), and matrices that are not rotations (ValueError saying by how
+much and pointing at from_matrix_projected). Never a crash, never a C++
+exception text."""
+
+from __future__ import annotations
+
+import math
+import pickle
+import re
+
+import numpy as np
+import pytest
+from chasles import SE3, SO3, Screw, Twist, Wrench
+
+R0 = SO3.exp([0.1, 0.2, 0.3])
+G0 = SE3(R0, [1.0, 2.0, 3.0])
+XI0 = Twist(v=[1.0, 0.0, 0.0], w=[0.0, 0.0, 1.0])
+F0 = Wrench(f=[0.0, 0.0, 1.0])
+GDOT = G0.as_matrix() @ XI0.hat()
+
+
+def v3():
+    return np.array([0.1, 0.2, 0.3])
+
+
+# (name, call taking the argument under test, a valid value, the expected
+# shape text, whether NaN/inf is refused).
+ARRAY_ARGUMENTS = [
+    ("SO3.exp(w)", lambda x: SO3.exp(x), v3(), "(3,)", True),
+    ("SO3.hat(w)", lambda x: SO3.hat(x), v3(), "(3,)", False),
+    ("SO3.vee(matrix)", lambda x: SO3.vee(x), np.zeros((3, 3)), "(3, 3)", False),
+    ("SO3.from_matrix(matrix)", lambda x: SO3.from_matrix(x), np.eye(3), "(3, 3)", True),
+    (
+        "SO3.from_matrix_projected(matrix)",
+        lambda x: SO3.from_matrix_projected(x),
+        np.eye(3),
+        "(3, 3)",
+        True,
+    ),
+    (
+        "SO3.from_matrix_unchecked(matrix)",
+        lambda x: SO3.from_matrix_unchecked(x),
+        np.eye(3),
+        "(3, 3)",
+        True,
+    ),
+    ("SO3.rotation_defect(matrix)", lambda x: SO3.rotation_defect(x), np.eye(3), "(3, 3)", False),
+    (
+        "SO3.from_quat(quat)",
+        lambda x: SO3.from_quat(x),
+        np.array([0.0, 0.0, 0.0, 1.0]),
+        "(4,)",
+        True,
+    ),
+    ("SE3(translation)", lambda x: SE3(R0, x), v3(), "(3,)", True),
+    ("SE3.exp(xi)", lambda x: SE3.exp(x), np.ones(6), "(6,)", True),
+    ("SE3.hat(xi)", lambda x: SE3.hat(x), np.ones(6), "(6,)", False),
+    ("SE3.vee(matrix)", lambda x: SE3.vee(x), np.zeros((4, 4)), "(4, 4)", False),
+    ("SE3.from_matrix(matrix)", lambda x: SE3.from_matrix(x), np.eye(4), "(4, 4)", True),
+    (
+        "SE3.from_matrix_projected(matrix)",
+        lambda x: SE3.from_matrix_projected(x),
+        np.eye(4),
+        "(4, 4)",
+        True,
+    ),
+    (
+        "SE3.from_matrix_unchecked(matrix)",
+        lambda x: SE3.from_matrix_unchecked(x),
+        np.eye(4),
+        "(4, 4)",
+        True,
+    ),
+    ("SE3.transform_defect(matrix)", lambda x: SE3.transform_defect(x), np.eye(4), "(4, 4)", False),
+    ("SE3.from_screw(point)", lambda x: SE3.from_screw(x, [0, 0, 1], 0.0, 1.0), v3(), "(3,)", True),
+    (
+        "SE3.from_screw(direction)",
+        lambda x: SE3.from_screw([0, 0, 0], x, 0.0, 1.0),
+        v3(),
+        "(3,)",
+        True,
+    ),
+    ("Twist(v)", lambda x: Twist(v=x), v3(), "(3,)", True),
+    ("Twist(w)", lambda x: Twist(w=x), v3(), "(3,)", True),
+    ("Twist.from_vector(xi)", lambda x: Twist.from_vector(x), np.ones(6), "(6,)", True),
+    (
+        "Twist.from_modern_robotics(wv)",
+        lambda x: Twist.from_modern_robotics(x),
+        np.ones(6),
+        "(6,)",
+        True,
+    ),
+    ("Twist.vee(matrix)", lambda x: Twist.vee(x), np.zeros((4, 4)), "(4, 4)", True),
+    (
+        "Twist.from_screw(point)",
+        lambda x: Twist.from_screw(x, [0, 0, 1], 0.0, 1.0),
+        v3(),
+        "(3,)",
+        True,
+    ),
+    (
+        "Twist.from_screw(direction)",
+        lambda x: Twist.from_screw([0, 0, 0], x, 0.0, 1.0),
+        v3(),
+        "(3,)",
+        True,
+    ),
+    ("Twist.spatial(g_dot)", lambda x: Twist.spatial(G0, x), GDOT, "(4, 4)", True),
+    ("Twist.body(g_dot)", lambda x: Twist.body(G0, x), GDOT, "(4, 4)", True),
+    ("Wrench(f)", lambda x: Wrench(f=x), v3(), "(3,)", True),
+    ("Wrench(tau)", lambda x: Wrench(tau=x), v3(), "(3,)", True),
+    ("Wrench.from_vector(F)", lambda x: Wrench.from_vector(x), np.ones(6), "(6,)", True),
+    (
+        "Wrench.from_screw(point)",
+        lambda x: Wrench.from_screw(x, [0, 0, 1], 0.0, 1.0),
+        v3(),
+        "(3,)",
+        True,
+    ),
+    (
+        "Wrench.from_screw(direction)",
+        lambda x: Wrench.from_screw([0, 0, 0], x, 0.0, 1.0),
+        v3(),
+        "(3,)",
+        True,
+    ),
+    ("Screw(point)", lambda x: Screw(x, [0, 0, 1], 0.0, 1.0), v3(), "(3,)", True),
+    ("Screw(direction)", lambda x: Screw([0, 0, 0], x, 0.0, 1.0), v3(), "(3,)", True),
+]
+
+POINT_ARGUMENTS = [
+    ("SO3 @ points", lambda x: R0 @ x),
+    ("SO3.act(points)", lambda x: R0.act(x)),
+    ("SE3 @ points", lambda x: G0 @ x),
+    ("SE3.act(points)", lambda x: G0.act(x)),
+    ("SE3.act_inv(points)", lambda x: G0.act_inv(x)),
+]
+
+C_PLUS_PLUS = re.compile(r"std::|chasles::|Eigen|pybind11::|C\+\+ exception|incompatible function")
+
+
+def name_of(case):
+    return case[0]
+
+
+def check_message(excinfo, *fragments):
+    msg = str(excinfo.value)
+    assert not C_PLUS_PLUS.search(msg), msg
+    for fragment in fragments:
+        assert fragment in msg, f"{fragment!r} not in {msg!r}"
+
+
+@pytest.mark.parametrize("case", ARRAY_ARGUMENTS, ids=name_of)
+def test_valid_value_is_accepted_in_every_array_like_form(case):
+    _, call, good, _, _ = case
+    call(good)
+    call(good.tolist())
+    call(good.astype(np.float32))
+    call(np.asfortranarray(good))
+    if good.ndim == 1:
+        call(tuple(good.tolist()))
+        call(np.repeat(good, 2)[::2])  # strided
+    call(good.astype(">f8"))  # big-endian
+
+
+@pytest.mark.parametrize("case", ARRAY_ARGUMENTS, ids=name_of)
+def test_integer_and_bool_arrays_are_converted(case):
+    _, call, good, _, _ = case
+    call(np.zeros_like(good, dtype=np.int64) + (good != 0).astype(np.int64))
+    call(good != 0)  # bool
+
+
+@pytest.mark.parametrize("case", ARRAY_ARGUMENTS, ids=name_of)
+def test_wrong_shape_is_a_value_error_naming_both_shapes(case):
+    name, call, good, shape, _ = case
+    wrong = [
+        np.zeros(good.size + 1),
+        np.zeros((1,) + good.shape),
+        np.zeros(()),
+        np.zeros(good.shape[:-1] + (0,)),
+    ]
+    for bad in wrong:
+        with pytest.raises(ValueError) as e:
+            call(bad)
+        got = str(tuple(bad.shape)) if bad.ndim != 1 else f"({bad.shape[0]},)"
+        check_message(e, name, f"expected shape {shape}, got {got}")
+
+
+@pytest.mark.parametrize("case", ARRAY_ARGUMENTS, ids=name_of)
+@pytest.mark.parametrize(
+    "bad",
+    [
+        None,
+        "abc",
+        b"abc",
+        1j,
+        object(),
+        lambda: None,
+    ],
+    ids=["None", "str", "bytes", "complex", "object", "function"],
+)
+def test_non_real_scalars_are_type_errors(case, bad):
+    name, call, _, _, _ = case
+    with pytest.raises(TypeError) as e:
+        call(bad)
+    check_message(e, name, "float64")
+
+
+@pytest.mark.parametrize("case", ARRAY_ARGUMENTS, ids=name_of)
+def test_non_real_arrays_are_type_errors_naming_the_dtype(case):
+    name, call, good, _, _ = case
+    for bad, dtype in [
+        (good.astype(np.complex128), "complex128"),
+        (good.astype(object), "object"),
+        (good.astype(str), "<U"),
+        (np.array([None] * good.size).reshape(good.shape), "object"),
+    ]:
+        with pytest.raises(TypeError) as e:
+            call(bad)
+        check_message(e, name, "float64", dtype)
+    with pytest.raises(TypeError) as e:
+        call([str(x) for x in good.ravel()] if good.ndim == 1 else good.astype(str).tolist())
+    check_message(e, name, "float64")
+
+
+@pytest.mark.parametrize("case", ARRAY_ARGUMENTS, ids=name_of)
+def test_ragged_input_is_a_value_error(case):
+    name, call, _, _, _ = case
+    with pytest.raises(ValueError) as e:
+        call([[1.0, 2.0], [3.0]])
+    check_message(e, name)
+
+
+@pytest.mark.parametrize("case", [c for c in ARRAY_ARGUMENTS if c[4]], ids=name_of)
+@pytest.mark.parametrize("value", [math.nan, math.inf, -math.inf])
+def test_non_finite_input_to_constructors_is_a_value_error(case, value):
+    name, call, good, _, _ = case
+    bad = good.astype(float).copy()
+    bad.flat[-1] = value
+    with pytest.raises(ValueError) as e:
+        call(bad)
+    check_message(e, name, "finite")
+
+
+@pytest.mark.parametrize("case", POINT_ARGUMENTS, ids=name_of)
+def test_bad_points(case):
+    name, call = case
+    for bad, shape in [
+        (np.zeros(4), "(4,)"),
+        (np.zeros((5, 2)), "(5, 2)"),
+        (np.zeros(()), "()"),
+        ([1.0, 2.0], "(2,)"),
+    ]:
+        with pytest.raises(ValueError) as e:
+            call(bad)
+        check_message(e, name, "expected shape (3,) or (N, 3)", f"got {shape}")
+    for bad in (None, "abc", np.zeros(3, dtype=complex), np.array([1, "a", None], dtype=object)):
+        with pytest.raises(TypeError) as e:
+            call(bad)
+        check_message(e, name, "float64")
+    with pytest.raises(ValueError):
+        call([[1.0, 2.0, 3.0], [1.0, 2.0]])
+
+
+def test_points_may_hold_nan_which_propagates_to_their_own_row():
+    out = G0 @ np.array([[1.0, 2.0, 3.0], [np.nan, 0.0, 0.0]])
+    assert np.all(np.isfinite(out[0])) and np.all(np.isnan(out[1]))
+
+
+# ---- matrices that are not rotations ------------------------------------------------
+
+
+def test_from_matrix_says_by_how_much_and_what_to_do():
+    M = np.eye(3)
+    M[0, 1] = 1e-3
+    with pytest.raises(ValueError) as e:
+        SO3.from_matrix(M)
+    check_message(
+        e,
+        "SO3.from_matrix",
+        "not a rotation",
+        "defect",
+        "0.001",
+        "tol = 1.49e-08",
+        "SO3.from_matrix_projected",
+    )
+    assert SO3.from_matrix(M, tol=2e-3).as_matrix()[0, 1] == 1e-3  # kept as is
+    with pytest.raises(ValueError) as e:
+        SO3.from_matrix(np.diag([1.0, 1.0, -1.0]))
+    check_message(e, "det M = -1", "reflection")
+    with pytest.raises(ValueError) as e:
+        SO3.from_matrix(2.0 * np.eye(3))
+    check_message(e, "det M = 8")
+
+
+def test_se3_from_matrix_checks_the_block_and_the_bottom_row():
+    M = np.eye(4)
+    M[3, :] = [0.0, 0.0, 0.5, 1.0]
+    with pytest.raises(ValueError) as e:
+        SE3.from_matrix(M)
+    check_message(e, "SE3.from_matrix", "bottom row", "0.5", "SE3.from_matrix_projected")
+    M = np.eye(4)
+    M[:3, :3] = np.diag([1.0, -1.0, 1.0])
+    with pytest.raises(ValueError) as e:
+        SE3.from_matrix(M)
+    check_message(e, "defect", "reflection")
+    assert SE3.from_matrix(np.eye(4) + 1e-10).is_approx(SE3(), 1e-9)  # within the default tolerance
+
+
+def test_projection_accepts_any_finite_matrix():
+    for M in (np.zeros((3, 3)), np.diag([1.0, 1.0, -1.0]), np.ones((3, 3)), 1e200 * np.eye(3)):
+        R = SO3.from_matrix_projected(M)
+        assert SO3.rotation_defect(R.as_matrix()) < 1e-14
+
+
+def test_zero_quaternion_is_refused():
+    with pytest.raises(ValueError) as e:
+        SO3.from_quat([0.0, 0.0, 0.0, 0.0])
+    check_message(e, "SO3.from_quat", "zero quaternion")
+
+
+# ---- scalar arguments --------------------------------------------------------------
+
+SCALAR_ARGUMENTS = [
+    ("SO3.from_matrix(tol)", lambda x: SO3.from_matrix(np.eye(3), tol=x), 1e-6, "tolerance"),
+    ("SE3.from_matrix(tol)", lambda x: SE3.from_matrix(np.eye(4), tol=x), 1e-6, "tolerance"),
+    ("SO3.is_approx(tol)", lambda x: R0.is_approx(R0, tol=x), 1e-6, "tolerance"),
+    ("SE3.is_approx(tol)", lambda x: G0.is_approx(G0, tol=x), 1e-6, "tolerance"),
+    ("Twist.is_approx(tol)", lambda x: XI0.is_approx(XI0, tol=x), 1e-6, "tolerance"),
+    ("Wrench.is_approx(tol)", lambda x: F0.is_approx(F0, tol=x), 1e-6, "tolerance"),
+    ("SO3.interpolate(t)", lambda x: SO3.interpolate(R0, SO3(), x), 0.5, "finite"),
+    ("SE3.interpolate(t)", lambda x: SE3.interpolate(G0, SE3(), x), 0.5, "finite"),
+    ("interpolate(t)", lambda x: __import__("chasles").interpolate(G0, SE3(), x), 0.5, "finite"),
+    ("SE3.from_screw(pitch)", lambda x: SE3.from_screw([0, 0, 0], [0, 0, 1], x, 1.0), 0.5, "pitch"),
+    (
+        "SE3.from_screw(theta)",
+        lambda x: SE3.from_screw([0, 0, 0], [0, 0, 1], 0.0, x),
+        0.5,
+        "finite",
+    ),
+    (
+        "Twist.from_screw(pitch)",
+        lambda x: Twist.from_screw([0, 0, 0], [0, 0, 1], x, 1.0),
+        0.5,
+        "pitch",
+    ),
+    (
+        "Twist.from_screw(theta)",
+        lambda x: Twist.from_screw([0, 0, 0], [0, 0, 1], 0.0, x),
+        0.5,
+        "finite",
+    ),
+    (
+        "Wrench.from_screw(pitch)",
+        lambda x: Wrench.from_screw([0, 0, 0], [0, 0, 1], x, 1.0),
+        0.5,
+        "pitch",
+    ),
+    (
+        "Wrench.from_screw(magnitude)",
+        lambda x: Wrench.from_screw([0, 0, 0], [0, 0, 1], 0.0, x),
+        0.5,
+        "finite",
+    ),
+    ("Screw(pitch)", lambda x: Screw([0, 0, 0], [0, 0, 1], x, 1.0), 0.5, "pitch"),
+    ("Screw(magnitude)", lambda x: Screw([0, 0, 0], [0, 0, 1], 0.0, x), 0.5, "finite"),
+]
+
+
+@pytest.mark.parametrize("case", SCALAR_ARGUMENTS, ids=name_of)
+def test_scalar_arguments(case):
+    name, call, good, refusal = case
+    for ok in (
+        good,
+        int(good) if float(int(good)) == good else good,
+        np.float32(good),
+        np.float64(good),
+        np.array(good),
+        np.int64(1),
+        True,
+    ):
+        call(ok)
+    for bad in (None, "0.5", 1j, np.complex128(1), object(), [good]):
+        with pytest.raises((TypeError, ValueError)) as e:
+            call(bad)
+        check_message(e, name)
+        assert isinstance(e.value, TypeError) == (not isinstance(bad, list)), (bad, e.value)
+    with pytest.raises(ValueError) as e:
+        call(math.nan)
+    check_message(e, name, refusal)
+    with pytest.raises(ValueError) as e:
+        call(-math.inf)
+    check_message(e, name, refusal)
+    with pytest.raises(ValueError) as e:
+        call(np.array([good, good]))
+    check_message(e, name, "got shape (2,)")
+
+
+def test_tolerances_refuse_negative_and_accept_inf():
+    with pytest.raises(ValueError, match="tolerance >= 0"):
+        SO3.from_matrix(np.eye(3), tol=-1.0)
+    assert SO3.from_matrix(2.0 * np.eye(3), tol=math.inf).as_matrix()[0, 0] == 2.0
+
+
+def test_positive_infinite_pitch_is_a_translation_everywhere():
+    assert SE3.from_screw([0, 0, 0], [1, 0, 0], math.inf, 2.0).is_approx(
+        SE3(translation=[2, 0, 0]), 0.0
+    )
+    assert Twist.from_screw([0, 0, 0], [1, 0, 0], math.inf, 2.0).is_approx(Twist(v=[2, 0, 0]), 0.0)
+    assert Wrench.from_screw([0, 0, 0], [1, 0, 0], math.inf, 2.0).is_approx(
+        Wrench(tau=[2, 0, 0]), 0.0
+    )
+    assert Screw([0, 0, 0], [1, 0, 0], math.inf, 2.0).pitch == math.inf
+    for call in (lambda: SE3.from_screw([0, 0, 0], [1, 0, 0], 0.0, math.inf),):
+        with pytest.raises(ValueError):
+            call()
+
+
+def test_huge_integers_are_a_value_error():
+    with pytest.raises(ValueError) as e:
+        SO3.interpolate(R0, R0, 10**400)
+    check_message(e, "too large")
+
+
+# ---- objects where numbers are expected, and the reverse ------------------------------
+
+
+def test_wrong_object_types_are_type_errors():
+    with pytest.raises(TypeError):
+        SE3(np.eye(3), [0, 0, 0])  # rotation must be an SO3
+    with pytest.raises(TypeError):
+        SE3(None)
+    with pytest.raises(TypeError) as e:
+        G0 @ XI0
+    check_message(e, "SE3 @ points", "g.act(x)")
+    with pytest.raises(TypeError) as e:
+        G0 @ F0
+    check_message(e, "g.act(x)")
+    with pytest.raises(TypeError) as e:
+        R0 @ G0
+    check_message(e, "SO3 @ points", "SE3")
+    with pytest.raises(TypeError):
+        G0 @ R0
+    with pytest.raises(TypeError):
+        R0.act(XI0)
+    with pytest.raises(TypeError):
+        G0.act(R0)
+    with pytest.raises(TypeError):
+        G0.act_inv(G0)
+    with pytest.raises(TypeError):
+        R0.is_approx(G0)
+    with pytest.raises(TypeError):
+        G0.is_approx(None)
+    with pytest.raises(TypeError):
+        SE3.interpolate(G0, R0, 0.5)
+    with pytest.raises(TypeError):
+        XI0.power(XI0)
+    with pytest.raises(TypeError):
+        F0.power(F0)
+    with pytest.raises(TypeError):
+        XI0.bracket(F0)
+    with pytest.raises(TypeError):
+        Twist.spatial(G0.as_matrix(), GDOT)
+
+
+def test_arithmetic_with_the_wrong_operands():
+    with pytest.raises(TypeError):
+        XI0 + F0
+    with pytest.raises(TypeError):
+        XI0 - 1.0
+    with pytest.raises(TypeError):
+        XI0 * XI0
+    with pytest.raises(TypeError):
+        XI0 * "2"
+    with pytest.raises(TypeError):
+        XI0 * [1.0, 2.0]
+    with pytest.raises(TypeError):
+        XI0 * np.ones(6)
+    with pytest.raises(TypeError):
+        XI0 * 1j
+    with pytest.raises(TypeError):
+        G0 * G0  # composition is @
+    with pytest.raises(ValueError, match="finite"):
+        XI0 * math.nan
+    with pytest.raises(ValueError, match="finite"):
+        math.inf * F0
+    with pytest.raises(ZeroDivisionError):
+        XI0 / 0.0
+    with pytest.raises(TypeError):
+        1.0 / XI0
+    big = Twist(v=[1e300, 0.0, 0.0])
+    with pytest.raises(ValueError, match="overflows"):
+        big * 1e10
+    with pytest.raises(ValueError, match="overflows"):
+        big / 1e-10
+    with pytest.raises(ValueError, match="overflows"):
+        Twist(v=[1.7e308, 0, 0]) + Twist(v=[1.7e308, 0, 0])
+
+
+@pytest.mark.parametrize("cls,n", [(SO3, 9), (SE3, 12), (Twist, 6), (Wrench, 6), (Screw, 8)])
+def test_setstate_refuses_bad_states(cls, n):
+    x = cls.__new__(cls)
+    with pytest.raises(ValueError, match="tuple of"):
+        x.__setstate__((1.0,) * (n + 1))
+    with pytest.raises(ValueError, match="tuple of"):
+        x.__setstate__([1.0] * n)
+    with pytest.raises(TypeError, match="floats"):
+        x.__setstate__(("a",) + (1.0,) * (n - 1))
+
+
+def test_uninitialized_objects_are_refused_not_crashed():
+    raw = SE3.__new__(SE3)
+    with pytest.raises(TypeError):
+        G0 @ raw
+    with pytest.raises(TypeError):
+        SE3.interpolate(raw, G0, 0.5)
+
+
+def test_no_exception_leaks_from_pickle_of_the_wrong_thing():
+    with pytest.raises(Exception) as e:
+        pickle.loads(pickle.dumps(G0).replace(b"SE3", b"SO3"))
+    check_message(e)

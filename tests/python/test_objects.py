@@ -1,0 +1,762 @@
+"""The object API (SO3, SE3, Twist, Wrench, Screw): the laws the C++ suite
+checks, parametrized over [SO3, SE3] with hypothesis strategies that reach
+angle 0, tiny angles, the Taylor cutoff, near pi and exactly pi; cross-checks
+against independent code (scipy.linalg.expm, scipy's Rotation and
+RigidTransform, the seed's worked example); and the Python protocols
+(pickle, copy, repr, np.asarray, operators, docstrings)."""
+
+from __future__ import annotations
+
+import copy
+import doctest
+import math
+import pickle
+
+import chasles
+import numpy as np
+import pytest
+from chasles import SE3, SO3, Screw, Twist, Wrench
+from hypothesis import given
+from hypothesis import strategies as st
+from scipy.linalg import expm
+from scipy.spatial.transform import Rotation
+from strategies import (
+    PI,
+    SPECIAL_ANGLES,
+    angles,
+    elements,
+    points,
+    rotation_vectors,
+    se3s,
+    tangents,
+    twist_vectors,
+    twists,
+    unit_vectors,
+    vectors3,
+    wrench_vectors,
+    wrenches,
+)
+
+GROUPS = [SO3, SE3]
+TOL = 1e-9
+
+
+def ids(group):
+    return group.__name__
+
+
+def angle_of(xi) -> float:
+    """The rotation angle of a tangent vector of SO3 (w) or SE3 ((v, w))."""
+    return float(np.linalg.norm(np.asarray(xi)[-3:]))
+
+
+def hat3(w):
+    """[w], written here from the definition, independent of the library."""
+    return np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
+
+
+def hat_ref(group, xi):
+    if group is SO3:
+        return hat3(xi)
+    X = np.zeros((4, 4))
+    X[:3, :3] = hat3(xi[3:])
+    X[:3, 3] = xi[:3]
+    return X
+
+
+def adjoint_ref(g: SE3) -> np.ndarray:
+    R, p = g.rotation().as_matrix(), g.translation()
+    A = np.zeros((6, 6))
+    A[:3, :3] = R
+    A[:3, 3:] = hat3(p) @ R
+    A[3:, 3:] = R
+    return A
+
+
+def assert_same(a, b, tol=TOL):
+    assert a.is_approx(b, tol), f"\n{a!r}\n!=\n{b!r}"
+
+
+def close(a, b, tol=TOL):
+    """Entries equal within tol, relative beyond unit scale (like is_approx)."""
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    scale = max(1.0, float(np.max(np.abs(a), initial=0.0)), float(np.max(np.abs(b), initial=0.0)))
+    return bool(np.all(np.abs(a - b) <= tol * scale))
+
+
+# ---- group axioms -------------------------------------------------------------
+
+
+@pytest.mark.parametrize("G", GROUPS, ids=ids)
+def test_identity_constructions_agree(G):
+    assert np.array_equal(G().as_matrix(), np.eye(G().as_matrix().shape[0]))
+    assert np.array_equal(G.identity().as_matrix(), G().as_matrix())
+    assert np.array_equal(G.exp(np.zeros(3 if G is SO3 else 6)).as_matrix(), G().as_matrix())
+    assert np.array_equal(G().log(), np.zeros(3 if G is SO3 else 6))
+
+
+@pytest.mark.parametrize("G", GROUPS, ids=ids)
+@given(data=st.data())
+def test_group_axioms(G, data):
+    a, b, c = (data.draw(elements(G)) for _ in range(3))
+    assert_same((a @ b) @ c, a @ (b @ c))
+    assert_same(a @ G.identity(), a, 0.0)
+    assert_same(G.identity() @ a, a, 0.0)
+    assert_same(a @ a.inverse(), G.identity())
+    assert_same(a.inverse() @ a, G.identity())
+    assert_same(a.inverse().inverse(), a, 1e-14)
+    assert_same((a @ b).inverse(), b.inverse() @ a.inverse())
+
+
+@pytest.mark.parametrize("G", GROUPS, ids=ids)
+@given(data=st.data())
+def test_matrices_multiply_like_the_group(G, data):
+    a, b = data.draw(elements(G)), data.draw(elements(G))
+    assert close((a @ b).as_matrix(), a.as_matrix() @ b.as_matrix(), 1e-12)
+    assert close(a.inverse().as_matrix(), np.linalg.inv(a.as_matrix()), 1e-12)
+    R = a.as_matrix()[:3, :3]
+    assert close(R.T @ R, np.eye(3), 1e-14)
+    assert math.isclose(np.linalg.det(R), 1.0, abs_tol=1e-14)
+
+
+@pytest.mark.parametrize("G", GROUPS, ids=ids)
+@given(data=st.data())
+def test_action_on_points(G, data):
+    g = data.draw(elements(G))
+    p = data.draw(points())
+    M = g.as_matrix()
+    expected = M[:3, :3] @ p + (M[:3, 3] if G is SE3 else 0.0)
+    assert close(g @ p, expected, 1e-13)
+    assert np.array_equal(g.act(p), g @ p)
+    cloud = np.stack([p, 2.0 * p, -p, np.zeros(3)])
+    out = g @ cloud
+    assert out.shape == (4, 3)
+    for k in range(4):
+        assert np.array_equal(out[k], g @ cloud[k])
+
+
+# ---- exp and log --------------------------------------------------------------
+
+
+@pytest.mark.parametrize("G", GROUPS, ids=ids)
+@given(data=st.data())
+def test_exp_equals_expm_of_hat(G, data):
+    xi = data.draw(tangents(G))
+    assert close(G.exp(xi).as_matrix(), expm(hat_ref(G, xi))[: 3 if G is SO3 else 4], 1e-12)
+    assert np.array_equal(G.hat(xi), hat_ref(G, xi))
+    assert close(G.vee(G.hat(xi)), xi, 1e-15)  # vee halves before subtracting: subnormals may round
+
+
+@pytest.mark.parametrize("G", GROUPS, ids=ids)
+@given(data=st.data())
+def test_exp_log_round_trips(G, data):
+    xi = data.draw(tangents(G))
+    g = G.exp(xi)
+    back = g.log()
+    assert (
+        0.0 <= angle_of(back) <= PI * (1.0 + 4e-16)
+    )  # the angle is <= pi; its vector's norm rounds
+    assert np.all(np.isfinite(back))
+    assert_same(G.exp(back), g, 1e-12)
+    if angle_of(xi) < PI - 1e-6:  # at pi, either axis sign is a correct log
+        assert close(back, xi, 1e-12), (xi, back)
+
+
+@pytest.mark.parametrize("G", GROUPS, ids=ids)
+@given(data=st.data())
+def test_chasles_every_element_is_the_exp_of_its_log(G, data):
+    g = data.draw(elements(G))
+    assert_same(G.exp(g.log()), g, 1e-12)
+
+
+@pytest.mark.parametrize("theta", SPECIAL_ANGLES)
+@pytest.mark.parametrize(
+    "axis", [(1.0, 0.0, 0.0), (0.0, -1.0, 0.0), (0.0, 0.0, 1.0), (1.0, 2.0, -2.0)]
+)
+def test_special_angles_exactly(theta, axis):
+    u = np.array(axis) / np.linalg.norm(axis)
+    w = theta * u
+    R = SO3.exp(w)
+    assert close(R.as_matrix(), Rotation.from_rotvec(w).as_matrix(), 1e-15)
+    back = R.log()
+    assert np.all(np.isfinite(back))
+    if theta < PI - 1e-6:
+        assert close(back, w, 1e-15) or np.allclose(back, w, rtol=1e-13, atol=0.0)
+    else:
+        assert math.isclose(np.linalg.norm(back), theta, rel_tol=1e-9)
+        assert_same(SO3.exp(back), R, 1e-15)
+
+
+def test_tiny_angles_keep_their_digits():
+    for theta in (1e-300, 1e-100, 1e-20, 1e-12, 1e-9):
+        w = np.array([theta, -2.0 * theta, 0.5 * theta])
+        assert np.allclose(SO3.exp(w).log(), w, rtol=1e-15, atol=0.0)
+        xi = np.concatenate([[1.0, 2.0, 3.0], w])
+        assert np.allclose(SE3.exp(xi).log(), xi, rtol=1e-15, atol=0.0)
+
+
+@given(w=rotation_vectors())
+def test_so3_log_against_scipy_rotvec(w):
+    R = SO3.exp(w)
+    ref = Rotation.from_matrix(R.as_matrix()).as_rotvec()
+    ours = R.log()
+    assert math.isclose(np.linalg.norm(ours), np.linalg.norm(ref), rel_tol=1e-9, abs_tol=1e-15)
+    if angle_of(w) < PI - 1e-6:
+        assert close(ours, ref, 1e-12)
+    assert close(Rotation.from_rotvec(ours).as_matrix(), R.as_matrix(), 1e-12)
+
+
+@given(w=rotation_vectors(), scalar_first=st.booleans())
+def test_quaternions_against_scipy(w, scalar_first):
+    R = SO3.exp(w)
+    q = R.as_quat(scalar_first=scalar_first)
+    ref = Rotation.from_matrix(R.as_matrix()).as_quat(scalar_first=scalar_first)
+    assert close(q, ref, 1e-12) or close(q, -ref, 1e-12)  # q and -q are one rotation
+    assert math.isclose(np.linalg.norm(q), 1.0, rel_tol=1e-15)
+    assert np.max(np.abs(q)) == np.max(q)  # the sign rule: largest component positive
+    assert_same(SO3.from_quat(ref, scalar_first=scalar_first), R, 1e-12)
+    assert_same(SO3.from_quat(-3.5 * q, scalar_first=scalar_first), R, 1e-12)
+    assert close(Rotation.from_quat(q, scalar_first=scalar_first).as_matrix(), R.as_matrix(), 1e-12)
+
+
+def test_quaternion_order_is_scalar_last_by_default_like_scipy():
+    s = math.sqrt(0.5)
+    R = SO3.from_quat([0.0, 0.0, s, s])  # 90 degrees about z, scalar last
+    assert close(R.log(), [0.0, 0.0, PI / 2], 1e-15)
+    assert close(R.as_quat(), Rotation.from_rotvec([0.0, 0.0, PI / 2]).as_quat(), 1e-15)
+    assert close(
+        SO3.from_quat([s, s, 0.0, 0.0], scalar_first=True).log(), [PI / 2, 0.0, 0.0], 1e-15
+    )
+    assert close(
+        SO3.from_quat([s, 0.0, 0.0, s], scalar_first=True).log(), [0.0, 0.0, PI / 2], 1e-15
+    )
+
+
+@pytest.mark.parametrize("scale", [1e-200, 1e-160, 1.0, 1e160, 1e200])
+def test_quaternions_of_any_finite_norm(scale):
+    q = np.array([0.1, -0.7, 0.2, 0.5])
+    assert_same(SO3.from_quat(scale * q), SO3.from_quat(q), 1e-15)
+
+
+@given(xi=twist_vectors())
+def test_se3_against_scipy_rigid_transform(xi):
+    rt = pytest.importorskip("scipy.spatial.transform").__dict__.get("RigidTransform")
+    if rt is None:
+        pytest.skip("scipy has no RigidTransform")
+    twist = Twist.from_vector(xi)
+    g = SE3.exp(xi)
+    # scipy's exponential coordinates are (rotation vector, translation part):
+    # the Modern Robotics order (w, v), not chasles' (v, w).
+    ref = rt.from_exp_coords(twist.to_modern_robotics())
+    assert close(g.as_matrix(), ref.as_matrix(), 1e-12)
+    back = rt.from_matrix(g.as_matrix()).as_exp_coords()
+    if angle_of(xi) < PI - 1e-6:
+        assert close(Twist.from_modern_robotics(back).vector, g.log(), 1e-9)
+
+
+# ---- adjoint --------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("G", GROUPS, ids=ids)
+@given(data=st.data())
+def test_adjoint_is_a_homomorphism(G, data):
+    a, b = data.draw(elements(G)), data.draw(elements(G))
+    assert close((a @ b).adjoint(), a.adjoint() @ b.adjoint(), 1e-12)
+    assert close(a.inverse().adjoint(), np.linalg.inv(a.adjoint()), 1e-11)
+
+
+@pytest.mark.parametrize("G", GROUPS, ids=ids)
+@given(data=st.data())
+def test_conjugation_is_exp_of_adjoint(G, data):
+    g = data.draw(elements(G))
+    xi = data.draw(tangents(G))
+    assert_same(g @ G.exp(xi) @ g.inverse(), G.exp(g.adjoint() @ xi), 1e-10)
+    X = hat_ref(G, xi)
+    M = g.as_matrix()
+    assert close(M @ X @ np.linalg.inv(M), G.hat(g.adjoint() @ xi), 1e-11)
+
+
+@given(g=se3s())
+def test_se3_adjoint_matches_its_definition(g):
+    assert close(g.adjoint(), adjoint_ref(g), 1e-15)
+    assert np.array_equal(g.rotation().adjoint(), g.rotation().as_matrix())
+
+
+# ---- twists, wrenches and frames ------------------------------------------------
+
+
+@given(g=se3s(), V=twists(), F=wrenches())
+def test_power_is_frame_independent(g, V, F):
+    p = V.power(F)
+    assert p == F.power(V)
+    # Power can cancel to 0: compare with |V| |F| (times the lever arm |p|), from
+    # max-norms, which do not underflow for tiny vectors as |x|^2 does.
+    lever = 1.0 + float(np.max(np.abs(g.translation())))
+    scale = 6.0 * float(np.max(np.abs(V.vector))) * float(np.max(np.abs(F.vector))) * lever
+    assert abs(g.act(V).power(g.act(F)) - p) <= 1e-13 * scale + 1e-300
+    assert abs(g.act_inv(V).power(g.act_inv(F)) - p) <= 1e-13 * scale + 1e-300
+    assert abs(p - float(np.dot(V.vector, F.vector))) <= 1e-15 * scale
+
+
+@given(g=se3s(), V=twists(), F=wrenches())
+def test_twists_change_frame_by_ad_and_wrenches_by_its_inverse_transpose(g, V, F):
+    Ad = adjoint_ref(g)
+    assert close(g.act(V).vector, Ad @ V.vector, 1e-12)
+    assert close(g.act_inv(V).vector, np.linalg.solve(Ad, V.vector), 1e-10)
+    assert close(g.act(F).vector, np.linalg.solve(Ad.T, F.vector), 1e-10)
+    assert close(g.act_inv(F).vector, Ad.T @ F.vector, 1e-12)
+    assert_same(g.act_inv(g.act(V)), V, 1e-10)
+    assert_same(g.act_inv(g.act(F)), F, 1e-10)
+
+
+@given(g=se3s(), Vb=twists())
+def test_spatial_and_body_twists(g, Vb):
+    g_dot = g.as_matrix() @ Vb.hat()  # g' = g [V^b]
+    assert_same(Twist.body(g, g_dot), Vb, 1e-10)
+    Vs = Twist.spatial(g, g_dot)
+    assert_same(Vs, g.act(Vb), 1e-10)  # V^s = Ad_g V^b
+    assert close(Vs.hat(), g_dot @ np.linalg.inv(g.as_matrix()), 1e-10)
+
+
+@given(a=twists(), b=twists())
+def test_bracket_is_the_matrix_commutator_and_ad(a, b):
+    c = a.bracket(b)
+    assert close(c.hat(), a.hat() @ b.hat() - b.hat() @ a.hat(), 1e-12)
+    assert close(a.ad() @ b.vector, c.vector, 1e-12)
+    assert_same(b.bracket(a), -c, 1e-15)
+
+
+@given(a=twists(), b=twists(), k=st.floats(-10, 10))
+def test_twist_arithmetic(a, b, k):
+    assert np.array_equal((a + b).vector, a.vector + b.vector)
+    assert np.array_equal((a - b).vector, a.vector - b.vector)
+    assert np.array_equal((-a).vector, -a.vector)
+    assert np.array_equal((+a).vector, a.vector)
+    assert np.array_equal((a * k).vector, a.vector * k)
+    assert np.array_equal((k * a).vector, a.vector * k)
+    assert np.array_equal((np.float64(k) * a).vector, a.vector * k)
+    assert isinstance(np.float32(2.0) * a, Twist)
+    assert isinstance(np.int64(2) * a, Twist)
+    assert np.array_equal((a * np.array(2.0)).vector, 2.0 * a.vector)
+    if abs(k) >= 1e-6:
+        assert np.array_equal((a / k).vector, a.vector / k)
+
+
+@given(F=wrenches(), G=wrenches())
+def test_wrench_arithmetic(F, G):
+    assert np.array_equal((F + G).vector, F.vector + G.vector)
+    assert np.array_equal((F - G).vector, F.vector - G.vector)
+    assert np.array_equal((2 * F).vector, 2.0 * F.vector)
+    assert np.array_equal((-F).vector, -F.vector)
+
+
+def test_parts_and_orders():
+    xi = Twist(v=[1.0, 2.0, 3.0], w=[4.0, 5.0, 6.0])
+    assert np.array_equal(xi.vector, [1, 2, 3, 4, 5, 6])
+    assert np.array_equal(xi.linear, [1, 2, 3])
+    assert np.array_equal(xi.angular, [4, 5, 6])
+    assert np.array_equal(xi.to_modern_robotics(), [4, 5, 6, 1, 2, 3])
+    assert np.array_equal(Twist.from_modern_robotics([4, 5, 6, 1, 2, 3]).vector, xi.vector)
+    assert np.array_equal(Twist.from_vector(xi.vector).vector, xi.vector)
+    assert np.array_equal(Twist().vector, np.zeros(6))
+    assert np.array_equal(Twist.vee(xi.hat()).vector, xi.vector)
+    F = Wrench(f=[1.0, 2.0, 3.0], tau=[4.0, 5.0, 6.0])
+    assert np.array_equal(F.force, [1, 2, 3])
+    assert np.array_equal(F.torque, [4, 5, 6])
+    assert np.array_equal(Wrench.from_vector(F.vector).vector, F.vector)
+    assert np.array_equal(Wrench().vector, np.zeros(6))
+
+
+# ---- screws (Chasles and Poinsot) -----------------------------------------------
+
+
+@given(g=se3s())
+def test_from_screw_of_the_screw_of_log_gives_g_back(g):
+    s = Twist.from_vector(g.log()).screw()
+    assert_same(SE3.from_screw(s.point, s.direction, s.pitch, s.magnitude), g, 1e-9)
+    assert_same(SE3.from_screw(*s), g, 1e-9)
+
+
+@given(xi=twists())
+def test_screw_of_a_twist(xi):
+    s = xi.screw()
+    w, v = xi.angular, xi.linear
+    w2 = float(w @ w)
+    if w2 > 0:
+        assert math.isclose(s.magnitude, math.sqrt(w2), rel_tol=1e-15)
+        assert close(s.direction, w / math.sqrt(w2), 1e-15)
+        assert math.isclose(s.pitch, float(w @ v) / w2, rel_tol=1e-12, abs_tol=1e-12)
+        assert close(s.point, np.cross(w, v) / w2, 1e-12)
+        assert xi.pitch == s.pitch
+    elif float(v @ v) > 0:
+        assert s.pitch == math.inf and xi.pitch == math.inf
+        assert math.isclose(s.magnitude, float(np.linalg.norm(v)), rel_tol=1e-15)
+    assert_same(Twist.from_screw(*s), xi, 1e-9)
+
+
+def test_screw_of_a_pure_translation_and_of_zero():
+    s = Twist(v=[0.0, 3.0, 4.0]).screw()
+    assert s.pitch == math.inf and s.magnitude == 5.0
+    assert np.array_equal(s.direction, [0.0, 0.6, 0.8]) and np.array_equal(s.point, np.zeros(3))
+    g = SE3.from_screw([1.0, 2.0, 3.0], [0.0, 0.0, 2.0], math.inf, 1.5)
+    assert_same(g, SE3(translation=[0.0, 0.0, 1.5]), 0.0)
+    z = Twist().screw()
+    assert (z.pitch, z.magnitude) == (0.0, 0.0) and np.array_equal(z.direction, np.zeros(3))
+    assert_same(SE3.from_screw(*z), SE3(), 0.0)
+
+
+@given(F=wrenches())
+def test_screw_of_a_wrench(F):
+    s = F.screw()
+    f = F.force
+    if float(f @ f) > 0:
+        assert math.isclose(s.magnitude, float(np.linalg.norm(f)), rel_tol=1e-15)
+        assert math.isclose(
+            s.pitch, float(f @ F.torque) / float(f @ f), rel_tol=1e-12, abs_tol=1e-12
+        )
+        assert F.pitch == s.pitch
+    assert_same(Wrench.from_screw(*s), F, 1e-9)
+
+
+@given(q=vectors3(), d=unit_vectors(), h=st.floats(-5, 5), theta=angles())
+def test_from_screw_formula(q, d, h, theta):
+    expected = theta * np.concatenate([-np.cross(d, q) + h * d, d])
+    assert close(Twist.from_screw(q, d, h, theta).vector, expected, 1e-14)
+    assert close(Twist.from_screw(q, 3.0 * d, h, theta).vector, expected, 1e-14)  # d is normalized
+    assert_same(SE3.from_screw(q, d, h, theta), SE3.exp(expected), 1e-14)
+    F = Wrench.from_screw(q, d, h, theta)
+    assert close(F.vector, theta * np.concatenate([d, np.cross(q, d) + h * d]), 1e-14)
+
+
+@given(l1=st.floats(-10, 10), theta=st.one_of(st.sampled_from(SPECIAL_ANGLES), st.floats(-10, 10)))
+def test_seed_worked_example(l1, theta):
+    """Rotation by theta about z through (0, l1, 0), pitch 0 (the seed's last section)."""
+    xi = Twist.from_screw([0.0, l1, 0.0], [0.0, 0.0, 1.0], 0.0, 1.0)
+    assert np.array_equal(xi.vector, [l1, 0.0, 0.0, 0.0, 0.0, 1.0]) or np.array_equal(
+        xi.vector, [l1, -0.0, 0.0, 0.0, 0.0, 1.0]
+    )
+    assert np.array_equal(xi.hat(), [[0, -1, 0, l1], [1, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]])
+    c, s = math.cos(theta), math.sin(theta)
+    closed_form = np.array(
+        [[c, -s, 0, l1 * s], [s, c, 0, l1 * (1 - c)], [0, 0, 1, 0], [0, 0, 0, 1]]
+    )
+    g = SE3.exp(theta * xi.vector)
+    assert close(g.as_matrix(), closed_form, 1e-13)
+    axis = np.array([[0.0, l1, z] for z in (-3.0, 0.0, 2.5)])
+    assert close(g @ axis, axis, 1e-13)
+
+
+# ---- construction from matrices, normalization, interpolation ------------------
+
+
+@pytest.mark.parametrize("G", GROUPS, ids=ids)
+@given(data=st.data())
+def test_from_matrix_forms(G, data):
+    g = data.draw(elements(G))
+    M = g.as_matrix()
+    assert_same(G.from_matrix(M), g, 0.0)
+    assert_same(G.from_matrix_unchecked(M), g, 0.0)
+    assert_same(G.from_matrix_projected(M), g, 1e-14)
+    n = M.shape[0]
+    noisy = M.copy()
+    noisy[:3, :3] += 1e-6 * np.arange(9.0).reshape(3, 3) / 9.0
+    with pytest.raises(ValueError, match="from_matrix_projected"):
+        G.from_matrix(noisy)
+    assert_same(G.from_matrix(noisy, tol=1e-4), G.from_matrix_unchecked(noisy), 0.0)
+    assert_same(G.from_matrix_projected(noisy), g, 1e-5)
+    assert_same(G.from_matrix_unchecked(noisy).normalized(), G.from_matrix_projected(noisy), 1e-14)
+    assert n in (3, 4)
+
+
+def test_rotation_and_transform_defects():
+    assert SO3.rotation_defect(np.eye(3)) == 0.0
+    assert SO3.rotation_defect(np.diag([1.0, 1.0, -1.0])) == 2.0
+    assert math.isclose(SO3.rotation_defect(np.eye(3) * (1 + 1e-6)), 3e-6, rel_tol=1e-3)
+    M = np.eye(4)
+    M[3, 0] = 0.25
+    assert SE3.transform_defect(M) == 0.25
+    assert SO3.rotation_defect(np.full((3, 3), np.nan)) == math.inf
+    assert SE3.transform_defect(np.full((4, 4), np.inf)) == math.inf
+
+
+@pytest.mark.parametrize("G", GROUPS, ids=ids)
+@given(data=st.data(), t=st.floats(0.0, 1.0))
+def test_interpolation(G, data, t):
+    a, b = data.draw(elements(G)), data.draw(elements(G))
+    assert_same(G.interpolate(a, b, 0.0), a, 1e-12)
+    assert_same(G.interpolate(a, b, 1.0), b, 1e-9)
+    m = G.interpolate(a, b, t)
+    assert_same(chasles.interpolate(a, b, t), m, 0.0)
+    assert_same(m, a @ G.exp(t * (a.inverse() @ b).log()), 1e-12)
+
+
+def test_se3_parts():
+    R = SO3.exp([0.1, 0.2, 0.3])
+    g = SE3(R, [1.0, 2.0, 3.0])
+    assert_same(g.rotation(), R, 0.0)
+    assert np.array_equal(g.translation(), [1.0, 2.0, 3.0])
+    assert np.array_equal(g.as_matrix()[3], [0.0, 0.0, 0.0, 1.0])
+    assert_same(SE3(rotation=R), SE3(R, (0, 0, 0)), 0.0)
+    assert_same(SE3(translation=[1, 2, 3]).rotation(), SO3(), 0.0)
+    assert close(g.act_inv(g @ [4.0, 5.0, 6.0]), [4.0, 5.0, 6.0], 1e-15)
+
+
+# ---- points: shapes, layouts, dtypes ----------------------------------------------
+
+
+@pytest.mark.parametrize("G", GROUPS, ids=ids)
+def test_points_of_any_leading_shape_layout_and_dtype(G):
+    rng = np.random.default_rng(7)
+    g = G.exp(rng.normal(size=3 if G is SO3 else 6))
+    base = rng.normal(size=(2, 5, 3))
+    ref = (g.as_matrix()[:3, :3] @ base.reshape(-1, 3).T).T.reshape(2, 5, 3)
+    if G is SE3:
+        ref = ref + g.translation()
+    assert close(g @ base, ref, 1e-14) and (g @ base).shape == (2, 5, 3)
+    flat = base.reshape(-1, 3)
+    assert np.array_equal(g @ flat, (g @ base).reshape(-1, 3))
+    assert np.array_equal(g @ np.asfortranarray(flat), g @ flat)
+    strided = np.zeros((10, 6))
+    strided[:, ::2] = flat
+    assert np.array_equal(g @ strided[:, ::2], g @ flat)
+    assert np.array_equal(g @ flat[::-1], (g @ flat)[::-1])
+    assert np.array_equal(g @ flat.astype(">f8"), g @ flat)
+    assert np.array_equal(
+        g @ flat.astype(np.float32), g @ flat.astype(np.float32).astype(np.float64)
+    )
+    assert np.array_equal(g @ [1, 2, 3], g @ np.array([1.0, 2.0, 3.0]))
+    assert np.array_equal(g @ (1, 2, 3), g @ np.array([1.0, 2.0, 3.0]))
+    assert np.array_equal(g @ [[1, 2, 3]], g @ np.array([[1.0, 2.0, 3.0]]))
+    assert (g @ np.zeros((0, 3))).shape == (0, 3)
+    out = g @ flat
+    assert out.dtype == np.float64 and out.flags.c_contiguous and out.flags.writeable
+    many = rng.normal(size=(10000, 3))  # large enough to release the GIL
+    assert np.array_equal((g @ many)[1234], g @ many[1234])
+    before = flat.copy()
+    g @ flat
+    assert np.array_equal(flat, before)  # the input is not modified
+
+
+def test_results_are_fresh_arrays():
+    g = SE3.exp([1.0, 2.0, 3.0, 0.1, 0.2, 0.3])
+    m = g.as_matrix()
+    m[0, 0] = 42.0
+    assert g.as_matrix()[0, 0] != 42.0
+    t = g.translation()
+    t[0] = 42.0
+    assert g.translation()[0] != 42.0
+    xi = Twist(v=[1.0, 2.0, 3.0])
+    v = xi.vector
+    v[0] = 42.0
+    assert xi.vector[0] == 1.0
+
+
+# ---- Python protocols ---------------------------------------------------------------
+
+
+def all_kinds():
+    g = SE3(SO3.exp([0.1, -0.2, 0.3]), [1.0 / 3.0, 2.0, -7.25])
+    return [
+        g.rotation(),
+        g,
+        Twist(v=[0.1, 0.2, 1.0 / 3.0], w=[1e-300, -0.0, 5.0]),
+        Wrench(f=[1.0, 2.0, 3.0], tau=[math.pi, 0.0, -1e10]),
+        Twist(v=[1.0, 2.0, 3.0], w=[0.0, 0.0, 1.0]).screw(),
+        Twist(v=[1.0, 2.0, 3.0]).screw(),
+    ]
+
+
+def state_of(x):
+    return x.__getstate__()
+
+
+def bits(x) -> bytes:
+    return np.array(state_of(x), dtype=np.float64).tobytes()
+
+
+@pytest.mark.parametrize("x", all_kinds(), ids=lambda x: type(x).__name__)
+@pytest.mark.parametrize("protocol", range(pickle.HIGHEST_PROTOCOL + 1))
+def test_pickle_is_bit_exact(x, protocol):
+    y = pickle.loads(pickle.dumps(x, protocol=protocol))
+    assert type(y) is type(x) and y is not x
+    assert bits(y) == bits(x)
+
+
+@pytest.mark.parametrize("x", all_kinds(), ids=lambda x: type(x).__name__)
+def test_copy_and_deepcopy_are_exact_and_distinct(x):
+    for y in (copy.copy(x), copy.deepcopy(x), copy.deepcopy([x, x])[0]):
+        assert type(y) is type(x) and y is not x
+        assert bits(y) == bits(x)
+
+
+def test_pickle_keeps_unchecked_data_and_negative_zero():
+    M = np.diag([1.0, 1.0, 1.0 + 1e-3])
+    R = SO3.from_matrix_unchecked(M)
+    assert np.array_equal(pickle.loads(pickle.dumps(R)).as_matrix(), M)
+    t = Twist(v=[-0.0, 0.0, 0.0])
+    assert math.copysign(1.0, pickle.loads(pickle.dumps(t)).vector[0]) == -1.0
+
+
+@pytest.mark.parametrize("x", all_kinds()[:4], ids=lambda x: type(x).__name__)
+def test_asarray(x):
+    expected = x.as_matrix() if hasattr(x, "as_matrix") else x.vector
+    a = np.asarray(x)
+    assert a.dtype == np.float64 and np.array_equal(a, expected)
+    assert np.array_equal(np.array(x), expected)
+    assert np.array_equal(np.array(x, copy=True), expected)
+    f = np.asarray(x, dtype=np.float32)
+    assert f.dtype == np.float32 and np.array_equal(f, expected.astype(np.float32))
+    with pytest.raises(ValueError, match="copy"):
+        np.array(x, copy=False)
+    assert np.asarray([x, x]).shape == (2,) + expected.shape
+
+
+def test_repr_shows_the_numbers():
+    assert repr(SO3()) == "SO3(matrix=[[1., 0., 0.], [0., 1., 0.], [0., 0., 1.]])"
+    assert repr(SE3(translation=[1.0, 2.0, 3.5])) == (
+        "SE3(rotation=[[1., 0., 0.], [0., 1., 0.], [0., 0., 1.]], translation=[1. , 2. , 3.5])"
+    )
+    assert (
+        repr(Twist(v=[1.0, 2.0, 3.0], w=[0.0, 0.0, 1.0])) == "Twist(v=[1., 2., 3.], w=[0., 0., 1.])"
+    )
+    assert repr(Wrench(f=[0.0, 0.0, -9.81])) == "Wrench(f=[ 0.  ,  0.  , -9.81], tau=[0., 0., 0.])"
+    assert repr(Twist(v=[1.0, 0.0, 0.0]).screw()) == (
+        "Screw(point=[0., 0., 0.], direction=[1., 0., 0.], pitch=inf, magnitude=1.0)"
+    )
+    assert "0.12345679" in repr(SE3(translation=[0.123456789, 0.0, 0.0]))  # numpy's print options
+
+
+def test_equality_is_identity_never_approximate():
+    a = SE3.exp([1.0, 2.0, 3.0, 0.1, 0.2, 0.3])
+    b = copy.copy(a)
+    assert a == a  # noqa: PLR0124 (identity is what == means here)
+    assert (a == b) is False  # equal numbers, distinct objects: == is not a numeric comparison
+    assert a != b
+    assert a.is_approx(b, 0.0)
+    assert "__eq__" not in type(a).__dict__
+    for cls in (SO3, SE3, Twist, Wrench, Screw):
+        assert "__eq__" not in cls.__dict__
+
+
+def test_numpy_operands_defer_to_the_objects():
+    R = SO3.exp([0.0, 0.0, 1.0])
+    with pytest.raises(TypeError):
+        np.ones(3) @ R  # would silently be p R (R^T acting) if numpy converted R
+    with pytest.raises(TypeError):
+        np.matmul(np.ones(3), R)
+    xi = Twist(v=[1.0, 0.0, 0.0])
+    assert isinstance(np.float64(2.0) * xi, Twist)
+    with pytest.raises(TypeError):
+        np.ones(6) + xi
+
+
+def test_python_subclasses_are_accepted():
+    class Pose(SE3):
+        pass
+
+    p = Pose(SO3(), [1.0, 2.0, 3.0])
+    assert isinstance(p @ SE3(), SE3)
+    assert np.array_equal(SE3() @ p @ [0.0, 0.0, 0.0], [1.0, 2.0, 3.0])
+
+
+def test_is_approx_tolerances():
+    a = SE3(translation=[1000.0, 0.0, 0.0])
+    b = SE3(translation=[1000.0 + 1e-7, 0.0, 0.0])
+    assert a.is_approx(b, 1e-9)  # translations relative beyond unit scale
+    assert not a.is_approx(b, 1e-11)
+    assert SO3.exp([1e-10, 0, 0]).is_approx(SO3(), 1e-9)
+    assert not SO3.exp([1e-8, 0, 0]).is_approx(SO3(), 1e-9)
+    assert Twist(v=[1.0, 0, 0]).is_approx(Twist(v=[1.0 + 1e-12, 0, 0]))
+    assert math.inf > 0 and SO3().is_approx(SO3.exp([3, 0, 0]), tol=math.inf)
+
+
+# ---- docstrings ----------------------------------------------------------------------
+
+CLASSES = [SO3, SE3, Twist, Wrench, Screw]
+CONVENTION = "twists xi = (v, w), linear part first (Murray, Li and Sastry)"
+
+
+@pytest.mark.parametrize("cls", CLASSES, ids=lambda c: c.__name__)
+def test_class_docstrings_state_the_conventions(cls):
+    doc = cls.__doc__
+    if cls is Screw:
+        assert "pitch" in doc and "magnitude" in doc
+        return
+    assert CONVENTION in doc
+    assert "wrenches F = (f, tau), force first, so power is the dot product V . F" in doc
+    assert "Ad_g = [[R, [p]R], [0, R]]" in doc
+    assert "(x, y, z, w), scalar last" in doc
+    assert "is_approx" in doc
+
+
+def public_members(cls):
+    for name, value in vars(cls).items():
+        if name.startswith("_") and name not in ("__init__", "__matmul__"):
+            continue
+        yield name, value
+
+
+@pytest.mark.parametrize("cls", CLASSES, ids=lambda c: c.__name__)
+def test_every_member_is_documented_with_named_arguments(cls):
+    for name, value in public_members(cls):
+        doc = getattr(value, "__doc__", None) or getattr(
+            getattr(value, "fget", None), "__doc__", None
+        )
+        assert doc and doc.strip(), f"{cls.__name__}.{name} has no docstring"
+        assert "arg0" not in doc, f"{cls.__name__}.{name} has an unnamed argument"
+
+
+def docstring_examples():
+    """Every docstring of the package with an example, by name."""
+    found = [("chasles", chasles.__doc__)]
+    for cls in CLASSES:
+        found.append((cls.__name__, cls.__doc__))
+        for name, value in public_members(cls):
+            doc = getattr(value, "__doc__", None) or getattr(
+                getattr(value, "fget", None), "__doc__", None
+            )
+            found.append((f"{cls.__name__}.{name}", doc))
+    return [(name, doc) for name, doc in found if doc and ">>>" in doc]
+
+
+@pytest.mark.parametrize(
+    "name,doc",
+    docstring_examples(),
+    ids=lambda x: x if isinstance(x, str) and "\n" not in x else "",
+)
+def test_docstring_examples_run(name, doc):
+    globs = {"np": np, "chasles": chasles, **{k: getattr(chasles, k) for k in chasles.__all__}}
+    test = doctest.DocTestParser().get_doctest(doc, globs, name, None, 0)
+    runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE)
+    out = []
+    runner.run(test, out=out.append)
+    assert runner.failures == 0, "".join(out)
+
+
+def test_version_and_exports():
+    assert chasles.__version__ == chasles._core.__version__
+    assert isinstance(chasles.__version__, str) and chasles.__version__.count(".") == 2
+    for name in chasles.__all__:
+        assert hasattr(chasles, name), name
+    assert {"SO3", "SE3", "Twist", "Wrench", "Screw", "interpolate"} <= set(chasles.__all__)
+
+
+@given(w=rotation_vectors(), p=points())
+def test_objects_agree_with_the_array_functions(w, p):
+    R = SO3.exp(w)
+    assert np.array_equal(chasles.so3_exp(w), R.as_matrix())
+    assert np.array_equal(chasles.so3_act(R.as_matrix(), p), R @ p)
+
+
+@given(xi=twist_vectors(), F=wrench_vectors())
+def test_objects_agree_with_the_se3_array_functions(xi, F):
+    g = SE3.exp(xi)
+    assert np.array_equal(chasles.se3_exp(xi), g.as_matrix())
+    assert np.array_equal(chasles.se3_log(g.as_matrix()), g.log())
+    assert np.array_equal(chasles.se3_adjoint(g.as_matrix()), g.adjoint())
+    assert np.array_equal(
+        chasles.se3_act_wrench(g.as_matrix(), F), g.act(Wrench.from_vector(F)).vector
+    )
+    assert np.array_equal(
+        chasles.se3_act_twist(g.as_matrix(), xi), g.act(Twist.from_vector(xi)).vector
+    )
