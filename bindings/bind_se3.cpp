@@ -512,14 +512,37 @@ Returns:
         return chasles::interpolate(*a, *b, to_finite_real(t.obj, "interpolate(t)"));
       },
       py::arg("a"), py::arg("b"), py::arg("t"),
-      "Geodesic interpolation of rotations a exp(t log(a^-1 b)) (SO3.interpolate).");
+      R"doc(Geodesic interpolation of rotations a exp(t log(a^-1 b)) (as SO3.interpolate).
+
+Args:
+    a: SO3, the start (t = 0).
+    b: SO3, the end (t = 1).
+    t: the fraction, finite.
+
+Returns:
+    SO3: the interpolated rotation.
+)doc");
   m.def(
       "interpolate",
       [](Obj<SE3d> a, Obj<SE3d> b, RealLike t) {
         return chasles::interpolate(*a, *b, to_finite_real(t.obj, "interpolate(t)"));
       },
       py::arg("a"), py::arg("b"), py::arg("t"),
-      "Screw interpolation of rigid motions a exp(t log(a^-1 b)) (SE3.interpolate).");
+      R"doc(Screw interpolation of rigid motions a exp(t log(a^-1 b)) (as SE3.interpolate).
+
+Args:
+    a: SE3, the start (t = 0).
+    b: SE3, the end (t = 1).
+    t: the fraction, finite.
+
+Returns:
+    SE3: the interpolated motion.
+
+Example:
+    >>> m = chasles.interpolate(SE3(), SE3(translation=[0.0, 0.0, 4.0]), 0.25)
+    >>> m.translation()
+    array([0., 0., 1.])
+)doc");
 }
 
 }  // namespace chasles_py

@@ -1318,12 +1318,33 @@ class Wrench:
 @typing.overload
 def interpolate(a: SO3, b: SO3, t: float) -> SO3:
     """
-    Geodesic interpolation of rotations a exp(t log(a^-1 b)) (SO3.interpolate).
+    Geodesic interpolation of rotations a exp(t log(a^-1 b)) (as SO3.interpolate).
+    
+    Args:
+        a: SO3, the start (t = 0).
+        b: SO3, the end (t = 1).
+        t: the fraction, finite.
+    
+    Returns:
+        SO3: the interpolated rotation.
     """
 @typing.overload
 def interpolate(a: SE3, b: SE3, t: float) -> SE3:
     """
-    Screw interpolation of rigid motions a exp(t log(a^-1 b)) (SE3.interpolate).
+    Screw interpolation of rigid motions a exp(t log(a^-1 b)) (as SE3.interpolate).
+    
+    Args:
+        a: SE3, the start (t = 0).
+        b: SE3, the end (t = 1).
+        t: the fraction, finite.
+    
+    Returns:
+        SE3: the interpolated motion.
+    
+    Example:
+        >>> m = chasles.interpolate(SE3(), SE3(translation=[0.0, 0.0, 4.0]), 0.25)
+        >>> m.translation()
+        array([0., 0., 1.])
     """
 def se3_act(g: typing.Any, points: typing.Any) -> numpy.ndarray:
     """

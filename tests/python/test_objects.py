@@ -708,7 +708,7 @@ def test_every_member_is_documented_with_named_arguments(cls):
 
 def docstring_examples():
     """Every docstring of the package with an example, by name."""
-    found = [("chasles", chasles.__doc__)]
+    found = [("chasles", chasles.__doc__), ("interpolate", chasles.interpolate.__doc__)]
     for cls in CLASSES:
         found.append((cls.__name__, cls.__doc__))
         for name, value in public_members(cls):
