@@ -41,8 +41,16 @@
 
 #include "bindings.hpp"
 
+// Hidden, as pybind11's own namespace: types here hold pybind11 objects,
+// and a type more visible than its fields draws -Wattributes.
+#if defined(__GNUC__) && !defined(_WIN32)
+#define CHASLES_PY_BATCH_HIDDEN __attribute__((visibility("hidden")))
+#else
+#define CHASLES_PY_BATCH_HIDDEN
+#endif
+
 namespace chasles_py {
-namespace batch {
+namespace batch CHASLES_PY_BATCH_HIDDEN {
 
 using ssize = py::ssize_t;
 
@@ -81,16 +89,17 @@ struct Core<R, C> {
   static std::vector<ssize> dims() { return {R, C}; }
 };
 
-/// An operand as passed by the caller: its name (for messages) and the object.
+/// An operand as passed by the caller: its name (for messages) and the
+/// object, borrowed.
 template <typename C>
 struct In {
   const char* name;
-  py::handle obj;
+  PyObject* obj;
 };
 
 template <typename C>
 In<C> in(const char* name, py::handle obj) {
-  return {name, obj};
+  return {name, obj.ptr()};
 }
 
 // ---- messages ---------------------------------------------------------------
@@ -109,16 +118,29 @@ inline std::string shape_str(const ssize* dims, ssize n, bool ellipsis = false) 
 
 // ---- element access ---------------------------------------------------------
 
-/// Reads one core element at p, entry (r, c) at p + r * s[0] + c * s[1]
-/// bytes. memcpy: no alignment assumed, compiles to a plain load.
+/// Whether byte strides s are those of a C-contiguous core of T.
 template <typename C, typename T>
+inline bool is_contiguous(const std::array<ssize, 2>& s) noexcept {
+  constexpr ssize t = sizeof(T);
+  if constexpr (C::ndim == 0) return true;
+  if constexpr (C::ndim == 1) return s[0] == t;
+  return s[0] == C::cols * t && s[1] == t;
+}
+
+/// Reads one core element at p, entry (r, c) at p + r * s[0] + c * s[1]
+/// bytes, or at p + (r * cols + c) * sizeof(T) if `Contiguous` (the strides
+/// then known to the compiler). memcpy: no alignment assumed, compiles to a
+/// plain load.
+template <typename C, typename T, bool Contiguous>
 inline typename C::template Value<T> load(const char* p, const std::array<ssize, 2>& s) noexcept {
   typename C::template Value<T> v;
   if constexpr (C::ndim == 0) {
     std::memcpy(&v, p, sizeof(T));
   } else {
+    const ssize s0 = Contiguous ? ssize(C::cols * sizeof(T)) : s[0];
+    const ssize s1 = Contiguous ? ssize(sizeof(T)) : s[1];
     for (int r = 0; r < C::rows; ++r)
-      for (int c = 0; c < C::cols; ++c) std::memcpy(&v(r, c), p + r * s[0] + c * s[1], sizeof(T));
+      for (int c = 0; c < C::cols; ++c) std::memcpy(&v(r, c), p + r * s0 + c * s1, sizeof(T));
   }
   return v;
 }
@@ -148,13 +170,12 @@ struct Operand {
   int core_ndim;  ///< 0, 1 or 2
 };
 
-inline Operand prepare(const char* fname, const char* name, py::handle obj, int core_ndim,
+inline Operand prepare(const char* fname, const char* name, PyObject* o, int core_ndim,
                        const std::vector<ssize>& core) {
   // Python scalars are weak, as in numpy >= 2 (NEP 50); numpy's own scalar
   // types (np.float64 derives from float) are not.
-  PyObject* o = obj.ptr();
   const bool weak = PyFloat_CheckExact(o) || PyLong_CheckExact(o) || PyBool_Check(o);
-  Operand op{name, py::array(py::reinterpret_borrow<py::object>(obj)), Kind::f64, weak, core_ndim};
+  Operand op{name, py::array(py::reinterpret_borrow<py::object>(o)), Kind::f64, weak, core_ndim};
 
   const py::dtype dt = op.arr.dtype();
   const char k = dt.kind();
@@ -218,7 +239,9 @@ void coalesce(Plan<N>& p) {
 /// Calls the kernel for every batch index in C order, writing the results
 /// one after the other from `out`. Operands that do not move along the inner
 /// axis (one pose acting on many points) are read once per inner run.
-template <typename OutCore, typename T, typename... Cores, typename Kernel, std::size_t... I>
+/// `Contiguous`: every operand's core is C-contiguous (the common case,
+/// compiled with constant offsets).
+template <typename OutCore, typename T, bool Contiguous, typename... Cores, typename Kernel, std::size_t... I>
 void run_loop(const Plan<sizeof...(Cores)>& p, const Kernel& kernel, T* out, std::index_sequence<I...>) {
   constexpr std::size_t N = sizeof...(Cores);
   const int nd = static_cast<int>(p.shape.size());
@@ -229,9 +252,9 @@ void run_loop(const Plan<sizeof...(Cores)>& p, const Kernel& kernel, T* out, std
   std::array<const char*, N> base = p.data;
   std::tuple<typename Cores::template Value<T>...> args;
   for (;;) {
-    ((std::get<I>(args) = load<Cores, T>(base[I], p.core[I])), ...);
+    ((std::get<I>(args) = load<Cores, T, Contiguous>(base[I], p.core[I])), ...);
     for (ssize i = 0; i < inner; ++i) {
-      if (i) ((step[I] ? (void)(std::get<I>(args) = load<Cores, T>(base[I] + i * step[I], p.core[I])) : (void)0), ...);
+      if (i) ((step[I] ? (void)(std::get<I>(args) = load<Cores, T, Contiguous>(base[I] + i * step[I], p.core[I])) : (void)0), ...);
       store<OutCore>(kernel(std::get<I>(args)...), out);
       out += OutCore::size;
     }
@@ -306,11 +329,18 @@ py::array run(const char* fname, const Kernel& kernel, std::array<Operand, sizeo
   coalesce(p);
   T* dst = out.mutable_data();
 
+  const bool contiguous = (is_contiguous<Cores, T>(p.core[I]) && ...);
+  auto loop = [&] {
+    if (contiguous)
+      run_loop<OutCore, T, true, Cores...>(p, kernel, dst, seq);
+    else
+      run_loop<OutCore, T, false, Cores...>(p, kernel, dst, seq);
+  };
   if (count > kGilThreshold) {
     py::gil_scoped_release release;
-    run_loop<OutCore, T, Cores...>(p, kernel, dst, seq);
+    loop();
   } else {
-    run_loop<OutCore, T, Cores...>(p, kernel, dst, seq);
+    loop();
   }
   return std::move(out);
 }
