@@ -9,21 +9,23 @@
 //
 //   apply<Core<3, 3>>("so3_exp", kernel, in<Core<3>>("w", w))
 //
-// calls `kernel(w_i)` (an Eigen::Matrix<T, 3, 1>) for every batch index i and
-// stores the returned 3x3 matrix. The kernel is a generic lambda, instantiated
-// for T = float and T = double; it calls the chasles C++ API and nothing here
-// knows any of the mathematics.
+// calls `kernel(w_i)` for every batch index i, w_i an Eigen::Map of the 3
+// numbers in the operand's memory, and stores the returned 3x3 matrix. The
+// kernel is a generic lambda, instantiated for T = float and T = double; it
+// calls the chasles C++ API and nothing here knows any of the mathematics.
 //
 // dtypes: float32 operands give float32 results (the float kernels); any
 // float64 operand makes the call float64; integer and bool arrays are
 // converted to float64; Python int/float scalars are "weak" (NEP 50) and do
 // not change the result type. Anything else is a TypeError.
 //
-// Memory: operands are read in place through their byte strides (any strides,
-// negative, zero, unaligned, read-only, Fortran order: no copy). Only a dtype
-// conversion makes a copy. The GIL is released around the loop once every
-// Python object has been dealt with (for more than kGilThreshold elements, as
-// numpy's ufuncs do: below that, releasing costs more than the loop).
+// Memory: operands are read in place through their strides (any strides,
+// negative, zero, read-only, Fortran order: no copy). A dtype conversion
+// makes a copy, and so does an unaligned array (a view into a byte buffer at
+// an odd offset: rare), as numpy's own loops do. The GIL is released around
+// the loop once every Python object has been dealt with (for more than
+// kGilThreshold elements, as numpy's ufuncs do: below that, releasing costs
+// more than the loop).
 #pragma once
 
 #include <pybind11/numpy.h>
@@ -33,7 +35,7 @@
 
 #include <array>
 #include <cstddef>
-#include <cstring>
+#include <cstdint>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -42,11 +44,17 @@
 #include "bindings.hpp"
 
 // Hidden, as pybind11's own namespace: types here hold pybind11 objects,
-// and a type more visible than its fields draws -Wattributes.
+// and a type more visible than its fields draws -Wattributes. Flatten: the
+// loop inlines its whole kernel (see run_loop).
 #if defined(__GNUC__) && !defined(_WIN32)
 #define CHASLES_PY_BATCH_HIDDEN __attribute__((visibility("hidden")))
 #else
 #define CHASLES_PY_BATCH_HIDDEN
+#endif
+#if defined(__GNUC__) || defined(__clang__)
+#define CHASLES_PY_BATCH_FLATTEN __attribute__((flatten))
+#else
+#define CHASLES_PY_BATCH_FLATTEN
 #endif
 
 namespace chasles_py {
@@ -60,8 +68,8 @@ constexpr ssize kGilThreshold = 500;
 // ---- core shapes ------------------------------------------------------------
 
 /// The fixed trailing shape of an operand or of a result: `Core<>` a scalar,
-/// `Core<3>` a vector of 3, `Core<4, 4>` a 4x4 matrix. `Value<T>` is what the
-/// kernel receives (T, Eigen::Matrix<T, N, 1>, Eigen::Matrix<T, R, C>).
+/// `Core<3>` a vector of 3, `Core<4, 4>` a 4x4 matrix. `Stored<T>` is the
+/// Eigen type of one element in C order.
 template <int... Dims>
 struct Core;
 
@@ -69,7 +77,7 @@ template <>
 struct Core<> {
   static constexpr int ndim = 0, rows = 1, cols = 1, size = 1;
   template <typename T>
-  using Value = T;
+  using Stored = T;
   static std::vector<ssize> dims() { return {}; }
 };
 
@@ -77,7 +85,7 @@ template <int N>
 struct Core<N> {
   static constexpr int ndim = 1, rows = N, cols = 1, size = N;
   template <typename T>
-  using Value = Eigen::Matrix<T, N, 1>;
+  using Stored = Eigen::Matrix<T, N, 1>;
   static std::vector<ssize> dims() { return {N}; }
 };
 
@@ -85,7 +93,7 @@ template <int R, int C>
 struct Core<R, C> {
   static constexpr int ndim = 2, rows = R, cols = C, size = R * C;
   template <typename T>
-  using Value = Eigen::Matrix<T, R, C>;
+  using Stored = Eigen::Matrix<T, R, C, Eigen::RowMajor>;
   static std::vector<ssize> dims() { return {R, C}; }
 };
 
@@ -127,22 +135,28 @@ inline bool is_contiguous(const std::array<ssize, 2>& s) noexcept {
   return s[0] == C::cols * t && s[1] == t;
 }
 
-/// Reads one core element at p, entry (r, c) at p + r * s[0] + c * s[1]
-/// bytes, or at p + (r * cols + c) * sizeof(T) if `Contiguous` (the strides
-/// then known to the compiler). memcpy: no alignment assumed, compiles to a
-/// plain load.
+/// What the kernel receives for the element at p: a T for a scalar core,
+/// otherwise an Eigen::Map of the operand's memory, with the core strides s
+/// (bytes, multiples of sizeof(T)), or with constant offsets if
+/// `Contiguous`. The kernel converts it to the chasles argument type with
+/// Eigen's own assignment: reading the elements one by one into a local
+/// matrix instead made the kernels' vector loads wait on the scalar stores
+/// (a store-forwarding stall: so3_compose 26 ns instead of 6).
 template <typename C, typename T, bool Contiguous>
-inline typename C::template Value<T> load(const char* p, const std::array<ssize, 2>& s) noexcept {
-  typename C::template Value<T> v;
+inline auto view(const char* p, const std::array<ssize, 2>& s) noexcept {
+  const T* d = reinterpret_cast<const T*>(p);
+  constexpr ssize t = sizeof(T);
   if constexpr (C::ndim == 0) {
-    std::memcpy(&v, p, sizeof(T));
+    return *d;
+  } else if constexpr (Contiguous) {
+    return Eigen::Map<const typename C::template Stored<T>>(d);
+  } else if constexpr (C::ndim == 1) {
+    using Inner = Eigen::InnerStride<Eigen::Dynamic>;
+    return Eigen::Map<const typename C::template Stored<T>, Eigen::Unaligned, Inner>(d, Inner(s[0] / t));
   } else {
-    const ssize s0 = Contiguous ? ssize(C::cols * sizeof(T)) : s[0];
-    const ssize s1 = Contiguous ? ssize(sizeof(T)) : s[1];
-    for (int r = 0; r < C::rows; ++r)
-      for (int c = 0; c < C::cols; ++c) std::memcpy(&v(r, c), p + r * s0 + c * s1, sizeof(T));
+    using Strides = Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>;
+    return Eigen::Map<const typename C::template Stored<T>, Eigen::Unaligned, Strides>(d, Strides(s[0] / t, s[1] / t));
   }
-  return v;
 }
 
 /// Writes one core element, C order, at o.
@@ -151,9 +165,8 @@ inline void store(const V& v, T* o) noexcept {
   if constexpr (C::ndim == 0) {
     *o = v;
   } else {
-    const typename C::template Value<T> m = v;
-    for (int r = 0; r < C::rows; ++r)
-      for (int c = 0; c < C::cols; ++c) o[r * C::cols + c] = m(r, c);
+    Eigen::Map<typename C::template Stored<T>> m(o);
+    m = v;
   }
 }
 
@@ -236,13 +249,36 @@ void coalesce(Plan<N>& p) {
   p.strides = std::move(strides);
 }
 
+/// Which operand stays put along the inner axis (one pose acting on many
+/// points): the first non-scalar operand with a zero inner stride, or N if
+/// none does.
+template <typename... Cores, std::size_t N = sizeof...(Cores)>
+std::size_t fixed_operand(const Plan<N>& p) {
+  constexpr int ndims[] = {Cores::ndim...};
+  if (p.shape.empty()) return N;
+  for (std::size_t j = 0; j < N; ++j)
+    if (ndims[j] > 0 && p.strides[j].back() == 0) return j;
+  return N;
+}
+
 /// Calls the kernel for every batch index in C order, writing the results
-/// one after the other from `out`. Operands that do not move along the inner
-/// axis (one pose acting on many points) are read once per inner run.
+/// one after the other from `out`.
+///
 /// `Contiguous`: every operand's core is C-contiguous (the common case,
-/// compiled with constant offsets).
-template <typename OutCore, typename T, bool Contiguous, typename... Cores, typename Kernel, std::size_t... I>
-void run_loop(const Plan<sizeof...(Cores)>& p, const Kernel& kernel, T* out, std::index_sequence<I...>) {
+/// compiled with constant offsets). `Fixed` < N: that operand does not move
+/// along the inner axis; it is copied once per inner run into a local
+/// matrix, which the compiler can keep in registers and whose conversions
+/// it can hoist out of the loop (it cannot for a map of input memory, which
+/// the output stores might alias).
+///
+/// Flattened: the kernel is inlined whole. Left to itself, the compiler
+/// kept some conversions out of line (SE3::from_matrix_unchecked, Eigen's
+/// 4x4 copies) and the loop paid a store-forwarding stall on each: se3_compose
+/// ran at 62 ns instead of the 13 ns of the same loop written by hand.
+template <typename OutCore, typename T, bool Contiguous, std::size_t Fixed, typename... Cores, typename Kernel,
+          std::size_t... I>
+CHASLES_PY_BATCH_FLATTEN void run_loop(const Plan<sizeof...(Cores)>& p, const Kernel& kernel, T* out,
+                                       std::index_sequence<I...>) {
   constexpr std::size_t N = sizeof...(Cores);
   const int nd = static_cast<int>(p.shape.size());
   const ssize inner = nd ? p.shape[nd - 1] : 1;
@@ -250,13 +286,27 @@ void run_loop(const Plan<sizeof...(Cores)>& p, const Kernel& kernel, T* out, std
   if (nd) ((step[I] = p.strides[I][nd - 1]), ...);
   std::vector<ssize> idx(nd > 1 ? nd - 1 : 0, 0);
   std::array<const char*, N> base = p.data;
-  std::tuple<typename Cores::template Value<T>...> args;
   for (;;) {
-    ((std::get<I>(args) = load<Cores, T, Contiguous>(base[I], p.core[I])), ...);
-    for (ssize i = 0; i < inner; ++i) {
-      if (i) ((step[I] ? (void)(std::get<I>(args) = load<Cores, T, Contiguous>(base[I] + i * step[I], p.core[I])) : (void)0), ...);
-      store<OutCore>(kernel(std::get<I>(args)...), out);
-      out += OutCore::size;
+    if constexpr (Fixed < N) {
+      using C = std::tuple_element_t<Fixed, std::tuple<Cores...>>;
+      const typename C::template Stored<T> fixed = view<C, T, Contiguous>(base[Fixed], p.core[Fixed]);
+      auto arg = [&](auto j, ssize i) -> decltype(auto) {
+        constexpr std::size_t J = decltype(j)::value;
+        using Cj = std::tuple_element_t<J, std::tuple<Cores...>>;
+        if constexpr (J == Fixed)
+          return (fixed);
+        else
+          return view<Cj, T, Contiguous>(base[J] + i * step[J], p.core[J]);
+      };
+      for (ssize i = 0; i < inner; ++i) {
+        store<OutCore>(kernel(arg(std::integral_constant<std::size_t, I>(), i)...), out);
+        out += OutCore::size;
+      }
+    } else {
+      for (ssize i = 0; i < inner; ++i) {
+        store<OutCore>(kernel(view<Cores, T, Contiguous>(base[I] + i * step[I], p.core[I])...), out);
+        out += OutCore::size;
+      }
     }
     int k = nd - 2;
     for (; k >= 0; --k) {
@@ -269,6 +319,24 @@ void run_loop(const Plan<sizeof...(Cores)>& p, const Kernel& kernel, T* out, std
   }
 }
 
+/// run_loop for the plan's layout: contiguous cores or not, which operand
+/// stays put (one instantiation per case).
+template <typename OutCore, typename T, typename... Cores, typename Kernel, std::size_t... I>
+void run_plan(const Plan<sizeof...(Cores)>& p, const Kernel& kernel, T* out, std::index_sequence<I...> seq) {
+  constexpr std::size_t N = sizeof...(Cores);
+  const bool contiguous = (is_contiguous<Cores, T>(p.core[I]) && ...);
+  const std::size_t fixed = fixed_operand<Cores...>(p);
+  auto with = [&](auto fixed_c) {
+    constexpr std::size_t F = decltype(fixed_c)::value;
+    if (contiguous)
+      run_loop<OutCore, T, true, F, Cores...>(p, kernel, out, seq);
+    else
+      run_loop<OutCore, T, false, F, Cores...>(p, kernel, out, seq);
+  };
+  if (!((fixed == I && (with(std::integral_constant<std::size_t, I>()), true)) || ...))
+    with(std::integral_constant<std::size_t, N>());
+}
+
 /// Broadcasts the operands (already of dtype class T) and runs the kernel.
 template <typename OutCore, typename T, typename... Cores, typename Kernel, std::size_t... I>
 py::array run(const char* fname, const Kernel& kernel, std::array<Operand, sizeof...(Cores)>& ops,
@@ -278,8 +346,15 @@ py::array run(const char* fname, const Kernel& kernel, std::array<Operand, sizeo
   for (auto& op : ops) {
     const py::dtype dt = op.arr.dtype();
     const bool native = dt.byteorder() == '=' || dt.byteorder() == '|';
-    if (!(dt.kind() == 'f' && dt.itemsize() == static_cast<ssize>(sizeof(T)) && native))
+    if (!(dt.kind() == 'f' && dt.itemsize() == static_cast<ssize>(sizeof(T)) && native)) {
       op.arr = py::array(op.arr.attr("astype")(want));
+    } else {
+      // The maps read whole T's: an unaligned view is copied (C order, aligned).
+      bool aligned = reinterpret_cast<std::uintptr_t>(op.arr.data()) % alignof(T) == 0;
+      for (ssize ax = 0; aligned && ax < op.arr.ndim(); ++ax)
+        aligned = op.arr.strides(ax) % static_cast<ssize>(sizeof(T)) == 0;
+      if (!aligned) op.arr = py::array(op.arr.attr("copy")());
+    }
   }
 
   // The batch shape, as np.broadcast_shapes of the operands' leading axes.
@@ -329,13 +404,7 @@ py::array run(const char* fname, const Kernel& kernel, std::array<Operand, sizeo
   coalesce(p);
   T* dst = out.mutable_data();
 
-  const bool contiguous = (is_contiguous<Cores, T>(p.core[I]) && ...);
-  auto loop = [&] {
-    if (contiguous)
-      run_loop<OutCore, T, true, Cores...>(p, kernel, dst, seq);
-    else
-      run_loop<OutCore, T, false, Cores...>(p, kernel, dst, seq);
-  };
+  auto loop = [&] { run_plan<OutCore, T, Cores...>(p, kernel, dst, seq); };
   if (count > kGilThreshold) {
     py::gil_scoped_release release;
     loop();
@@ -347,8 +416,8 @@ py::array run(const char* fname, const Kernel& kernel, std::array<Operand, sizeo
 
 /// The entry point of every array function: checks and converts the
 /// operands, picks float or double, broadcasts and loops. `kernel` is a
-/// generic lambda taking the operands' `Core::Value<T>` and returning
-/// something assignable to `OutCore::Value<T>`.
+/// generic lambda taking one `view` per operand (an Eigen::Map, or a T for a
+/// scalar core) and returning something assignable to `OutCore::Stored<T>`.
 template <typename OutCore, typename Kernel, typename... Cores>
 py::array apply(const char* fname, const Kernel& kernel, In<Cores>... ins) {
   constexpr std::size_t N = sizeof...(Cores);
