@@ -430,6 +430,24 @@ def test_one_pose_many_points_and_n_by_n():
     np.testing.assert_array_equal(B.so3_act(gs[0, :3, :3], p), B.so3_act(gs[0, :3, :3][None], p))
 
 
+def test_operands_that_stay_put_in_any_layout():
+    """An operand constant along the inner axis is read once per run: check
+    it in every layout, and stride-0 batch axes (np.broadcast_to)."""
+    rng = np.random.default_rng(29)
+    g = poses(1, rng)[0]
+    p = rng.normal(size=(50, 3))
+    want = B.se3_act(g, p)
+    for label, alt in layouts(g[None]):
+        np.testing.assert_array_equal(B.se3_act(alt[0], p), want, err_msg=label)
+    np.testing.assert_array_equal(B.se3_act(np.broadcast_to(g, (50, 4, 4)), p), want)
+    w = rng.normal(size=3)
+    R = B.so3_exp(np.broadcast_to(w, (7, 3)))
+    np.testing.assert_array_equal(R, np.broadcast_to(B.so3_exp(w), (7, 3, 3)))
+    # the second operand stays put, the first moves
+    gs = poses(50, rng)
+    np.testing.assert_array_equal(B.se3_compose(gs, np.asfortranarray(g)), B.se3_compose(gs, g[None].copy()))
+
+
 def test_broadcast_of_different_batch_ranks():
     rng = np.random.default_rng(19)
     a = poses(5, rng)                    # (5, 4, 4)
