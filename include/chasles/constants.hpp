@@ -26,14 +26,15 @@ struct Thresholds;
 //   coefficient functions use their Taylor series instead of the closed
 //   forms. Every series in detail/series.hpp is kept up to t^2 (t = theta^2)
 //   and its first omitted term, relative to its leading term, has a
-//   coefficient of magnitude at most 1 (the largest is 5/112, for
-//   theta / sin(theta) in log). Below t = eps^(1/3) that term is under eps,
+//   coefficient of magnitude at most 1 (the largest is 1/7, for atan(x)/x
+//   in log, whose x^2 = tan^2(theta/2) is t/4). Below t = eps^(1/3) that
+//   term is under eps,
 //   so the series is exact to the last place; the cutoff is the truncation
 //   degree rule eps^(1/(k+1)) with k = 2. Above it the closed forms have no
 //   0/0 and lose no more than a few ulps (see docs of each closed form).
 //   Both sides are compared one ulp apart in tests/cpp/test_thresholds.cpp.
-//   Every caller compares the same quantity, theta^2 (or sin^2(theta) in
-//   log, equal to theta^2 to within the series' own accuracy), never theta,
+//   Every caller compares the same quantity, theta^2 (or 4 tan^2(theta/2)
+//   in log, equal to theta^2 to within the series' own accuracy), never theta,
 //   so that no square root of 0 is ever formed (its derivative is infinite).
 //
 // rotation_tolerance: default for the checked constructors
@@ -50,6 +51,14 @@ struct Thresholds;
 //   that w w^T and the products with it cannot overflow on the fast path.
 //   Past theta ~ 2 pi / eps the input's angle is not known to within a turn,
 //   so only the axis and the bounded translation carry information there.
+//   It is also the largest squared norm that from_quaternion normalizes
+//   directly.
+//
+// tiny_norm2: the smallest squared norm that from_quaternion normalizes
+//   directly, 1 / huge_theta2: 1e8 times the reciprocal of the largest
+//   finite value, so 2 / |q|^2 is finite and |q|^2 is a sum of squares
+//   that have not underflowed to subnormals. Below it (or above
+//   huge_theta2) q is first scaled by its largest component.
 
 template <>
 struct Thresholds<float> {
@@ -57,6 +66,7 @@ struct Thresholds<float> {
   static constexpr float taylor_theta2 = 4.9215667e-03f;       // eps^(1/3)
   static constexpr float rotation_tolerance = 3.4526698e-04f;  // eps^(1/2)
   static constexpr float huge_theta2 = 3.4e30f;                // max / 1e8
+  static constexpr float tiny_norm2 = 1.0f / huge_theta2;
 };
 
 template <>
@@ -65,6 +75,7 @@ struct Thresholds<double> {
   static constexpr double taylor_theta2 = 6.0554544523933395e-06;      // eps^(1/3)
   static constexpr double rotation_tolerance = 1.4901161193847656e-08;  // eps^(1/2)
   static constexpr double huge_theta2 = 1.7e300;                        // max / 1e8
+  static constexpr double tiny_norm2 = 1.0 / huge_theta2;
 };
 
 template <>
@@ -75,6 +86,7 @@ struct Thresholds<long double> {
   static constexpr long double taylor_theta2 = 4.7683715820312500000e-07L;       // eps^(1/3)
   static constexpr long double rotation_tolerance = 3.2927225399135962334e-10L;  // eps^(1/2)
   static constexpr long double huge_theta2 = 1.7e300L;  // as double: safe for both long double formats
+  static constexpr long double tiny_norm2 = 1.0L / huge_theta2;
 };
 
 /// The thresholds that apply to a Scalar (autodiff scalars use their real type's).

@@ -29,30 +29,44 @@ struct Screw {
 
 namespace detail {
 
+/// |x| and x / |x| without forming |x|^2 (which overflows past 1e154 in
+/// double and underflows below 1e-154): x is first scaled to a largest entry
+/// of 1. Returns false, leaving the outputs unset, for x = 0.
+template <typename Scalar>
+inline bool norm_and_direction(const Eigen::Matrix<Scalar, 3, 1>& x, Scalar& norm,
+                               Eigen::Matrix<Scalar, 3, 1>& direction) noexcept {
+  using std::abs;
+  using std::sqrt;
+  Scalar a = abs(x[0]);
+  if (abs(x[1]) > a) a = abs(x[1]);
+  if (abs(x[2]) > a) a = abs(x[2]);
+  if (!(a > Scalar(0))) return false;
+  const Eigen::Matrix<Scalar, 3, 1> u = x / a;
+  const Scalar nu = sqrt(u.squaredNorm());  // in [1, sqrt(3)]
+  direction = u / nu;
+  norm = a * nu;
+  return true;
+}
+
 /// The screw of a pair (l, m) with l the line vector and m the moment:
 /// (w, v) for a twist, (f, tau) for a wrench. With l != 0:
-///   pitch = l.m / |l|^2, point = l x m / |l|^2, direction = l / |l|,
-///   magnitude = |l|;
-/// with l = 0 (or |l|^2 underflowing): pitch = inf, direction = m / |m|,
-/// magnitude = |m|.
+///   direction = l / |l|, magnitude = |l|,
+///   pitch = l.m / |l|^2 = (direction . m) / |l|,
+///   point = l x m / |l|^2 = (direction x m) / |l|;
+/// with l = 0: pitch = inf, direction = m / |m|, magnitude = |m|.
+/// No |l|^2 is formed, so every pair whose screw is representable gets it.
 template <typename Scalar>
 inline Screw<Scalar> screw_of_pair(const Eigen::Matrix<Scalar, 3, 1>& l,
                                    const Eigen::Matrix<Scalar, 3, 1>& m) noexcept {
-  using std::sqrt;
   Screw<Scalar> s;
-  const Scalar l2 = l.squaredNorm();
-  if (l2 > Scalar(0)) {
-    s.magnitude = sqrt(l2);
-    s.direction = l / s.magnitude;
-    s.pitch = l.dot(m) / l2;
-    s.point = l.cross(m) / l2;
+  if (norm_and_direction(l, s.magnitude, s.direction)) {
+    const Scalar inv = Scalar(1) / s.magnitude;
+    s.pitch = s.direction.dot(m) * inv;
+    s.point = s.direction.cross(m) * inv;
     return s;
   }
   s.point.setZero();
-  const Scalar m2 = m.squaredNorm();
-  if (m2 > Scalar(0)) {
-    s.magnitude = sqrt(m2);
-    s.direction = m / s.magnitude;
+  if (norm_and_direction(m, s.magnitude, s.direction)) {
     s.pitch = Scalar(std::numeric_limits<RealOf<Scalar>>::infinity());
   } else {
     s.magnitude = Scalar(0);

@@ -24,97 +24,81 @@ template <typename Scalar>
 struct So3Log {
   Eigen::Matrix<Scalar, 3, 1> omega;  ///< the rotation vector, angle in [0, pi]
   Scalar theta2;                      ///< |omega|^2
-  Scalar sin_theta;                   ///< sin(theta); only set when !near_identity
-  Scalar one_minus_cos;               ///< 1 - cos(theta), without cancellation
+  Scalar half_theta_cot;              ///< (theta/2) cot(theta/2); only set when !near_identity
   bool near_identity;                 ///< the Taylor branch was taken
 };
 
-/// The log of a rotation matrix, robust over the whole of SO(3) and for
-/// matrices a little off it.
+/// The log of a 3x3 matrix that is, or is near, a rotation, through its
+/// quaternion: robust over the whole of SO(3), and as accurate for a matrix
+/// off SO(3) as projecting it onto SO(3) first.
 ///
-/// With s = vee((R - R^T)/2) = sin(theta) n and c = (tr R - 1)/2 = cos(theta):
-/// - near the identity (c > 0 and |s|^2 below the Taylor cutoff):
-///   w = (theta / sin theta) s, the factor a series in |s|^2: no sqrt, no 0/0;
-/// - theta <= pi/2: theta = atan2(|s|, c), w = (theta / |s|) s;
-/// - theta > pi/2: the axis from the symmetric part,
-///   (R + R^T)/2 - c I = (1 - c) n n^T, read from its largest diagonal
-///   entry's column (>= (1 - c)/3 >= 1/3: no small divisor), its sign from s,
-///   and sin(theta) = n . s, so theta = atan2(n . s, c) stays in [0, pi] and
-///   the error of a matrix off by d stays of order d, where dividing by
-///   sin(theta) would amplify it by 1/sin(theta).
-/// Finite for every finite input: c is clamped to [-1, 1], halves are taken
-/// before sums, and a degenerate column falls back to a unit axis.
+/// The quaternion of the rotation nearest to M is the dominant eigenvector
+/// of Horn's symmetric 4x4 K = N(M) + I (detail/nearest_rotation.hpp). For
+/// a rotation K = 4 q q^T, rank one, so any column of it is a multiple of q;
+/// the column of K's largest diagonal entry (4 q_k^2 >= 1: the diagonal
+/// sums to 4) is Shepperd's choice and has no small entry to divide by. For
+/// M off SO(3) by d, that column is off q's direction by O(d) in a way that
+/// the nearest rotation is not; one power step, u = K (K e_k), takes it to
+/// the dominant eigenvector to O(d^2), since K's other eigenvalues are O(d)
+/// against 4. So log(M) errs by what log(projected M) errs, to first order.
+/// No normalization is needed: with u = (u_w, u_v), u_w >= 0 (the sign of
+/// u fixed so that theta is in [0, pi]),
+///   w = 2 atan2(|u_v|, u_w) u_v / |u_v|  = (2 / u_w) (atan(x) / x) u_v,
+///   x = |u_v| / u_w = tan(theta / 2);
+/// near the identity (x^2 below the Taylor cutoff / 4, as theta^2 / 4 is)
+/// the second form with the series of atan(x)/x: no sqrt of 0, no 0/0. At
+/// exactly pi, u_w = 0 and either sign of u is the same rotation.
+/// Finite for every finite M: K (K e_k) only overflows for entries of M
+/// far outside [-1, 1]; it is then recomputed from M clamped to [-2, 2].
 template <typename Scalar>
-inline So3Log<Scalar> so3_log(const Eigen::Matrix<Scalar, 3, 3>& R) noexcept {
+inline So3Log<Scalar> so3_log(const Eigen::Matrix<Scalar, 3, 3>& M) noexcept {
   using std::atan2;
   using std::sqrt;
   using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
-  const Scalar half(0.5);
-  const Vector3 s(half * R(2, 1) - half * R(1, 2), half * R(0, 2) - half * R(2, 0),
-                  half * R(1, 0) - half * R(0, 1));
-  Scalar c = half * R(0, 0) + half * R(1, 1) + half * R(2, 2) - half;
-  if (c > Scalar(1)) c = Scalar(1);
-  if (c < Scalar(-1)) c = Scalar(-1);
-  const Scalar s2 = s.squaredNorm();
-
+  Quaternion4<Scalar> u = quaternion_power_step(M);
+  if (!u.finite()) {
+    u = clamped_quaternion_power_step(M);  // cold: not near a rotation
+  }
+  // u and -u are the same rotation: the one with u_w >= 0 has theta in [0, pi].
+  const Scalar sign = u.w < Scalar(0) ? Scalar(-1) : Scalar(1);
+  const Vector3 uv(sign * u.x, sign * u.y, sign * u.z);
+  const Scalar uw = sign * u.w;
+  const Scalar uv2 = uv.squaredNorm();
   So3Log<Scalar> out;
-  if (!(c < Scalar(0))) {
-    out.one_minus_cos = s2 / (Scalar(1) + c);  // 1 - c = sin^2 / (1 + c), no cancellation
-    if (s2 < ThresholdsOf<Scalar>::taylor_theta2) {
-      const Scalar f = theta_over_sin_series(s2);
-      out.omega = f * s;
-      out.theta2 = s2 * f * f;
-      out.near_identity = true;
-    } else {
-      const Scalar sin_theta = sqrt(s2);
-      const Scalar theta = atan2(sin_theta, c);
-      out.omega = (theta / sin_theta) * s;
-      out.theta2 = theta * theta;
-      out.sin_theta = sin_theta;
-      out.near_identity = false;
-    }
+  if (uv2 < Scalar(0.25 * ThresholdsOf<Scalar>::taylor_theta2) * (uw * uw)) {
+    // x^2 = tan^2(theta/2) < cutoff / 4: 4 x^2 is theta^2 to within the series' accuracy.
+    const Scalar inv_w = Scalar(1) / uw;
+    const Scalar x2 = uv2 * inv_w * inv_w;
+    const Scalar f = Scalar(2) * inv_w * atan_over_x_series(x2);
+    out.omega = f * uv;
+    out.theta2 = f * f * uv2;
+    out.near_identity = true;
     return out;
   }
-
-  int i = 0;
-  if (R(1, 1) > R(i, i)) i = 1;
-  if (R(2, 2) > R(i, i)) i = 2;
-  const Scalar one_minus_c = Scalar(1) - c;
-  Vector3 n;
-  for (int j = 0; j < 3; ++j) n[j] = half * R(j, i) + half * R(i, j);
-  n[i] = R(i, i) - c;
-  const Scalar den2 = n[i] * one_minus_c;
-  if (den2 > Scalar(0)) {
-    n /= sqrt(den2);
-  } else {
-    n = Vector3::Unit(i);  // not a rotation: any unit axis keeps the result finite
-  }
-  Scalar sin_theta = n.dot(s);
-  if (sin_theta < Scalar(0)) {
-    n = -n;
-    sin_theta = -sin_theta;
-  }
-  const Scalar theta = atan2(sin_theta, c);
-  out.omega = theta * n;
-  out.theta2 = theta * theta;
-  out.sin_theta = sin_theta;
-  out.one_minus_cos = one_minus_c;
+  const Scalar n = sqrt(uv2);
+  const Scalar half_theta = atan2(n, uw);
+  const Scalar f = Scalar(2) * half_theta / n;
+  out.omega = f * uv;
+  out.theta2 = Scalar(4) * half_theta * half_theta;
+  out.half_theta_cot = half_theta * uw / n;  // (theta/2) cos(theta/2) / sin(theta/2)
   out.near_identity = false;
   return out;
 }
 
-/// I + a [u] + b [u]^2, expanding [u]^2 = u u^T - |u|^2 I, with u2 = |u|^2:
-/// Rodrigues' formula from its coefficients (detail/series.hpp).
+/// I + a [u] + b [u]^2: Rodrigues' formula from its coefficients
+/// (detail/series.hpp). [u]^2 = u u^T - |u|^2 I, so the diagonal is
+/// 1 - b (u_j^2 + u_k^2): no 1 - b|u|^2 + b u_i^2 round trip, and exactly 1
+/// on the rotation axis of a coordinate-axis rotation.
 template <typename Scalar>
 inline Eigen::Matrix<Scalar, 3, 3> rodrigues(const Eigen::Matrix<Scalar, 3, 1>& u, const Scalar& a,
-                                             const Scalar& b, const Scalar& u2) noexcept {
-  const Scalar c = Scalar(1) - b * u2;  // cos(theta)
+                                             const Scalar& b) noexcept {
+  const Scalar xx = u[0] * u[0], yy = u[1] * u[1], zz = u[2] * u[2];
   const Scalar bxy = b * u[0] * u[1], bxz = b * u[0] * u[2], byz = b * u[1] * u[2];
   const Scalar ax = a * u[0], ay = a * u[1], az = a * u[2];
   Eigen::Matrix<Scalar, 3, 3> R;
-  R << c + b * u[0] * u[0], bxy - az, bxz + ay,  //
-      bxy + az, c + b * u[1] * u[1], byz - ax,   //
-      bxz - ay, byz + ax, c + b * u[2] * u[2];
+  R << Scalar(1) - b * (yy + zz), bxy - az, bxz + ay,  //
+      bxy + az, Scalar(1) - b * (xx + zz), byz - ax,   //
+      bxz - ay, byz + ax, Scalar(1) - b * (xx + yy);
   return R;
 }
 
@@ -180,10 +164,10 @@ class SO3 {
     const Scalar t = w.squaredNorm();
     if (!(t < Scalar(ThresholdsOf<Scalar>::huge_theta2))) {
       const auto r = detail::long_rotation(w);
-      return SO3(detail::rodrigues(r.axis, r.sin_theta, r.one_minus_cos, Scalar(1)));
+      return SO3(detail::rodrigues(r.axis, r.sin_theta, r.one_minus_cos));
     }
     const auto k = detail::exp_coefficients(t);
-    return SO3(detail::rodrigues(w, k.a, k.b, t));
+    return SO3(detail::rodrigues(w, k.a, k.b));
   }
 
   /// The rotation vector w with exp([w]) = R and |w| in [0, pi]. At exactly
@@ -213,62 +197,41 @@ class SO3 {
 
   const Matrix3& matrix() const noexcept { return R_; }
 
-  /// Unit quaternion by Shepperd's method: the largest of 4w^2, 4x^2, 4y^2,
-  /// 4z^2 (they sum to 4, so it is >= 1) gives one component, the others are
-  /// divided by it: no small divisor for any input. The sign is the one that
-  /// makes that largest component positive. Unit to rounding for a
+  /// Unit quaternion by Shepperd's method: of the columns of Horn's
+  /// K = 4 q q^T (detail/nearest_rotation.hpp), the one with the largest
+  /// diagonal entry 4 q_k^2 (the diagonal sums to 4, so it is >= 1) is
+  /// scaled by 1 / (2 |q_k|): no small divisor for any input. The sign is the
+  /// one that makes that largest component positive. Unit to rounding for a
   /// rotation (the class invariant); for a matrix off SO(3) by d (from
-  /// from_matrix_unchecked) the norm is off by O(d^2).
+  /// from_matrix_unchecked) the norm is off by O(d^2). Finite for every
+  /// finite matrix (one far from SO(3) is clamped to [-2, 2] first).
   Quaternion quaternion() const noexcept {
-    using std::sqrt;
-    const Matrix3& R = R_;
-    const Scalar kw = Scalar(1) + R(0, 0) + R(1, 1) + R(2, 2);  // 4 w^2
-    const Scalar kx = Scalar(1) + R(0, 0) - R(1, 1) - R(2, 2);  // 4 x^2
-    const Scalar ky = Scalar(1) - R(0, 0) + R(1, 1) - R(2, 2);  // 4 y^2
-    const Scalar kz = Scalar(1) - R(0, 0) - R(1, 1) + R(2, 2);  // 4 z^2
-    Scalar w, x, y, z;
-    // r = 2 |q_i| >= 1 for the largest; f = 1 / (2 r) scales the pair sums.
-    if (!(kw < kx) && !(kw < ky) && !(kw < kz)) {
-      const Scalar r = sqrt(kw), f = Scalar(0.5) / r;
-      w = Scalar(0.5) * r;
-      x = f * (R(2, 1) - R(1, 2));
-      y = f * (R(0, 2) - R(2, 0));
-      z = f * (R(1, 0) - R(0, 1));
-    } else if (!(kx < ky) && !(kx < kz)) {
-      const Scalar r = sqrt(kx), f = Scalar(0.5) / r;
-      x = Scalar(0.5) * r;
-      w = f * (R(2, 1) - R(1, 2));
-      y = f * (R(0, 1) + R(1, 0));
-      z = f * (R(0, 2) + R(2, 0));
-    } else if (!(ky < kz)) {
-      const Scalar r = sqrt(ky), f = Scalar(0.5) / r;
-      y = Scalar(0.5) * r;
-      w = f * (R(0, 2) - R(2, 0));
-      x = f * (R(0, 1) + R(1, 0));
-      z = f * (R(1, 2) + R(2, 1));
-    } else {
-      const Scalar r = sqrt(kz), f = Scalar(0.5) / r;
-      z = Scalar(0.5) * r;
-      w = f * (R(1, 0) - R(0, 1));
-      x = f * (R(0, 2) + R(2, 0));
-      y = f * (R(1, 2) + R(2, 1));
+    const detail::Quaternion4<Scalar> q = detail::shepperd_quaternion(R_);
+    if (q.finite()) {
+      return Quaternion(q.w, q.x, q.y, q.z);
     }
-    // For a rotation |q|^2 = 1 + delta with delta of order eps: one Newton
-    // step for 1/sqrt, (3 - |q|^2) / 2, normalizes it to rounding with
-    // multiplies only (a sqrt and a divide here would triple the cost).
-    // Scaled as scalars, before the quaternion is built: scaling its stored
-    // coefficients stalls on store forwarding.
-    const Scalar n = Scalar(0.5) * (Scalar(3) - (w * w + x * x + y * y + z * z));
-    return Quaternion(n * w, n * x, n * y, n * z);
+    const detail::Quaternion4<Scalar> qc = detail::clamped_shepperd_quaternion(R_);  // cold: far from SO(3)
+    return Quaternion(qc.w, qc.x, qc.y, qc.z);
   }
 
-  /// From a quaternion of any nonzero norm (it is normalized; the zero
-  /// quaternion, and one with a non-finite norm, give the identity).
+  /// From a quaternion of any nonzero finite norm: it is normalized, from
+  /// 1e-300 to 1e300 as from 1 (a norm whose square would underflow or
+  /// overflow is first scaled by the largest component). The zero
+  /// quaternion, and one with a non-finite component, give the identity.
   static SO3 from_quaternion(const Quaternion& q) noexcept {
-    const Scalar n2 = q.coeffs().squaredNorm();
-    if (!(n2 > Scalar(0)) || !(n2 < Scalar(ThresholdsOf<Scalar>::huge_theta2))) return SO3();
+    using std::abs;
+    Eigen::Matrix<Scalar, 4, 1> c = q.coeffs();
+    Scalar n2 = c.squaredNorm();
+    if (!(n2 > Scalar(ThresholdsOf<Scalar>::tiny_norm2)) || !(n2 < Scalar(ThresholdsOf<Scalar>::huge_theta2))) {
+      Scalar m(0);
+      for (int i = 0; i < 4; ++i)
+        if (abs(c[i]) > m) m = abs(c[i]);
+      if (!(m > Scalar(0)) || !(m - m == Scalar(0))) return SO3();  // zero, or not finite
+      c /= m;
+      n2 = c.squaredNorm();
+    }
     const Scalar s = Scalar(2) / n2;
-    const Scalar w = q.w(), x = q.x(), y = q.y(), z = q.z();
+    const Scalar x = c[0], y = c[1], z = c[2], w = c[3];  // Eigen stores (x, y, z, w)
     Matrix3 R;
     R << Scalar(1) - s * (y * y + z * z), s * (x * y - z * w), s * (x * z + y * w),  //
         s * (x * y + z * w), Scalar(1) - s * (x * x + z * z), s * (y * z - x * w),  //

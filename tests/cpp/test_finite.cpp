@@ -387,8 +387,8 @@ TEST(Finite, ScrewsOfZeroFloat) { screws_of_zero<float>(); }
 /// Twists and wrenches of every size whose screw is representable: |l|
 /// and |m| within a factor 1e8 of each other (so that the pitch l.m/|l|^2
 /// and the point l x m / |l|^2 are of order 1), |l| from sqrt(min normal)
-/// (below it |l|^2 underflows, and the header documents that it then
-/// reports a pure translation) up to a tenth of the largest finite value.
+/// (well below it, the pitch and point of order |m| / |l|^2 would overflow
+/// for |m| of order |l|) up to a tenth of the largest finite value.
 template <typename T>
 void screws_of_all_sizes() {
   Failures twists, wrenches;

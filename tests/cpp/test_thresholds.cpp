@@ -225,8 +225,8 @@ TEST(TaylorCutoff, ExpDouble) { exp_across_taylor_cutoff<double>(); }
 TEST(TaylorCutoff, ExpFloat) { exp_across_taylor_cutoff<float>(); }
 
 // ---------------------------------------------------------------------------
-// log: sin^2(theta) one step either side of taylor_theta2, and the branch
-// at theta = pi/2.
+// log: 4 tan^2(theta/2) one step either side of taylor_theta2, and the
+// switch of Shepperd's column from w to an axis component.
 
 /// Rotation matrices in T on both sides of a branch of the log: along the
 /// axis u, angles theta0 (1 + k eps) for k = -kmax .. kmax, rounded to T;
@@ -258,7 +258,7 @@ bool find_branch_pair(const Vec3<T>& u, ld theta0, Side side, Mat3<T>& below, Ma
 }
 
 template <typename T>
-void log_across_branch(const char* name, ld theta0, bool (*side)(const Mat3<T>&)) {
+void log_across_branch(const char* name, ld (*theta0_of_axis)(const V3&), bool (*side)(const Mat3<T>&)) {
   using SO3 = chasles::SO3<T>;
   using SE3 = chasles::SE3<T>;
   std::mt19937_64 rng(chasles_test::kSeed + 23);
@@ -267,6 +267,7 @@ void log_across_branch(const char* name, ld theta0, bool (*side)(const Mat3<T>&)
   for (const Vec3<T>& u : axes<T>()) {
     Mat3<T> A = Mat3<T>::Zero(), B = Mat3<T>::Zero();  // A on the `side` = true side
     V3 wa = V3::Zero(), wb = V3::Zero();
+    const ld theta0 = theta0_of_axis(u.template cast<ld>());
     if (!find_branch_pair<T>(u, theta0, side, A, B, wa, wb)) continue;
     ++pairs;
     const std::string at = "w = " + str(wa) + " / " + str(wb);
@@ -314,25 +315,34 @@ bool log_series_branch(const Mat3<T>& R) {
   return chasles::detail::so3_log<T>(R).near_identity;
 }
 
-/// cos(theta) = (tr R - 1)/2 >= 0: the log's atan2(|s|, c) branch; < 0: the
-/// axis from the symmetric part (so3.hpp). Evaluated as the header does.
+/// The column of Horn's K the log starts from (detail/nearest_rotation.hpp)
+/// is w's (true) or an axis component's (false).
 template <typename T>
-bool log_acute_branch(const Mat3<T>& R) {
-  const T half(0.5);
-  const T c = half * R(0, 0) + half * R(1, 1) + half * R(2, 2) - half;
-  return !(c < T(0));
+bool log_w_column(const Mat3<T>& R) {
+  return chasles::detail::HornMatrix<T>(R).largest_diagonal() == 0;
 }
 
+/// 4 tan^2(theta/2) = taylor_theta2.
+template <typename T>
+ld series_cutoff_angle(const V3&) {
+  return 2 * std::atan(std::sqrt(ld(chasles::Thresholds<T>::taylor_theta2)) / 2);
+}
+
+/// w^2 = max_i (n_i sin(theta/2))^2: theta = 2 atan(1 / max |n_i|).
+ld column_switch_angle(const V3& n) { return 2 * std::atan(1 / n.cwiseAbs().maxCoeff()); }
+
 TEST(TaylorCutoff, LogDouble) {
-  log_across_branch<double>("log at taylor_theta2", std::asin(std::sqrt(ld(chasles::Thresholds<double>::taylor_theta2))),
-                            log_series_branch<double>);
+  log_across_branch<double>("log at taylor_theta2", series_cutoff_angle<double>, log_series_branch<double>);
 }
 TEST(TaylorCutoff, LogFloat) {
-  log_across_branch<float>("log at taylor_theta2", std::asin(std::sqrt(ld(chasles::Thresholds<float>::taylor_theta2))),
-                           log_series_branch<float>);
+  log_across_branch<float>("log at taylor_theta2", series_cutoff_angle<float>, log_series_branch<float>);
 }
-TEST(HalfPiBranch, LogDouble) { log_across_branch<double>("log at pi/2", kPi / 2, log_acute_branch<double>); }
-TEST(HalfPiBranch, LogFloat) { log_across_branch<float>("log at pi/2", kPi / 2, log_acute_branch<float>); }
+TEST(ShepperdColumnSwitch, LogDouble) {
+  log_across_branch<double>("log at the column switch", column_switch_angle, log_w_column<double>);
+}
+TEST(ShepperdColumnSwitch, LogFloat) {
+  log_across_branch<float>("log at the column switch", column_switch_angle, log_w_column<float>);
+}
 
 // ---------------------------------------------------------------------------
 // exp at huge_theta2: past it the angle is not known to within a turn, so

@@ -1,5 +1,6 @@
 // chasles: small helpers on fixed-size matrices: the one approximate comparison
-// behind every is_approx, the finiteness check, and stacking two 3-vectors.
+// behind every is_approx, the finiteness check, clamping, and stacking two
+// 3-vectors.
 #pragma once
 
 #include <cmath>
@@ -40,6 +41,24 @@ inline bool all_finite(const Eigen::MatrixBase<Derived>& a) noexcept {
     for (Eigen::Index i = 0; i < a.rows(); ++i)
       if (!(a(i, j) - a(i, j) == Scalar(0))) return false;
   return true;
+}
+
+/// x clamped to [-bound, bound], as a select (min/max instructions, no
+/// branch). An x equal to a bound is kept as it is (autodiff scalars keep
+/// their derivative there).
+template <typename Scalar>
+inline Scalar clamped(const Scalar& x, const Scalar& bound) noexcept {
+  return x > bound ? bound : (x < -bound ? Scalar(-bound) : x);
+}
+
+/// M with every entry clamped to [-bound, bound].
+template <typename Scalar, int Rows, int Cols>
+inline Eigen::Matrix<Scalar, Rows, Cols> clamped(const Eigen::Matrix<Scalar, Rows, Cols>& M,
+                                                 const Scalar& bound) noexcept {
+  Eigen::Matrix<Scalar, Rows, Cols> out;
+  for (int j = 0; j < Cols; ++j)
+    for (int i = 0; i < Rows; ++i) out(i, j) = clamped(M(i, j), bound);
+  return out;
 }
 
 /// (a, b) as one 6-vector, element by element. (Eigen's comma initializer

@@ -66,22 +66,21 @@ inline ExpCoefficients<Scalar> exp_coefficients(const Scalar& theta2) noexcept {
   return k;
 }
 
-/// theta / sin(theta) as a series in s2 = sin^2(theta), for the so(3) log
-/// near the identity: asin(s)/s = 1 + s^2/6 + 3 s^4/40 + 5 s^6/112 + ...
+/// atan(x) / x as a series in x2 = x^2, for the so(3) log near the
+/// identity (x = tan(theta/2)): 1 - x^2/3 + x^4/5 - x^6/7 + ...
 template <typename Scalar>
-inline Scalar theta_over_sin_series(const Scalar& s2) noexcept {
-  return Scalar(1) + s2 * (Scalar(1) / Scalar(6) + s2 * (Scalar(3) / Scalar(40)));
+inline Scalar atan_over_x_series(const Scalar& x2) noexcept {
+  return Scalar(1) - x2 * (Scalar(1) / Scalar(3) - x2 * (Scalar(1) / Scalar(5)));
 }
 
 /// E and D of V^-1 = E I - 1/2 [w] + D w w^T, the inverse of V used by the
 /// se(3) log (expanding [w]^2 = w w^T - theta^2 I in I - 1/2 [w] + D [w]^2):
 ///   E = 1 - D theta^2 = (theta/2) cot(theta/2) = 1 - t/12 - t^2/720 - ...
 ///   D = (1 - E) / theta^2                       = 1/12 + t/720 + t^2/30240 + ...
-/// E in closed form needs no subtraction: with s = sin(theta) and
-/// one_minus_cos = 1 - cos(theta) from the so(3) log,
-/// (theta/2) cot(theta/2) = theta s / (2 (1 - cos theta)), finite at pi.
-/// D cancels near the cutoff but multiplies w w^T (of size t).
-/// `near_identity` is the so(3) log's choice of branch.
+/// E in closed form comes from the so(3) log (`half_theta_cot`, from the
+/// quaternion: no subtraction, 0 at pi). D cancels near the cutoff but
+/// multiplies w w^T (of size t). `near_identity` is the so(3) log's choice
+/// of branch.
 template <typename Scalar>
 struct VInverseCoefficients {
   Scalar e;
@@ -89,17 +88,15 @@ struct VInverseCoefficients {
 };
 
 template <typename Scalar>
-inline VInverseCoefficients<Scalar> v_inverse_coefficients(const Scalar& theta2, const Scalar& sin_theta,
-                                                           const Scalar& one_minus_cos,
+inline VInverseCoefficients<Scalar> v_inverse_coefficients(const Scalar& theta2, const Scalar& half_theta_cot,
                                                            bool near_identity) noexcept {
-  using std::sqrt;
   VInverseCoefficients<Scalar> k;
   if (near_identity) {
     const Scalar& t = theta2;
     k.d = Scalar(1) / Scalar(12) + t * (Scalar(1) / Scalar(720) + t * (Scalar(1) / Scalar(30240)));
     k.e = Scalar(1) - t * k.d;
   } else {
-    k.e = sqrt(theta2) * sin_theta / (Scalar(2) * one_minus_cos);
+    k.e = half_theta_cot;
     k.d = (Scalar(1) - k.e) / theta2;
   }
   return k;
