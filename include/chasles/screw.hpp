@@ -53,17 +53,19 @@ inline bool norm_and_direction(const Eigen::Matrix<Scalar, 3, 1>& x, Scalar& nor
 ///   direction = l / |l|, magnitude = |l|,
 ///   pitch = l.m / |l|^2 = (direction . m) / |l|,
 ///   point = l x m / |l|^2 = (direction x m) / |l|;
-/// with l = 0: pitch = inf, direction = m / |m|, magnitude = |m|.
-/// No |l|^2 is formed, so every pair whose screw is representable gets it.
+/// with l = 0: pitch = inf, direction = m / |m|, magnitude = |m|. No |l|^2
+/// is formed, so every pair whose screw is representable gets it; an l so
+/// small against m that the pitch or the point overflows (the axis is
+/// beyond the largest finite distance) is taken as l = 0, its limit.
 template <typename Scalar>
 inline Screw<Scalar> screw_of_pair(const Eigen::Matrix<Scalar, 3, 1>& l,
                                    const Eigen::Matrix<Scalar, 3, 1>& m) noexcept {
   Screw<Scalar> s;
   if (norm_and_direction(l, s.magnitude, s.direction)) {
-    const Scalar inv = Scalar(1) / s.magnitude;
-    s.pitch = s.direction.dot(m) * inv;
-    s.point = s.direction.cross(m) * inv;
-    return s;
+    s.pitch = s.direction.dot(m) / s.magnitude;
+    s.point = s.direction.cross(m) / s.magnitude;
+    const Scalar sum = s.pitch + s.point[0] + s.point[1] + s.point[2];
+    if (sum - sum == Scalar(0)) return s;  // finite
   }
   s.point.setZero();
   if (norm_and_direction(m, s.magnitude, s.direction)) {

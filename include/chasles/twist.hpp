@@ -85,8 +85,9 @@ class Twist {
   }
 
   /// The screw of the twist (Chasles): with w != 0, pitch w.v / |w|^2, axis
-  /// through w x v / |w|^2 along w / |w|, magnitude |w|; with w = 0, pitch
-  /// +inf, direction v / |v|, magnitude |v|.
+  /// through w x v / |w|^2 along w / |w|, magnitude |w|; with w = 0 (or
+  /// w so small that the axis is beyond the largest finite distance), pitch
+  /// +inf, direction v / |v|, magnitude |v|: a pure translation.
   Screw<Scalar> screw() const noexcept { return detail::screw_of_pair(Vector3(angular()), Vector3(linear())); }
   /// w.v / |w|^2 (+inf for w = 0).
   Scalar pitch() const noexcept { return screw().pitch; }

@@ -43,7 +43,8 @@ class Wrench {
 
   /// The screw of the wrench (Poinsot): with f != 0, a force along the line
   /// through f x tau / |f|^2 with direction f / |f|, magnitude |f|, plus a
-  /// torque pitch * f about it, pitch = f.tau / |f|^2; with f = 0, a pure
+  /// torque pitch * f about it, pitch = f.tau / |f|^2; with f = 0 (or f so
+  /// small that the line is beyond the largest finite distance), a pure
   /// couple: pitch +inf, direction tau / |tau|, magnitude |tau|.
   Screw<Scalar> screw() const noexcept { return detail::screw_of_pair(Vector3(force()), Vector3(torque())); }
   /// f.tau / |f|^2 (+inf for f = 0).

@@ -381,16 +381,23 @@ def test_from_screw_of_the_screw_of_log_gives_g_back(g):
 def test_screw_of_a_twist(xi):
     s = xi.screw()
     w, v = xi.angular, xi.linear
-    w2 = float(w @ w)
-    if w2 > 0:
-        assert math.isclose(s.magnitude, math.sqrt(w2), rel_tol=1e-15)
-        assert close(s.direction, w / math.sqrt(w2), 1e-15)
-        assert math.isclose(s.pitch, float(w @ v) / w2, rel_tol=1e-12, abs_tol=1e-12)
-        assert close(s.point, np.cross(w, v) / w2, 1e-12)
+    # |w| without forming |w|^2 (which underflows below 1e-154): the screw is
+    # representable whenever its pitch and point are, however small w is.
+    nw = np.float64(math.hypot(*w))
+    u = w / nw if nw > 0 else w
+    with np.errstate(over="ignore", divide="ignore", invalid="ignore"):
+        pitch, point = (u @ v) / nw, np.cross(u, v) / nw
+    if nw > 0 and np.isfinite(pitch) and np.isfinite(point).all():
+        assert math.isclose(s.magnitude, nw, rel_tol=1e-15)
+        assert close(s.direction, u, 1e-15)
+        assert math.isclose(s.pitch, pitch, rel_tol=1e-12, abs_tol=1e-12)
+        assert close(s.point, point, 1e-12)
         assert xi.pitch == s.pitch
-    elif float(v @ v) > 0:
+    elif math.hypot(*v) > 0:
+        # w = 0, or so small that the axis is beyond the largest finite
+        # distance: a pure translation.
         assert s.pitch == math.inf and xi.pitch == math.inf
-        assert math.isclose(s.magnitude, float(np.linalg.norm(v)), rel_tol=1e-15)
+        assert math.isclose(s.magnitude, math.hypot(*v), rel_tol=1e-15)
     assert_same(Twist.from_screw(*s), xi, 1e-9)
 
 
