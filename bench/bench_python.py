@@ -1,0 +1,264 @@
+#!/usr/bin/env python3
+"""Python benchmarks of chasles beside the peers a Python user has, in one run.
+
+    python bench/bench_python.py [--repeats 7] [--sizes 100000 1000000]
+
+Needs chasles (pip install .) and numpy; scipy, pin (Pinocchio) and
+pytransform3d are measured when installed and skipped otherwise. Prints two
+markdown tables: per-call latency of the object API (microseconds) and
+per-element time of the array functions (nanoseconds) at each N, with the
+ratio of chasles to the best peer measured in the same run (< 1: chasles is
+faster) and the target of the benchmark issue. Every figure is the median
+of --repeats timings.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import statistics
+import sys
+import time
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+import chasles
+
+# Targets of the benchmark issue (double precision).
+CALL_TARGET_US = 0.3
+ARRAY_TARGET_NS = {"SO3 exp": 25, "SO3 log": 30, "SE3 exp": 45, "SE3 log": 60, "SE3 compose": 15,
+                   "SE3 act (1 pose, N points)": 5}
+
+
+def optional(name: str) -> Any:
+    try:
+        return importlib.import_module(name)
+    except Exception:  # noqa: BLE001 - any failure to import means "not available"
+        return None
+
+
+def median_time(fn: Callable[[], object], repeats: int, budget: float = 0.05) -> float:
+    """Median seconds per call of fn, each repeat running about `budget` seconds."""
+    fn()  # warm up (and fail here, not in the loop)
+    number = 1
+    while True:
+        t0 = time.perf_counter()
+        for _ in range(number):
+            fn()
+        dt = time.perf_counter() - t0
+        if dt > budget / 4 or number > 1 << 24:
+            break
+        number *= 4
+    number = max(1, int(number * budget / max(dt, 1e-9)))
+    times = []
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        for _ in range(number):
+            fn()
+        times.append((time.perf_counter() - t0) / number)
+    return statistics.median(times)
+
+
+def measure(fn: Callable[[], object] | None, repeats: int, budget: float = 0.05) -> float | None:
+    """As median_time, or None when the peer lacks the operation (or fails on it)."""
+    if fn is None:
+        return None
+    try:
+        return median_time(fn, repeats, budget)
+    except Exception as e:  # noqa: BLE001 - a peer's API drift must not stop the run
+        print(f"<!-- skipped: {e!r} -->", file=sys.stderr)
+        return None
+
+
+def row(op: str, ours: float | None, peers: dict[str, float | None], scale: float, target: float | None) -> str:
+    cells = [f"{t * scale:.3g}" if t is not None else "" for t in peers.values()]
+    present = [(t, name) for name, t in peers.items() if t is not None]
+    best = min(present) if present else None
+    ratio = f"{ours / best[0]:.2f} ({best[1]})" if best and ours else ""
+    return "| {} | {} | {} | {} | {} |".format(op, f"{ours * scale:.3g}" if ours else "", " | ".join(cells), ratio,
+                                               f"{target:g}" if target else "")
+
+
+# ---------------------------------------------------------------------------
+# Numpy by hand: what a user writes without a library.
+
+
+def np_so3_exp(w: np.ndarray) -> np.ndarray:
+    """Vectorized Rodrigues: R = I + sin(t)/t [w] + (1 - cos(t))/t^2 [w]^2."""
+    t = np.linalg.norm(w, axis=-1)[..., None, None]
+    K = np.zeros(w.shape[:-1] + (3, 3))
+    K[..., 0, 1], K[..., 0, 2], K[..., 1, 2] = -w[..., 2], w[..., 1], -w[..., 0]
+    K[..., 1, 0], K[..., 2, 0], K[..., 2, 1] = w[..., 2], -w[..., 1], w[..., 0]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        a = np.where(t > 0, np.sin(t) / t, 1.0)
+        b = np.where(t > 0, (1 - np.cos(t)) / t**2, 0.5)
+    return np.eye(3) + a * K + b * (K @ K)
+
+
+def np_so3_log(R: np.ndarray) -> np.ndarray:
+    """The textbook log: theta = arccos((tr R - 1)/2), w = theta / (2 sin theta) vee(R - R^T).
+    (Loses half the digits near 0 and fails near pi: what the accuracy contract avoids.)"""
+    c = np.clip((np.trace(R, axis1=-2, axis2=-1) - 1) / 2, -1, 1)
+    t = np.arccos(c)
+    s = np.stack([R[..., 2, 1] - R[..., 1, 2], R[..., 0, 2] - R[..., 2, 0], R[..., 1, 0] - R[..., 0, 1]], -1)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        f = np.where(t > 1e-8, t / (2 * np.sin(t)), 0.5)
+    return f[..., None] * s
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--repeats", type=int, default=7)
+    ap.add_argument("--sizes", type=int, nargs="+", default=[100_000, 1_000_000])
+    args = ap.parse_args()
+    rep = args.repeats
+
+    scipy_rot = optional("scipy.spatial.transform")
+    Rotation = getattr(scipy_rot, "Rotation", None)
+    RigidTransform = getattr(scipy_rot, "RigidTransform", None)  # scipy >= 1.16
+    pin = optional("pinocchio")
+    pt3r = optional("pytransform3d.rotations")
+    pt3t = optional("pytransform3d.transformations")
+    pt3b = optional("pytransform3d.batch_rotations")
+    pt3j = optional("pytransform3d.trajectories")
+    scipy_version = getattr(optional("scipy"), "__version__", None)
+    print(f"chasles {chasles.__version__}, numpy {np.__version__}, scipy {scipy_version or 'absent'}, "
+          f"pinocchio {getattr(pin, '__version__', 'absent')}, "
+          f"pytransform3d {getattr(optional('pytransform3d'), '__version__', 'absent')}, Python {sys.version.split()[0]}\n")
+
+    rng = np.random.default_rng(1)
+    w = rng.normal(size=3)
+    w *= 1.3 / np.linalg.norm(w)
+    xi = np.concatenate([rng.normal(size=3), w])  # (v, w)
+    p = rng.normal(size=3)
+    R, R2 = chasles.SO3.exp(w), chasles.SO3.exp(0.7 * w[::-1])
+    g, g2 = chasles.SE3.exp(xi), chasles.SE3.exp(0.5 * xi[::-1])
+    Rm, gm = R.as_matrix(), g.as_matrix()
+
+    # ---- per call -----------------------------------------------------------
+    peers_call: dict[str, dict[str, Callable[[], object] | None]] = {}
+    sr = Rotation.from_rotvec(w) if Rotation else None
+    sr2 = Rotation.from_rotvec(0.7 * w[::-1]) if Rotation else None
+    st = RigidTransform.from_exp_coords(np.concatenate([w, xi[:3]])) if RigidTransform else None
+    st2 = RigidTransform.from_exp_coords(np.concatenate([0.5 * xi[::-1][3:], 0.5 * xi[::-1][:3]])) if RigidTransform else None
+    pR, pR2 = (pin.exp3(w), pin.exp3(0.7 * w[::-1])) if pin else (None, None)
+    pg = pin.exp6(pin.Motion(xi[:3], xi[3:])) if pin else None
+    pg2 = pin.exp6(pin.Motion(0.5 * xi[::-1][:3], 0.5 * xi[::-1][3:])) if pin else None
+    S6 = np.concatenate([w, xi[:3]])  # pytransform3d's exponential coordinates: (omega, v)
+    T2 = gm @ gm
+
+    def both(a, b):
+        return a if a is not None and b is not None else None
+
+    peers_call["SO3 exp"] = {"scipy": (lambda: Rotation.from_rotvec(w).as_matrix()) if Rotation else None,
+                             "pin": (lambda: pin.exp3(w)) if pin else None,
+                             "pytransform3d": (lambda: pt3r.matrix_from_compact_axis_angle(w)) if pt3r else None}
+    peers_call["SO3 log"] = {"scipy": (lambda: Rotation.from_matrix(Rm).as_rotvec()) if Rotation else None,
+                             "pin": (lambda: pin.log3(Rm)) if pin else None,
+                             "pytransform3d": (lambda: pt3r.compact_axis_angle_from_matrix(Rm)) if pt3r else None}
+    peers_call["SO3 compose"] = {"scipy": (lambda: sr * sr2) if Rotation else None,
+                                 "pin": (lambda: pR @ pR2) if pin else None, "pytransform3d": None}
+    peers_call["SO3 inverse"] = {"scipy": (lambda: sr.inv()) if Rotation else None,
+                                 "pin": (lambda: pR.T) if pin else None, "pytransform3d": None}
+    peers_call["SO3 act"] = {"scipy": (lambda: sr.apply(p)) if Rotation else None,
+                             "pin": (lambda: pR @ p) if pin else None, "pytransform3d": None}
+    peers_call["SE3 exp"] = {"scipy": (lambda: RigidTransform.from_exp_coords(S6)) if RigidTransform else None,
+                             "pin": (lambda: pin.exp6(xi)) if pin else None,
+                             "pytransform3d": (lambda: pt3t.transform_from_exponential_coordinates(S6)) if pt3t else None}
+    peers_call["SE3 log"] = {"scipy": (lambda: st.as_exp_coords()) if RigidTransform else None,
+                             "pin": (lambda: pin.log6(gm)) if pin else None,
+                             "pytransform3d": (lambda: pt3t.exponential_coordinates_from_transform(gm)) if pt3t else None}
+    peers_call["SE3 compose"] = {"scipy": both(st, st2) and (lambda: st * st2),
+                                 "pin": (lambda: pg * pg2) if pin else None,
+                                 "pytransform3d": (lambda: pt3t.concat(gm, T2)) if pt3t else None}
+    peers_call["SE3 inverse"] = {"scipy": (lambda: st.inv()) if RigidTransform else None,
+                                 "pin": (lambda: pg.inverse()) if pin else None,
+                                 "pytransform3d": (lambda: pt3t.invert_transform(gm)) if pt3t else None}
+    peers_call["SE3 act"] = {"scipy": (lambda: st.apply(p)) if RigidTransform else None,
+                             "pin": (lambda: pg.act(p)) if pin else None,
+                             "pytransform3d": (lambda: pt3t.transform(gm, np.append(p, 1.0))) if pt3t else None}
+    peers_call["SE3 adjoint"] = {"scipy": None, "pin": (lambda: pg.action) if pin else None,
+                                 "pytransform3d": (lambda: pt3t.adjoint_from_transform(gm)) if pt3t else None}
+    ours_call: dict[str, Callable[[], object]] = {
+        "SO3 exp": lambda: chasles.SO3.exp(w),
+        "SO3 log": lambda: R.log(),
+        "SO3 compose": lambda: R @ R2,
+        "SO3 inverse": lambda: R.inverse(),
+        "SO3 act": lambda: R @ p,
+        "SE3 exp": lambda: chasles.SE3.exp(xi),
+        "SE3 log": lambda: g.log(),
+        "SE3 compose": lambda: g @ g2,
+        "SE3 inverse": lambda: g.inverse(),
+        "SE3 act": lambda: g @ p,
+        "SE3 adjoint": lambda: g.adjoint(),
+    }
+    names = ["scipy", "pin", "pytransform3d"]
+    print("### Python objects, per call (us, median of %d)\n" % rep)
+    print("| op | chasles | " + " | ".join(names) + " | ratio to best peer | target us |")
+    print("| --- | ---: | " + " | ".join("---:" for _ in names) + " | ---: | ---: |")
+    for op, fn in ours_call.items():
+        ours = measure(fn, rep)
+        peers = {n: measure(peers_call[op].get(n), rep) for n in names}
+        print(row(op, ours, peers, 1e6, CALL_TARGET_US))
+    print()
+
+    # ---- arrays -------------------------------------------------------------
+    for n in args.sizes:
+        W = rng.normal(size=(n, 3))
+        W *= (rng.uniform(0.1, 3.0, size=n) / np.linalg.norm(W, axis=1))[:, None]
+        XI = np.concatenate([rng.normal(size=(n, 3)), W], axis=1)
+        Rs = chasles.so3_exp(W)
+        Gs = chasles.se3_exp(XI)
+        Gs2 = chasles.se3_exp(XI[::-1].copy())
+        P = rng.normal(size=(n, 3))
+        S6s = np.concatenate([W, XI[:, :3]], axis=1)
+        srs = Rotation.from_matrix(Rs) if Rotation else None
+        sts = RigidTransform.from_matrix(Gs) if RigidTransform else None
+        sts2 = RigidTransform.from_matrix(Gs2) if RigidTransform else None
+        st1 = RigidTransform.from_matrix(gm) if RigidTransform else None
+        ops: dict[str, tuple[Callable[[], object], dict[str, Callable[[], object] | None]]] = {
+            "SO3 exp": (lambda: chasles.so3_exp(W), {
+                "scipy": (lambda: Rotation.from_rotvec(W).as_matrix()) if Rotation else None,
+                "numpy": lambda: np_so3_exp(W),
+                "pytransform3d": (lambda: pt3b.matrices_from_compact_axis_angles(W)) if pt3b else None}),
+            "SO3 log": (lambda: chasles.so3_log(Rs), {
+                "scipy": (lambda: Rotation.from_matrix(Rs).as_rotvec()) if Rotation else None,
+                "numpy": lambda: np_so3_log(Rs),
+                "pytransform3d": (lambda: pt3b.axis_angles_from_matrices(Rs)) if pt3b else None}),
+            "SO3 compose": (lambda: chasles.so3_compose(Rs, Rs), {
+                "scipy": (lambda: srs * srs) if Rotation else None, "numpy": lambda: np.matmul(Rs, Rs),
+                "pytransform3d": None}),
+            "SE3 exp": (lambda: chasles.se3_exp(XI), {
+                "scipy": (lambda: RigidTransform.from_exp_coords(S6s).as_matrix()) if RigidTransform else None,
+                "numpy": None,
+                "pytransform3d": (lambda: pt3j.transforms_from_exponential_coordinates(S6s)) if pt3j else None}),
+            "SE3 log": (lambda: chasles.se3_log(Gs), {
+                "scipy": (lambda: RigidTransform.from_matrix(Gs).as_exp_coords()) if RigidTransform else None,
+                "numpy": None,
+                "pytransform3d": (lambda: pt3j.exponential_coordinates_from_transforms(Gs)) if pt3j else None}),
+            "SE3 compose": (lambda: chasles.se3_compose(Gs, Gs2), {
+                "scipy": (lambda: sts * sts2) if RigidTransform else None, "numpy": lambda: np.matmul(Gs, Gs2),
+                "pytransform3d": (lambda: pt3j.concat_many_to_many(Gs, Gs2)) if pt3j else None}),
+            "SE3 act (1 pose, N points)": (lambda: chasles.se3_act(gm, P), {
+                "scipy": (lambda: st1.apply(P)) if RigidTransform else None,
+                "numpy": lambda: P @ gm[:3, :3].T + gm[:3, 3],
+                "pytransform3d": None}),
+        }
+        names = ["scipy", "numpy", "pytransform3d"]
+        print(f"### Python array functions, N = {n:.0e}, per element (ns, median of {rep})\n")
+        print("| op | chasles | " + " | ".join(names) + " | ratio to best peer | target ns |")
+        print("| --- | ---: | " + " | ".join("---:" for _ in names) + " | ---: | ---: |")
+        budget = 0.2
+        for op, (fn, peer_fns) in ops.items():
+            ours = measure(fn, rep, budget)
+            peers = {k: measure(peer_fns.get(k), rep, budget) for k in names}
+            print(row(op, ours and ours / n, {k: (t / n if t else None) for k, t in peers.items()}, 1e9,
+                      ARRAY_TARGET_NS.get(op) if n == 100_000 or op.startswith("SE3 act") else None))
+        print()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
