@@ -149,9 +149,6 @@ def main() -> int:
     S6 = np.concatenate([w, xi[:3]])  # pytransform3d's exponential coordinates: (omega, v)
     T2 = gm @ gm
 
-    def both(a, b):
-        return a if a is not None and b is not None else None
-
     peers_call["SO3 exp"] = {"scipy": (lambda: Rotation.from_rotvec(w).as_matrix()) if Rotation else None,
                              "pin": (lambda: pin.exp3(w)) if pin else None,
                              "pytransform3d": (lambda: pt3r.matrix_from_compact_axis_angle(w)) if pt3r else None}
@@ -170,7 +167,7 @@ def main() -> int:
     peers_call["SE3 log"] = {"scipy": (lambda: st.as_exp_coords()) if RigidTransform else None,
                              "pin": (lambda: pin.log6(gm)) if pin else None,
                              "pytransform3d": (lambda: pt3t.exponential_coordinates_from_transform(gm)) if pt3t else None}
-    peers_call["SE3 compose"] = {"scipy": both(st, st2) and (lambda: st * st2),
+    peers_call["SE3 compose"] = {"scipy": (lambda: st * st2) if RigidTransform else None,
                                  "pin": (lambda: pg * pg2) if pin else None,
                                  "pytransform3d": (lambda: pt3t.concat(gm, T2)) if pt3t else None}
     peers_call["SE3 inverse"] = {"scipy": (lambda: st.inv()) if RigidTransform else None,

@@ -97,7 +97,8 @@ Returns:
       doc(R"(Rotation vectors of rotation matrices: w = log(R)^vee.
 
 The angle |w| is in [0, pi]; at exactly pi either axis sign is returned,
-never NaN. Robust near 0 and near pi (axis from the symmetric part).
+never NaN. Robust near 0 and near pi, and as accurate for a matrix slightly
+off SO(3) as projecting it first.
 
 Args:
     R: array_like of shape (..., 3, 3): rotation matrices.
@@ -306,7 +307,7 @@ void bind_se3_batch(py::module_& m) {
       "se3_exp",
       [](py::handle xi) {
         return apply<Core<4, 4>>(
-            "se3_exp", [](const auto& xi) { return SE3<ScalarOf<decltype(xi)>>::exp(xi).matrix(); },
+            "se3_exp", [](const auto& xi) { return SE3<ScalarOf<decltype(xi)>>::exp(xi); },
             in<Core<6>>("xi", xi));
       },
       py::arg("xi"),
@@ -350,7 +351,7 @@ Returns:
             "se3_compose",
             [](const auto& a, const auto& b) {
               using T = ScalarOf<decltype(a)>;
-              return (SE3<T>::from_matrix_unchecked(a) * SE3<T>::from_matrix_unchecked(b)).matrix();
+              return SE3<T>::from_matrix_unchecked(a) * SE3<T>::from_matrix_unchecked(b);
             },
             in<Core<4, 4>>("a", a), in<Core<4, 4>>("b", b));
       },
@@ -371,7 +372,7 @@ Returns:
       [](py::handle g) {
         return apply<Core<4, 4>>(
             "se3_inverse",
-            [](const auto& g) { return SE3<ScalarOf<decltype(g)>>::from_matrix_unchecked(g).inverse().matrix(); },
+            [](const auto& g) { return SE3<ScalarOf<decltype(g)>>::from_matrix_unchecked(g).inverse(); },
             in<Core<4, 4>>("g", g));
       },
       py::arg("g"),
@@ -485,8 +486,7 @@ Returns:
             "se3_interpolate",
             [](const auto& a, const auto& b, const auto& t) {
               using T = ScalarOf<decltype(a)>;
-              return chasles::interpolate(SE3<T>::from_matrix_unchecked(a), SE3<T>::from_matrix_unchecked(b), t)
-                  .matrix();
+              return chasles::interpolate(SE3<T>::from_matrix_unchecked(a), SE3<T>::from_matrix_unchecked(b), t);
             },
             in<Core<4, 4>>("a", a), in<Core<4, 4>>("b", b), in<Core<>>("t", t));
       },

@@ -159,11 +159,29 @@ inline auto view(const char* p, const std::array<ssize, 2>& s) noexcept {
   }
 }
 
-/// Writes one core element, C order, at o.
+template <typename V>
+struct IsSE3 : std::false_type {};
+template <typename S>
+struct IsSE3<chasles::SE3<S>> : std::true_type {};
+
+/// Writes one core element, C order, at o. A kernel may return an SE3 for a
+/// 4x4 core: its rotation and translation are written in place, rather
+/// than through SE3::matrix()'s 4x4 temporary, whose vector reloads wait on
+/// its scalar stores (se3_exp 53.5 -> 48.7 ns per element at N = 1e5).
 template <typename C, typename T, typename V>
 inline void store(const V& v, T* o) noexcept {
   if constexpr (C::ndim == 0) {
     *o = v;
+  } else if constexpr (IsSE3<V>::value) {
+    static_assert(C::rows == 4 && C::cols == 4, "an SE3 is stored in a 4x4 core");
+    const auto& R = v.rotation().matrix();
+    const auto& p = v.translation();
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) o[4 * i + j] = R(i, j);
+      o[4 * i + 3] = p[i];
+    }
+    o[12] = o[13] = o[14] = T(0);
+    o[15] = T(1);
   } else {
     Eigen::Map<typename C::template Stored<T>> m(o);
     m = v;

@@ -1984,7 +1984,8 @@ def so3_log(R: typing.Any) -> numpy.ndarray:
     Rotation vectors of rotation matrices: w = log(R)^vee.
     
     The angle |w| is in [0, pi]; at exactly pi either axis sign is returned,
-    never NaN. Robust near 0 and near pi (axis from the symmetric part).
+    never NaN. Robust near 0 and near pi, and as accurate for a matrix slightly
+    off SO(3) as projecting it first.
     
     Args:
         R: array_like of shape (..., 3, 3): rotation matrices.
