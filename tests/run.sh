@@ -3,19 +3,22 @@
 # it needs (apt-get for Eigen, GoogleTest, Google Benchmark; pip for the
 # Python side), then
 #   1. configures, builds and runs the C++ suite with ctest;
-#   2. builds the Python package into a fresh virtual environment (pip
-#      install .[test], scikit-build-core and pybind11 from PyPI) and runs
-#      pytest on it from outside the source tree.
+#   2. builds the Python wheel (pip wheel .: scikit-build-core and pybind11
+#      from PyPI), installs it with its test extras into a fresh virtual
+#      environment with CC and CXX set to /bin/false (a wheel needs no
+#      compiler), and runs pytest on it from outside the source tree.
 #
 #   bash tests/run.sh            # from the repository root
 #
-# BUILD_DIR (default build/tests), VENV (default build/venv) and JOBS
+# BUILD_DIR (default build/tests), VENV (default build/venv), WHEEL_DIR
+# (default build/wheel) and JOBS
 # (default: nproc) can be set.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$PWD
 BUILD_DIR=${BUILD_DIR:-$ROOT/build/tests}
 VENV=${VENV:-$ROOT/build/venv}
+WHEEL_DIR=${WHEEL_DIR:-$ROOT/build/wheel}
 JOBS=${JOBS:-$(nproc)}
 
 need_apt=()
@@ -35,8 +38,11 @@ cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DCHASLES_BUILD_TEST
 cmake --build "$BUILD_DIR" -j "$JOBS"
 ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"
 
-echo "== Python: pip install .[test] into a fresh virtual environment, pytest"
-rm -rf "$VENV"
+echo "== Python: pip wheel . (scikit-build-core and pybind11 from PyPI), installed into a fresh"
+echo "   virtual environment with no compiler reachable, pytest from outside the source tree"
+rm -rf "$VENV" "$WHEEL_DIR"
 python3 -m venv "$VENV"
-"$VENV/bin/python" -m pip install --quiet "$ROOT[test]"
+"$VENV/bin/python" -m pip wheel --quiet --no-deps -w "$WHEEL_DIR" "$ROOT"
+WHEEL=$(ls "$WHEEL_DIR"/chasles-*.whl)
+CC=/bin/false CXX=/bin/false "$VENV/bin/python" -m pip install --quiet --only-binary=chasles "$WHEEL[test]"
 (cd "$VENV" && "$VENV/bin/python" -m pytest "$ROOT/tests/python" -p no:cacheprovider)
