@@ -62,7 +62,14 @@ class SE3 {
   /// (A, B, C in detail/series.hpp). Covers w = 0 (V = I, pure
   /// translation) and tiny w without a branch of its own: the series keep
   /// the B [w] v term, of order theta |v|, that a w = 0 special case drops.
-  static SE3 exp(const Vector6& xi) noexcept {
+  ///
+  /// Takes any 6-vector expression (an Eigen::Map of a caller's buffer, a
+  /// segment of a larger vector) and reads it in place: converting it to a
+  /// Vector6 first stores it in packets that the loads of w straddle, a
+  /// store-forwarding stall that doubled the cost in batch loops.
+  template <typename Derived>
+  static SE3 exp(const Eigen::MatrixBase<Derived>& xi) noexcept {
+    EIGEN_STATIC_ASSERT_VECTOR_SPECIFIC_SIZE(Derived, 6);
     const Vector3 v = xi.template head<3>();
     const Vector3 w = xi.template tail<3>();
     const Scalar t = w.squaredNorm();
