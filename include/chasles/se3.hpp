@@ -150,7 +150,9 @@ class SE3 {
     Matrix6 A;
     const Matrix3& R = R_.matrix();
     A.template topLeftCorner<3, 3>() = R;
-    A.template topRightCorner<3, 3>() = Rotation::hat(p_) * R;
+    // [p] R column by column, p x R e_j: no 3x3 temporary for hat(p), whose
+    // vector reloads in the product stall on its scalar stores.
+    for (int j = 0; j < 3; ++j) A.template block<3, 1>(0, 3 + j) = p_.cross(R.col(j));
     A.template bottomLeftCorner<3, 3>().setZero();
     A.template bottomRightCorner<3, 3>() = R;
     return A;
