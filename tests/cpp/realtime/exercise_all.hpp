@@ -78,6 +78,29 @@ S exercise_all() noexcept {
   sum += Wrench<S>::from_screw(fs).vector().sum() + Wrench<S>::from_screw(p, w, S(0.2), S(2)).vector().sum();
   sum += (F + F2 - F * S(2) + S(3) * (-F)).vector().sum() + F.template cast<S>().vector().sum();
   sum += S(F.is_approx(F2, RealOf<S>(1e-6)) ? 1 : 0);
+
+  // Chain (kinematics.hpp): fixed size, and dynamic with a compile-time bound.
+  using C6 = Chain<S, 6>;
+  using CD = Chain<S, Eigen::Dynamic, 8>;
+  typename C6::Screws S6;
+  for (int i = 0; i < 6; ++i)
+    S6.col(i) = i % 3 == 2 ? C6::prismatic_screw(V3(w + V3::Constant(S(i))))
+                           : C6::revolute_screw(V3(w + V3::Constant(S(i))), V3(p * S(i)));
+  const C6 c6(S6, g);
+  typename C6::JointVector th6;
+  for (int i = 0; i < 6; ++i) th6(i) = S(0.1) * S(i + 1);
+  sum += c6.forward(th6).translation().sum() + c6.forward_body(th6).translation().sum();
+  sum += c6.jacobian_space(th6).sum() + c6.jacobian_body(th6).sum();
+  sum += S(c6.joints()) + c6.space_screws().sum() + c6.body_screws().sum() + c6.home().translation().sum();
+  typename CD::Screws SD(6, 7);
+  SD.template leftCols<6>() = S6;
+  SD.col(6) = CD::revolute_screw(w, p);
+  const CD cd(SD, h);
+  typename CD::JointVector thd(7);
+  for (int i = 0; i < 7; ++i) thd(i) = S(-0.2) * S(i + 1);
+  sum += cd.forward(thd).translation().sum() + cd.forward_body(thd).translation().sum();
+  sum += cd.jacobian_space(thd).sum() + cd.jacobian_body(thd).sum();
+  sum += S(cd.joints()) + cd.space_screws().sum() + cd.body_screws().sum() + cd.home().translation().sum();
   return sum;
 }
 

@@ -1,0 +1,332 @@
+// Product-of-exponentials kinematics (chasles::Chain), typed over float and
+// double, for fixed-size chains and dynamic chains with a compile-time bound:
+// - planar 2R and 3R arms against their closed-form forward kinematics;
+// - a UR5 (Modern Robotics, example 4.5) from its published screw axes, and
+//   the same arm on a linear rail (7 joints), against an independent product
+//   of 4x4 matrix exponentials (Eigen's MatrixFunctions, long double,
+//   support/reference.hpp);
+// - forward == forward_body, J_s = Ad_g J_b;
+// - both Jacobians against central differences of the long double reference
+//   forward kinematics: spatial columns vee(dg/dth_i g^-1), body columns
+//   vee(g^-1 dg/dth_i).
+//
+// Tolerances are k * eps of the scalar under test times the scale of the data
+// (support/group_traits.hpp, `near`), with k stated where used:
+//   kExp  = 16: one exp or one composition, "a few ulps" (as the other suites);
+//   per chain of n joints, n exps and n compositions: k = 2 n kExp.
+// The reference inputs are the library's inputs (screws, M, theta) after
+// rounding to the scalar under test, cast to long double: the error measured
+// is the library's, not the rounding of the data.
+#include <cmath>
+#include <random>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <chasles/kinematics.hpp>
+
+#include "support/group_traits.hpp"
+#include "support/reference.hpp"
+
+namespace {
+
+using namespace chasles_test;
+using chasles::Chain;
+using chasles::SE3;
+
+using V3L = Eigen::Matrix<LD, 3, 1>;
+using V6L = Eigen::Matrix<LD, 6, 1>;
+using M4L = Eigen::Matrix<LD, 4, 4>;
+using M6L = Eigen::Matrix<LD, 6, 6>;
+using ScrewsL = Eigen::Matrix<LD, 6, Eigen::Dynamic>;
+using VecL = Eigen::Matrix<LD, Eigen::Dynamic, 1>;
+
+constexpr LD kExp = 16;
+LD k_chain(Eigen::Index n) { return 2 * LD(n) * kExp; }
+
+// ---- the long double reference ----------------------------------------------
+
+/// exp([S_1] th_1) ... exp([S_n] th_n) M by MatrixFunctions in long double.
+M4L fk_ref(const ScrewsL& S, const M4L& M, const VecL& theta) {
+  M4L g = M4L::Identity();
+  for (Eigen::Index i = 0; i < S.cols(); ++i) g = g * chasles_ref::exp6(V6L(S.col(i) * theta(i)));
+  return g * M;
+}
+
+V6L vee(const M4L& X) {
+  V6L xi;
+  xi << X(0, 3), X(1, 3), X(2, 3), X(2, 1), X(0, 2), X(1, 0);
+  return xi;
+}
+
+M4L inverse(const M4L& g) {
+  M4L h = M4L::Identity();
+  h.topLeftCorner<3, 3>() = g.topLeftCorner<3, 3>().transpose();
+  h.topRightCorner<3, 1>() = -(g.topLeftCorner<3, 3>().transpose() * g.topRightCorner<3, 1>());
+  return h;
+}
+
+/// dg/dth_i by the five-point central difference in long double, step
+/// h = 1e-3: truncation h^4/30 |g^(5)| <= 1e-13 for the arms here (screws of
+/// norm <= 1.5), rounding ~ eps_LD / h = 1e-16.
+M4L fk_derivative(const ScrewsL& S, const M4L& M, const VecL& theta, Eigen::Index i) {
+  const LD h = 1e-3L;
+  auto at = [&](LD d) {
+    VecL t = theta;
+    t(i) += d;
+    return fk_ref(S, M, t);
+  };
+  return (-at(2 * h) + 8 * at(h) - 8 * at(-h) + at(-2 * h)) / (12 * h);
+}
+constexpr LD kDifferenceError = 1e-12L;  // the bound above with a margin of 10
+
+// ---- the arms -----------------------------------------------------------------
+
+struct Arm {
+  ScrewsL S;  // (v, w) columns
+  M4L M;
+};
+
+/// Planar nR arm in the xy plane: joint i about z through (l_1 + ... + l_{i-1}, 0, 0),
+/// tool at (l_1 + ... + l_n, 0, 0).
+Arm planar(const std::vector<LD>& l) {
+  Arm a{ScrewsL(6, Eigen::Index(l.size())), M4L::Identity()};
+  LD x = 0;
+  for (std::size_t i = 0; i < l.size(); ++i) {
+    a.S.col(Eigen::Index(i)) << 0, -x, 0, 0, 0, 1;  // -z x (x, 0, 0) = (0, -x, 0)
+    x += l[i];
+  }
+  a.M(0, 3) = x;
+  return a;
+}
+
+// UR5, Modern Robotics example 4.5 (metres).
+constexpr LD W1 = 0.109L, W2 = 0.082L, L1 = 0.425L, L2 = 0.392L, H1 = 0.089L, H2 = 0.095L;
+
+Arm ur5() {
+  Arm a{ScrewsL(6, 6), M4L::Identity()};
+  // Published as (w, v); stored as (v, w).
+  a.S.col(0) << 0, 0, 0, 0, 0, 1;
+  a.S.col(1) << -H1, 0, 0, 0, 1, 0;
+  a.S.col(2) << -H1, 0, L1, 0, 1, 0;
+  a.S.col(3) << -H1, 0, L1 + L2, 0, 1, 0;
+  a.S.col(4) << -W1, L1 + L2, 0, 0, 0, -1;
+  a.S.col(5) << H2 - H1, 0, L1 + L2, 0, 1, 0;
+  a.M << -1, 0, 0, L1 + L2,  //
+      0, 0, 1, W1 + W2,      //
+      0, 1, 0, H1 - H2,      //
+      0, 0, 0, 1;
+  return a;
+}
+
+/// The UR5 on a linear rail along (1, 2, 0) / sqrt(5): a prismatic joint first.
+Arm ur5_on_rail() {
+  const Arm u = ur5();
+  Arm a{ScrewsL(6, 7), u.M};
+  a.S.col(0) << 1 / std::sqrt(5.0L), 2 / std::sqrt(5.0L), 0, 0, 0, 0;
+  a.S.rightCols(6) = u.S;
+  return a;
+}
+
+// ---- the chains under test ----------------------------------------------------
+
+/// The arm in the library's scalar, and back in long double after rounding.
+template <typename C>
+C make_chain(Arm& a) {
+  using S = typename C::Scalar;
+  typename C::Screws S_(6, a.S.cols());
+  S_ = a.S.template cast<S>();
+  const Eigen::Matrix<S, 4, 4> M = a.M.template cast<S>();
+  a.S = S_.template cast<LD>();
+  a.M = M.template cast<LD>();
+  return C(S_, SE3<S>::from_matrix_unchecked(M));
+}
+
+template <typename S>
+std::vector<VecL> thetas(Eigen::Index n, int count = 24) {
+  std::mt19937 rng(20260501u + std::uint32_t(n));
+  std::uniform_real_distribution<double> u(-3.3, 3.3);
+  std::vector<VecL> out;
+  out.push_back(VecL::Zero(n));
+  for (int k = 0; k < count; ++k) {
+    VecL t(n);
+    for (Eigen::Index i = 0; i < n; ++i) t(i) = LD(S(u(rng)));  // representable in S
+    out.push_back(t);
+  }
+  return out;
+}
+
+template <typename C>
+typename C::JointVector joint_vector(const VecL& t) {
+  typename C::JointVector v(t.size());
+  for (Eigen::Index i = 0; i < t.size(); ++i) v(i) = typename C::Scalar(t(i));
+  return v;
+}
+
+/// Every property for one chain type and one arm.
+template <typename C>
+void check_chain(Arm arm) {
+  using S = typename C::Scalar;
+  const C chain = make_chain<C>(arm);
+  const Eigen::Index n = arm.S.cols();
+  ASSERT_EQ(chain.joints(), n);
+  const LD k = k_chain(n);
+  EXPECT_TRUE(near<S>(chain.space_screws(), arm.S, 0));
+  EXPECT_TRUE(near<S>(chain.home().matrix(), arm.M, 0));
+  // B_i = Ad_{M^-1} S_i.
+  const M4L M_inv = inverse(arm.M);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const V6L Bi = vee(M_inv * chasles_ref::hat6(V6L(arm.S.col(i))) * arm.M);
+    EXPECT_TRUE(near<S>(chain.body_screws().col(i), Bi, 4)) << "body screw " << i;
+  }
+  for (const VecL& t : thetas<S>(n)) {
+    const typename C::JointVector th = joint_vector<C>(t);
+    const M4L g = fk_ref(arm.S, arm.M, t);
+    const SE3<S> gs = chain.forward(th), gb = chain.forward_body(th);
+    EXPECT_TRUE(near<S>(gs.matrix(), g, k)) << "forward, theta = " << t.transpose();
+    EXPECT_TRUE(near<S>(gb.matrix(), g, k)) << "forward_body, theta = " << t.transpose();
+
+    const typename C::Jacobian Js = chain.jacobian_space(th), Jb = chain.jacobian_body(th);
+    ASSERT_EQ(Js.cols(), n);
+    ASSERT_EQ(Jb.cols(), n);
+    const M4L g_inv = inverse(g);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const M4L dg = fk_derivative(arm.S, arm.M, t, i);
+      const V6L js = vee(dg * g_inv), jb = vee(g_inv * dg);
+      const LD scale = std::max({LD(1), max_abs(js), max_abs(jb)});
+      const LD tol = k * eps<S>() * scale + kDifferenceError;
+      EXPECT_LE(max_abs_diff(Js.col(i), js), tol) << "space column " << i << ", theta = " << t.transpose();
+      EXPECT_LE(max_abs_diff(Jb.col(i), jb), tol) << "body column " << i << ", theta = " << t.transpose();
+    }
+    // J_s = Ad_g J_b, with the adjoint of the library's own g.
+    const Eigen::Matrix<S, 6, 6> Ad = gs.adjoint();
+    for (Eigen::Index i = 0; i < n; ++i)
+      EXPECT_TRUE(near<S>(Js.col(i), Eigen::Matrix<S, 6, 1>(Ad * Jb.col(i)), k)) << "J_s = Ad_g J_b, column " << i;
+  }
+}
+
+template <typename S>
+class Kinematics : public ::testing::Test {};
+
+struct ScalarName {
+  template <typename S>
+  static std::string GetName(int) {
+    return std::is_same<S, float>::value ? "float" : "double";
+  }
+};
+using ScalarTypes = ::testing::Types<float, double>;
+TYPED_TEST_SUITE(Kinematics, ScalarTypes, ScalarName);
+
+// ---- screws of joints -----------------------------------------------------------
+
+TYPED_TEST(Kinematics, RevoluteAndPrismaticScrews) {
+  using S = TypeParam;
+  using C = Chain<S, 6>;
+  using V3 = typename C::Vector3;
+  const Arm u = ur5();
+  // UR5 joints: axes and points on them, as drawn in Modern Robotics fig. 4.11.
+  const V3 z(0, 0, 1), y(0, 1, 0);
+  const V3 q1(0, 0, 0), q2(0, 0, S(H1)), q3(S(L1), 0, S(H1)), q4(S(L1 + L2), 0, S(H1));
+  const V3 q5(S(L1 + L2), S(W1), 0), q6(S(L1 + L2), 0, S(H1 - H2));
+  const typename C::Vector6 s[6] = {C::revolute_screw(z, q1),       C::revolute_screw(S(3) * y, q2),
+                                    C::revolute_screw(y, q3),       C::revolute_screw(y, q4),
+                                    C::revolute_screw(V3(-z), q5),  C::revolute_screw(y, q6)};
+  for (int i = 0; i < 6; ++i) EXPECT_TRUE(near<S>(s[i], V6L(u.S.col(i)), 4)) << "joint " << i + 1;
+  const typename C::Vector6 p = C::prismatic_screw(V3(0, S(3), S(4)));
+  EXPECT_TRUE(near<S>(p, V6L((V6L() << 0, 0.6L, 0.8L, 0, 0, 0).finished()), 4));
+}
+
+// ---- closed form: planar arms ---------------------------------------------------
+
+TYPED_TEST(Kinematics, Planar2RClosedForm) {
+  using S = TypeParam;
+  Arm arm = planar({1.5L, 0.75L});
+  const Chain<S, 2> chain = make_chain<Chain<S, 2>>(arm);
+  for (const VecL& t : thetas<S>(2)) {
+    const LD l1 = arm.S(1, 1) * -1, l2 = arm.M(0, 3) - l1;
+    const LD a = t(0), b = t(0) + t(1);
+    M4L g = M4L::Identity();
+    g.topLeftCorner<2, 2>() << std::cos(b), -std::sin(b), std::sin(b), std::cos(b);
+    g(0, 3) = l1 * std::cos(a) + l2 * std::cos(b);
+    g(1, 3) = l1 * std::sin(a) + l2 * std::sin(b);
+    const Eigen::Matrix<S, 2, 1> th(S(t(0)), S(t(1)));
+    EXPECT_TRUE(near<S>(chain.forward(th).matrix(), g, k_chain(2))) << t.transpose();
+    EXPECT_TRUE(near<S>(chain.forward_body(th).matrix(), g, k_chain(2))) << t.transpose();
+  }
+}
+
+TYPED_TEST(Kinematics, Planar3RClosedFormAndChecks) {
+  using S = TypeParam;
+  Arm arm = planar({1.0L, 0.5L, 0.25L});
+  const Chain<S, 3> chain = make_chain<Chain<S, 3>>(arm);
+  for (const VecL& t : thetas<S>(3)) {
+    const LD l1 = 1.0L, l2 = 0.5L, l3 = 0.25L;  // exact in float and double
+    const LD a = t(0), b = a + t(1), c = b + t(2);
+    M4L g = M4L::Identity();
+    g.topLeftCorner<2, 2>() << std::cos(c), -std::sin(c), std::sin(c), std::cos(c);
+    g(0, 3) = l1 * std::cos(a) + l2 * std::cos(b) + l3 * std::cos(c);
+    g(1, 3) = l1 * std::sin(a) + l2 * std::sin(b) + l3 * std::sin(c);
+    const Eigen::Matrix<S, 3, 1> th(S(t(0)), S(t(1)), S(t(2)));
+    EXPECT_TRUE(near<S>(chain.forward(th).matrix(), g, k_chain(3))) << t.transpose();
+    // Planar Jacobian in closed form: the tool point's velocity and the rate of c.
+    const typename Chain<S, 3>::Jacobian Js = chain.jacobian_space(th);
+    // Body Jacobian column i: velocity of the tool origin in the tool frame
+    // from joint i, R(c)^T z x (p - q_i), and wz = 1.
+    const LD px = g(0, 3), py = g(1, 3);
+    const LD qx[3] = {0, l1 * std::cos(a), l1 * std::cos(a) + l2 * std::cos(b)};
+    const LD qy[3] = {0, l1 * std::sin(a), l1 * std::sin(a) + l2 * std::sin(b)};
+    const typename Chain<S, 3>::Jacobian Jb = chain.jacobian_body(th);
+    for (int i = 0; i < 3; ++i) {
+      const LD vx = -(py - qy[i]), vy = px - qx[i];  // z x (p - q_i)
+      const LD bx = std::cos(c) * vx + std::sin(c) * vy, by = -std::sin(c) * vx + std::cos(c) * vy;
+      V6L jb;
+      jb << bx, by, 0, 0, 0, 1;
+      EXPECT_TRUE(near<S>(Jb.col(i), jb, k_chain(3))) << "body column " << i << ", theta = " << t.transpose();
+      // Spatial column i: -z x q_i, z.
+      V6L js;
+      js << qy[i], -qx[i], 0, 0, 0, 1;
+      EXPECT_TRUE(near<S>(Js.col(i), js, k_chain(3))) << "space column " << i << ", theta = " << t.transpose();
+    }
+  }
+}
+
+// ---- UR5 and UR5 on a rail: fixed and dynamic chains --------------------------
+
+TYPED_TEST(Kinematics, UR5Fixed) { check_chain<Chain<TypeParam, 6>>(ur5()); }
+TYPED_TEST(Kinematics, UR5DynamicMax8) { check_chain<Chain<TypeParam, Eigen::Dynamic, 8>>(ur5()); }
+TYPED_TEST(Kinematics, UR5OnRailFixed) { check_chain<Chain<TypeParam, 7>>(ur5_on_rail()); }
+TYPED_TEST(Kinematics, UR5OnRailDynamicMax8) { check_chain<Chain<TypeParam, Eigen::Dynamic, 8>>(ur5_on_rail()); }
+
+TYPED_TEST(Kinematics, UR5HomeAndPublishedPose) {
+  using S = TypeParam;
+  Arm arm = ur5();
+  const Chain<S, 6> chain = make_chain<Chain<S, 6>>(arm);
+  EXPECT_TRUE(near<S>(chain.forward(Eigen::Matrix<S, 6, 1>::Zero()).matrix(), arm.M, 0));
+  // Modern Robotics example 4.5: theta = (0, -pi/2, 0, 0, pi/2, 0) gives
+  // T = [[0, -1, 0, 0.095], [1, 0, 0, 0.109], [0, 0, 1, 0.988], [0, 0, 0, 1]].
+  const S h = S(chasles_ref::kPi / 2);
+  Eigen::Matrix<S, 6, 1> th;
+  th << 0, -h, 0, 0, h, 0;
+  M4L T;
+  T << 0, -1, 0, 0.095L, 1, 0, 0, 0.109L, 0, 0, 1, 0.988L, 0, 0, 0, 1;
+  // Exact sums of the link lengths; pi/2 rounded to S moves the tool by
+  // about eps times a lever arm below 1, inside the chain's bound.
+  EXPECT_TRUE(near<S>(chain.forward(th).matrix(), T, k_chain(6)));
+}
+
+// Dynamic chains of different lengths share one type and never allocate in
+// between: a 2-joint and a 7-joint chain of Chain<S, Dynamic, 8>.
+TYPED_TEST(Kinematics, DynamicLengths) {
+  using S = TypeParam;
+  using C = Chain<S, Eigen::Dynamic, 8>;
+  Arm a2 = planar({1.5L, 0.75L});
+  const C c2 = make_chain<C>(a2);
+  EXPECT_EQ(c2.joints(), 2);
+  const typename C::JointVector th = joint_vector<C>((VecL(2) << 0.3L, -1.1L).finished());
+  EXPECT_EQ(c2.jacobian_space(th).cols(), 2);
+  EXPECT_TRUE(c2.forward(th).is_approx(c2.forward_body(th), static_cast<S>(k_chain(2) * eps<S>())));
+}
+
+}  // namespace
