@@ -18,6 +18,7 @@
 #include <Eigen/Geometry>
 
 #include "chasles/chasles.hpp"
+#include "chasles/kinematics.hpp"
 
 namespace {
 
@@ -69,6 +70,45 @@ void run(benchmark::State& state, const std::vector<In>& in, Op op) {
 template <typename In, typename Op>
 void add(const std::string& name, std::vector<In> in, Op op) {
   benchmark::RegisterBenchmark(name.c_str(), [in = std::move(in), op](benchmark::State& s) { run(s, in, op); });
+}
+
+/// The UR5's space screws (v, w) and home pose, metres, optionally behind a
+/// prismatic rail joint along (1, 2, 0) / sqrt(5).
+template <typename S, typename C>
+C ur5_chain(int n) {
+  const S W1 = S(0.109), W2 = S(0.082), L1 = S(0.425), L2 = S(0.392), H1 = S(0.089), H2 = S(0.095);
+  typename C::Screws screws(6, n);
+  const int o = n - 6;
+  if (o == 1) screws.col(0) << S(1 / std::sqrt(5.0)), S(2 / std::sqrt(5.0)), 0, 0, 0, 0;
+  screws.col(o + 0) << 0, 0, 0, 0, 0, 1;
+  screws.col(o + 1) << -H1, 0, 0, 0, 1, 0;
+  screws.col(o + 2) << -H1, 0, L1, 0, 1, 0;
+  screws.col(o + 3) << -H1, 0, L1 + L2, 0, 1, 0;
+  screws.col(o + 4) << -W1, L1 + L2, 0, 0, 0, -1;
+  screws.col(o + 5) << H2 - H1, 0, L1 + L2, 0, 1, 0;
+  Eigen::Matrix<S, 4, 4> M;
+  M << -1, 0, 0, L1 + L2, 0, 0, 1, W1 + W2, 0, 1, 0, H1 - H2, 0, 0, 0, 1;
+  return C(screws, chasles::SE3<S>::from_matrix_unchecked(M));
+}
+
+/// Chain/<op>/<input>/<scalar> over joint vectors uniform in [-pi, pi].
+template <typename S, typename C>
+void register_chain(const std::string& input, const std::string& sn, int n) {
+  using JV = typename C::JointVector;
+  const C chain = ur5_chain<S, C>(n);
+  std::mt19937_64 rng(11 + std::uint32_t(n));
+  std::uniform_real_distribution<double> u(-kPi, kPi);
+  std::vector<JV> th;
+  for (std::size_t i = 0; i < kN; ++i) {
+    JV t(n);
+    for (int j = 0; j < n; ++j) t(j) = S(u(rng));
+    th.push_back(t);
+  }
+  const std::string tail = "/" + input + "/" + sn;
+  add("Chain/forward" + tail, th, [chain](const JV& t) { return chain.forward(t); });
+  add("Chain/forward_body" + tail, th, [chain](const JV& t) { return chain.forward_body(t); });
+  add("Chain/jacobian_space" + tail, th, [chain](const JV& t) { return chain.jacobian_space(t); });
+  add("Chain/jacobian_body" + tail, th, [chain](const JV& t) { return chain.jacobian_body(t); });
 }
 
 template <typename S>
@@ -177,6 +217,14 @@ void register_all(const std::string& sn) {
   add("Eigen/Isometry3_compose/generic/" + sn, isopairs, [](const auto& p) { return Iso(p.first * p.second); });
   add("Eigen/Isometry3_inverse/generic/" + sn, isos, [](const Iso& T) { return Iso(T.inverse(Eigen::Isometry)); });
   add("Eigen/Isometry3_act/generic/" + sn, isopoints, [](const auto& p) { return V3(p.first * p.second); });
+
+  // ---- Chain (product of exponentials): a UR5 (Modern Robotics, example
+  // 4.5) and the same arm on a linear rail (7 joints); fixed-size chains and
+  // a dynamic chain with a bound of 8 joints.
+  register_chain<S, Chain<S, 6>>("6dof", sn, 6);
+  register_chain<S, Chain<S, 7>>("7dof", sn, 7);
+  register_chain<S, Chain<S, Eigen::Dynamic, 8>>("6dof_dynamic_max8", sn, 6);
+  register_chain<S, Chain<S, Eigen::Dynamic, 8>>("7dof_dynamic_max8", sn, 7);
 
   // ---- floors
   std::vector<S> angles;
