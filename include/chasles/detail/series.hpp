@@ -102,6 +102,65 @@ inline VInverseCoefficients<Scalar> v_inverse_coefficients(const Scalar& theta2,
   return k;
 }
 
+/// D = (1 - (theta/2) cot(theta/2)) / theta^2 from theta^2 alone, for the
+/// inverses of the SO(3) Jacobians (I -/+ 1/2 [w] + D [w]^2):
+///   series below Thresholds::taylor_theta2:  1/12 + t/720 + t^2/30240;
+///   above it, E = (theta/2) cos(theta/2) / sin(theta/2) from the half angle,
+///   then (1 - E) / theta^2. Finite up to and beyond pi (sin(theta/2) >= 1/sqrt(2)
+///   on [0, 3pi/2]); it diverges only at theta = 2 pi, where the inverse
+///   Jacobian does not exist. 1 - E cancels near the cutoff, but D only ever
+///   multiplies [w]^2 (of size t), so the absolute error it adds is a few eps.
+///   No 0/0 on either branch: autodiff derivatives are exact at 0.
+template <typename Scalar>
+inline Scalar jacobian_inverse_coefficient(const Scalar& theta2) noexcept {
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
+  if (theta2 < ThresholdsOf<Scalar>::taylor_theta2) {
+    const Scalar& t = theta2;
+    return Scalar(1) / Scalar(12) + t * (Scalar(1) / Scalar(720) + t * (Scalar(1) / Scalar(30240)));
+  }
+  const Scalar half = Scalar(0.5) * sqrt(theta2);
+  const Scalar e = half * cos(half) / sin(half);
+  return (Scalar(1) - e) / theta2;
+}
+
+/// The two coefficients of Q(v, w) (the upper-right block of the SE(3) left
+/// Jacobian) beyond A, B, C: with t = theta^2,
+///   q3 = (theta^2 + 2 cos(theta) - 2) / (2 theta^4)          = (1/2 - B) / t
+///      = 1/24 - t/720 + t^2/40320 - ...
+///   q4 = (2 theta - 3 sin(theta) + theta cos(theta)) / (2 theta^5) = (3 C - B) / (2 t)
+///      = 1/120 - t/2520 + t^2/120960 - ...
+/// (Barfoot, State Estimation for Robotics, 2017, eq. 7.86; Sola et al. 2018,
+/// eq. 180). Below the cutoff the series; above it the forms in B and C,
+/// which cancel near the cutoff: q3 multiplies terms of size t |v| and q4
+/// terms of size t^2 |v|, so the absolute error they add is a few eps |v|.
+template <typename Scalar>
+struct QCoefficients {
+  Scalar b;   ///< (1 - cos(theta)) / theta^2
+  Scalar c;   ///< (theta - sin(theta)) / theta^3
+  Scalar q3;  ///< (1/2 - B) / theta^2
+  Scalar q4;  ///< (3 C - B) / (2 theta^2)
+};
+
+template <typename Scalar>
+inline QCoefficients<Scalar> q_coefficients(const Scalar& theta2) noexcept {
+  const ExpCoefficients<Scalar> k = exp_coefficients(theta2);
+  QCoefficients<Scalar> q;
+  q.b = k.b;
+  q.c = k.c;
+  if (theta2 < ThresholdsOf<Scalar>::taylor_theta2) {
+    const Scalar& t = theta2;
+    q.q3 = Scalar(1) / Scalar(24) - t * (Scalar(1) / Scalar(720) - t * (Scalar(1) / Scalar(40320)));
+    q.q4 = Scalar(1) / Scalar(120) - t * (Scalar(1) / Scalar(2520) - t * (Scalar(1) / Scalar(120960)));
+  } else {
+    const Scalar inv = Scalar(1) / theta2;
+    q.q3 = (Scalar(0.5) - k.b) * inv;
+    q.q4 = Scalar(0.5) * (Scalar(3) * k.c - k.b) * inv;
+  }
+  return q;
+}
+
 /// A rotation vector w too long for |w|^2 to be formed (|w|^2 at or above
 /// Thresholds::huge_theta2, or overflowing): its unit axis and the
 /// coefficients of exp in unit-axis form,

@@ -79,6 +79,27 @@ S exercise_all() noexcept {
   sum += (F + F2 - F * S(2) + S(3) * (-F)).vector().sum() + F.template cast<S>().vector().sum();
   sum += S(F.is_approx(F2, RealOf<S>(1e-6)) ? 1 : 0);
 
+  // Jacobians and plus / minus (jacobians.hpp), including the series branches.
+  const V3 w0 = V3::Zero(), wpi(S(3.14159), S(0), S(0));
+  const V6 xi0 = V6::Zero();
+  sum += so3_right_jacobian(w).sum() + so3_left_jacobian(w).sum() + so3_right_jacobian(w0).sum();
+  sum += so3_right_jacobian_inverse(w).sum() + so3_left_jacobian_inverse(w).sum();
+  sum += so3_right_jacobian_inverse(wpi).sum() + so3_left_jacobian_inverse(w0).sum();
+  sum += se3_right_jacobian(xi).sum() + se3_left_jacobian(xi).sum() + se3_left_jacobian(xi0).sum();
+  sum += se3_right_jacobian_inverse(xi).sum() + se3_left_jacobian_inverse(xi).sum();
+  sum += se3_right_jacobian_inverse(xi0).sum();
+  sum += rplus(R, w).matrix().sum() + rminus(R, I).sum() + lplus(w, R).matrix().sum() + lminus(R, I).sum();
+  sum += rplus(g, xi).translation().sum() + rminus(g, h).sum() + lplus(xi, g).translation().sum();
+  sum += lminus(g, h).sum();
+  sum += log_jacobian(R).sum() + log_jacobian(g).sum() + inverse_jacobian(R).sum() + inverse_jacobian(g).sum();
+  const auto cr = compose_jacobians(R, I);
+  const auto cg = compose_jacobians(g, h);
+  sum += cr.lhs.sum() + cr.rhs.sum() + cg.lhs.sum() + cg.rhs.sum();
+  const auto ar = act_jacobians(R, p);
+  const auto ag = act_jacobians(g, p);
+  sum += ar.group.sum() + ar.point.sum() + ag.group.sum() + ag.point.sum();
+  sum += interpolate_jacobian_t(R, I, S(0.3)).sum() + interpolate_jacobian_t(g, h, S(0.3)).sum();
+
   // Chain (kinematics.hpp): fixed size, and dynamic with a compile-time bound.
   using C6 = Chain<S, 6>;
   using CD = Chain<S, Eigen::Dynamic, 8>;

@@ -12,6 +12,7 @@
 #include "chasles/detail/approx.hpp"
 #include "chasles/detail/nearest_rotation.hpp"
 #include "chasles/detail/series.hpp"
+#include "chasles/jacobians.hpp"
 #include "chasles/kinematics.hpp"
 #include "chasles/screw.hpp"
 #include "chasles/se3.hpp"
