@@ -377,6 +377,19 @@ def test_from_screw_of_the_screw_of_log_gives_g_back(g):
     assert_same(SE3.from_screw(*s), g, 1e-9)
 
 
+SUBNORMAL_SPACING = 5e-324  # the gap between adjacent subnormal doubles
+
+
+def unit(x):
+    """x / |x| to full precision for every nonzero x, subnormal included:
+    scaled by its largest entry first (x / |x| of a subnormal x loses bits)."""
+    m = float(np.max(np.abs(x)))
+    if m == 0.0:
+        return x
+    y = x / m
+    return y / math.hypot(*y)
+
+
 @given(xi=twists())
 def test_screw_of_a_twist(xi):
     s = xi.screw()
@@ -384,14 +397,17 @@ def test_screw_of_a_twist(xi):
     # |w| without forming |w|^2 (which underflows below 1e-154): the screw is
     # representable whenever its pitch and point are, however small w is.
     nw = np.float64(math.hypot(*w))
-    u = w / nw if nw > 0 else w
+    u = unit(w)
     with np.errstate(over="ignore", divide="ignore", invalid="ignore"):
         pitch, point = (u @ v) / nw, np.cross(u, v) / nw
     if nw > 0 and np.isfinite(pitch) and np.isfinite(point).all():
-        assert math.isclose(s.magnitude, nw, rel_tol=1e-15)
+        # A subnormal |w| is only known to its spacing, 2^-1074: the pitch
+        # and point, divided by it, inherit that relative error.
+        rel = max(1e-12, 4 * SUBNORMAL_SPACING / nw)
+        assert math.isclose(s.magnitude, nw, rel_tol=1e-15, abs_tol=2 * SUBNORMAL_SPACING)
         assert close(s.direction, u, 1e-15)
-        assert math.isclose(s.pitch, pitch, rel_tol=1e-12, abs_tol=1e-12)
-        assert close(s.point, point, 1e-12)
+        assert math.isclose(s.pitch, pitch, rel_tol=rel, abs_tol=1e-12)
+        assert close(s.point, point, rel)
         assert xi.pitch == s.pitch
     elif math.hypot(*v) > 0:
         # w = 0, or so small that the axis is beyond the largest finite
@@ -417,12 +433,13 @@ def test_screw_of_a_wrench(F):
     s = F.screw()
     f, tau = F.force, F.torque
     nf = np.float64(math.hypot(*f))  # |f| without |f|^2, as the library
-    u = f / nf if nf > 0 else f
+    u = unit(f)
     with np.errstate(over="ignore", divide="ignore", invalid="ignore"):
         pitch, point = (u @ tau) / nf, np.cross(u, tau) / nf
     if nf > 0 and np.isfinite(pitch) and np.isfinite(point).all():
-        assert math.isclose(s.magnitude, nf, rel_tol=1e-15)
-        assert math.isclose(s.pitch, pitch, rel_tol=1e-12, abs_tol=1e-12)
+        rel = max(1e-12, 4 * SUBNORMAL_SPACING / nf)  # as for twists
+        assert math.isclose(s.magnitude, nf, rel_tol=1e-15, abs_tol=2 * SUBNORMAL_SPACING)
+        assert math.isclose(s.pitch, pitch, rel_tol=rel, abs_tol=1e-12)
         assert F.pitch == s.pitch
     elif math.hypot(*tau) > 0:
         # f = 0, or so small that the line is beyond the largest finite
