@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['SE3', 'SO3', 'Screw', 'Twist', 'Wrench', 'interpolate', 'se3_act', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_exp', 'se3_interpolate', 'se3_inverse', 'se3_log', 'so3_act', 'so3_as_quat', 'so3_compose', 'so3_exp', 'so3_from_quat', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee', 'twist_hat', 'twist_vee']
+__all__: list[str] = ['SE3', 'SO3', 'Screw', 'Twist', 'Wrench', 'interpolate', 'lminus', 'lplus', 'rminus', 'rplus', 'se3_act', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_exp', 'se3_interpolate', 'se3_inverse', 'se3_log', 'so3_act', 'so3_as_quat', 'so3_compose', 'so3_exp', 'so3_from_quat', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee', 'twist_hat', 'twist_vee']
 class SO3:
     """
     A rotation of R^3: an element of SO(3), stored as its 3x3 matrix (float64).
@@ -201,6 +201,98 @@ class SO3:
             >>> a, b = SO3(), SO3.exp([0.0, 0.0, 1.0])
             >>> np.round(SO3.interpolate(a, b, 0.25).log(), 12) + 0.0
             array([0.  , 0.  , 0.25])
+        """
+    @staticmethod
+    def left_jacobian(w: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The left Jacobian J_l of SO(3) at the rotation vector w, shape (3, 3).
+        
+        Right (local) convention, as manif and Pinocchio:
+        exp(w + dw) = exp(w) exp(J_r(w) dw + o(dw)) and
+        exp(w + dw) = exp(J_l(w) dw + o(dw)) exp(w), with
+        J_r(w) = I - B [w] + C [w]^2, J_l(w) = J_r(-w) = I + B [w] + C [w]^2,
+        B = (1 - cos theta) / theta^2, C = (theta - sin theta) / theta^3;
+        J_r^-1 = I + 1/2 [w] + D [w]^2, J_l^-1 = I - 1/2 [w] + D [w]^2,
+        D = (1 - (theta/2) cot(theta/2)) / theta^2 (finite for |w| < 2 pi).
+        
+        Args:
+            w: rotation vector, shape (3,), finite.
+        
+        Returns:
+            ndarray: shape (3, 3), float64.
+        
+        Raises:
+            ValueError: w is not of shape (3,), or not finite.
+            TypeError: w is not real.
+        """
+    @staticmethod
+    def left_jacobian_inverse(w: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The inverse left Jacobian J_l^-1 of SO(3) at the rotation vector w, shape (3, 3).
+        
+        Right (local) convention, as manif and Pinocchio:
+        exp(w + dw) = exp(w) exp(J_r(w) dw + o(dw)) and
+        exp(w + dw) = exp(J_l(w) dw + o(dw)) exp(w), with
+        J_r(w) = I - B [w] + C [w]^2, J_l(w) = J_r(-w) = I + B [w] + C [w]^2,
+        B = (1 - cos theta) / theta^2, C = (theta - sin theta) / theta^3;
+        J_r^-1 = I + 1/2 [w] + D [w]^2, J_l^-1 = I - 1/2 [w] + D [w]^2,
+        D = (1 - (theta/2) cot(theta/2)) / theta^2 (finite for |w| < 2 pi).
+        
+        Args:
+            w: rotation vector, shape (3,), finite.
+        
+        Returns:
+            ndarray: shape (3, 3), float64.
+        
+        Raises:
+            ValueError: w is not of shape (3,), or not finite.
+            TypeError: w is not real.
+        """
+    @staticmethod
+    def right_jacobian(w: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The right Jacobian J_r of SO(3) at the rotation vector w, shape (3, 3).
+        
+        Right (local) convention, as manif and Pinocchio:
+        exp(w + dw) = exp(w) exp(J_r(w) dw + o(dw)) and
+        exp(w + dw) = exp(J_l(w) dw + o(dw)) exp(w), with
+        J_r(w) = I - B [w] + C [w]^2, J_l(w) = J_r(-w) = I + B [w] + C [w]^2,
+        B = (1 - cos theta) / theta^2, C = (theta - sin theta) / theta^3;
+        J_r^-1 = I + 1/2 [w] + D [w]^2, J_l^-1 = I - 1/2 [w] + D [w]^2,
+        D = (1 - (theta/2) cot(theta/2)) / theta^2 (finite for |w| < 2 pi).
+        
+        Args:
+            w: rotation vector, shape (3,), finite.
+        
+        Returns:
+            ndarray: shape (3, 3), float64.
+        
+        Raises:
+            ValueError: w is not of shape (3,), or not finite.
+            TypeError: w is not real.
+        """
+    @staticmethod
+    def right_jacobian_inverse(w: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The inverse right Jacobian J_r^-1 of SO(3) at the rotation vector w, shape (3, 3).
+        
+        Right (local) convention, as manif and Pinocchio:
+        exp(w + dw) = exp(w) exp(J_r(w) dw + o(dw)) and
+        exp(w + dw) = exp(J_l(w) dw + o(dw)) exp(w), with
+        J_r(w) = I - B [w] + C [w]^2, J_l(w) = J_r(-w) = I + B [w] + C [w]^2,
+        B = (1 - cos theta) / theta^2, C = (theta - sin theta) / theta^3;
+        J_r^-1 = I + 1/2 [w] + D [w]^2, J_l^-1 = I - 1/2 [w] + D [w]^2,
+        D = (1 - (theta/2) cot(theta/2)) / theta^2 (finite for |w| < 2 pi).
+        
+        Args:
+            w: rotation vector, shape (3,), finite.
+        
+        Returns:
+            ndarray: shape (3, 3), float64.
+        
+        Raises:
+            ValueError: w is not of shape (3,), or not finite.
+            TypeError: w is not real.
         """
     @staticmethod
     def rotation_defect(matrix: numpy.typing.ArrayLike) -> float:
@@ -567,6 +659,94 @@ class SE3:
             >>> a, b = SE3(), SE3(translation=[2.0, 0.0, 0.0])
             >>> SE3.interpolate(a, b, 0.5).translation()
             array([1., 0., 0.])
+        """
+    @staticmethod
+    def left_jacobian(xi: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The left Jacobian J_l of SE(3) at the twist xi = (v, w), shape (6, 6).
+        
+        Linear part first. Right (local) convention, as manif and Pinocchio:
+        exp(xi + dxi) = exp(xi) exp(J_r(xi) dxi + o(dxi)) and
+        exp(xi + dxi) = exp(J_l(xi) dxi + o(dxi)) exp(xi), with
+        J_l(xi) = [[J_l(w), Q(v, w)], [0, J_l(w)]] (Barfoot; Sola et al. 2018,
+        eq. 180), J_r(xi) = J_l(-xi), and the inverses by the block formula
+        [[J^-1, -J^-1 Q J^-1], [0, J^-1]].
+        
+        Args:
+            xi: twist (v, w), shape (6,), finite.
+        
+        Returns:
+            ndarray: shape (6, 6), float64.
+        
+        Raises:
+            ValueError: xi is not of shape (6,), or not finite.
+            TypeError: xi is not real.
+        """
+    @staticmethod
+    def left_jacobian_inverse(xi: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The inverse left Jacobian J_l^-1 of SE(3) at the twist xi = (v, w), shape (6, 6).
+        
+        Linear part first. Right (local) convention, as manif and Pinocchio:
+        exp(xi + dxi) = exp(xi) exp(J_r(xi) dxi + o(dxi)) and
+        exp(xi + dxi) = exp(J_l(xi) dxi + o(dxi)) exp(xi), with
+        J_l(xi) = [[J_l(w), Q(v, w)], [0, J_l(w)]] (Barfoot; Sola et al. 2018,
+        eq. 180), J_r(xi) = J_l(-xi), and the inverses by the block formula
+        [[J^-1, -J^-1 Q J^-1], [0, J^-1]].
+        
+        Args:
+            xi: twist (v, w), shape (6,), finite.
+        
+        Returns:
+            ndarray: shape (6, 6), float64.
+        
+        Raises:
+            ValueError: xi is not of shape (6,), or not finite.
+            TypeError: xi is not real.
+        """
+    @staticmethod
+    def right_jacobian(xi: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The right Jacobian J_r of SE(3) at the twist xi = (v, w), shape (6, 6).
+        
+        Linear part first. Right (local) convention, as manif and Pinocchio:
+        exp(xi + dxi) = exp(xi) exp(J_r(xi) dxi + o(dxi)) and
+        exp(xi + dxi) = exp(J_l(xi) dxi + o(dxi)) exp(xi), with
+        J_l(xi) = [[J_l(w), Q(v, w)], [0, J_l(w)]] (Barfoot; Sola et al. 2018,
+        eq. 180), J_r(xi) = J_l(-xi), and the inverses by the block formula
+        [[J^-1, -J^-1 Q J^-1], [0, J^-1]].
+        
+        Args:
+            xi: twist (v, w), shape (6,), finite.
+        
+        Returns:
+            ndarray: shape (6, 6), float64.
+        
+        Raises:
+            ValueError: xi is not of shape (6,), or not finite.
+            TypeError: xi is not real.
+        """
+    @staticmethod
+    def right_jacobian_inverse(xi: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The inverse right Jacobian J_r^-1 of SE(3) at the twist xi = (v, w), shape (6, 6).
+        
+        Linear part first. Right (local) convention, as manif and Pinocchio:
+        exp(xi + dxi) = exp(xi) exp(J_r(xi) dxi + o(dxi)) and
+        exp(xi + dxi) = exp(J_l(xi) dxi + o(dxi)) exp(xi), with
+        J_l(xi) = [[J_l(w), Q(v, w)], [0, J_l(w)]] (Barfoot; Sola et al. 2018,
+        eq. 180), J_r(xi) = J_l(-xi), and the inverses by the block formula
+        [[J^-1, -J^-1 Q J^-1], [0, J^-1]].
+        
+        Args:
+            xi: twist (v, w), shape (6,), finite.
+        
+        Returns:
+            ndarray: shape (6, 6), float64.
+        
+        Raises:
+            ValueError: xi is not of shape (6,), or not finite.
+            TypeError: xi is not real.
         """
     @staticmethod
     def transform_defect(matrix: numpy.typing.ArrayLike) -> float:
@@ -1345,6 +1525,87 @@ def interpolate(a: SE3, b: SE3, t: float) -> SE3:
         >>> m = chasles.interpolate(SE3(), SE3(translation=[0.0, 0.0, 4.0]), 0.25)
         >>> m.translation()
         array([0., 0., 1.])
+    """
+@typing.overload
+def lminus(g: SO3, h: SO3) -> numpy.typing.NDArray[numpy.float64]:
+    ...
+@typing.overload
+def lminus(g: SE3, h: SE3) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    g lminus h = log(g h^-1): the xi with lplus(xi, h) == g.
+    
+    Args:
+        g: SO3 or SE3.
+        h: of the same group as g.
+    
+    Returns:
+        ndarray: shape (3,) for SO3, (6,) for SE3 ((v, w), linear part first).
+    """
+@typing.overload
+def lplus(xi: numpy.typing.ArrayLike, g: SO3) -> SO3:
+    ...
+@typing.overload
+def lplus(xi: numpy.typing.ArrayLike, g: SE3) -> SE3:
+    """
+    xi lplus g = exp(xi) g: a perturbation in the fixed (global, left) frame.
+    
+    Args:
+        xi: tangent vector, shape (3,) for SO3, (6,) for SE3 ((v, w)), finite.
+        g: SO3 or SE3.
+    
+    Returns:
+        SO3 or SE3: exp(xi) g.
+    
+    Raises:
+        ValueError: xi has the wrong shape for g, or is not finite.
+    """
+@typing.overload
+def rminus(g: SO3, h: SO3) -> numpy.typing.NDArray[numpy.float64]:
+    ...
+@typing.overload
+def rminus(g: SE3, h: SE3) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    g rminus h = log(h^-1 g): the xi with rplus(h, xi) == g ("g minus h").
+    
+    The order is manif's g.rminus(h); jaxlie's rminus(a, b) = log(a^-1 b) takes
+    the arguments the other way round.
+    
+    Args:
+        g: SO3 or SE3.
+        h: of the same group as g.
+    
+    Returns:
+        ndarray: shape (3,) for SO3, (6,) for SE3 ((v, w), linear part first).
+    
+    Example:
+        >>> h = chasles.SO3.exp([0.0, 0.0, 0.5])
+        >>> g = h @ chasles.SO3.exp([0.3, 0.0, 0.0])
+        >>> np.round(chasles.rminus(g, h), 12) + 0.0
+        array([0.3, 0. , 0. ])
+    """
+@typing.overload
+def rplus(g: SO3, xi: numpy.typing.ArrayLike) -> SO3:
+    ...
+@typing.overload
+def rplus(g: SE3, xi: numpy.typing.ArrayLike) -> SE3:
+    """
+    g rplus xi = g exp(xi): a perturbation in g's own (local, right) frame.
+    
+    Args:
+        g: SO3 or SE3.
+        xi: tangent vector, shape (3,) for SO3 (rotation vector w), (6,) for SE3
+            (twist (v, w), linear part first), finite.
+    
+    Returns:
+        SO3 or SE3: g exp(xi).
+    
+    Raises:
+        ValueError: xi has the wrong shape for g, or is not finite.
+    
+    Example:
+        >>> g = chasles.SE3(translation=[1.0, 0.0, 0.0])
+        >>> chasles.rplus(g, [0.0, 2.0, 0.0, 0.0, 0.0, 0.0]).translation()
+        array([1., 2., 0.])
     """
 def se3_act(g: typing.Any, points: typing.Any) -> numpy.ndarray:
     """
