@@ -338,6 +338,59 @@ TYPED_TEST(Jacobians, ExpJacobiansFirstOrder) {
   }
 }
 
+// ---- the coefficients on both sides of the Taylor cutoff ----------------------
+//
+// D, q3 and q4 (detail/series.hpp) against long double references summed from
+// their full series (D: |B_2n| t^(n-1) / (2n)!, Bernoulli numbers; q3:
+// sum (-1)^k t^(k-2) / (2k)!; q4: sum (-1)^k (k-1) t^(k-2) / (2k+1)!, k >= 2),
+// at the cutoff, one ulp below it and around it. What is promised is the
+// accuracy of each term: D multiplies [w]^2 (size t), q3 terms of size t, q4
+// terms of size t^2, so |error| * t (t^2 for q4) must be a few eps. The
+// closed forms cancel just above the cutoff and reach about 4 eps there.
+
+LD reference_d(LD t) {
+  if (t > LD(0.5)) {
+    const LD h = std::sqrt(t) / 2;
+    return (1 - h * std::cos(h) / std::sin(h)) / t;
+  }
+  // |B_2n| / (2n)! for n = 1..8.
+  const LD c[] = {1.0L / 12, 1.0L / 720, 1.0L / 30240, 1.0L / 1209600, 1.0L / 47900160,
+                  691.0L / 1307674368000.0L, 1.0L / 74724249600.0L, 3617.0L / 10670622842880000.0L};
+  LD sum = 0, p = 1;
+  for (LD ck : c) {
+    sum += ck * p;
+    p *= t;
+  }
+  return sum;
+}
+
+LD reference_q(LD t, bool q4) {
+  LD sum = 0, p = 1, fact = q4 ? 120 : 24;  // (2k+1)! or (2k)! at k = 2
+  for (int k = 2; k < 30; ++k) {
+    sum += (k % 2 ? -1 : 1) * (q4 ? LD(k - 1) : LD(1)) * p / fact;
+    p *= t;
+    fact *= q4 ? LD(2 * k + 2) * LD(2 * k + 3) : LD(2 * k + 1) * LD(2 * k + 2);
+  }
+  return sum;
+}
+
+TYPED_TEST(Jacobians, CoefficientsAcrossTheCutoff) {
+  using S = TypeParam;
+  const S cut = chasles::Thresholds<S>::taylor_theta2;
+  std::vector<S> ts = {S(0), cut / 4, std::nextafter(cut, S(0)), cut, std::nextafter(cut, S(1)), cut * S(1.01),
+                       cut * 4, S(0.1), S(1), S(4), S(9), S(9.8)};
+  for (S t : ts) {
+    const LD tl = t;
+    const LD d = chasles::detail::jacobian_inverse_coefficient(t);
+    const auto q = chasles::detail::q_coefficients(t);
+    EXPECT_LE(std::fabs(d - reference_d(tl)) * std::max(tl, LD(eps<S>())), 8 * eps<S>()) << "D at t = " << tl;
+    EXPECT_LE(std::fabs(LD(q.q3) - reference_q(tl, false)) * std::max(tl, LD(eps<S>())), 8 * eps<S>())
+        << "q3 at t = " << tl;
+    EXPECT_LE(std::fabs(LD(q.q4) - reference_q(tl, true)) * std::max(tl * tl, LD(eps<S>())), 8 * eps<S>())
+        << "q4 at t = " << tl;
+  }
+}
+
 // ---- special points -----------------------------------------------------------
 
 TEST(JacobiansSpecial, ExactValuesAtZeroAndNearPi) {
