@@ -12,5 +12,6 @@ void bind_se3(py::module_& m);           // bind_se3.cpp: class SE3
 void bind_twist_wrench(py::module_& m);  // bind_twist_wrench.cpp: classes Twist, Wrench, Screw
 void bind_batch(py::module_& m);         // bind_batch.cpp: broadcasting array functions
 void bind_jacobians(py::module_& m);     // bind_jacobians.cpp: SO3/SE3 Jacobians, rplus/rminus/lplus/lminus
+void bind_kinematics(py::module_& m);    // bind_kinematics.cpp: class Chain
 
 }  // namespace chasles_py

@@ -9,4 +9,5 @@ PYBIND11_MODULE(_core, m) {
   chasles_py::bind_twist_wrench(m);
   chasles_py::bind_batch(m);
   chasles_py::bind_jacobians(m);  // after SO3 and SE3: adds their static methods
+  chasles_py::bind_kinematics(m);
 }

@@ -31,6 +31,7 @@ documentation and the screw of a random rigid motion.
 """
 
 from chasles._core import (
+    Chain,
     SE3,
     SO3,
     Screw,
@@ -66,6 +67,7 @@ from chasles._core import (
 )
 
 __all__ = [
+    "Chain",
     "SE3",
     "SO3",
     "Screw",

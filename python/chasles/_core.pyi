@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['SE3', 'SO3', 'Screw', 'Twist', 'Wrench', 'interpolate', 'lminus', 'lplus', 'rminus', 'rplus', 'se3_act', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_exp', 'se3_interpolate', 'se3_inverse', 'se3_log', 'so3_act', 'so3_as_quat', 'so3_compose', 'so3_exp', 'so3_from_quat', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee', 'twist_hat', 'twist_vee']
+__all__: list[str] = ['Chain', 'SE3', 'SO3', 'Screw', 'Twist', 'Wrench', 'interpolate', 'lminus', 'lplus', 'rminus', 'rplus', 'se3_act', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_exp', 'se3_interpolate', 'se3_inverse', 'se3_log', 'so3_act', 'so3_as_quat', 'so3_compose', 'so3_exp', 'so3_from_quat', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee', 'twist_hat', 'twist_vee']
 class SO3:
     """
     A rotation of R^3: an element of SO(3), stored as its 3x3 matrix (float64).
@@ -1494,6 +1494,182 @@ class Wrench:
     def vector(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         ndarray: the 6-vector (f, tau), force first, shape (6,).
+        """
+class Chain:
+    """
+    Forward kinematics and Jacobians of a serial chain by the product of exponentials
+    (Murray, Li and Sastry, ch. 3; Lynch and Park, Modern Robotics, ch. 4-5).
+    
+    The chain is given by its space screws S_i (the joint twists at the home
+    configuration in the base frame, one row (v, w) per joint, linear part first)
+    and its home pose M = g(0); it keeps the body screws B_i = Ad_{M^-1} S_i.
+    Revolute joints about the axis through q along w have the screw
+    (-w x q, w) (``Chain.revolute_screw``), prismatic joints along v the screw
+    (v, 0) (``Chain.prismatic_screw``). At most 32 joints.
+    
+    Example:
+        >>> screws = [Chain.revolute_screw([0, 0, 1], [0, 0, 0]),
+        ...           Chain.revolute_screw([0, 0, 1], [1, 0, 0])]
+        >>> arm = Chain(screws, SE3(translation=[2.0, 0.0, 0.0]))
+        >>> np.round(arm.forward([np.pi / 2, 0.0]).translation(), 12) + 0.0
+        array([0., 2., 0.])
+        >>> arm.jacobian_space([0.0, 0.0]).shape
+        (6, 2)
+    
+    Conventions (the same in C++, in README.md and in every docstring):
+        - twists xi = (v, w), linear part first (Murray, Li and Sastry); the
+          Modern Robotics order (w, v) only through Twist.to_modern_robotics /
+          Twist.from_modern_robotics;
+        - wrenches F = (f, tau), force first, so power is the dot product V . F;
+        - g_ab maps frame b to frame a: q_a = g_ab q_b, g_ac = g_ab @ g_bc;
+          twists change frame by Ad_g = [[R, [p]R], [0, R]], wrenches by Ad_g^-T;
+        - hat(w) = [w] with [w] p = w x p; [xi] = [[ [w], v ], [0, 0]];
+        - quaternions are (x, y, z, w), scalar last, as in scipy; pass
+          scalar_first=True for (w, x, y, z); angles are in radians.
+    
+    Values are float64 and immutable. ``==`` is not defined (it is object
+    identity): compare with ``is_approx(other, tol)``. Objects pickle and copy
+    bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
+    """
+    @staticmethod
+    def prismatic_screw(direction: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The screw of a prismatic joint: (v, 0), v = direction / |direction|.
+        
+        Args:
+            direction: shape (3,), nonzero (normalized here).
+        
+        Returns:
+            numpy.ndarray: shape (6,), (v, 0).
+        
+        Example:
+            >>> Chain.prismatic_screw([0, 3, 4])
+            array([0. , 0.6, 0.8, 0. , 0. , 0. ])
+        """
+    @staticmethod
+    def revolute_screw(axis: numpy.typing.ArrayLike, point: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The screw of a revolute joint: (-w x q, w), w = axis / |axis|.
+        
+        Args:
+            axis: shape (3,), the joint axis, nonzero (normalized here).
+            point: shape (3,), q, any point on the axis.
+        
+        Returns:
+            numpy.ndarray: shape (6,), (v, w), linear part first.
+        
+        Example:
+            >>> Chain.revolute_screw([0, 0, 2], [1, 0, 0])
+            array([ 0., -1.,  0.,  0.,  0.,  1.])
+        """
+    def __init__(self, screws: numpy.typing.ArrayLike, home: typing.Any) -> None:
+        """
+        A serial chain from its space screws and its home pose.
+        
+        Args:
+            screws: shape (n, 6), 1 <= n <= 32: row i is the space screw S_i = (v, w)
+                of joint i at the home configuration, in the base frame, finite.
+            home: SE3 or shape (4, 4), M = g(0), the tool frame at home.
+        
+        Raises:
+            ValueError: a shape other than (n, 6), more than 32 joints, a non-finite
+                entry, or a home matrix that is not a rigid motion.
+        
+        Example:
+            >>> arm = Chain([[0, 0, 0, 0, 0, 1]], np.eye(4))
+            >>> arm.n_joints
+            1
+        """
+    def __repr__(self) -> str:
+        ...
+    def forward(self, theta: numpy.typing.ArrayLike) -> typing.Any:
+        """
+        Forward kinematics, space form: g(theta) = exp([S_1] th_1) ... exp([S_n] th_n) M.
+        
+        Args:
+            theta: shape (n,) or (N, n), joint positions (radians or lengths), finite.
+        
+        Returns:
+            SE3 | numpy.ndarray: an SE3 for shape (n,); shape (N, 4, 4) for (N, n).
+        
+        Example:
+            >>> arm = Chain([Chain.prismatic_screw([1, 0, 0])], np.eye(4))
+            >>> arm.forward([0.5]).translation()
+            array([0.5, 0. , 0. ])
+            >>> arm.forward([[0.5], [1.0]]).shape
+            (2, 4, 4)
+        """
+    def forward_body(self, theta: numpy.typing.ArrayLike) -> typing.Any:
+        """
+        Forward kinematics, body form: g(theta) = M exp([B_1] th_1) ... exp([B_n] th_n).
+        
+        Equal to ``forward`` up to rounding.
+        
+        Args:
+            theta: shape (n,) or (N, n), finite.
+        
+        Returns:
+            SE3 | numpy.ndarray: an SE3 for shape (n,); shape (N, 4, 4) for (N, n).
+        
+        Example:
+            >>> arm = Chain([Chain.revolute_screw([0, 0, 1], [1, 0, 0])], np.eye(4))
+            >>> arm.forward_body([0.3]).is_approx(arm.forward([0.3]))
+            True
+        """
+    def jacobian_body(self, theta: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The body Jacobian J_b: the body twist (g^-1 g')^vee = J_b theta'.
+        
+        Column i is Ad_{(exp([B_{i+1}] th_{i+1}) ... exp([B_n] th_n))^-1} B_i; rows (v, w).
+        
+        Args:
+            theta: shape (n,) or (N, n), finite.
+        
+        Returns:
+            numpy.ndarray: shape (6, n) for shape (n,); (N, 6, n) for (N, n).
+        
+        Example:
+            >>> arm = Chain([Chain.revolute_screw([0, 0, 1], [0, 0, 0])], SE3(translation=[1.0, 0.0, 0.0]))
+            >>> np.round(arm.jacobian_body([0.3])[:, 0], 12) + 0.0
+            array([0., 1., 0., 0., 0., 1.])
+        """
+    def jacobian_space(self, theta: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The space Jacobian J_s: the spatial twist (g' g^-1)^vee = J_s theta'.
+        
+        Column i is Ad_{exp([S_1] th_1) ... exp([S_{i-1}] th_{i-1})} S_i; rows (v, w).
+        J_s = Ad_g J_b.
+        
+        Args:
+            theta: shape (n,) or (N, n), finite.
+        
+        Returns:
+            numpy.ndarray: shape (6, n) for shape (n,); (N, 6, n) for (N, n).
+        
+        Example:
+            >>> arm = Chain([Chain.revolute_screw([0, 0, 1], [0, 0, 0])], np.eye(4))
+            >>> arm.jacobian_space([0.3])[:, 0]
+            array([0., 0., 0., 0., 0., 1.])
+        """
+    @property
+    def body_screws(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray: shape (n, 6), the body screws B_i = Ad_{M^-1} S_i (a copy).
+        """
+    @property
+    def home(self) -> SE3:
+        """
+        SE3: the home pose M = g(0).
+        """
+    @property
+    def n_joints(self) -> int:
+        """
+        int: n, the number of joints.
+        """
+    @property
+    def screws(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray: shape (n, 6), the space screws S_i, one row (v, w) per joint (a copy).
         """
 @typing.overload
 def interpolate(a: SO3, b: SO3, t: float) -> SO3:

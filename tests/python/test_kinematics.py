@@ -1,0 +1,240 @@
+"""chasles.Chain: product-of-exponentials kinematics. Forward kinematics of a
+UR5 (Modern Robotics, example 4.5) against a product of scipy.linalg.expm,
+both Jacobians against central differences, batches against single calls,
+shapes, errors and the docstring examples."""
+
+import doctest
+
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+from scipy.linalg import expm
+
+import chasles
+from chasles import SE3, Chain
+
+W1, W2, L1, L2, H1, H2 = 0.109, 0.082, 0.425, 0.392, 0.089, 0.095
+
+# Space screws (v, w), one row per joint (Modern Robotics lists (w, v)).
+UR5_SCREWS = np.array(
+    [
+        [0, 0, 0, 0, 0, 1],
+        [-H1, 0, 0, 0, 1, 0],
+        [-H1, 0, L1, 0, 1, 0],
+        [-H1, 0, L1 + L2, 0, 1, 0],
+        [-W1, L1 + L2, 0, 0, 0, -1],
+        [H2 - H1, 0, L1 + L2, 0, 1, 0],
+    ],
+    dtype=float,
+)
+UR5_HOME = np.array(
+    [[-1, 0, 0, L1 + L2], [0, 0, 1, W1 + W2], [0, 1, 0, H1 - H2], [0, 0, 0, 1]], dtype=float
+)
+# The UR5 on a linear rail along (1, 2, 0) / sqrt(5): 7 joints, a prismatic one first.
+RAIL_SCREWS = np.vstack([[1 / np.sqrt(5), 2 / np.sqrt(5), 0, 0, 0, 0], UR5_SCREWS])
+
+EPS = float(np.finfo(float).eps)
+
+joint_angles = st.floats(-3.3, 3.3, allow_nan=False, allow_infinity=False)
+
+
+def hat6(xi):
+    v, w = xi[:3], xi[3:]
+    return np.array(
+        [[0, -w[2], w[1], v[0]], [w[2], 0, -w[0], v[1]], [-w[1], w[0], 0, v[2]], [0, 0, 0, 0]]
+    )
+
+
+def vee6(X):
+    return np.array([X[0, 3], X[1, 3], X[2, 3], X[2, 1], X[0, 2], X[1, 0]])
+
+
+def fk_expm(screws, home, theta):
+    g = np.eye(4)
+    for s, t in zip(screws, theta):
+        g = g @ expm(hat6(s * t))
+    return g @ home
+
+
+def fk_derivative(screws, home, theta, i, h=1e-3):
+    """dg/dth_i by the five-point stencil: truncation h^4/30 |g^(5)| ~ 1e-13,
+    rounding ~ eps / h ~ 2e-13 for these arms."""
+
+    def at(d):
+        t = np.array(theta, dtype=float)
+        t[i] += d
+        return fk_expm(screws, home, t)
+
+    return (-at(2 * h) + 8 * at(h) - 8 * at(-h) + at(-2 * h)) / (12 * h)
+
+
+# Tolerances: the library's result is exact to a few hundred eps (2 n exps and
+# compositions of "a few ulps" each, as in tests/cpp/test_kinematics.cpp);
+# scipy's expm (Pade) is good to ~1e-15 per factor; the five-point difference
+# to ~1e-12 (above: expm rounding ~1e-15 amplified by 18 / (12 h) ~ 1.5e3).
+FK_TOL = 1e-13
+JAC_TOL = 1e-11
+
+
+@pytest.mark.parametrize("screws", [UR5_SCREWS, RAIL_SCREWS], ids=["ur5", "ur5_on_rail"])
+@given(data=st.data())
+def test_forward_matches_product_of_expm(screws, data):
+    n = len(screws)
+    theta = np.array(data.draw(st.lists(joint_angles, min_size=n, max_size=n)))
+    arm = Chain(screws, UR5_HOME)
+    expected = fk_expm(screws, UR5_HOME, theta)
+    np.testing.assert_allclose(arm.forward(theta).as_matrix(), expected, rtol=0, atol=FK_TOL)
+    np.testing.assert_allclose(arm.forward_body(theta).as_matrix(), expected, rtol=0, atol=FK_TOL)
+
+
+def test_ur5_published_pose():
+    arm = Chain(UR5_SCREWS, SE3.from_matrix(UR5_HOME))
+    T = arm.forward([0, -np.pi / 2, 0, 0, np.pi / 2, 0]).as_matrix()
+    expected = [[0, -1, 0, 0.095], [1, 0, 0, 0.109], [0, 0, 1, 0.988], [0, 0, 0, 1]]
+    np.testing.assert_allclose(T, expected, rtol=0, atol=1e-15)
+    np.testing.assert_array_equal(arm.forward(np.zeros(6)).as_matrix(), UR5_HOME)
+
+
+@pytest.mark.parametrize("screws", [UR5_SCREWS, RAIL_SCREWS], ids=["ur5", "ur5_on_rail"])
+@given(data=st.data())
+def test_jacobians_match_finite_differences(screws, data):
+    n = len(screws)
+    theta = np.array(data.draw(st.lists(joint_angles, min_size=n, max_size=n)))
+    arm = Chain(screws, UR5_HOME)
+    Js, Jb = arm.jacobian_space(theta), arm.jacobian_body(theta)
+    assert Js.shape == Jb.shape == (6, n)
+    g = fk_expm(screws, UR5_HOME, theta)
+    g_inv = np.linalg.inv(g)
+    for i in range(n):
+        dg = fk_derivative(screws, UR5_HOME, theta, i)
+        np.testing.assert_allclose(Js[:, i], vee6(dg @ g_inv), rtol=0, atol=JAC_TOL)
+        np.testing.assert_allclose(Jb[:, i], vee6(g_inv @ dg), rtol=0, atol=JAC_TOL)
+    # J_s = Ad_g J_b, to the C++ suite's bound k eps scale, k = 2 n 16: the
+    # entries p x R w grow with the lever arm |p| (up to ~4 m on the rail).
+    AdJb = arm.forward(theta).adjoint() @ Jb
+    scale = max(1.0, np.abs(Js).max(), np.abs(AdJb).max())
+    np.testing.assert_allclose(Js, AdJb, rtol=0, atol=2 * n * 16 * EPS * scale)
+
+
+@given(
+    thetas=st.lists(st.lists(joint_angles, min_size=7, max_size=7), min_size=0, max_size=8),
+)
+def test_batch_equals_per_element(thetas):
+    arm = Chain(RAIL_SCREWS, UR5_HOME)
+    th = np.array(thetas, dtype=float).reshape(-1, 7)
+    N = len(th)
+    F, Fb = arm.forward(th), arm.forward_body(th)
+    Js, Jb = arm.jacobian_space(th), arm.jacobian_body(th)
+    assert F.shape == Fb.shape == (N, 4, 4)
+    assert Js.shape == Jb.shape == (N, 6, 7)
+    for k in range(N):
+        np.testing.assert_array_equal(F[k], arm.forward(th[k]).as_matrix())
+        np.testing.assert_array_equal(Fb[k], arm.forward_body(th[k]).as_matrix())
+        np.testing.assert_array_equal(Js[k], arm.jacobian_space(th[k]))
+        np.testing.assert_array_equal(Jb[k], arm.jacobian_body(th[k]))
+
+
+def test_strided_and_integer_input():
+    arm = Chain(UR5_SCREWS, UR5_HOME)
+    th = np.linspace(-1, 1, 24).reshape(4, 6)
+    np.testing.assert_array_equal(
+        arm.forward(th[::2]), arm.forward(np.ascontiguousarray(th[::2]))
+    )
+    np.testing.assert_array_equal(arm.jacobian_space(th.T.copy().T), arm.jacobian_space(th))
+    np.testing.assert_array_equal(
+        arm.jacobian_body([1, 0, 0, 0, 0, 0]), arm.jacobian_body([1.0, 0, 0, 0, 0, 0])
+    )
+    fortran = np.asfortranarray(UR5_SCREWS)
+    np.testing.assert_array_equal(Chain(fortran, UR5_HOME).screws, UR5_SCREWS)
+
+
+def test_screws_and_properties():
+    for axis, point, s in zip(
+        [[0, 0, 1], [0, 1, 0], [0, 1, 0], [0, 1, 0], [0, 0, -1], [0, 1, 0]],
+        [[0, 0, 0], [0, 0, H1], [L1, 0, H1], [L1 + L2, 0, H1], [L1 + L2, W1, 0],
+         [L1 + L2, 0, H1 - H2]],
+        UR5_SCREWS,
+    ):
+        screw = Chain.revolute_screw(np.array(axis) * 2.5, point)
+        np.testing.assert_allclose(screw, s, rtol=0, atol=4 * EPS)
+    np.testing.assert_allclose(
+        Chain.prismatic_screw([0, 3, 4]), [0, 0.6, 0.8, 0, 0, 0], rtol=0, atol=EPS
+    )
+    arm = Chain(UR5_SCREWS, UR5_HOME)
+    assert arm.n_joints == 6
+    np.testing.assert_array_equal(arm.screws, UR5_SCREWS)
+    assert arm.screws.shape == arm.body_screws.shape == (6, 6)
+    np.testing.assert_array_equal(arm.home.as_matrix(), UR5_HOME)
+    M_inv = np.linalg.inv(UR5_HOME)
+    for s, b in zip(UR5_SCREWS, arm.body_screws):
+        np.testing.assert_allclose(b, vee6(M_inv @ hat6(s) @ UR5_HOME), rtol=0, atol=4 * EPS)
+    assert repr(arm) == "Chain(n_joints=6)"
+    assert Chain(np.zeros((32, 6)), np.eye(4)).n_joints == 32
+
+
+def test_errors_name_expected_and_received_shapes():
+    arm = Chain(UR5_SCREWS, UR5_HOME)
+    expected = r"Chain.forward\(theta\): expected shape \(6,\) or \(N, 6\).*got \(5,\)"
+    with pytest.raises(ValueError, match=expected):
+        arm.forward(np.zeros(5))
+    with pytest.raises(ValueError, match=r"expected shape \(6,\) or \(N, 6\).*got \(2, 3, 6\)"):
+        arm.jacobian_space(np.zeros((2, 3, 6)))
+    with pytest.raises(ValueError, match=r"Chain.jacobian_body\(theta\).*got \(\)"):
+        arm.jacobian_body(1.0)
+    with pytest.raises(ValueError, match=r"finite"):
+        arm.forward_body([0, 0, np.nan, 0, 0, 0])
+    with pytest.raises(ValueError, match=r"Chain\(screws\): expected shape \(n, 6\).*got \(6, 5\)"):
+        Chain(np.zeros((6, 5)), UR5_HOME)
+    with pytest.raises(ValueError, match=r"Chain\(screws\): expected shape \(n, 6\).*got \(0, 6\)"):
+        Chain(np.zeros((0, 6)), UR5_HOME)
+    with pytest.raises(ValueError, match=r"at most 32 joints, got 33"):
+        Chain(np.zeros((33, 6)), UR5_HOME)
+    with pytest.raises(ValueError, match=r"Chain\(home\): expected shape \(4, 4\), got \(3, 3\)"):
+        Chain(UR5_SCREWS, np.eye(3))
+    with pytest.raises(ValueError, match=r"Chain\(home\): not a rigid motion"):
+        Chain(UR5_SCREWS, 2 * np.eye(4))
+    with pytest.raises(TypeError, match=r"Chain.forward\(theta\)"):
+        arm.forward("abc")
+    with pytest.raises(ValueError, match=r"nonzero"):
+        Chain.revolute_screw([0, 0, 0], [1, 2, 3])
+    with pytest.raises(ValueError, match=r"nonzero"):
+        Chain.prismatic_screw([0, 0, 0])
+
+
+def member_doc(member):
+    fget = getattr(member, "fget", None)
+    return getattr(member, "__doc__", None) or getattr(fget, "__doc__", None)
+
+
+def test_exported_and_documented():
+    assert "Chain" in chasles.__all__
+    for name in ["forward", "forward_body", "jacobian_space", "jacobian_body", "revolute_screw",
+                 "prismatic_screw", "screws", "body_screws", "home", "n_joints"]:
+        member = vars(Chain)[name]
+        doc = member_doc(member)
+        assert doc and doc.strip() and "arg0" not in doc, name
+
+
+def chain_docstrings():
+    found = [("Chain", Chain.__doc__)]
+    for name, value in vars(Chain).items():
+        if name.startswith("_") and name != "__init__":
+            continue
+        doc = member_doc(value)
+        found.append((f"Chain.{name}", doc))
+    return [(n, d) for n, d in found if d and ">>>" in d]
+
+
+@pytest.mark.parametrize(
+    "name,doc",
+    chain_docstrings(),
+    ids=lambda x: x if isinstance(x, str) and "\n" not in x else "",
+)
+def test_docstring_examples_run(name, doc):
+    globs = {"np": np, "chasles": chasles, **{k: getattr(chasles, k) for k in chasles.__all__}}
+    test = doctest.DocTestParser().get_doctest(doc, globs, name, None, 0)
+    runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE)
+    out = []
+    runner.run(test, out=out.append)
+    assert runner.failures == 0, "".join(out)
