@@ -1,10 +1,14 @@
 // chasles._core: the Jacobians of include/chasles/jacobians.hpp as static
 // methods of SO3 and SE3 (right_jacobian, left_jacobian and their inverses),
-// and the module-level rplus, rminus, lplus, lminus for SO3 and SE3.
+// the module-level rplus, rminus, lplus, lminus for SO3 and SE3, and the
+// module-level Jacobians of the group operations (log_jacobian,
+// inverse_jacobian, compose_jacobians, act_jacobians, interpolate_jacobian_t),
+// overloaded for SO3 and SE3, in the right-local convention.
 #include <chasles/jacobians.hpp>
 
 #include <cstdio>
 #include <string>
+#include <tuple>
 
 #include "bindings.hpp"
 #include "convert.hpp"
@@ -58,6 +62,8 @@ Raises:
     ValueError: xi is not of shape (6,), or not finite.
     TypeError: xi is not real.
 )doc";
+
+using Matrices = std::tuple<py::array_t<double>, py::array_t<double>>;
 
 std::string doc_for(const char* fmt, const char* name) {
   char buf[2048];
@@ -211,6 +217,174 @@ Args:
 
 Returns:
     ndarray: shape (3,) for SO3, (6,) for SE3 ((v, w), linear part first).
+)doc");
+  // ---- Jacobians of the group operations (right-local convention) --------
+
+  m.def(
+      "log_jacobian", [](Obj<SO3d> g) { return mat_out<3, 3>(chasles::log_jacobian(*g)); }, py::arg("g"));
+  m.def(
+      "log_jacobian", [](Obj<SE3d> g) { return mat_out<6, 6>(chasles::log_jacobian(*g)); }, py::arg("g"),
+      R"doc(The Jacobian of g -> log(g), in the right-local convention.
+
+For a map f to the tangent space the right-local Jacobian J is defined by
+f(g exp(dx)) = f(g) + J dx + o(dx); here J = J_r(log g)^-1 (Sola et al.
+2018, section IV), finite up to the angle pi, where log itself jumps between
+w and -w (J is that of the branch log returns).
+
+Args:
+    g: SO3 or SE3.
+
+Returns:
+    ndarray: shape (3, 3) for SO3, (6, 6) for SE3 (rows and columns (v, w),
+    linear part first), float64.
+
+Example:
+    >>> g = chasles.SO3.exp([0.0, 0.0, 0.5])
+    >>> dx = np.array([1e-7, 0.0, 0.0])
+    >>> bool(np.allclose(chasles.rplus(g, dx).log() - g.log(),
+    ...                  chasles.log_jacobian(g) @ dx, atol=1e-13))
+    True
+)doc");
+
+  m.def(
+      "inverse_jacobian", [](Obj<SO3d> g) { return mat_out<3, 3>(chasles::inverse_jacobian(*g)); }, py::arg("g"));
+  m.def(
+      "inverse_jacobian", [](Obj<SE3d> g) { return mat_out<6, 6>(chasles::inverse_jacobian(*g)); }, py::arg("g"),
+      R"doc(The Jacobian of g -> g^-1, in the right-local convention: -Ad_g.
+
+Right-local: f(g exp(dx)) = f(g) exp(J dx + o(dx)); here
+(g exp(dx))^-1 = g^-1 exp(-Ad_g dx), so J = -Ad_g (Sola et al. 2018,
+section IV).
+
+Args:
+    g: SO3 or SE3.
+
+Returns:
+    ndarray: shape (3, 3) for SO3 (-R), (6, 6) for SE3 (-Ad_g, twists
+    (v, w), linear part first), float64.
+
+Example:
+    >>> g = chasles.SO3.exp([0.0, 0.0, np.pi / 2])
+    >>> np.round(chasles.inverse_jacobian(g), 12) + 0.0
+    array([[ 0.,  1.,  0.],
+           [-1.,  0.,  0.],
+           [ 0.,  0., -1.]])
+)doc");
+
+  m.def(
+      "compose_jacobians",
+      [](Obj<SO3d> a, Obj<SO3d> b) {
+        const auto J = chasles::compose_jacobians(*a, *b);
+        return Matrices(mat_out<3, 3>(J.lhs), mat_out<3, 3>(J.rhs));
+      },
+      py::arg("a"), py::arg("b"));
+  m.def(
+      "compose_jacobians",
+      [](Obj<SE3d> a, Obj<SE3d> b) {
+        const auto J = chasles::compose_jacobians(*a, *b);
+        return Matrices(mat_out<6, 6>(J.lhs), mat_out<6, 6>(J.rhs));
+      },
+      py::arg("a"), py::arg("b"),
+      R"doc(The Jacobians (J_a, J_b) of (a, b) -> a b, in the right-local convention.
+
+Right-local: (a exp(da)) (b exp(db)) = a b exp(J_a da + J_b db + o(da, db)),
+with J_a = Ad_{b^-1} and J_b = I (Sola et al. 2018, section IV).
+
+Args:
+    a: SO3 or SE3.
+    b: of the same group as a.
+
+Returns:
+    tuple[ndarray, ndarray]: (J_a, J_b), each of shape (3, 3) for SO3,
+    (6, 6) for SE3 (twists (v, w), linear part first), float64.
+
+Raises:
+    TypeError: a and b are not of the same group.
+
+Example:
+    >>> a, b = chasles.SO3(), chasles.SO3.exp([0.0, 0.0, np.pi / 2])
+    >>> J_a, J_b = chasles.compose_jacobians(a, b)
+    >>> bool(np.allclose(J_a, b.inverse().as_matrix())), bool(np.array_equal(J_b, np.eye(3)))
+    (True, True)
+)doc");
+
+  m.def(
+      "act_jacobians",
+      [](Obj<SO3d> g, ArrayLike p) {
+        const auto J = chasles::act_jacobians(*g, to_finite_eigen<3>(p.obj, "act_jacobians(g, p)"));
+        return Matrices(mat_out<3, 3>(J.group), mat_out<3, 3>(J.point));
+      },
+      py::arg("g"), py::arg("p"));
+  m.def(
+      "act_jacobians",
+      [](Obj<SE3d> g, ArrayLike p) {
+        const auto J = chasles::act_jacobians(*g, to_finite_eigen<3>(p.obj, "act_jacobians(g, p)"));
+        return Matrices(mat_out<3, 6>(J.group), mat_out<3, 3>(J.point));
+      },
+      py::arg("g"), py::arg("p"),
+      R"doc(The Jacobians (J_g, J_p) of (g, p) -> g p (the action on a point).
+
+Right-local in g: (g exp(dx)) (p + dp) = g p + J_g dx + J_p dp + o(dx, dp).
+SO3: J_g = -R [p], J_p = R; SE3: J_g = [R, -R [p]] (columns (v, w), linear
+part first), J_p = R (Sola et al. 2018, appendices B and D).
+
+Args:
+    g: SO3 or SE3.
+    p: point, shape (3,), finite.
+
+Returns:
+    tuple[ndarray, ndarray]: (J_g, J_p); J_g of shape (3, 3) for SO3,
+    (3, 6) for SE3, J_p of shape (3, 3); float64.
+
+Raises:
+    ValueError: p is not of shape (3,), or not finite.
+
+Example:
+    >>> g = chasles.SE3(translation=[1.0, 0.0, 0.0])
+    >>> J_g, J_p = chasles.act_jacobians(g, [0.0, 0.0, 1.0])
+    >>> J_g + 0.0
+    array([[ 1.,  0.,  0.,  0.,  1.,  0.],
+           [ 0.,  1.,  0., -1.,  0.,  0.],
+           [ 0.,  0.,  1.,  0.,  0.,  0.]])
+)doc");
+
+  m.def(
+      "interpolate_jacobian_t",
+      [](Obj<SO3d> a, Obj<SO3d> b, RealLike t) {
+        return vec_out<3>(
+            chasles::interpolate_jacobian_t(*a, *b, to_finite_real(t.obj, "interpolate_jacobian_t(t)")));
+      },
+      py::arg("a"), py::arg("b"), py::arg("t"));
+  m.def(
+      "interpolate_jacobian_t",
+      [](Obj<SE3d> a, Obj<SE3d> b, RealLike t) {
+        return vec_out<6>(
+            chasles::interpolate_jacobian_t(*a, *b, to_finite_real(t.obj, "interpolate_jacobian_t(t)")));
+      },
+      py::arg("a"), py::arg("b"), py::arg("t"),
+      R"doc(The derivative in t of interpolate(a, b, t) = a exp(t log(a^-1 b)).
+
+Right-local: interpolate(a, b, t + dt) = interpolate(a, b, t) exp(J dt + o(dt)),
+and J = J_r(t xi) xi = xi = rminus(b, a) = log(a^-1 b), the same for every t
+(the geodesic has constant body velocity).
+
+Args:
+    a: SO3 or SE3, the start.
+    b: of the same group as a, the end.
+    t: the fraction, finite.
+
+Returns:
+    ndarray: shape (3,) for SO3, (6,) for SE3 ((v, w), linear part first),
+    float64.
+
+Raises:
+    ValueError: t is not finite.
+    TypeError: a and b are not of the same group.
+
+Example:
+    >>> a, b = chasles.SE3(), chasles.SE3(translation=[2.0, 0.0, 0.0])
+    >>> chasles.interpolate_jacobian_t(a, b, 0.5)
+    array([2., 0., 0., 0., 0., 0.])
 )doc");
 }
 

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['Chain', 'SE3', 'SO3', 'Screw', 'Twist', 'Wrench', 'interpolate', 'lminus', 'lplus', 'rminus', 'rplus', 'se3_act', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_exp', 'se3_interpolate', 'se3_inverse', 'se3_log', 'so3_act', 'so3_as_quat', 'so3_compose', 'so3_exp', 'so3_from_quat', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee', 'twist_hat', 'twist_vee']
+__all__: list[str] = ['Chain', 'SE3', 'SO3', 'Screw', 'Twist', 'Wrench', 'act_jacobians', 'compose_jacobians', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'log_jacobian', 'lplus', 'rminus', 'rplus', 'se3_act', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_exp', 'se3_interpolate', 'se3_inverse', 'se3_log', 'so3_act', 'so3_as_quat', 'so3_compose', 'so3_exp', 'so3_from_quat', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee', 'twist_hat', 'twist_vee']
 class SO3:
     """
     A rotation of R^3: an element of SO(3), stored as its 3x3 matrix (float64).
@@ -1672,6 +1672,65 @@ class Chain:
         numpy.ndarray: shape (n, 6), the space screws S_i, one row (v, w) per joint (a copy).
         """
 @typing.overload
+def act_jacobians(g: SO3, p: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
+@typing.overload
+def act_jacobians(g: SE3, p: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    """
+    The Jacobians (J_g, J_p) of (g, p) -> g p (the action on a point).
+    
+    Right-local in g: (g exp(dx)) (p + dp) = g p + J_g dx + J_p dp + o(dx, dp).
+    SO3: J_g = -R [p], J_p = R; SE3: J_g = [R, -R [p]] (columns (v, w), linear
+    part first), J_p = R (Sola et al. 2018, appendices B and D).
+    
+    Args:
+        g: SO3 or SE3.
+        p: point, shape (3,), finite.
+    
+    Returns:
+        tuple[ndarray, ndarray]: (J_g, J_p); J_g of shape (3, 3) for SO3,
+        (3, 6) for SE3, J_p of shape (3, 3); float64.
+    
+    Raises:
+        ValueError: p is not of shape (3,), or not finite.
+    
+    Example:
+        >>> g = chasles.SE3(translation=[1.0, 0.0, 0.0])
+        >>> J_g, J_p = chasles.act_jacobians(g, [0.0, 0.0, 1.0])
+        >>> J_g + 0.0
+        array([[ 1.,  0.,  0.,  0.,  1.,  0.],
+               [ 0.,  1.,  0., -1.,  0.,  0.],
+               [ 0.,  0.,  1.,  0.,  0.,  0.]])
+    """
+@typing.overload
+def compose_jacobians(a: SO3, b: SO3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
+@typing.overload
+def compose_jacobians(a: SE3, b: SE3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    """
+    The Jacobians (J_a, J_b) of (a, b) -> a b, in the right-local convention.
+    
+    Right-local: (a exp(da)) (b exp(db)) = a b exp(J_a da + J_b db + o(da, db)),
+    with J_a = Ad_{b^-1} and J_b = I (Sola et al. 2018, section IV).
+    
+    Args:
+        a: SO3 or SE3.
+        b: of the same group as a.
+    
+    Returns:
+        tuple[ndarray, ndarray]: (J_a, J_b), each of shape (3, 3) for SO3,
+        (6, 6) for SE3 (twists (v, w), linear part first), float64.
+    
+    Raises:
+        TypeError: a and b are not of the same group.
+    
+    Example:
+        >>> a, b = chasles.SO3(), chasles.SO3.exp([0.0, 0.0, np.pi / 2])
+        >>> J_a, J_b = chasles.compose_jacobians(a, b)
+        >>> bool(np.allclose(J_a, b.inverse().as_matrix())), bool(np.array_equal(J_b, np.eye(3)))
+        (True, True)
+    """
+@typing.overload
 def interpolate(a: SO3, b: SO3, t: float) -> SO3:
     """
     Geodesic interpolation of rotations a exp(t log(a^-1 b)) (as SO3.interpolate).
@@ -1703,6 +1762,62 @@ def interpolate(a: SE3, b: SE3, t: float) -> SE3:
         array([0., 0., 1.])
     """
 @typing.overload
+def interpolate_jacobian_t(a: SO3, b: SO3, t: float) -> numpy.typing.NDArray[numpy.float64]:
+    ...
+@typing.overload
+def interpolate_jacobian_t(a: SE3, b: SE3, t: float) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    The derivative in t of interpolate(a, b, t) = a exp(t log(a^-1 b)).
+    
+    Right-local: interpolate(a, b, t + dt) = interpolate(a, b, t) exp(J dt + o(dt)),
+    and J = J_r(t xi) xi = xi = rminus(b, a) = log(a^-1 b), the same for every t
+    (the geodesic has constant body velocity).
+    
+    Args:
+        a: SO3 or SE3, the start.
+        b: of the same group as a, the end.
+        t: the fraction, finite.
+    
+    Returns:
+        ndarray: shape (3,) for SO3, (6,) for SE3 ((v, w), linear part first),
+        float64.
+    
+    Raises:
+        ValueError: t is not finite.
+        TypeError: a and b are not of the same group.
+    
+    Example:
+        >>> a, b = chasles.SE3(), chasles.SE3(translation=[2.0, 0.0, 0.0])
+        >>> chasles.interpolate_jacobian_t(a, b, 0.5)
+        array([2., 0., 0., 0., 0., 0.])
+    """
+@typing.overload
+def inverse_jacobian(g: SO3) -> numpy.typing.NDArray[numpy.float64]:
+    ...
+@typing.overload
+def inverse_jacobian(g: SE3) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    The Jacobian of g -> g^-1, in the right-local convention: -Ad_g.
+    
+    Right-local: f(g exp(dx)) = f(g) exp(J dx + o(dx)); here
+    (g exp(dx))^-1 = g^-1 exp(-Ad_g dx), so J = -Ad_g (Sola et al. 2018,
+    section IV).
+    
+    Args:
+        g: SO3 or SE3.
+    
+    Returns:
+        ndarray: shape (3, 3) for SO3 (-R), (6, 6) for SE3 (-Ad_g, twists
+        (v, w), linear part first), float64.
+    
+    Example:
+        >>> g = chasles.SO3.exp([0.0, 0.0, np.pi / 2])
+        >>> np.round(chasles.inverse_jacobian(g), 12) + 0.0
+        array([[ 0.,  1.,  0.],
+               [-1.,  0.,  0.],
+               [ 0.,  0., -1.]])
+    """
+@typing.overload
 def lminus(g: SO3, h: SO3) -> numpy.typing.NDArray[numpy.float64]:
     ...
 @typing.overload
@@ -1716,6 +1831,33 @@ def lminus(g: SE3, h: SE3) -> numpy.typing.NDArray[numpy.float64]:
     
     Returns:
         ndarray: shape (3,) for SO3, (6,) for SE3 ((v, w), linear part first).
+    """
+@typing.overload
+def log_jacobian(g: SO3) -> numpy.typing.NDArray[numpy.float64]:
+    ...
+@typing.overload
+def log_jacobian(g: SE3) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    The Jacobian of g -> log(g), in the right-local convention.
+    
+    For a map f to the tangent space the right-local Jacobian J is defined by
+    f(g exp(dx)) = f(g) + J dx + o(dx); here J = J_r(log g)^-1 (Sola et al.
+    2018, section IV), finite up to the angle pi, where log itself jumps between
+    w and -w (J is that of the branch log returns).
+    
+    Args:
+        g: SO3 or SE3.
+    
+    Returns:
+        ndarray: shape (3, 3) for SO3, (6, 6) for SE3 (rows and columns (v, w),
+        linear part first), float64.
+    
+    Example:
+        >>> g = chasles.SO3.exp([0.0, 0.0, 0.5])
+        >>> dx = np.array([1e-7, 0.0, 0.0])
+        >>> bool(np.allclose(chasles.rplus(g, dx).log() - g.log(),
+        ...                  chasles.log_jacobian(g) @ dx, atol=1e-13))
+        True
     """
 @typing.overload
 def lplus(xi: numpy.typing.ArrayLike, g: SO3) -> SO3:

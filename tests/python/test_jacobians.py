@@ -15,15 +15,17 @@ order 1.
 from __future__ import annotations
 
 import doctest
+import math
 
 import chasles
 import numpy as np
 import pytest
 from chasles import SE3, SO3
 from hypothesis import given
+from hypothesis import strategies as st
 from scipy.linalg import expm, logm
 from scipy.spatial.transform import Rotation
-from strategies import PI, rotation_vectors, twist_vectors
+from strategies import PI, elements, points, rotation_vectors, twist_vectors
 
 H = 1e-5
 FD_TOL = 1e-7
@@ -193,3 +195,209 @@ def test_module_functions_are_documented_and_examples_run(name):
     out = []
     runner.run(test, out=out.append)
     assert runner.failures == 0, "".join(out)
+
+
+# ---- Jacobians of the group operations (log, inverse, compose, act, interpolate) ----
+#
+# Each against central differences on the manifold computed with the objects
+# (rplus, rminus, @, interpolate), in the right-local sense: for a map f to a
+# group, f(X exp(dx)) = f(X) exp(J dx + o(dx)), so column k of J is
+# (rminus(f(X rplus h e_k), f(X)) - rminus(f(X rplus -h e_k), f(X))) / 2h; for
+# a map to a vector space (log, the action on a point) the difference is the
+# plain one, f(X exp(dx)) - f(X) = J dx + o(dx).
+#
+# Tolerance FD_TOL = 1e-7 relative to max(1, |J|), as above: truncation
+# h^2 |f'''| / 6 ~ 1e-10 |J|, rounding eps |f| / h with |f| <= ~70 here (SE3
+# translations up to 10, logs up to ~25 near pi, interpolation t in [-1, 2])
+# ~ 1.4e-9; a margin of about a hundred, while a wrong term (a sign, Ad_b
+# for Ad_b^-1, the (v, w) order) errs by order 1.
+
+
+def tangent_dim(g):
+    return 3 if isinstance(g, SO3) else 6
+
+
+def unit(n, k):
+    e = np.zeros(n)
+    e[k] = 1.0
+    return e
+
+
+def log_branch_near(g, ref):
+    """log(g) on the branch nearest ref.
+
+    Past the angle pi, log jumps from w to the other representative
+    w - 2 pi w / |w| of the same rotation; the finite difference of log at a
+    point near pi must follow the branch that log returned there.
+    """
+    u = g.log()
+    w = u if isinstance(g, SO3) else u[3:]
+    theta = np.linalg.norm(w)
+    if theta == 0.0:
+        return u
+    w2 = w - 2 * PI * w / theta
+    if isinstance(g, SO3):
+        alt = w2
+    else:  # v = J_l(w)^-1 p on either branch
+        alt = np.concatenate([SO3.left_jacobian_inverse(w2) @ g.translation(), w2])
+    return u if np.max(np.abs(u - ref)) <= np.max(np.abs(alt - ref)) else alt
+
+
+def fd_group_map(f, x):
+    """Central differences of the group-valued x -> f(x), right-local in x."""
+    n = tangent_dim(x)
+    f0 = f(x)
+    cols = []
+    for k in range(n):
+        e = H * unit(n, k)
+        up = chasles.rminus(f(chasles.rplus(x, e)), f0)
+        down = chasles.rminus(f(chasles.rplus(x, -e)), f0)
+        cols.append((up - down) / (2 * H))
+    return np.column_stack(cols)
+
+
+def fd_vector_map(f, x):
+    """Central differences of the vector-valued x -> f(x), right-local in x."""
+    n = tangent_dim(x)
+    cols = []
+    for k in range(n):
+        e = H * unit(n, k)
+        cols.append((f(chasles.rplus(x, e)) - f(chasles.rplus(x, -e))) / (2 * H))
+    return np.column_stack(cols)
+
+
+def check_log_jacobian(g):
+    ref = g.log()
+    J = fd_vector_map(lambda x: log_branch_near(x, ref), g)
+    assert_jacobian_close(chasles.log_jacobian(g), J)
+
+
+def check_inverse_jacobian(g):
+    assert_jacobian_close(chasles.inverse_jacobian(g), fd_group_map(lambda x: x.inverse(), g))
+
+
+def check_compose_jacobians(a, b):
+    J_a, J_b = chasles.compose_jacobians(a, b)
+    assert_jacobian_close(J_a, fd_group_map(lambda x: x @ b, a))
+    assert_jacobian_close(J_b, fd_group_map(lambda x: a @ x, b))
+
+
+def check_act_jacobians(g, p):
+    J_g, J_p = chasles.act_jacobians(g, p)
+    assert J_g.shape == (3, tangent_dim(g))
+    assert_jacobian_close(J_g, fd_vector_map(lambda x: x @ p, g))
+    fd_p = np.column_stack([(g @ (p + H * unit(3, k)) - g @ (p - H * unit(3, k))) / (2 * H) for k in range(3)])
+    assert_jacobian_close(J_p, fd_p)
+
+
+def check_interpolate_jacobian_t(a, b, t):
+    J = chasles.interpolate_jacobian_t(a, b, t)
+    assert J.shape == (tangent_dim(a),)
+    interp = type(a).interpolate
+    f0 = interp(a, b, t)
+    fd = (chasles.rminus(interp(a, b, t + H), f0) - chasles.rminus(interp(a, b, t - H), f0)) / (2 * H)
+    err = np.max(np.abs(J - fd)) / max(1.0, np.max(np.abs(J)))
+    assert err <= FD_TOL, f"relative error {err:.3e}"
+    assert np.array_equal(J, chasles.rminus(b, a))  # the constant body velocity log(a^-1 b)
+
+
+N_PI = np.array([1.0, 2.0, -2.0]) / 3
+NAMED_ROTATION_VECTORS = {
+    "identity": np.zeros(3),
+    "small": np.array([1e-9, -2e-9, 0.5e-9]),
+    "taylor cutoff": np.array([0.0, 0.0, math.sqrt(6.0554544523933395e-06)]),
+    "generic": np.array([0.3, -1.1, 0.7]),
+    "pi - 1e-6": (PI - 1e-6) * N_PI,
+    "pi about x": np.array([PI, 0.0, 0.0]),
+    "pi about a generic axis": PI * N_PI,
+}
+NAMED_POINT = np.array([0.5, -2.0, 3.0])
+
+
+def named_elements():
+    for name, w in NAMED_ROTATION_VECTORS.items():
+        yield pytest.param(SO3.exp(w), id=f"SO3 {name}")
+        yield pytest.param(SE3(SO3.exp(w), [1.0, -2.0, 0.5]), id=f"SE3 {name}")
+    yield pytest.param(SE3(), id="SE3 identity exactly")
+
+
+@pytest.mark.parametrize("g", list(named_elements()))
+def test_operation_jacobians_at_named_points(g):
+    h = type(g).exp(np.linspace(0.2, 0.7, tangent_dim(g)))
+    check_log_jacobian(g)
+    check_inverse_jacobian(g)
+    check_compose_jacobians(g, h)
+    check_compose_jacobians(h, g)
+    check_act_jacobians(g, NAMED_POINT)
+    for t in (0.0, 0.5, 1.0, -0.5, 2.0):
+        check_interpolate_jacobian_t(h, g, t)
+        check_interpolate_jacobian_t(g, h, t)
+
+
+@pytest.mark.parametrize("group", [SO3, SE3], ids=["SO3", "SE3"])
+@given(data=st.data())
+def test_log_and_inverse_jacobians_against_finite_differences(group, data):
+    g = data.draw(elements(group))
+    check_log_jacobian(g)
+    check_inverse_jacobian(g)
+
+
+@pytest.mark.parametrize("group", [SO3, SE3], ids=["SO3", "SE3"])
+@given(data=st.data())
+def test_compose_and_act_jacobians_against_finite_differences(group, data):
+    a, b = data.draw(elements(group)), data.draw(elements(group))
+    check_compose_jacobians(a, b)
+    check_act_jacobians(a, data.draw(points()))
+
+
+@pytest.mark.parametrize("group", [SO3, SE3], ids=["SO3", "SE3"])
+@given(data=st.data())
+def test_interpolate_jacobian_t_against_finite_differences(group, data):
+    a, b = data.draw(elements(group)), data.draw(elements(group))
+    t = data.draw(st.one_of(st.sampled_from((0.0, 0.5, 1.0)), st.floats(-1.0, 2.0)))
+    check_interpolate_jacobian_t(a, b, t)
+
+
+def test_operation_jacobians_values():
+    g = SE3(SO3.exp([0.0, 0.0, PI / 2]), [1.0, 2.0, 3.0])
+    np.testing.assert_array_equal(chasles.inverse_jacobian(g), -g.adjoint())
+    J_a, J_b = chasles.compose_jacobians(SE3(), g)
+    np.testing.assert_array_equal(J_a, g.inverse().adjoint())
+    np.testing.assert_array_equal(J_b, np.eye(6))
+    J_g, J_p = chasles.act_jacobians(g, [0.0, 0.0, 1.0])
+    R = g.rotation().as_matrix()
+    np.testing.assert_array_equal(J_g[:, :3], R)  # (v, w): linear columns first
+    np.testing.assert_allclose(J_g[:, 3:], -R @ hat3([0.0, 0.0, 1.0]), atol=1e-16)
+    np.testing.assert_array_equal(J_p, R)
+    assert np.array_equal(chasles.log_jacobian(SO3()), np.eye(3))
+    assert np.array_equal(chasles.log_jacobian(SE3()), np.eye(6))
+
+
+def test_operation_jacobians_validate_their_arguments():
+    with pytest.raises(ValueError, match=r"act_jacobians\(g, p\): expected shape \(3,\), got \(4,\)"):
+        chasles.act_jacobians(SO3(), np.zeros(4))
+    with pytest.raises(ValueError, match=r"act_jacobians\(g, p\): expected shape \(3,\), got \(6,\)"):
+        chasles.act_jacobians(SE3(), np.zeros(6))
+    with pytest.raises(ValueError, match=r"act_jacobians\(g, p\): expected finite numbers"):
+        chasles.act_jacobians(SE3(), [np.nan, 0.0, 0.0])
+    with pytest.raises(ValueError, match=r"interpolate_jacobian_t\(t\): expected a finite number, got inf"):
+        chasles.interpolate_jacobian_t(SO3(), SO3(), np.inf)
+    msg = r"interpolate_jacobian_t\(t\): expected a real number \(shape \(\)\), got shape \(2,\)"
+    with pytest.raises(ValueError, match=msg):
+        chasles.interpolate_jacobian_t(SE3(), SE3(), [0.5, 0.5])
+    with pytest.raises(TypeError):
+        chasles.compose_jacobians(SO3(), SE3())
+    with pytest.raises(TypeError):
+        chasles.interpolate_jacobian_t(SE3(), SO3(), 0.5)
+    with pytest.raises(TypeError):
+        chasles.log_jacobian(np.eye(3))
+    with pytest.raises(TypeError):
+        chasles.inverse_jacobian(np.eye(4))
+
+
+@pytest.mark.parametrize(
+    "name", ["log_jacobian", "inverse_jacobian", "compose_jacobians", "act_jacobians", "interpolate_jacobian_t"]
+)
+def test_operation_jacobians_are_documented_and_examples_run(name):
+    test_module_functions_are_documented_and_examples_run(name)
+    assert "right-local" in getattr(chasles, name).__doc__.lower()
