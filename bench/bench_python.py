@@ -3,13 +3,15 @@
 
     python bench/bench_python.py [--repeats 7] [--sizes 100000 1000000]
 
-Needs chasles (pip install .) and numpy; scipy, pin (Pinocchio) and
-pytransform3d are measured when installed and skipped otherwise. Prints two
-markdown tables: per-call latency of the object API (microseconds) and
-per-element time of the array functions (nanoseconds) at each N, with the
-ratio of chasles to the best peer measured in the same run (< 1: chasles is
-faster) and the target of the benchmark issue. Every figure is the median
-of --repeats timings.
+Needs chasles (pip install .) and numpy; scipy, pin (Pinocchio),
+pytransform3d and modern_robotics are measured when installed and skipped
+otherwise. Prints markdown tables: per-call latency of the object API
+(microseconds), per-element time of the array functions (nanoseconds) at
+each N, and the kinematics of a UR5 and a 7-joint arm per configuration
+(chasles.Chain batched over N joint vectors, and per call), with the ratio of
+chasles to the best peer measured in the same run (< 1: chasles is faster)
+and the target of the benchmark issue. Every figure is the median of
+--repeats timings.
 """
 
 from __future__ import annotations
@@ -108,6 +110,113 @@ def np_so3_log(R: np.ndarray) -> np.ndarray:
     return f[..., None] * s
 
 
+# ---------------------------------------------------------------------------
+# Kinematics: a UR5 (Modern Robotics, example 4.5; the screws of
+# tests/python/test_kinematics.py) and the same arm on a linear rail (7 joints).
+
+_W1, _W2, _L1, _L2, _H1, _H2 = 0.109, 0.082, 0.425, 0.392, 0.089, 0.095
+# Space screws (v, w), one row per joint (Modern Robotics lists (w, v)).
+UR5_SCREWS = np.array([[0, 0, 0, 0, 0, 1], [-_H1, 0, 0, 0, 1, 0], [-_H1, 0, _L1, 0, 1, 0],
+                       [-_H1, 0, _L1 + _L2, 0, 1, 0], [-_W1, _L1 + _L2, 0, 0, 0, -1],
+                       [_H2 - _H1, 0, _L1 + _L2, 0, 1, 0]], dtype=float)
+UR5_HOME = np.array([[-1, 0, 0, _L1 + _L2], [0, 0, 1, _W1 + _W2], [0, 1, 0, _H1 - _H2], [0, 0, 0, 1]], dtype=float)
+RAIL_SCREWS = np.vstack([[1 / np.sqrt(5), 2 / np.sqrt(5), 0, 0, 0, 0], UR5_SCREWS])
+CHAIN_N = 10_000
+
+
+def np_hat6(xi: np.ndarray) -> np.ndarray:
+    v, w = xi[:3], xi[3:]
+    return np.array([[0, -w[2], w[1], v[0]], [w[2], 0, -w[0], v[1]], [-w[1], w[0], 0, v[2]], [0, 0, 0, 0]])
+
+
+def np_adjoint(g: np.ndarray) -> np.ndarray:
+    """Ad_g = [[R, [p] R], [0, R]] for twists (v, w)."""
+    R, p = g[:3, :3], g[:3, 3]
+    P = np.array([[0, -p[2], p[1]], [p[2], 0, -p[0]], [-p[1], p[0], 0]])
+    A = np.zeros((6, 6))
+    A[:3, :3] = A[3:, 3:] = R
+    A[:3, 3:] = P @ R
+    return A
+
+
+def expm_forward(expm: Callable[[np.ndarray], np.ndarray], screws: np.ndarray, home: np.ndarray,
+                 theta: np.ndarray) -> np.ndarray:
+    """The naive product of exponentials: a loop of scipy.linalg.expm of 4x4 hat matrices."""
+    g = np.eye(4)
+    for s, t in zip(screws, theta):
+        g = g @ expm(np_hat6(s * t))
+    return g @ home
+
+
+def expm_jacobian_space(expm: Callable[[np.ndarray], np.ndarray], screws: np.ndarray,
+                        theta: np.ndarray) -> np.ndarray:
+    J = np.empty((6, len(screws)))
+    g = np.eye(4)
+    for i, (s, t) in enumerate(zip(screws, theta)):
+        J[:, i] = np_adjoint(g) @ s
+        g = g @ expm(np_hat6(s * t))
+    return J
+
+
+def fig(x: float) -> str:
+    """Three significant digits, without an exponent up to 1e6."""
+    return f"{x:.3g}" if x < 1000 else f"{x:.0f}"
+
+
+def kinematics_table(rep: int) -> None:
+    """chasles.Chain against modern_robotics and scipy.linalg.expm, per configuration."""
+    mr = optional("modern_robotics")
+    expm = getattr(optional("scipy.linalg"), "expm", None)
+    rng = np.random.default_rng(2)
+    peer_names = ["modern_robotics", "numpy + scipy expm"]
+    print(f"### Python kinematics, per configuration (median of {rep})\n")
+    print(f"chasles batched over N = {CHAIN_N} joint vectors (ns per configuration) and per call for one "
+          "configuration (us). The peers have no batch form: a loop over N costs N of their calls, so their "
+          "per-call figure is also their per-configuration cost (1 us = 1000 ns). Ratios: chasles per call, "
+          "and chasles batched, to the best peer's call (< 1: chasles is faster).\n")
+    print("| arm | op | chasles batch ns | chasles call us | " + " | ".join(f"{n} call us" for n in peer_names)
+          + " | ratio per call | ratio batch |")
+    print("| --- | --- | ---: | ---: | " + " | ".join("---:" for _ in peer_names) + " | ---: | ---: |")
+    for arm_name, screws in (("UR5 (6 joints)", UR5_SCREWS), ("UR5 on a rail (7 joints)", RAIL_SCREWS)):
+        n = len(screws)
+        arm = chasles.Chain(screws, UR5_HOME)
+        TH = rng.uniform(-np.pi, np.pi, size=(CHAIN_N, n))
+        th = TH[0].copy()
+        # Modern Robotics: screw axes as columns (w, v).
+        Slist = np.concatenate([screws[:, 3:], screws[:, :3]], axis=1).T.copy()
+        if mr is not None:  # same pose, and the same Jacobian up to the (w, v) order of its rows
+            try:
+                assert np.allclose(mr.FKinSpace(UR5_HOME, Slist, th), arm.forward(th).as_matrix(), atol=1e-9)
+                Jmr = mr.JacobianSpace(Slist, th)
+                assert np.allclose(np.vstack([Jmr[3:], Jmr[:3]]), arm.jacobian_space(th), atol=1e-9)
+            except Exception as e:  # noqa: BLE001 - a peer's API drift must not stop the run
+                print(f"<!-- modern_robotics skipped: {e!r} -->", file=sys.stderr)
+                mr = None
+        if expm is not None:
+            assert np.allclose(expm_forward(expm, screws, UR5_HOME, th), arm.forward(th).as_matrix(), atol=1e-9)
+            assert np.allclose(expm_jacobian_space(expm, screws, th), arm.jacobian_space(th), atol=1e-9)
+        ops = {
+            "forward": (lambda: arm.forward(TH), lambda: arm.forward(th), {
+                "modern_robotics": (lambda: mr.FKinSpace(UR5_HOME, Slist, th)) if mr else None,
+                "numpy + scipy expm": (lambda: expm_forward(expm, screws, UR5_HOME, th)) if expm else None}),
+            "jacobian_space": (lambda: arm.jacobian_space(TH), lambda: arm.jacobian_space(th), {
+                "modern_robotics": (lambda: mr.JacobianSpace(Slist, th)) if mr else None,
+                "numpy + scipy expm": (lambda: expm_jacobian_space(expm, screws, th)) if expm else None}),
+        }
+        for op, (batch, call, peer_fns) in ops.items():
+            ours_batch = measure(batch, rep, 0.2)
+            ours_call = measure(call, rep)
+            peers = {k: measure(peer_fns.get(k), rep) for k in peer_names}
+            present = [(t, k) for k, t in peers.items() if t is not None]
+            best = min(present) if present else None
+            cells = [fig(peers[k] * 1e6) if peers[k] is not None else "" for k in peer_names]
+            r_call = f"{ours_call / best[0]:.3g} ({best[1]})" if best and ours_call else ""
+            r_batch = f"{ours_batch / CHAIN_N / best[0]:.3g} ({best[1]})" if best and ours_batch else ""
+            print(f"| {arm_name} | {op} | {fig(ours_batch / CHAIN_N * 1e9)} | {fig(ours_call * 1e6)} | "
+                  + " | ".join(cells) + f" | {r_call} | {r_batch} |")
+    print()
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--repeats", type=int, default=7)
@@ -126,7 +235,8 @@ def main() -> int:
     scipy_version = getattr(optional("scipy"), "__version__", None)
     print(f"chasles {chasles.__version__}, numpy {np.__version__}, scipy {scipy_version or 'absent'}, "
           f"pinocchio {getattr(pin, '__version__', 'absent')}, "
-          f"pytransform3d {getattr(optional('pytransform3d'), '__version__', 'absent')}, Python {sys.version.split()[0]}\n")
+          f"pytransform3d {getattr(optional('pytransform3d'), '__version__', 'absent')}, "
+          f"modern_robotics {getattr(optional('modern_robotics'), '__version__', 'absent')}, Python {sys.version.split()[0]}\n")
 
     rng = np.random.default_rng(1)
     w = rng.normal(size=3)
@@ -254,6 +364,9 @@ def main() -> int:
             print(row(op, ours and ours / n, {k: (t / n if t else None) for k, t in peers.items()}, 1e9,
                       ARRAY_TARGET_NS.get(op) if n == 100_000 or op.startswith("SE3 act") else None))
         print()
+
+    # ---- kinematics ---------------------------------------------------------
+    kinematics_table(rep)
     return 0
 
 
