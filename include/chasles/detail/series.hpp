@@ -23,6 +23,7 @@
 #pragma once
 
 #include <cmath>
+#include <type_traits>
 
 #include <Eigen/Core>
 
@@ -64,6 +65,18 @@ inline ExpCoefficients<Scalar> exp_coefficients(const Scalar& theta2) noexcept {
     k.c = (Scalar(1) - k.a) * inv * inv;
   }
   return k;
+}
+
+/// atan(x): std::atan for the real types; atan2(x, 1) for scalar types
+/// whose library has atan2 but no atan (Eigen's AutoDiffScalar).
+template <typename Scalar>
+inline Scalar arctan(const Scalar& x) noexcept {
+  if constexpr (std::is_floating_point<Scalar>::value) {
+    return std::atan(x);
+  } else {
+    using std::atan2;
+    return atan2(x, Scalar(1));
+  }
 }
 
 /// atan(x) / x as a series in x2 = x^2, for the so(3) log near the
