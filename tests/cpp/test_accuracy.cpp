@@ -32,6 +32,7 @@
 #include <chasles/se3.hpp>
 #include <chasles/so3.hpp>
 
+#include "support/format.hpp"
 #include "support/reference.hpp"
 #include "support/samples.hpp"
 
@@ -44,39 +45,18 @@ using chasles_ref::V3;
 using chasles_ref::V6;
 using chasles_ref::kPi;
 
-template <typename T>
-using Vec3 = Eigen::Matrix<T, 3, 1>;
-template <typename T>
-using Vec6 = Eigen::Matrix<T, 6, 1>;
-template <typename T>
-using Mat3 = Eigen::Matrix<T, 3, 3>;
-template <typename T>
-using Mat4 = Eigen::Matrix<T, 4, 4>;
+using chasles_test::eps;
+using chasles_test::Mat3;
+using chasles_test::Mat4;
+using chasles_test::str;
+using chasles_test::type_name;
+using chasles_test::Vec3;
+using chasles_test::Vec6;
 
 /// A double threshold carried to T: the same number of ulps.
 template <typename T>
 ld tolerance(ld double_tol) {
   return double_tol * ld(std::numeric_limits<T>::epsilon()) / ld(std::numeric_limits<double>::epsilon());
-}
-
-template <typename T>
-ld eps() {
-  return ld(std::numeric_limits<T>::epsilon());
-}
-
-template <typename T>
-const char* type_name() {
-  return sizeof(T) == sizeof(float) ? "float" : "double";
-}
-
-template <typename Derived>
-std::string str(const Eigen::MatrixBase<Derived>& x) {
-  std::ostringstream os;
-  os.precision(21);
-  os << "(";
-  for (Eigen::Index i = 0; i < x.size(); ++i) os << (i ? ", " : "") << ld(x(i));
-  os << ")";
-  return os.str();
 }
 
 /// The worst error of a case and where it occurred. NaN counts as worst.
