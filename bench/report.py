@@ -3,6 +3,7 @@
 
     python3 bench/report.py              # C++ (builds bench/ with CMake) and Python
     python3 bench/report.py --cpp-only   # or --python-only
+    python3 bench/report.py --latency    # only the worst-case latency table
 
 C++: runs the Google Benchmark binaries (portable -O3 and -march=native) with
 repetitions and reports the median ns/op of every chasles operation beside
@@ -10,7 +11,9 @@ the best Eigen baseline measured in the same run, the floor (one sincos, one
 atan2, a 3x3 product) and the target of the benchmark issue. Python: runs
 bench/bench_python.py (per-call latency of the objects, per-element time of
 the array functions, against scipy, numpy, and pin / pytransform3d when
-installed). Medians, and ratios against a peer measured in the same run:
+installed). Latency: bench/latency.cpp times each of 1e6 calls on its own and
+reports the median, p99, p99.99 and maximum per operation, on a shuffled mix
+of generic, zero, tiny, cutoff, near-pi and pi inputs. Medians, and ratios against a peer measured in the same run:
 machines are shared and noisy, absolute numbers move, ratios much less.
 """
 
@@ -49,12 +52,17 @@ CPP_OPS: dict[str, tuple[list[str], str | None, float | None]] = {
 }
 
 
-def run_cpp(build_dir: Path, repetitions: int, min_time: float) -> dict[str, dict[str, float]]:
-    """Builds and runs both benchmark binaries; returns {variant: {name: median ns}}."""
+def build_cpp(build_dir: Path) -> None:
+    """Configures and builds bench/ (both benchmark binaries and the latency table)."""
     subprocess.run(["cmake", "-S", str(ROOT), "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release",
                     "-DCHASLES_BUILD_BENCH=ON"], check=True, stdout=subprocess.DEVNULL)
     subprocess.run(["cmake", "--build", str(build_dir), "-j", str(os.cpu_count() or 2)], check=True,
                    stdout=subprocess.DEVNULL)
+
+
+def run_cpp(build_dir: Path, repetitions: int, min_time: float) -> dict[str, dict[str, float]]:
+    """Builds and runs both benchmark binaries; returns {variant: {name: median ns}}."""
+    build_cpp(build_dir)
     results: dict[str, dict[str, float]] = {}
     for variant in ("portable", "native"):
         exe = build_dir / "bench" / f"chasles_bench_{variant}"
@@ -105,11 +113,17 @@ def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--cpp-only", action="store_true")
     ap.add_argument("--python-only", action="store_true")
+    ap.add_argument("--latency", action="store_true", help="only the worst-case latency table (C++)")
+    ap.add_argument("--calls", type=int, default=1_000_000, help="calls per op for the latency table")
     ap.add_argument("--build-dir", type=Path, default=ROOT / "build" / "bench")
     ap.add_argument("--repetitions", type=int, default=5)
     ap.add_argument("--min-time", type=float, default=0.1, help="seconds per repetition (C++)")
     args = ap.parse_args()
-    print(f"Machine: {machine()}\n")
+    print(f"Machine: {machine()}\n", flush=True)
+    if args.latency:
+        build_cpp(args.build_dir)
+        return subprocess.run([str(args.build_dir / "bench" / "chasles_latency"), "--calls", str(args.calls)],
+                              check=False).returncode
     if not args.python_only:
         results = run_cpp(args.build_dir, args.repetitions, args.min_time)
         for variant, medians in results.items():
@@ -117,7 +131,8 @@ def main() -> int:
                 flags = "-O3 -DNDEBUG" + (" -march=native" if variant == "native" else "")
                 print(f"### C++, {scalar}, {flags} (median of {args.repetitions}, ns/op)\n")
                 print(cpp_table(medians, scalar))
-                print()
+                print(flush=True)
+        subprocess.run([str(args.build_dir / "bench" / "chasles_latency"), "--calls", str(args.calls)], check=True)
     if not args.cpp_only:
         script = ROOT / "bench" / "bench_python.py"
         return subprocess.run([sys.executable, str(script)], check=False).returncode
