@@ -194,8 +194,12 @@ std::vector<Row> run_all(std::size_t calls, const Timer& timer) {
   std::vector<SO3<S>> Rs;
   std::vector<SE3<S>> gs;
   std::vector<M3> Ms;
+  std::vector<M3> arbitrary;
   std::vector<Eigen::Quaternion<S>> qs;
   for (std::size_t i = 0; i < kN; ++i) {
+    M3 A;
+    for (int k = 0; k < 9; ++k) A(k) = S(n(rng));
+    arbitrary.push_back(A);
     ws.push_back(rotation_vector<S>(kinds[i], rng));
     points.push_back(V3(S(n(rng)), S(n(rng)), S(n(rng))));
     V6 xi;
@@ -250,6 +254,10 @@ std::vector<Row> run_all(std::size_t calls, const Timer& timer) {
   rows.push_back(measure("SO3/from_matrix (checked)", Ms, kinds, [](const M3& M) { return SO3<S>::from_matrix(M); },
                          calls, timer));
   rows.push_back(measure("SO3/from_matrix_projected", Ms, kinds,
+                         [](const M3& M) { return SO3<S>::from_matrix_projected(M); }, calls, timer));
+  // Projection of arbitrary matrices (Gaussian entries: reflections, near
+  // singular ones), where the Jacobi sweeps (at most 12) take longest.
+  rows.push_back(measure("SO3/from_matrix_projected (any matrix)", arbitrary, kinds,
                          [](const M3& M) { return SO3<S>::from_matrix_projected(M); }, calls, timer));
   rows.push_back(measure("SO3/interpolate", Rpairs, kinds,
                          [](const auto& p) { return interpolate(p.first, p.second, S(0.3)); }, calls, timer));
