@@ -8,7 +8,7 @@
 #   - every ```cpp block of docs/*.md and every other one of README.md: each
 #     is a complete program (it has an int main()), built and run; it must
 #     exit with 0.
-# Everything is compiled with -Wall -Wextra -Werror -fno-exceptions.
+# Everything is compiled with -Wall -Wextra -Werror -fno-exceptions, assertions on.
 # Run by ctest with -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=...
 file(REMOVE_RECURSE "${WORK_DIR}")
 set(SNIPPETS "${WORK_DIR}/snippets")
