@@ -2,8 +2,8 @@
 # Runs every test of chasles on a fresh Debian/Ubuntu machine: installs what
 # it needs (apt-get for Eigen, GoogleTest, Google Benchmark; pip for the
 # Python side), then
-#   1. configures and builds the C++ tests and benchmarks, and runs ctest
-#      (the tests, and a millisecond smoke run of every benchmark);
+#   1. configures and builds the C++ tests, examples and benchmarks, and runs ctest
+#      (the tests, the examples, and a millisecond smoke run of every benchmark);
 #   2. builds the Python wheel (pip wheel .: scikit-build-core and pybind11
 #      from PyPI), installs it with its test extras into a fresh virtual
 #      environment with CC and CXX set to /bin/false (a wheel needs no
@@ -35,7 +35,8 @@ if [ ${#need_apt[@]} -gt 0 ]; then
 fi
 
 echo "== C++: configure, build, ctest"
-cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DCHASLES_BUILD_TESTS=ON -DCHASLES_BUILD_BENCH=ON
+cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DCHASLES_BUILD_TESTS=ON -DCHASLES_BUILD_BENCH=ON \
+  -DCHASLES_BUILD_EXAMPLES=ON
 cmake --build "$BUILD_DIR" -j "$JOBS"
 ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"
 

@@ -26,8 +26,11 @@ Example:
     >>> np.round(g @ [0.0, 2.0, 5.0], 12) + 0.0
     array([0., 2., 5.])
 
-``python -m chasles`` runs a demo: the worked screw-motion example of the
-documentation and the screw of a random rigid motion.
+``chasles.plot`` draws frames, trajectories and screws with matplotlib (an
+optional dependency: ``pip install chasles[plot]``; ``import chasles`` does
+not import it). ``python -m chasles`` runs a demo: the worked screw-motion
+example of the documentation and the screw of a random rigid motion, printed,
+checked and drawn into a PNG.
 """
 
 from chasles._core import (

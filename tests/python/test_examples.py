@@ -1,0 +1,40 @@
+"""The Python examples in examples/python run against the installed package,
+from outside the source tree, pass their own checks and print what they found."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "python"
+
+# A line each example prints, to know it ran to its end.
+EXPECTED = {
+    "arm_kinematics.py": "10000 configurations: the tool stays between 0.100 and 0.700 m",
+    "poses_and_frames.py": "as a twist xi = (v, w):",
+    "twist_from_trajectory.py": "worst error over the trajectory:",
+    "wrench_transformation.py": "line of action through",
+}
+
+
+def test_every_example_is_listed():
+    assert sorted(p.name for p in EXAMPLES.glob("*.py")) == sorted(EXPECTED)
+
+
+@pytest.mark.parametrize("name", sorted(EXPECTED))
+def test_example_runs(name, tmp_path):
+    r = subprocess.run(
+        [sys.executable, str(EXAMPLES / name)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+        cwd=tmp_path,
+    )
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert r.stderr == ""
+    assert EXPECTED[name] in r.stdout
+    assert list(tmp_path.iterdir()) == []  # writes nothing
