@@ -41,10 +41,11 @@ Example:
 
 std::string class_doc() { return std::string(kClassDoc) + kConventions; }
 
-/// The home pose: an SE3, or a (4, 4) array-like rigid motion.
+/// The home pose: an SE3 (TypeError for one not initialized), or a (4, 4)
+/// array-like rigid motion.
 SE3d home_pose(py::handle h) {
-  py::detail::make_caster<SE3d> caster;
-  if (caster.load(h, false)) return py::detail::cast_op<const SE3d&>(caster);
+  py::detail::make_caster<Obj<SE3d>> caster;
+  if (caster.load(h, false)) return *static_cast<Obj<SE3d>&>(caster);
   const Matrix4 M = to_finite_eigen<4, 4>(h, "Chain(home)");
   const auto g = SE3d::from_matrix(M);
   if (!g) {
@@ -210,7 +211,8 @@ Example:
 
   cls.def(
       "forward",
-      [](const ChainD& c, ArrayLike theta) {
+      [](Obj<ChainD> c_, ArrayLike theta) {
+        const ChainD& c = *c_;
         return poses(c, theta.obj, "Chain.forward(theta)", [&c](const ChainD::JointVector& th) { return c.forward(th); });
       },
       py::arg("theta"),
@@ -232,7 +234,8 @@ Example:
 
   cls.def(
       "forward_body",
-      [](const ChainD& c, ArrayLike theta) {
+      [](Obj<ChainD> c_, ArrayLike theta) {
+        const ChainD& c = *c_;
         return poses(c, theta.obj, "Chain.forward_body(theta)",
                      [&c](const ChainD::JointVector& th) { return c.forward_body(th); });
       },
@@ -255,7 +258,8 @@ Example:
 
   cls.def(
       "jacobian_space",
-      [](const ChainD& c, ArrayLike theta) {
+      [](Obj<ChainD> c_, ArrayLike theta) {
+        const ChainD& c = *c_;
         return jacobians(c, theta.obj, "Chain.jacobian_space(theta)",
                          [&c](const ChainD::JointVector& th) { return c.jacobian_space(th); });
       },
@@ -279,7 +283,8 @@ Example:
 
   cls.def(
       "jacobian_body",
-      [](const ChainD& c, ArrayLike theta) {
+      [](Obj<ChainD> c_, ArrayLike theta) {
+        const ChainD& c = *c_;
         return jacobians(c, theta.obj, "Chain.jacobian_body(theta)",
                          [&c](const ChainD::JointVector& th) { return c.jacobian_body(th); });
       },
@@ -302,7 +307,8 @@ Example:
 
   cls.def_property_readonly(
       "screws",
-      [](const ChainD& c) {
+      [](Obj<ChainD> c_) {
+        const ChainD& c = *c_;
         const Py_intptr_t dims[2] = {c.joints(), 6};
         py::array_t<double> out = new_array(2, dims);
         Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor>>(array_data(out), c.joints(), 6) =
@@ -312,7 +318,8 @@ Example:
       R"doc(numpy.ndarray: shape (n, 6), the space screws S_i, one row (v, w) per joint (a copy).)doc");
   cls.def_property_readonly(
       "body_screws",
-      [](const ChainD& c) {
+      [](Obj<ChainD> c_) {
+        const ChainD& c = *c_;
         const Py_intptr_t dims[2] = {c.joints(), 6};
         py::array_t<double> out = new_array(2, dims);
         Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor>>(array_data(out), c.joints(), 6) =
@@ -321,10 +328,10 @@ Example:
       },
       R"doc(numpy.ndarray: shape (n, 6), the body screws B_i = Ad_{M^-1} S_i (a copy).)doc");
   cls.def_property_readonly(
-      "home", [](const ChainD& c) { return c.home(); }, R"doc(SE3: the home pose M = g(0).)doc");
+      "home", [](Obj<ChainD> c) { return c->home(); }, R"doc(SE3: the home pose M = g(0).)doc");
   cls.def_property_readonly(
-      "n_joints", [](const ChainD& c) { return static_cast<int>(c.joints()); }, R"doc(int: n, the number of joints.)doc");
-  cls.def("__repr__", [](const ChainD& c) { return "Chain(n_joints=" + std::to_string(c.joints()) + ")"; });
+      "n_joints", [](Obj<ChainD> c) { return static_cast<int>(c->joints()); }, R"doc(int: n, the number of joints.)doc");
+  def_repr(cls, [](const ChainD& c) { return "Chain(n_joints=" + std::to_string(c.joints()) + ")"; });
 }
 
 }  // namespace chasles_py

@@ -14,7 +14,7 @@ import re
 
 import numpy as np
 import pytest
-from chasles import SE3, SO3, Screw, Twist, Wrench
+from chasles import SE3, SO3, Chain, Screw, Twist, Wrench
 
 R0 = SO3.exp([0.1, 0.2, 0.3])
 G0 = SE3(R0, [1.0, 2.0, 3.0])
@@ -518,6 +518,53 @@ def test_uninitialized_objects_are_refused_not_crashed():
         G0 @ raw
     with pytest.raises(TypeError):
         SE3.interpolate(raw, G0, 0.5)
+
+
+def test_uninitialized_objects_are_never_read():
+    """An instance made by cls.__new__(cls) alone holds no value. Methods
+    that once took it through pybind11's generic caster were handed freshly
+    allocated, uninitialized memory (a Chain reported billions of joints,
+    SE3.exp of such a Twist returned garbage); every one of them refuses it
+    now, and so do Chain(home=...) and SE3.exp(twist). Its repr says what
+    it is instead of raising."""
+    calls = [
+        (SO3, lambda x: x.normalized()),
+        (SE3, lambda x: x.normalized()),
+        (Twist, lambda x: x.screw()),
+        (Twist, lambda x: x.pitch),
+        (Wrench, lambda x: x.screw()),
+        (Wrench, lambda x: x.pitch),
+        (Screw, lambda x: x.point),
+        (Screw, lambda x: x.direction),
+        (Screw, lambda x: x.pitch),
+        (Screw, lambda x: x.magnitude),
+        (Screw, lambda x: list(x)),
+        (Screw, len),
+        (Screw, lambda x: x.is_approx(x)),
+        (Screw, lambda x: x.__copy__()),
+        (Screw, lambda x: x.__getstate__()),
+        (Chain, lambda x: x.n_joints),
+        (Chain, lambda x: x.screws),
+        (Chain, lambda x: x.body_screws),
+        (Chain, lambda x: x.home),
+        (Chain, lambda x: x.__reduce_ex__(2)),
+        (Chain, lambda x: x.forward([0.0])),
+        (Chain, lambda x: x.jacobian_body([0.0])),
+        (SE3, lambda x: Chain([[0.0, 0.0, 0.0, 0.0, 0.0, 1.0]], x)),
+        (Twist, SE3.exp),
+    ]
+    for cls, call in calls:
+        for _ in range(2):  # a first refused call must not leave storage behind to read
+            with pytest.raises(TypeError) as e:
+                call(cls.__new__(cls))
+            check_message(e, f"{cls.__name__} object is not initialized")
+        raw = cls.__new__(cls)
+        with pytest.raises(TypeError):
+            call(raw)
+        with pytest.raises(TypeError):
+            call(raw)
+    for cls in (SO3, SE3, Twist, Wrench, Screw, Chain):
+        assert repr(cls.__new__(cls)) == f"<uninitialized {cls.__name__}>"
 
 
 def test_no_exception_leaks_from_pickle_of_the_wrong_thing():
