@@ -293,6 +293,19 @@ inline bool is_native_float64_array(PyObject* o) {
   return d->byteorder == '=' || d->byteorder == '|' || d->byteorder == native;
 }
 
+/// Re-raises the failure `e` of numpy's conversion of an argument to an
+/// array (a ragged nested list, an __array__ that raises, ...) as a
+/// TypeError (for a TypeError) or a ValueError (for any other Exception)
+/// whose text is `msg` and numpy's reason, with `e` as __cause__.
+/// MemoryError and what is not an Exception (KeyboardInterrupt) go through
+/// unchanged.
+[[noreturn]] inline void raise_conversion_error(py::error_already_set& e, const std::string& msg) {
+  if (!e.matches(PyExc_Exception) || e.matches(PyExc_MemoryError)) throw;
+  const std::string text = msg + ": " + py::str(e.value()).cast<std::string>();
+  py::raise_from(e, e.matches(PyExc_TypeError) ? PyExc_TypeError : PyExc_ValueError, text.c_str());
+  throw py::error_already_set();
+}
+
 /// numpy.asarray(obj) as a float64 ndarray of any shape, for real input
 /// (bool, integer and floating dtypes). TypeError for anything else, naming
 /// what was expected and what came.
@@ -306,15 +319,9 @@ inline py::array as_float64_array(py::handle h, const char* what) {
   try {
     arr = py::reinterpret_borrow<py::object>(asarray)(h);
   } catch (py::error_already_set& e) {
-    const std::string msg = std::string(what) +
-                            ": expected an array-like of real numbers (float64), could not convert " +
-                            type_name(h) + " to an array";
-    if (e.matches(PyExc_TypeError)) {
-      py::raise_from(e, PyExc_TypeError, msg.c_str());
-    } else {
-      py::raise_from(e, PyExc_ValueError, msg.c_str());
-    }
-    throw py::error_already_set();
+    raise_conversion_error(e, std::string(what) +
+                                  ": expected an array-like of real numbers (float64), could not convert " +
+                                  type_name(h) + " to an array");
   }
   if (!npy().PyArray_Check_(arr.ptr()))
     raise_type_error(std::string(what) + ": expected real numbers (float64), got " + type_name(h));
@@ -444,7 +451,11 @@ inline double to_real(py::handle h, const char* what) {
   }
   if (!PyComplex_Check(o) && Py_TYPE(o)->tp_as_number != nullptr && Py_TYPE(o)->tp_as_number->nb_float != nullptr) {
     const double d = PyFloat_AsDouble(o);
-    if (d == -1.0 && PyErr_Occurred()) throw py::error_already_set();
+    if (d == -1.0 && PyErr_Occurred()) {
+      // __float__ refused: Fraction(10**400) overflows, Decimal("sNaN") has no float.
+      py::error_already_set e;
+      raise_conversion_error(e, std::string(what) + ": could not convert " + type_name(h) + " to a float64");
+    }
     return d;
   }
   raise_type_error(std::string(what) + ": expected a real number (float), got " + type_name(h));

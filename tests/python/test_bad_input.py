@@ -8,10 +8,13 @@ exception text."""
 
 from __future__ import annotations
 
+import decimal
+import fractions
 import math
 import pickle
 import re
 
+import chasles
 import numpy as np
 import pytest
 from chasles import SE3, SO3, Chain, Screw, Twist, Wrench
@@ -233,6 +236,45 @@ def test_ragged_input_is_a_value_error(case):
     with pytest.raises(ValueError) as e:
         call([[1.0, 2.0], [3.0]])
     check_message(e, name)
+
+
+def test_failed_conversions_name_the_argument_and_keep_the_cause():
+    """numpy's refusal (a ragged list, an __array__ that raises) and a
+    __float__ that fails (Fraction(10**400) overflows, Decimal("sNaN") has
+    no float) become a ValueError naming the argument, with numpy's or the
+    object's reason, in the objects and in the array functions alike."""
+
+    class Broken:
+        def __array__(self, *args, **kwargs):
+            raise RuntimeError("no array for you")
+
+    ragged = [[1.0, 2.0, 3.0], [1.0]]
+    for call, text in (
+        (chasles.so3_exp, "so3_exp: could not convert w (list) to an array: setting an array"),
+        (
+            SO3.exp,
+            "SO3.exp(w): expected an array-like of real numbers (float64), could not convert list",
+        ),
+    ):
+        with pytest.raises(ValueError) as e:
+            call(ragged)
+        check_message(e, text, "inhomogeneous")
+        assert isinstance(e.value.__cause__, ValueError)
+        with pytest.raises(ValueError) as e:
+            call(Broken())
+        check_message(e, "no array for you")
+        assert isinstance(e.value.__cause__, RuntimeError)
+    for bad, reason in (
+        (fractions.Fraction(10**400), "too large"),
+        (decimal.Decimal("sNaN"), "signaling NaN"),
+    ):
+        for call, name in (
+            (lambda t: SO3.interpolate(R0, R0, t), "SO3.interpolate(t)"),
+            (lambda t: XI0 * t, "Twist * scalar"),
+        ):
+            with pytest.raises(ValueError) as e:
+                call(bad)
+            check_message(e, f"{name}: could not convert", reason)
 
 
 @pytest.mark.parametrize("case", [c for c in ARRAY_ARGUMENTS if c[4]], ids=name_of)
