@@ -332,6 +332,41 @@ Example:
   cls.def_property_readonly(
       "n_joints", [](Obj<ChainD> c) { return static_cast<int>(c->joints()); }, R"doc(int: n, the number of joints.)doc");
   def_repr(cls, [](const ChainD& c) { return "Chain(n_joints=" + std::to_string(c.joints()) + ")"; });
+  cls.def("__copy__", [](Obj<ChainD> c) { return *c; });
+  cls.def("__deepcopy__", [](Obj<ChainD> c, const py::object&) { return *c; }, py::arg("memo"));
+  // The state: the space screws row by row (6 n floats), then the home
+  // pose's rotation row by row and translation (12 floats); the body screws
+  // are recomputed from them, by the same arithmetic, so bit for bit.
+  cls.def(py::pickle(
+      [](Obj<ChainD> c_) {
+        const ChainD& c = *c_;
+        const py::ssize_t n = c.joints();
+        py::tuple t(6 * n + 12);
+        for (py::ssize_t i = 0; i < n; ++i)
+          for (int k = 0; k < 6; ++k) t[6 * i + k] = py::float_(c.space_screws()(k, i));
+        const Eigen::Matrix3d& R = c.home().rotation().matrix();
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) t[6 * n + 3 * i + j] = py::float_(R(i, j));
+        for (int i = 0; i < 3; ++i) t[6 * n + 9 + i] = py::float_(c.home().translation()[i]);
+        return t;
+      },
+      [](const py::object& state) {
+        const py::ssize_t size = PyTuple_Check(state.ptr()) ? PyTuple_GET_SIZE(state.ptr()) : -1;
+        const py::ssize_t n = (size - 12) / 6;
+        if (size < 0 || (size - 12) % 6 != 0 || n < 1 || n > kMaxJoints) {
+          raise_value_error("Chain.__setstate__: expected a tuple of 6 n + 12 floats, 1 <= n <= " +
+                            std::to_string(kMaxJoints));
+        }
+        const py::tuple t = py::reinterpret_borrow<py::tuple>(state);
+        ChainD::Screws S(6, n);
+        for (py::ssize_t i = 0; i < n; ++i) read_state(t, 6 * i, 6, S.col(i).data(), "Chain");
+        Eigen::Matrix<double, 3, 3, Eigen::RowMajor> R;
+        Vector3 p;
+        read_state(t, 6 * n, 9, R.data(), "Chain");
+        read_state(t, 6 * n + 9, 3, p.data(), "Chain");
+        return ChainD(S, SE3d(chasles::SO3d::from_matrix_unchecked(R), p));
+      }));
+  add_reduce(cls);
 }
 
 }  // namespace chasles_py
