@@ -37,9 +37,13 @@ const char* const kBatchRules = R"(
 
 Raises:
     TypeError: an operand's dtype is not float32, float64, integer or bool
-        (complex, object and string arrays are refused).
-    ValueError: an operand's trailing (core) shape is wrong, or the leading
-        (batch) shapes of the operands do not broadcast.
+        (float16, long double, complex, object, string and datetime arrays
+        are refused: there is no kernel in those types, and a silent
+        conversion would change the precision).
+    ValueError: an operand's trailing (core) shape is wrong, the leading
+        (batch) shapes of the operands do not broadcast, or numpy cannot
+        make an array of an operand (a ragged nested list).
+    MemoryError: the result does not fit in memory (as numpy's own).
 
 Note:
     Batch rules, shared by every chasles array function:

@@ -41,10 +41,11 @@ Example:
 
 std::string class_doc() { return std::string(kClassDoc) + kConventions; }
 
-/// The home pose: an SE3, or a (4, 4) array-like rigid motion.
+/// The home pose: an SE3 (TypeError for one not initialized), or a (4, 4)
+/// array-like rigid motion.
 SE3d home_pose(py::handle h) {
-  py::detail::make_caster<SE3d> caster;
-  if (caster.load(h, false)) return py::detail::cast_op<const SE3d&>(caster);
+  py::detail::make_caster<Obj<SE3d>> caster;
+  if (caster.load(h, false)) return *static_cast<Obj<SE3d>&>(caster);
   const Matrix4 M = to_finite_eigen<4, 4>(h, "Chain(home)");
   const auto g = SE3d::from_matrix(M);
   if (!g) {
@@ -210,7 +211,8 @@ Example:
 
   cls.def(
       "forward",
-      [](const ChainD& c, ArrayLike theta) {
+      [](Obj<ChainD> c_, ArrayLike theta) {
+        const ChainD& c = *c_;
         return poses(c, theta.obj, "Chain.forward(theta)", [&c](const ChainD::JointVector& th) { return c.forward(th); });
       },
       py::arg("theta"),
@@ -232,7 +234,8 @@ Example:
 
   cls.def(
       "forward_body",
-      [](const ChainD& c, ArrayLike theta) {
+      [](Obj<ChainD> c_, ArrayLike theta) {
+        const ChainD& c = *c_;
         return poses(c, theta.obj, "Chain.forward_body(theta)",
                      [&c](const ChainD::JointVector& th) { return c.forward_body(th); });
       },
@@ -255,7 +258,8 @@ Example:
 
   cls.def(
       "jacobian_space",
-      [](const ChainD& c, ArrayLike theta) {
+      [](Obj<ChainD> c_, ArrayLike theta) {
+        const ChainD& c = *c_;
         return jacobians(c, theta.obj, "Chain.jacobian_space(theta)",
                          [&c](const ChainD::JointVector& th) { return c.jacobian_space(th); });
       },
@@ -279,7 +283,8 @@ Example:
 
   cls.def(
       "jacobian_body",
-      [](const ChainD& c, ArrayLike theta) {
+      [](Obj<ChainD> c_, ArrayLike theta) {
+        const ChainD& c = *c_;
         return jacobians(c, theta.obj, "Chain.jacobian_body(theta)",
                          [&c](const ChainD::JointVector& th) { return c.jacobian_body(th); });
       },
@@ -302,7 +307,8 @@ Example:
 
   cls.def_property_readonly(
       "screws",
-      [](const ChainD& c) {
+      [](Obj<ChainD> c_) {
+        const ChainD& c = *c_;
         const Py_intptr_t dims[2] = {c.joints(), 6};
         py::array_t<double> out = new_array(2, dims);
         Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor>>(array_data(out), c.joints(), 6) =
@@ -312,7 +318,8 @@ Example:
       R"doc(numpy.ndarray: shape (n, 6), the space screws S_i, one row (v, w) per joint (a copy).)doc");
   cls.def_property_readonly(
       "body_screws",
-      [](const ChainD& c) {
+      [](Obj<ChainD> c_) {
+        const ChainD& c = *c_;
         const Py_intptr_t dims[2] = {c.joints(), 6};
         py::array_t<double> out = new_array(2, dims);
         Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor>>(array_data(out), c.joints(), 6) =
@@ -321,10 +328,45 @@ Example:
       },
       R"doc(numpy.ndarray: shape (n, 6), the body screws B_i = Ad_{M^-1} S_i (a copy).)doc");
   cls.def_property_readonly(
-      "home", [](const ChainD& c) { return c.home(); }, R"doc(SE3: the home pose M = g(0).)doc");
+      "home", [](Obj<ChainD> c) { return c->home(); }, R"doc(SE3: the home pose M = g(0).)doc");
   cls.def_property_readonly(
-      "n_joints", [](const ChainD& c) { return static_cast<int>(c.joints()); }, R"doc(int: n, the number of joints.)doc");
-  cls.def("__repr__", [](const ChainD& c) { return "Chain(n_joints=" + std::to_string(c.joints()) + ")"; });
+      "n_joints", [](Obj<ChainD> c) { return static_cast<int>(c->joints()); }, R"doc(int: n, the number of joints.)doc");
+  def_repr(cls, [](const ChainD& c) { return "Chain(n_joints=" + std::to_string(c.joints()) + ")"; });
+  cls.def("__copy__", [](Obj<ChainD> c) { return *c; });
+  cls.def("__deepcopy__", [](Obj<ChainD> c, const py::object&) { return *c; }, py::arg("memo"));
+  // The state: the space screws row by row (6 n floats), then the home
+  // pose's rotation row by row and translation (12 floats); the body screws
+  // are recomputed from them, by the same arithmetic, so bit for bit.
+  cls.def(py::pickle(
+      [](Obj<ChainD> c_) {
+        const ChainD& c = *c_;
+        const py::ssize_t n = c.joints();
+        py::tuple t(6 * n + 12);
+        for (py::ssize_t i = 0; i < n; ++i)
+          for (int k = 0; k < 6; ++k) t[6 * i + k] = py::float_(c.space_screws()(k, i));
+        const Eigen::Matrix3d& R = c.home().rotation().matrix();
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) t[6 * n + 3 * i + j] = py::float_(R(i, j));
+        for (int i = 0; i < 3; ++i) t[6 * n + 9 + i] = py::float_(c.home().translation()[i]);
+        return t;
+      },
+      [](const py::object& state) {
+        const py::ssize_t size = PyTuple_Check(state.ptr()) ? PyTuple_GET_SIZE(state.ptr()) : -1;
+        const py::ssize_t n = (size - 12) / 6;
+        if (size < 0 || (size - 12) % 6 != 0 || n < 1 || n > kMaxJoints) {
+          raise_value_error("Chain.__setstate__: expected a tuple of 6 n + 12 floats, 1 <= n <= " +
+                            std::to_string(kMaxJoints));
+        }
+        const py::tuple t = py::reinterpret_borrow<py::tuple>(state);
+        ChainD::Screws S(6, n);
+        for (py::ssize_t i = 0; i < n; ++i) read_state(t, 6 * i, 6, S.col(i).data(), "Chain");
+        Eigen::Matrix<double, 3, 3, Eigen::RowMajor> R;
+        Vector3 p;
+        read_state(t, 6 * n, 9, R.data(), "Chain");
+        read_state(t, 6 * n + 9, 3, p.data(), "Chain");
+        return ChainD(S, SE3d(chasles::SO3d::from_matrix_unchecked(R), p));
+      }));
+  add_reduce(cls);
 }
 
 }  // namespace chasles_py

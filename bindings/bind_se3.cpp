@@ -44,11 +44,12 @@ Example:
 
 std::string class_doc() { return std::string(kClassDoc) + kConventions; }
 
-/// The Twist inside h, or nullptr (also before the Twist class is bound).
+/// The Twist inside h, or nullptr for an object of another type (TypeError
+/// for an uninitialized Twist).
 const Twistd* twist_or_null(py::handle h) {
-  py::detail::make_caster<Twistd> caster;
+  py::detail::make_caster<Obj<Twistd>> caster;
   if (!caster.load(h, false)) return nullptr;
-  return &py::detail::cast_op<const Twistd&>(caster);
+  return static_cast<Obj<Twistd>&>(caster).ptr;
 }
 
 /// A twist (v, w) given as a Twist or as anything array-like of shape (6,).
@@ -417,7 +418,8 @@ Example:
     array([0., 2., 5.])
 )doc");
 
-  cls.def("normalized", &SE3d::normalized, R"doc(The same motion with the nearest rotation (removes drift).
+  cls.def(
+      "normalized", [](Obj<SE3d> g) { return g->normalized(); }, R"doc(The same motion with the nearest rotation (removes drift).
 
 Returns:
     SE3: the projected motion.
@@ -469,8 +471,7 @@ Returns:
 
   // ---- Python protocols ---------------------------------------------------
 
-  cls.def("__repr__", [](Obj<SE3d> g_) {
-    const SE3d& g = *g_;
+  def_repr(cls, [](const SE3d& g) {
     return "SE3(rotation=" + array_repr(mat_out<3, 3>(g.rotation().matrix())) +
            ", translation=" + array_repr(vec_out<3>(g.translation())) + ")";
   });

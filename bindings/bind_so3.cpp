@@ -396,7 +396,8 @@ Example:
     array([1., 0., 0., 0.])
 )doc");
 
-  cls.def("normalized", &SO3d::normalized, R"doc(The nearest rotation to the stored matrix.
+  cls.def(
+      "normalized", [](Obj<SO3d> R) { return R->normalized(); }, R"doc(The nearest rotation to the stored matrix.
 
 Removes the drift that accumulates over many compositions.
 
@@ -449,7 +450,7 @@ Returns:
 
   // ---- Python protocols ---------------------------------------------------
 
-  cls.def("__repr__", [](Obj<SO3d> R) { return "SO3(matrix=" + array_repr(mat_out<3, 3>(R->matrix())) + ")"; });
+  def_repr(cls, [](const SO3d& R) { return "SO3(matrix=" + array_repr(mat_out<3, 3>(R.matrix())) + ")"; });
   cls.def(
       "__array__",
       [](Obj<SO3d> R_, DTypeLike dtype, CopyFlag copy) {

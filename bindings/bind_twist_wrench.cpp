@@ -164,8 +164,7 @@ Returns:
     bool.
 )doc");
   const std::string name(cls_name), an(a), bn(b);
-  cls.def("__repr__", [name, an, bn](Obj<T> x_) {
-    const T& x = *x_;
+  def_repr(cls, [name, an, bn](const T& x) {
     return name + "(" + an + "=" + array_repr(vec_out<3>(Vector3(x.vector().template head<3>()))) + ", " + bn + "=" +
            array_repr(vec_out<3>(Vector3(x.vector().template tail<3>()))) + ")";
   });
@@ -210,26 +209,28 @@ Args:
     magnitude: rotation angle (twist) or force size (wrench), finite.
 )doc");
   cls.def_property_readonly(
-      "point", [](const Screwd& s) { return vec_out<3>(s.point); },
+      "point", [](Obj<Screwd> s) { return vec_out<3>(s->point); },
       "ndarray: the point of the axis nearest the origin, shape (3,).");
   cls.def_property_readonly(
-      "direction", [](const Screwd& s) { return vec_out<3>(s.direction); },
+      "direction", [](Obj<Screwd> s) { return vec_out<3>(s->direction); },
       "ndarray: the unit direction of the axis, shape (3,).");
   cls.def_property_readonly(
-      "pitch", [](const Screwd& s) { return s.pitch; }, "float: the pitch (inf for a translation or a couple).");
+      "pitch", [](Obj<Screwd> s) { return s->pitch; }, "float: the pitch (inf for a translation or a couple).");
   cls.def_property_readonly(
-      "magnitude", [](const Screwd& s) { return s.magnitude; }, "float: the magnitude.");
-  cls.def("__iter__", [](const Screwd& s) {
+      "magnitude", [](Obj<Screwd> s) { return s->magnitude; }, "float: the magnitude.");
+  cls.def("__iter__", [](Obj<Screwd> s_) {
+    const Screwd& s = *s_;
     return py::iter(py::make_tuple(vec_out<3>(s.point), vec_out<3>(s.direction), s.pitch, s.magnitude));
   });
-  cls.def("__len__", [](const Screwd&) { return 4; });
-  cls.def("__repr__", [](const Screwd& s) {
+  cls.def("__len__", [](Obj<Screwd>) { return 4; });
+  def_repr(cls, [](const Screwd& s) {
     return "Screw(point=" + array_repr(vec_out<3>(s.point)) + ", direction=" + array_repr(vec_out<3>(s.direction)) +
            ", pitch=" + float_repr(s.pitch) + ", magnitude=" + float_repr(s.magnitude) + ")";
   });
   cls.def(
       "is_approx",
-      [](const Screwd& a, const Screwd& b, RealLike tol) {
+      [](Obj<Screwd> a_, Obj<Screwd> b_, RealLike tol) {
+        const Screwd &a = *a_, &b = *b_;
         const double t = to_tolerance(tol.obj, "Screw.is_approx(tol)");
         const auto close = [t](double x, double y) {
           return x == y || std::abs(x - y) <= t * std::max({1.0, std::abs(x), std::abs(y)});
@@ -248,10 +249,11 @@ Args:
 Returns:
     bool.
 )doc");
-  cls.def("__copy__", [](const Screwd& s) { return s; });
-  cls.def("__deepcopy__", [](const Screwd& s, const py::object&) { return s; }, py::arg("memo"));
+  cls.def("__copy__", [](Obj<Screwd> s) { return *s; });
+  cls.def("__deepcopy__", [](Obj<Screwd> s, const py::object&) { return *s; }, py::arg("memo"));
   cls.def(py::pickle(
-      [](const Screwd& s) {
+      [](Obj<Screwd> s_) {
+        const Screwd& s = *s_;
         return py::make_tuple(s.point[0], s.point[1], s.point[2], s.direction[0], s.direction[1], s.direction[2],
                               s.pitch, s.magnitude);
       },
@@ -375,7 +377,8 @@ Returns:
     Twist.
 )doc");
 
-  cls.def("screw", &Twistd::screw, R"doc(The screw of the twist (Chasles).
+  cls.def(
+      "screw", [](Obj<Twistd> xi) { return xi->screw(); }, R"doc(The screw of the twist (Chasles).
 
 With w != 0: pitch w.v / |w|^2, axis through w x v / |w|^2 along w / |w|,
 magnitude |w|; with w = 0: pitch inf, direction v / |v|, magnitude |v|.
@@ -388,7 +391,8 @@ Example:
     >>> s.pitch, s.magnitude
     (0.5, 1.0)
 )doc");
-  cls.def_property_readonly("pitch", &Twistd::pitch, "float: w.v / |w|^2 (inf for w = 0, 0 for the zero twist).");
+  cls.def_property_readonly(
+      "pitch", [](Obj<Twistd> xi) { return xi->pitch(); }, "float: w.v / |w|^2 (inf for w = 0, 0 for the zero twist).");
 
   cls.def_static(
       "from_screw",
@@ -505,7 +509,8 @@ Returns:
     float.
 )doc");
 
-  cls.def("screw", &Wrenchd::screw, R"doc(The screw of the wrench (Poinsot).
+  cls.def(
+      "screw", [](Obj<Wrenchd> F) { return F->screw(); }, R"doc(The screw of the wrench (Poinsot).
 
 With f != 0, a force along the line through f x tau / |f|^2 with direction
 f / |f|, magnitude |f|, plus a torque pitch * f about it,
@@ -515,7 +520,8 @@ tau / |tau|, magnitude |tau|.
 Returns:
     Screw.
 )doc");
-  cls.def_property_readonly("pitch", &Wrenchd::pitch, "float: f.tau / |f|^2 (inf for f = 0, 0 for the zero wrench).");
+  cls.def_property_readonly(
+      "pitch", [](Obj<Wrenchd> F) { return F->pitch(); }, "float: f.tau / |f|^2 (inf for f = 0, 0 for the zero wrench).");
 
   cls.def_static(
       "from_screw",

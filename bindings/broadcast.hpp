@@ -42,6 +42,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "convert.hpp"
 
 // Hidden, as pybind11's own namespace: types here hold pybind11 objects,
 // and a type more visible than its fields draws -Wattributes. Flatten: the
@@ -201,12 +202,23 @@ struct Operand {
   int core_ndim;  ///< 0, 1 or 2
 };
 
+/// np.asarray(o); a conversion numpy refuses (a ragged nested list, an
+/// __array__ that raises) is an error naming the function and the operand.
+inline py::array operand_array(const char* fname, const char* name, PyObject* o) {
+  try {
+    return py::array(py::reinterpret_borrow<py::object>(o));
+  } catch (py::error_already_set& e) {
+    raise_conversion_error(e, std::string(fname) + ": could not convert " + name + " (" + Py_TYPE(o)->tp_name +
+                                  ") to an array");
+  }
+}
+
 inline Operand prepare(const char* fname, const char* name, PyObject* o, int core_ndim,
                        const std::vector<ssize>& core) {
   // Python scalars are weak, as in numpy >= 2 (NEP 50); numpy's own scalar
   // types (np.float64 derives from float) are not.
   const bool weak = PyFloat_CheckExact(o) || PyLong_CheckExact(o) || PyBool_Check(o);
-  Operand op{name, py::array(py::reinterpret_borrow<py::object>(o)), Kind::f64, weak, core_ndim};
+  Operand op{name, operand_array(fname, name, o), Kind::f64, weak, core_ndim};
 
   const py::dtype dt = op.arr.dtype();
   const char k = dt.kind();

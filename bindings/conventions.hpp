@@ -17,6 +17,14 @@ Conventions (the same in C++, in README.md and in every docstring):
     - quaternions are (x, y, z, w), scalar last, as in scipy; pass
       scalar_first=True for (w, x, y, z); angles are in radians.
 
+Numbers may be given as lists, tuples or arrays of any real dtype (bool,
+integers and floats are converted to float64), in any memory layout; a wrong
+shape is a ValueError naming the expected and the given shape, a value that
+is not real (complex, object, str, None) a TypeError. Constructors refuse NaN
+and infinities (ValueError); functions that return the numbers given,
+rearranged (hat, SO3.vee, SE3.vee, actions on points), carry a NaN through,
+and the defects are inf for a matrix that is not finite.
+
 Values are float64 and immutable. ``==`` is not defined (it is object
 identity): compare with ``is_approx(other, tol)``. Objects pickle and copy
 bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.

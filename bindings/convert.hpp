@@ -83,12 +83,36 @@ struct CHASLES_PY_HIDDEN Returns {
 /// reject an object of an unregistered type such as an ndarray: that cost
 /// lands on every call of an overload set like `g @ h` / `g @ points`.
 /// Signatures show T's Python name. T must be bound before the first call.
+///
+/// Every method of every bound class takes its self as an Obj (never as a
+/// `const T&` or a member function pointer): an instance made by
+/// `T.__new__(T)` alone, whose __init__ or __setstate__ has not run, holds
+/// no value, and pybind11's generic caster would hand the method freshly
+/// allocated, uninitialized storage to read. Obj refuses it with a TypeError.
 template <typename T>
 struct CHASLES_PY_HIDDEN Obj {
   const T* ptr = nullptr;
+  py::handle handle;  ///< the Python object (borrowed for the call)
   const T& operator*() const { return *ptr; }
   const T* operator->() const { return ptr; }
 };
+
+/// Whether h is an instance of the bound class T, and whether it holds a
+/// value: pybind11 constructs the holder in __init__ and __setstate__ only
+/// (the value pointer alone is no test: pybind11 allocates it lazily).
+enum class InstanceState { other_type, uninitialized, initialized };
+
+template <typename T>
+InstanceState instance_state(py::handle h, const T** value) {
+  static PyTypeObject* const type =
+      reinterpret_cast<PyTypeObject*>(py::detail::get_type_handle(typeid(T), true).ptr());
+  if (!PyObject_TypeCheck(h.ptr(), type)) return InstanceState::other_type;
+  auto* inst = reinterpret_cast<py::detail::instance*>(h.ptr());
+  const py::detail::value_and_holder vh = inst->get_value_and_holder();
+  if (!vh.holder_constructed() || vh.value_ptr() == nullptr) return InstanceState::uninitialized;
+  *value = static_cast<const T*>(vh.value_ptr());
+  return InstanceState::initialized;
+}
 
 }  // namespace chasles_py
 
@@ -132,12 +156,24 @@ struct type_caster<chasles_py::Obj<T>> {
   static constexpr auto name = make_caster<T>::name;
   chasles_py::Obj<T> value;
 
+  /// False for an object of another type (the next overload is tried);
+  /// TypeError for an instance of T that holds no value yet.
   bool load(handle src, bool /*convert*/) {
-    static PyTypeObject* const type = reinterpret_cast<PyTypeObject*>(get_type_handle(typeid(T), true).ptr());
-    if (!PyObject_TypeCheck(src.ptr(), type)) return false;
-    auto* inst = reinterpret_cast<instance*>(src.ptr());
-    value.ptr = static_cast<const T*>(inst->get_value_and_holder().value_ptr());
-    return value.ptr != nullptr;  // null for an instance whose __init__ has not run
+    switch (chasles_py::instance_state<T>(src, &value.ptr)) {
+      case chasles_py::InstanceState::other_type:
+        return false;
+      case chasles_py::InstanceState::uninitialized: {
+        const char* name = Py_TYPE(src.ptr())->tp_name;
+        const char* dot = std::strrchr(name, '.');
+        throw type_error(std::string(dot ? dot + 1 : name) +
+                         " object is not initialized: it was made by __new__ alone, without __init__ or "
+                         "__setstate__");
+      }
+      case chasles_py::InstanceState::initialized:
+        break;
+    }
+    value.handle = src;
+    return true;
   }
 
   operator chasles_py::Obj<T>&() { return value; }
@@ -257,6 +293,19 @@ inline bool is_native_float64_array(PyObject* o) {
   return d->byteorder == '=' || d->byteorder == '|' || d->byteorder == native;
 }
 
+/// Re-raises the failure `e` of numpy's conversion of an argument to an
+/// array (a ragged nested list, an __array__ that raises, ...) as a
+/// TypeError (for a TypeError) or a ValueError (for any other Exception)
+/// whose text is `msg` and numpy's reason, with `e` as __cause__.
+/// MemoryError and what is not an Exception (KeyboardInterrupt) go through
+/// unchanged.
+[[noreturn]] inline void raise_conversion_error(py::error_already_set& e, const std::string& msg) {
+  if (!e.matches(PyExc_Exception) || e.matches(PyExc_MemoryError)) throw;
+  const std::string text = msg + ": " + py::str(e.value()).cast<std::string>();
+  py::raise_from(e, e.matches(PyExc_TypeError) ? PyExc_TypeError : PyExc_ValueError, text.c_str());
+  throw py::error_already_set();
+}
+
 /// numpy.asarray(obj) as a float64 ndarray of any shape, for real input
 /// (bool, integer and floating dtypes). TypeError for anything else, naming
 /// what was expected and what came.
@@ -270,15 +319,9 @@ inline py::array as_float64_array(py::handle h, const char* what) {
   try {
     arr = py::reinterpret_borrow<py::object>(asarray)(h);
   } catch (py::error_already_set& e) {
-    const std::string msg = std::string(what) +
-                            ": expected an array-like of real numbers (float64), could not convert " +
-                            type_name(h) + " to an array";
-    if (e.matches(PyExc_TypeError)) {
-      py::raise_from(e, PyExc_TypeError, msg.c_str());
-    } else {
-      py::raise_from(e, PyExc_ValueError, msg.c_str());
-    }
-    throw py::error_already_set();
+    raise_conversion_error(e, std::string(what) +
+                                  ": expected an array-like of real numbers (float64), could not convert " +
+                                  type_name(h) + " to an array");
   }
   if (!npy().PyArray_Check_(arr.ptr()))
     raise_type_error(std::string(what) + ": expected real numbers (float64), got " + type_name(h));
@@ -408,7 +451,11 @@ inline double to_real(py::handle h, const char* what) {
   }
   if (!PyComplex_Check(o) && Py_TYPE(o)->tp_as_number != nullptr && Py_TYPE(o)->tp_as_number->nb_float != nullptr) {
     const double d = PyFloat_AsDouble(o);
-    if (d == -1.0 && PyErr_Occurred()) throw py::error_already_set();
+    if (d == -1.0 && PyErr_Occurred()) {
+      // __float__ refused: Fraction(10**400) overflows, Decimal("sNaN") has no float.
+      py::error_already_set e;
+      raise_conversion_error(e, std::string(what) + ": could not convert " + type_name(h) + " to a float64");
+    }
     return d;
   }
   raise_type_error(std::string(what) + ": expected a real number (float), got " + type_name(h));
@@ -546,17 +593,42 @@ inline py::array array_protocol(py::array_t<double> value, DTypeLike dtype, Copy
 /// calls the pybind11 base type with the object, which aborts the process
 /// (pybind11 3.1: "instance allocation failed"); this one is what protocol 2
 /// does anyway: T.__new__(T), then __setstate__(state).
+/// The self of both is an Obj<T> (TypeError for another type, or for an
+/// uninitialized T); cls is its Python type (a subclass pickles as itself).
 template <typename Class>
 void add_reduce(Class& cls) {
-  const auto reduce = [](const py::object& self) {
+  using T = typename Class::type;
+  const auto reduce = [](Obj<T> self) {
     static PyObject* newobj = py::module_::import("copyreg").attr("__newobj__").cast<py::object>().release().ptr();
-    return py::make_tuple(py::reinterpret_borrow<py::object>(newobj), py::make_tuple(py::type::handle_of(self)),
-                          self.attr("__getstate__")());
+    return py::make_tuple(py::reinterpret_borrow<py::object>(newobj), py::make_tuple(py::type::handle_of(self.handle)),
+                          self.handle.attr("__getstate__")());
   };
   cls.def(
-      "__reduce_ex__", [reduce](const py::object& self, int /*protocol*/) { return reduce(self); },
-      py::arg("protocol"), "Pickle support (every protocol): (copyreg.__newobj__, (cls,), state).");
+      "__reduce_ex__", [reduce](Obj<T> self, int /*protocol*/) { return reduce(self); }, py::arg("protocol"),
+      "Pickle support (every protocol): (copyreg.__newobj__, (cls,), state).");
   cls.def("__reduce__", reduce, "Pickle support: (copyreg.__newobj__, (cls,), state).");
+}
+
+/// __repr__ of the bound class of `cls` from `f(const T&)`. An instance made
+/// by __new__ alone (no value) reads "<uninitialized SO3>" instead of
+/// raising: a repr should not fail (debuggers, error messages and test
+/// tools call it on anything).
+template <typename Class, typename F>
+void def_repr(Class& cls, F f) {
+  using T = typename Class::type;
+  const std::string name = py::str(cls.attr("__name__"));
+  cls.def("__repr__", [name, f](py::handle self) -> std::string {
+    const T* value = nullptr;
+    switch (instance_state<T>(self, &value)) {
+      case InstanceState::other_type:
+        raise_type_error(name + ".__repr__: expected a " + name + ", got " + type_name(self));
+      case InstanceState::uninitialized:
+        return "<uninitialized " + name + ">";
+      case InstanceState::initialized:
+        break;
+    }
+    return f(*value);
+  });
 }
 
 /// A numpy array as a one-line string with numpy's print options:

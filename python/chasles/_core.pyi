@@ -40,6 +40,14 @@ class SO3:
         - quaternions are (x, y, z, w), scalar last, as in scipy; pass
           scalar_first=True for (w, x, y, z); angles are in radians.
     
+    Numbers may be given as lists, tuples or arrays of any real dtype (bool,
+    integers and floats are converted to float64), in any memory layout; a wrong
+    shape is a ValueError naming the expected and the given shape, a value that
+    is not real (complex, object, str, None) a TypeError. Constructors refuse NaN
+    and infinities (ValueError); functions that return the numbers given,
+    rearranged (hat, SO3.vee, SE3.vee, actions on points), carry a NaN through,
+    and the defects are inf for a matrix that is not finite.
+    
     Values are float64 and immutable. ``==`` is not defined (it is object
     identity): compare with ``is_approx(other, tol)``. Objects pickle and copy
     bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
@@ -511,6 +519,14 @@ class SE3:
         - hat(w) = [w] with [w] p = w x p; [xi] = [[ [w], v ], [0, 0]];
         - quaternions are (x, y, z, w), scalar last, as in scipy; pass
           scalar_first=True for (w, x, y, z); angles are in radians.
+    
+    Numbers may be given as lists, tuples or arrays of any real dtype (bool,
+    integers and floats are converted to float64), in any memory layout; a wrong
+    shape is a ValueError naming the expected and the given shape, a value that
+    is not real (complex, object, str, None) a TypeError. Constructors refuse NaN
+    and infinities (ValueError); functions that return the numbers given,
+    rearranged (hat, SO3.vee, SE3.vee, actions on points), carry a NaN through,
+    and the defects are inf for a matrix that is not finite.
     
     Values are float64 and immutable. ``==`` is not defined (it is object
     identity): compare with ``is_approx(other, tol)``. Objects pickle and copy
@@ -1097,6 +1113,14 @@ class Twist:
         - quaternions are (x, y, z, w), scalar last, as in scipy; pass
           scalar_first=True for (w, x, y, z); angles are in radians.
     
+    Numbers may be given as lists, tuples or arrays of any real dtype (bool,
+    integers and floats are converted to float64), in any memory layout; a wrong
+    shape is a ValueError naming the expected and the given shape, a value that
+    is not real (complex, object, str, None) a TypeError. Constructors refuse NaN
+    and infinities (ValueError); functions that return the numbers given,
+    rearranged (hat, SO3.vee, SE3.vee, actions on points), carry a NaN through,
+    and the defects are inf for a matrix that is not finite.
+    
     Values are float64 and immutable. ``==`` is not defined (it is object
     identity): compare with ``is_approx(other, tol)``. Objects pickle and copy
     bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
@@ -1359,6 +1383,14 @@ class Wrench:
         - quaternions are (x, y, z, w), scalar last, as in scipy; pass
           scalar_first=True for (w, x, y, z); angles are in radians.
     
+    Numbers may be given as lists, tuples or arrays of any real dtype (bool,
+    integers and floats are converted to float64), in any memory layout; a wrong
+    shape is a ValueError naming the expected and the given shape, a value that
+    is not real (complex, object, str, None) a TypeError. Constructors refuse NaN
+    and infinities (ValueError); functions that return the numbers given,
+    rearranged (hat, SO3.vee, SE3.vee, actions on points), carry a NaN through,
+    and the defects are inf for a matrix that is not finite.
+    
     Values are float64 and immutable. ``==`` is not defined (it is object
     identity): compare with ``is_approx(other, tol)``. Objects pickle and copy
     bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
@@ -1527,6 +1559,14 @@ class Chain:
         - quaternions are (x, y, z, w), scalar last, as in scipy; pass
           scalar_first=True for (w, x, y, z); angles are in radians.
     
+    Numbers may be given as lists, tuples or arrays of any real dtype (bool,
+    integers and floats are converted to float64), in any memory layout; a wrong
+    shape is a ValueError naming the expected and the given shape, a value that
+    is not real (complex, object, str, None) a TypeError. Constructors refuse NaN
+    and infinities (ValueError); functions that return the numbers given,
+    rearranged (hat, SO3.vee, SE3.vee, actions on points), carry a NaN through,
+    and the defects are inf for a matrix that is not finite.
+    
     Values are float64 and immutable. ``==`` is not defined (it is object
     identity): compare with ``is_approx(other, tol)``. Objects pickle and copy
     bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
@@ -1562,6 +1602,12 @@ class Chain:
             >>> Chain.revolute_screw([0, 0, 2], [1, 0, 0])
             array([ 0., -1.,  0.,  0.,  0.,  1.])
         """
+    def __copy__(self) -> Chain:
+        ...
+    def __deepcopy__(self, memo: typing.Any) -> Chain:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
     def __init__(self, screws: numpy.typing.ArrayLike, home: typing.Any) -> None:
         """
         A serial chain from its space screws and its home pose.
@@ -1580,7 +1626,17 @@ class Chain:
             >>> arm.n_joints
             1
         """
+    def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support: (copyreg.__newobj__, (cls,), state).
+        """
+    def __reduce_ex__(self, protocol: typing.SupportsInt | typing.SupportsIndex) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support (every protocol): (copyreg.__newobj__, (cls,), state).
+        """
     def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: typing.Any) -> None:
         ...
     def forward(self, theta: numpy.typing.ArrayLike) -> typing.Any:
         """
@@ -1941,9 +1997,13 @@ def se3_act(g: typing.Any, points: typing.Any) -> numpy.ndarray:
     
     Raises:
         TypeError: an operand's dtype is not float32, float64, integer or bool
-            (complex, object and string arrays are refused).
-        ValueError: an operand's trailing (core) shape is wrong, or the leading
-            (batch) shapes of the operands do not broadcast.
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
     
     Note:
         Batch rules, shared by every chasles array function:
@@ -1978,9 +2038,13 @@ def se3_act_twist(g: typing.Any, xi: typing.Any) -> numpy.ndarray:
     
     Raises:
         TypeError: an operand's dtype is not float32, float64, integer or bool
-            (complex, object and string arrays are refused).
-        ValueError: an operand's trailing (core) shape is wrong, or the leading
-            (batch) shapes of the operands do not broadcast.
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
     
     Note:
         Batch rules, shared by every chasles array function:
@@ -2016,9 +2080,13 @@ def se3_act_wrench(g: typing.Any, F: typing.Any) -> numpy.ndarray:
     
     Raises:
         TypeError: an operand's dtype is not float32, float64, integer or bool
-            (complex, object and string arrays are refused).
-        ValueError: an operand's trailing (core) shape is wrong, or the leading
-            (batch) shapes of the operands do not broadcast.
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
     
     Note:
         Batch rules, shared by every chasles array function:
@@ -2053,9 +2121,13 @@ def se3_adjoint(g: typing.Any) -> numpy.ndarray:
     
     Raises:
         TypeError: an operand's dtype is not float32, float64, integer or bool
-            (complex, object and string arrays are refused).
-        ValueError: an operand's trailing (core) shape is wrong, or the leading
-            (batch) shapes of the operands do not broadcast.
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
     
     Note:
         Batch rules, shared by every chasles array function:
@@ -2089,9 +2161,13 @@ def se3_compose(a: typing.Any, b: typing.Any) -> numpy.ndarray:
     
     Raises:
         TypeError: an operand's dtype is not float32, float64, integer or bool
-            (complex, object and string arrays are refused).
-        ValueError: an operand's trailing (core) shape is wrong, or the leading
-            (batch) shapes of the operands do not broadcast.
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
     
     Note:
         Batch rules, shared by every chasles array function:
@@ -2128,9 +2204,13 @@ def se3_exp(xi: typing.Any) -> numpy.ndarray:
     
     Raises:
         TypeError: an operand's dtype is not float32, float64, integer or bool
-            (complex, object and string arrays are refused).
-        ValueError: an operand's trailing (core) shape is wrong, or the leading
-            (batch) shapes of the operands do not broadcast.
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
     
     Note:
         Batch rules, shared by every chasles array function:
@@ -2167,9 +2247,13 @@ def se3_interpolate(a: typing.Any, b: typing.Any, t: typing.Any) -> numpy.ndarra
     
     Raises:
         TypeError: an operand's dtype is not float32, float64, integer or bool
-            (complex, object and string arrays are refused).
-        ValueError: an operand's trailing (core) shape is wrong, or the leading
-            (batch) shapes of the operands do not broadcast.
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
     
     Note:
         Batch rules, shared by every chasles array function:
@@ -2201,9 +2285,13 @@ def se3_inverse(g: typing.Any) -> numpy.ndarray:
     
     Raises:
         TypeError: an operand's dtype is not float32, float64, integer or bool
-            (complex, object and string arrays are refused).
-        ValueError: an operand's trailing (core) shape is wrong, or the leading
-            (batch) shapes of the operands do not broadcast.
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
     
     Note:
         Batch rules, shared by every chasles array function:
@@ -2237,9 +2325,13 @@ def se3_log(g: typing.Any) -> numpy.ndarray:
     
     Raises:
         TypeError: an operand's dtype is not float32, float64, integer or bool
-            (complex, object and string arrays are refused).
-        ValueError: an operand's trailing (core) shape is wrong, or the leading
-            (batch) shapes of the operands do not broadcast.
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
     
     Note:
         Batch rules, shared by every chasles array function:
@@ -2275,9 +2367,13 @@ def so3_act(R: typing.Any, p: typing.Any) -> numpy.ndarray:
     
     Raises:
         TypeError: an operand's dtype is not float32, float64, integer or bool
-            (complex, object and string arrays are refused).
-        ValueError: an operand's trailing (core) shape is wrong, or the leading
-            (batch) shapes of the operands do not broadcast.
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
     
     Note:
         Batch rules, shared by every chasles array function:
@@ -2314,9 +2410,13 @@ def so3_as_quat(R: typing.Any, *, scalar_first: bool = False) -> numpy.ndarray:
     
     Raises:
         TypeError: an operand's dtype is not float32, float64, integer or bool
-            (complex, object and string arrays are refused).
-        ValueError: an operand's trailing (core) shape is wrong, or the leading
-            (batch) shapes of the operands do not broadcast.
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
     
     Note:
         Batch rules, shared by every chasles array function:
@@ -2350,9 +2450,13 @@ def so3_compose(a: typing.Any, b: typing.Any) -> numpy.ndarray:
     
     Raises:
         TypeError: an operand's dtype is not float32, float64, integer or bool
-            (complex, object and string arrays are refused).
-        ValueError: an operand's trailing (core) shape is wrong, or the leading
-            (batch) shapes of the operands do not broadcast.
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
     
     Note:
         Batch rules, shared by every chasles array function:
@@ -2388,9 +2492,13 @@ def so3_exp(w: typing.Any) -> numpy.ndarray:
     
     Raises:
         TypeError: an operand's dtype is not float32, float64, integer or bool
-            (complex, object and string arrays are refused).
-        ValueError: an operand's trailing (core) shape is wrong, or the leading
-            (batch) shapes of the operands do not broadcast.
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
     
     Note:
         Batch rules, shared by every chasles array function:
@@ -2427,9 +2535,13 @@ def so3_from_quat(q: typing.Any, *, scalar_first: bool = False) -> numpy.ndarray
     
     Raises:
         TypeError: an operand's dtype is not float32, float64, integer or bool
-            (complex, object and string arrays are refused).
-        ValueError: an operand's trailing (core) shape is wrong, or the leading
-            (batch) shapes of the operands do not broadcast.
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
     
     Note:
         Batch rules, shared by every chasles array function:
@@ -2463,9 +2575,13 @@ def so3_hat(w: typing.Any) -> numpy.ndarray:
     
     Raises:
         TypeError: an operand's dtype is not float32, float64, integer or bool
-            (complex, object and string arrays are refused).
-        ValueError: an operand's trailing (core) shape is wrong, or the leading
-            (batch) shapes of the operands do not broadcast.
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
     
     Note:
         Batch rules, shared by every chasles array function:
@@ -2502,9 +2618,13 @@ def so3_interpolate(a: typing.Any, b: typing.Any, t: typing.Any) -> numpy.ndarra
     
     Raises:
         TypeError: an operand's dtype is not float32, float64, integer or bool
-            (complex, object and string arrays are refused).
-        ValueError: an operand's trailing (core) shape is wrong, or the leading
-            (batch) shapes of the operands do not broadcast.
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
     
     Note:
         Batch rules, shared by every chasles array function:
@@ -2536,9 +2656,13 @@ def so3_inverse(R: typing.Any) -> numpy.ndarray:
     
     Raises:
         TypeError: an operand's dtype is not float32, float64, integer or bool
-            (complex, object and string arrays are refused).
-        ValueError: an operand's trailing (core) shape is wrong, or the leading
-            (batch) shapes of the operands do not broadcast.
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
     
     Note:
         Batch rules, shared by every chasles array function:
@@ -2574,9 +2698,13 @@ def so3_log(R: typing.Any) -> numpy.ndarray:
     
     Raises:
         TypeError: an operand's dtype is not float32, float64, integer or bool
-            (complex, object and string arrays are refused).
-        ValueError: an operand's trailing (core) shape is wrong, or the leading
-            (batch) shapes of the operands do not broadcast.
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
     
     Note:
         Batch rules, shared by every chasles array function:
@@ -2611,9 +2739,13 @@ def so3_vee(W: typing.Any) -> numpy.ndarray:
     
     Raises:
         TypeError: an operand's dtype is not float32, float64, integer or bool
-            (complex, object and string arrays are refused).
-        ValueError: an operand's trailing (core) shape is wrong, or the leading
-            (batch) shapes of the operands do not broadcast.
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
     
     Note:
         Batch rules, shared by every chasles array function:
@@ -2645,9 +2777,13 @@ def twist_hat(xi: typing.Any) -> numpy.ndarray:
     
     Raises:
         TypeError: an operand's dtype is not float32, float64, integer or bool
-            (complex, object and string arrays are refused).
-        ValueError: an operand's trailing (core) shape is wrong, or the leading
-            (batch) shapes of the operands do not broadcast.
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
     
     Note:
         Batch rules, shared by every chasles array function:
@@ -2682,9 +2818,13 @@ def twist_vee(X: typing.Any) -> numpy.ndarray:
     
     Raises:
         TypeError: an operand's dtype is not float32, float64, integer or bool
-            (complex, object and string arrays are refused).
-        ValueError: an operand's trailing (core) shape is wrong, or the leading
-            (batch) shapes of the operands do not broadcast.
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
     
     Note:
         Batch rules, shared by every chasles array function:

@@ -8,13 +8,16 @@ exception text."""
 
 from __future__ import annotations
 
+import decimal
+import fractions
 import math
 import pickle
 import re
 
+import chasles
 import numpy as np
 import pytest
-from chasles import SE3, SO3, Screw, Twist, Wrench
+from chasles import SE3, SO3, Chain, Screw, Twist, Wrench
 
 R0 = SO3.exp([0.1, 0.2, 0.3])
 G0 = SE3(R0, [1.0, 2.0, 3.0])
@@ -233,6 +236,45 @@ def test_ragged_input_is_a_value_error(case):
     with pytest.raises(ValueError) as e:
         call([[1.0, 2.0], [3.0]])
     check_message(e, name)
+
+
+def test_failed_conversions_name_the_argument_and_keep_the_cause():
+    """numpy's refusal (a ragged list, an __array__ that raises) and a
+    __float__ that fails (Fraction(10**400) overflows, Decimal("sNaN") has
+    no float) become a ValueError naming the argument, with numpy's or the
+    object's reason, in the objects and in the array functions alike."""
+
+    class Broken:
+        def __array__(self, *args, **kwargs):
+            raise RuntimeError("no array for you")
+
+    ragged = [[1.0, 2.0, 3.0], [1.0]]
+    for call, text in (
+        (chasles.so3_exp, "so3_exp: could not convert w (list) to an array: setting an array"),
+        (
+            SO3.exp,
+            "SO3.exp(w): expected an array-like of real numbers (float64), could not convert list",
+        ),
+    ):
+        with pytest.raises(ValueError) as e:
+            call(ragged)
+        check_message(e, text, "inhomogeneous")
+        assert isinstance(e.value.__cause__, ValueError)
+        with pytest.raises(ValueError) as e:
+            call(Broken())
+        check_message(e, "no array for you")
+        assert isinstance(e.value.__cause__, RuntimeError)
+    for bad, reason in (
+        (fractions.Fraction(10**400), "too large"),
+        (decimal.Decimal("sNaN"), "signaling NaN"),
+    ):
+        for call, name in (
+            (lambda t: SO3.interpolate(R0, R0, t), "SO3.interpolate(t)"),
+            (lambda t: XI0 * t, "Twist * scalar"),
+        ):
+            with pytest.raises(ValueError) as e:
+                call(bad)
+            check_message(e, f"{name}: could not convert", reason)
 
 
 @pytest.mark.parametrize("case", [c for c in ARRAY_ARGUMENTS if c[4]], ids=name_of)
@@ -518,6 +560,53 @@ def test_uninitialized_objects_are_refused_not_crashed():
         G0 @ raw
     with pytest.raises(TypeError):
         SE3.interpolate(raw, G0, 0.5)
+
+
+def test_uninitialized_objects_are_never_read():
+    """An instance made by cls.__new__(cls) alone holds no value. Methods
+    that once took it through pybind11's generic caster were handed freshly
+    allocated, uninitialized memory (a Chain reported billions of joints,
+    SE3.exp of such a Twist returned garbage); every one of them refuses it
+    now, and so do Chain(home=...) and SE3.exp(twist). Its repr says what
+    it is instead of raising."""
+    calls = [
+        (SO3, lambda x: x.normalized()),
+        (SE3, lambda x: x.normalized()),
+        (Twist, lambda x: x.screw()),
+        (Twist, lambda x: x.pitch),
+        (Wrench, lambda x: x.screw()),
+        (Wrench, lambda x: x.pitch),
+        (Screw, lambda x: x.point),
+        (Screw, lambda x: x.direction),
+        (Screw, lambda x: x.pitch),
+        (Screw, lambda x: x.magnitude),
+        (Screw, lambda x: list(x)),
+        (Screw, len),
+        (Screw, lambda x: x.is_approx(x)),
+        (Screw, lambda x: x.__copy__()),
+        (Screw, lambda x: x.__getstate__()),
+        (Chain, lambda x: x.n_joints),
+        (Chain, lambda x: x.screws),
+        (Chain, lambda x: x.body_screws),
+        (Chain, lambda x: x.home),
+        (Chain, lambda x: x.__reduce_ex__(2)),
+        (Chain, lambda x: x.forward([0.0])),
+        (Chain, lambda x: x.jacobian_body([0.0])),
+        (SE3, lambda x: Chain([[0.0, 0.0, 0.0, 0.0, 0.0, 1.0]], x)),
+        (Twist, SE3.exp),
+    ]
+    for cls, call in calls:
+        for _ in range(2):  # a first refused call must not leave storage behind to read
+            with pytest.raises(TypeError) as e:
+                call(cls.__new__(cls))
+            check_message(e, f"{cls.__name__} object is not initialized")
+        raw = cls.__new__(cls)
+        with pytest.raises(TypeError):
+            call(raw)
+        with pytest.raises(TypeError):
+            call(raw)
+    for cls in (SO3, SE3, Twist, Wrench, Screw, Chain):
+        assert repr(cls.__new__(cls)) == f"<uninitialized {cls.__name__}>"
 
 
 def test_no_exception_leaks_from_pickle_of_the_wrong_thing():

@@ -1,10 +1,7 @@
 """The array functions (so3_*, se3_*, twist_*): values against independent
 references (scipy.linalg.expm, scipy.spatial.transform.Rotation, numpy
-matmul), broadcasting, dtypes, memory layouts, NaN, errors and the GIL."""
-
-import sys
-import threading
-import time
+matmul), broadcasting, dtypes, memory layouts, NaN and errors (the GIL and
+threads: test_threads.py)."""
 
 import numpy as np
 import pytest
@@ -633,51 +630,6 @@ def test_nan_stays_in_its_element(name, operand):
     assert np.isnan(out[2]).any()
     keep = [0, 1, 3, 4]
     np.testing.assert_array_equal(out[keep], clean[keep])
-
-
-# ---- the GIL ----------------------------------------------------------------
-
-
-def test_gil_is_released_during_the_loop():
-    """Another Python thread runs while so3_exp works on 2e5 elements.
-
-    The other thread hands the GIL back after every step (time.sleep(0)),
-    and the switch interval is raised to 5 s, so that it never forces a
-    switch: it can run only while the GIL is free, i.e. only inside a call
-    that released it. (Checked: the same measurement around sum(range(2e6)),
-    which holds the GIL, sees no step.) Tried a few times, so that a loaded
-    machine that does not schedule the thread in time cannot fail it.
-    """
-    w = np.random.default_rng(27).normal(size=(200_000, 3))
-    counter = [0]
-    stop = threading.Event()
-    started = threading.Event()
-
-    def spin():
-        started.set()
-        while not stop.is_set():
-            counter[0] += 1
-            time.sleep(0)
-
-    old = sys.getswitchinterval()
-    sys.setswitchinterval(5.0)
-    t = threading.Thread(target=spin, daemon=True)
-    t.start()
-    try:
-        started.wait()
-        advanced = 0
-        for _ in range(10):
-            time.sleep(0.001)  # the thread runs here, then waits for the GIL
-            before = counter[0]
-            B.so3_exp(w)
-            advanced = counter[0] - before
-            if advanced > 0:
-                break
-        assert advanced > 0
-    finally:
-        stop.set()
-        t.join()
-        sys.setswitchinterval(old)
 
 
 # ---- the object API ---------------------------------------------------------

@@ -1,4 +1,4 @@
-"""The object API (SO3, SE3, Twist, Wrench, Screw): the laws the C++ suite
+"""The object API (SO3, SE3, Twist, Wrench, Screw, Chain): the laws the C++ suite
 checks, parametrized over [SO3, SE3] with hypothesis strategies that reach
 angle 0, tiny angles, the Taylor cutoff, near pi and exactly pi; cross-checks
 against independent code (scipy.linalg.expm, scipy's Rotation and
@@ -11,11 +11,12 @@ import copy
 import doctest
 import math
 import pickle
+import struct
 
 import chasles
 import numpy as np
 import pytest
-from chasles import SE3, SO3, Screw, Twist, Wrench
+from chasles import SE3, SO3, Chain, Screw, Twist, Wrench
 from hypothesis import given
 from hypothesis import strategies as st
 from scipy.linalg import expm
@@ -593,6 +594,10 @@ def all_kinds():
         Wrench(f=[1.0, 2.0, 3.0], tau=[math.pi, 0.0, -1e10]),
         Twist(v=[1.0, 2.0, 3.0], w=[0.0, 0.0, 1.0]).screw(),
         Twist(v=[1.0, 2.0, 3.0]).screw(),
+        Chain(
+            [Chain.revolute_screw([0, 0, 1], [1.0 / 3.0, 0, 0]), Chain.prismatic_screw([1, 2, 3])],
+            g,
+        ),
     ]
 
 
@@ -617,6 +622,121 @@ def test_copy_and_deepcopy_are_exact_and_distinct(x):
     for y in (copy.copy(x), copy.deepcopy(x), copy.deepcopy([x, x])[0]):
         assert type(y) is type(x) and y is not x
         assert bits(y) == bits(x)
+
+
+# ---- pickling of special values, bit for bit --------------------------------------------
+
+MAX = 1.7976931348623157e308
+SPECIAL_VALUES = [
+    -0.0,
+    5e-324,
+    -5e-324,
+    2.2250738585072014e-308 / 3,
+    2.2250738585072014e-308,
+    1e-300,
+    MAX,
+    -MAX,
+    1.0 / 3.0,
+    math.pi,
+]
+
+
+def from_bits(bits: int) -> float:
+    return struct.unpack("<d", struct.pack("<Q", bits))[0]
+
+
+def to_bits(x: float) -> int:
+    return struct.unpack("<Q", struct.pack("<d", x))[0]
+
+
+# NaNs of other signs and payloads than the default one (quiet, positive, 0):
+# objects hold them only when a state is set directly (every constructor
+# refuses NaN), but a state round trips as it was.
+NAN_PAYLOADS = [
+    from_bits(b)
+    for b in (0x7FF8000000000001, 0xFFF8000000000000, 0x7FFC0000DEADBEEF, 0xFFFFFFFFFFFFFFFF)
+]
+
+
+def special_objects(values):
+    """Objects of every class whose numbers cycle through `values` (set
+    through their state: constructors refuse NaN and keep no -0.0 of a norm)."""
+    out = []
+    for x in all_kinds():
+        state = x.__getstate__()
+        y = type(x).__new__(type(x))
+        y.__setstate__(tuple(values[i % len(values)] for i in range(len(state))))
+        out.append(y)
+    return out
+
+
+def arrays_of(x):
+    """Every array the object shows (its matrix, vectors, screws, home)."""
+    out = {}
+    for name in ("as_matrix", "translation", "to_modern_robotics", "log"):
+        if hasattr(x, name) and not isinstance(x, Chain):
+            with np.errstate(all="ignore"):
+                out[name] = getattr(x, name)()
+    for name in ("vector", "point", "direction", "screws", "body_screws"):
+        if hasattr(type(x), name):
+            out[name] = np.asarray(getattr(x, name))
+    if isinstance(x, Chain):
+        out["home"] = x.home.as_matrix()
+    if isinstance(x, Screw):
+        out["pitch, magnitude"] = np.array([x.pitch, x.magnitude])
+    return out
+
+
+def state_bits(x):
+    return [to_bits(v) for v in x.__getstate__()]
+
+
+@pytest.mark.parametrize("protocol", range(pickle.HIGHEST_PROTOCOL + 1))
+@pytest.mark.parametrize(
+    "values",
+    [SPECIAL_VALUES, SPECIAL_VALUES[::-1], NAN_PAYLOADS + SPECIAL_VALUES],
+    ids=["special", "special-reversed", "nan-payloads"],
+)
+def test_pickle_of_special_values_is_bit_exact(protocol, values):
+    """-0.0, subnormals, the extremes and NaN payloads survive a pickle
+    round trip bit for bit, in the state and in every array the object
+    shows (the bytes of the arrays compared). Protocol 0 writes floats as
+    text, where every NaN reads back as the default NaN: there NaN stays
+    NaN (its sign and payload are not kept)."""
+    for x in special_objects(values):
+        y = pickle.loads(pickle.dumps(x, protocol=protocol))
+        assert type(y) is type(x)
+        if protocol == 0:
+            for a, b in zip(x.__getstate__(), y.__getstate__()):
+                assert to_bits(a) == to_bits(b) or (math.isnan(a) and math.isnan(b))
+            continue
+        assert state_bits(y) == state_bits(x), type(x).__name__
+        ax, ay = arrays_of(x), arrays_of(y)
+        assert ax.keys() == ay.keys()
+        for name in ax:
+            assert ax[name].tobytes() == ay[name].tobytes(), f"{type(x).__name__}.{name}"
+        for z in (copy.copy(x), copy.deepcopy(x)):
+            assert state_bits(z) == state_bits(x)
+
+
+def test_chain_pickles_its_screws_and_home_and_rebuilds_the_rest():
+    arm = all_kinds()[-1]
+    state = arm.__getstate__()
+    assert len(state) == 6 * arm.n_joints + 12
+    assert np.array_equal(np.array(state[:12]).reshape(2, 6), arm.screws)
+    back = pickle.loads(pickle.dumps(arm))
+    assert back.body_screws.tobytes() == arm.body_screws.tobytes()
+    assert (
+        back.forward([0.3, -0.2]).as_matrix().tobytes()
+        == arm.forward([0.3, -0.2]).as_matrix().tobytes()
+    )
+    for bad in ((1.0,) * 17, (1.0,) * 12, (1.0,) * (6 * 33 + 12), [1.0] * 18, None):
+        with pytest.raises(
+            ValueError, match=r"Chain.__setstate__: expected a tuple of 6 n \+ 12 floats"
+        ):
+            Chain.__new__(Chain).__setstate__(bad)
+    with pytest.raises(TypeError, match="floats"):
+        Chain.__new__(Chain).__setstate__(("a",) + (1.0,) * 17)
 
 
 def test_pickle_keeps_unchecked_data_and_negative_zero():

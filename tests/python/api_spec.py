@@ -1,0 +1,996 @@
+"""The argument specification of every public callable of chasles, for the
+bad-input tests (test_api_fuzz.py) and the thread and leak tests.
+
+``callables()`` enumerates the public API from the module itself: every
+name of ``chasles.__all__`` and every method, static method and property
+of its classes (``SO3``, ``SE3``, ``Twist``, ``Wrench``, ``Screw``,
+``Chain``), so that a function added to the package without an entry in
+``SPEC`` fails ``test_every_public_callable_has_a_specification``.
+
+``SPEC`` maps each of them to its signatures (one per overload that takes
+different arguments), each a list of argument kinds. An argument kind
+knows
+
+- a valid value (``good()``);
+- how the library must answer any other value (``judge(value)``): either
+  the error it must raise (``Refused``: TypeError or ValueError, and text
+  the message must contain: the argument's name, the expected shape or
+  dtype and what came), or the canonical value it must treat the input as
+  (``Accepted``): the plain C-contiguous float64 array of the same numbers
+  (float32 kept for the array functions), a Python float, an object of the
+  base class. The call with the input must then give exactly (bit for bit)
+  what the call with the canonical value gives.
+
+That judgement is the documented contract of the Python layer, written
+independently of the bindings:
+
+- objects (SO3, SE3, Twist, Wrench, Screw, Chain) are float64: array-like
+  arguments of any real dtype (bool, integers, float16, float32, float64,
+  longdouble) are converted to float64, whatever their layout (strided,
+  Fortran, negative strides, read-only, unaligned), container (list,
+  tuple, nested) or ndarray subclass (np.matrix, user subclasses); the
+  shape must be exactly the documented one (an empty array is a wrong
+  shape: ValueError); constructors refuse NaN and infinities (ValueError),
+  functions that return the numbers given, rearranged (hat, vee, the
+  actions on points), carry them through, and the defects are inf;
+- array functions (so3_*, se3_*, twist_*) take float32 and float64 arrays
+  as they are and convert bool and integer arrays to float64; float16,
+  longdouble, complex, object, string and datetime arrays are refused
+  with a TypeError naming the dtype (there is no float16 or long double
+  kernel, and converting silently would change the precision); a
+  zero-size batch gives an empty result of the right shape; NaN stays in
+  its own element;
+- complex numbers, None, strings, bytes and arbitrary objects are a
+  TypeError; a ragged nested list is a ValueError; an object where an
+  SO3 (...) is expected must be one, initialized (TypeError otherwise).
+"""
+
+from __future__ import annotations
+
+import collections.abc
+import math
+import operator
+from dataclasses import dataclass
+from typing import Any, Callable
+
+import chasles
+import numpy as np
+
+# ---- verdicts -------------------------------------------------------------------------
+
+
+@dataclass
+class Refused:
+    """The call must raise `error` with a message containing every fragment."""
+
+    error: type
+    fragments: tuple = ()
+
+
+@dataclass
+class Accepted:
+    """The call must behave exactly as with `value` in place of the input."""
+
+    value: Any
+
+
+BOUND = (chasles.SO3, chasles.SE3, chasles.Twist, chasles.Wrench, chasles.Screw, chasles.Chain)
+
+
+def is_initialized(x) -> bool:
+    """Whether a bound object holds a value (its __init__ or __setstate__ ran)."""
+    return not repr(x).startswith("<uninitialized ")
+
+
+def shape_text(shape) -> str:
+    """A shape as Python prints it: "(3,)", "(2, 3)", "()"."""
+    return str(tuple(int(d) for d in shape))
+
+
+def _asarray(value):
+    """np.asarray(value), or the Refused verdict numpy's own failure implies."""
+    try:
+        return np.asarray(value)
+    except ValueError:
+        return Refused(ValueError, ("could not convert",))
+    except TypeError:
+        return Refused(TypeError, ("could not convert",))
+
+
+REAL_KINDS = "biuf"
+
+
+def plain(a, dtype):
+    """The same numbers as a fresh C-contiguous, aligned, native-endian array
+    of `dtype`, of the same shape (np.ascontiguousarray would make a 0-d
+    array 1-d)."""
+    return np.array(a, dtype=dtype, order="C", copy=True)
+
+
+# ---- argument kinds ---------------------------------------------------------------------
+
+
+@dataclass
+class Arg:
+    """An argument: `label` is how error messages name it. Each kind below
+    has good() (a valid value) and judge(value) (a Refused, an Accepted, or
+    None where there is no model: any outcome but a crash or an exception
+    other than TypeError and ValueError)."""
+
+    label: str
+
+
+@dataclass
+class Array(Arg):
+    """An array-like of one fixed shape for an object method (float64)."""
+
+    shape: tuple = (3,)
+    finite: bool = True
+    valid: Callable[[], Any] | None = None
+
+    def good(self):
+        if self.valid is not None:
+            return self.valid()
+        return np.linspace(0.1, 0.1 * math.prod(self.shape), math.prod(self.shape)).reshape(
+            self.shape
+        )
+
+    def judge(self, value):
+        return judge_fixed_array(value, self.label, (self.shape,), self.finite)
+
+
+def real_array(value, label):
+    """The ndarray an object method reads an array-like argument as, or the
+    refusal: None, str and bytes, what numpy cannot convert, and what is
+    not of a real dtype."""
+    if value is None or isinstance(value, (str, bytes)):
+        return Refused(TypeError, (label, "float64"))
+    a = _asarray(value)
+    if isinstance(a, Refused):
+        return Refused(a.error, (label,) + a.fragments)
+    if a.dtype.kind not in REAL_KINDS:
+        return Refused(TypeError, (label, "float64", str(a.dtype)))
+    return a
+
+
+def finite_or_refused(a, label, finite=True):
+    """Accepted as float64, unless `finite` and a number is not."""
+    c = plain(a, np.float64)
+    if finite and not np.isfinite(c).all():
+        return Refused(ValueError, (label, "finite"))
+    return Accepted(c)
+
+
+def judge_fixed_array(value, label, shapes, finite):
+    a = real_array(value, label)
+    if isinstance(a, Refused):
+        return a
+    if a.shape not in shapes:
+        return Refused(ValueError, (label, "expected shape", f"got {shape_text(a.shape)}"))
+    return finite_or_refused(a, label, finite)
+
+
+@dataclass
+class TwistOr(Array):
+    """SE3.exp's argument: a Twist, or an array-like of shape (6,)."""
+
+    def judge(self, value):
+        if isinstance(value, chasles.Twist):
+            return Instance(self.label, (chasles.Twist,)).judge(value)
+        return super().judge(value)
+
+
+@dataclass
+class Points(Arg):
+    """Points of an object's action: shape (3,) or (..., 3), float64, NaN allowed."""
+
+    def good(self):
+        return np.array([[0.5, -1.0, 2.0], [1.0, 0.0, 0.25]])
+
+    def judge(self, value):
+        if isinstance(value, BOUND):
+            return Refused(TypeError, (self.label,))
+        a = real_array(value, self.label)
+        if isinstance(a, Refused):
+            return a
+        if a.ndim < 1 or a.shape[-1] != 3:
+            return Refused(ValueError, (self.label, "(3,) or (N, 3)", f"got {shape_text(a.shape)}"))
+        return Accepted(plain(a, np.float64))
+
+
+@dataclass
+class JointArray(Arg):
+    """Joint positions of a chain of n joints: (n,) or (N, n), finite."""
+
+    n: int = 2
+
+    def good(self):
+        return np.array([0.3, -0.7])[: self.n]
+
+    def judge(self, value):
+        n = self.n
+        a = real_array(value, self.label)
+        if isinstance(a, Refused):
+            return a
+        if not (a.shape == (n,) or (a.ndim == 2 and a.shape[1] == n)):
+            return Refused(
+                ValueError, (self.label, f"({n},) or (N, {n})", f"got {shape_text(a.shape)}")
+            )
+        return finite_or_refused(a, self.label)
+
+
+@dataclass
+class ScrewRows(Arg):
+    """The screws of a chain: shape (n, 6), 1 <= n <= 32, finite."""
+
+    def good(self):
+        return np.array([[0.0, 0.0, 0.0, 0.0, 0.0, 1.0], [0.0, -1.0, 0.0, 0.0, 0.0, 1.0]])
+
+    def judge(self, value):
+        a = real_array(value, self.label)
+        if isinstance(a, Refused):
+            return a
+        if a.ndim != 2 or a.shape[1] != 6 or a.shape[0] < 1:
+            return Refused(ValueError, (self.label, "(n, 6)", f"got {shape_text(a.shape)}"))
+        if a.shape[0] > 32:
+            return Refused(ValueError, (self.label, "at most 32 joints"))
+        return finite_or_refused(a, self.label)
+
+
+@dataclass
+class Operand(Arg):
+    """An operand of an array function: shape (..., *core), float32 or float64."""
+
+    core: tuple = (3,)
+    valid: Callable[[], Any] | None = None
+
+    def good(self):
+        if self.valid is not None:
+            return self.valid()
+        size = math.prod(self.core)
+        return np.linspace(0.1, 0.1 * size, size).reshape(self.core) if self.core else 0.5
+
+    def judge(self, value):
+        fname, name = self.label.split(":")
+        a = _asarray(value)
+        if isinstance(a, Refused):
+            return Refused(a.error, (fname, name) + a.fragments)
+        k, size = a.dtype.kind, a.dtype.itemsize
+        if k not in REAL_KINDS or (k == "f" and size not in (4, 8)):
+            return Refused(
+                TypeError, (fname, name, "has dtype", str(a.dtype), "float32 or float64")
+            )
+        nc = len(self.core)
+        if a.ndim < nc or a.shape[a.ndim - nc :] != self.core:
+            core = ", ".join(str(d) for d in self.core)
+            return Refused(
+                ValueError, (fname, f"expected {name} of shape (..., {core})", shape_text(a.shape))
+            )
+        if type(value) in (float, int, bool):  # a weak Python scalar, as it is
+            return Accepted(value)
+        dtype = np.float32 if (k == "f" and size == 4) else np.float64
+        return Accepted(plain(a, dtype))
+
+
+@dataclass
+class Real(Arg):
+    """A real number: float, int, bool, numpy real scalar or 0-d array, or
+    an object with __float__. `rule`: 'finite', 'tolerance' (>= 0, inf
+    allowed), 'pitch' (finite or +inf)."""
+
+    rule: str = "finite"
+    valid: float = 0.5
+
+    def good(self):
+        return self.valid
+
+    def judge(self, value):
+        x = _real(value, self.label)
+        if isinstance(x, Refused):
+            return x
+        return _rule(x, self.label, self.rule)
+
+
+def _real(value, label):
+    if isinstance(value, int):  # bool included
+        try:
+            return float(value)
+        except OverflowError:
+            return Refused(ValueError, (label, "too large"))
+    if isinstance(value, float):
+        return float(value)
+    if value is None or isinstance(value, (complex, np.complexfloating)):
+        return Refused(TypeError, (label,))
+    if isinstance(value, (str, bytes)):
+        return Refused(TypeError, (label, "float64"))
+    if isinstance(value, (np.ndarray, np.generic, collections.abc.Sequence)):
+        a = _asarray(value)
+        if isinstance(a, Refused):
+            return Refused(a.error, (label,))
+        if a.dtype.kind not in REAL_KINDS:
+            return Refused(TypeError, (label, "float64", str(a.dtype)))
+        if a.ndim != 0:
+            return Refused(ValueError, (label, "shape ()", f"got shape {shape_text(a.shape)}"))
+        return float(a.astype(np.float64))
+    if hasattr(type(value), "__float__"):
+        try:
+            return float(value)
+        except TypeError:
+            return Refused(TypeError, (label,))
+        except (ValueError, OverflowError):  # Fraction(10**400), Decimal("sNaN")
+            return Refused(ValueError, (label,))
+    return Refused(TypeError, (label,))
+
+
+def _rule(x, label, rule):
+    if rule == "finite" and not math.isfinite(x):
+        return Refused(ValueError, (label, "finite"))
+    if rule == "tolerance" and not x >= 0.0:
+        return Refused(ValueError, (label, "tolerance >= 0"))
+    if rule == "pitch" and (math.isnan(x) or x == -math.inf):
+        return Refused(ValueError, (label, "pitch"))
+    return Accepted(x)
+
+
+@dataclass
+class Scalar(Arg):
+    """The number of ``x * s``, ``s * x``, ``x / s`` (Twist, Wrench): a real
+    scalar; anything else is not a number the operator knows (TypeError,
+    from Python, when the operator returns NotImplemented)."""
+
+    def good(self):
+        return 2.0
+
+    def judge(self, value):
+        if isinstance(value, np.ndarray) and value.ndim != 0:
+            return Refused(TypeError, ())
+        if value is None or isinstance(
+            value, (*BOUND, complex, str, bytes, collections.abc.Sequence)
+        ):
+            return Refused(TypeError, ())
+        x = _real(value, self.label)
+        if isinstance(x, Refused):
+            return Refused(TypeError, ()) if x.error is TypeError else x
+        return _rule(x, self.label, "finite")
+
+
+@dataclass
+class Flag(Arg):
+    """A bool option: anything with a truth value pybind11 reads, as bool()."""
+
+    def good(self):
+        return False
+
+    def judge(self, value):
+        if value is None or isinstance(value, (bool, np.bool_)):
+            return Accepted(bool(value))
+        if isinstance(value, (int, float, np.integer, np.floating)):
+            return Accepted(bool(value))
+        return None  # pybind11's truth test: any outcome but a crash, checked as is
+
+
+@dataclass
+class Instance(Arg):
+    """An object of one of `classes`, initialized (TypeError for anything else)."""
+
+    classes: tuple = (chasles.SO3,)
+    valid: Callable[[], Any] | None = None
+    uninitialized_ok: bool = False  # __repr__ shows an uninitialized object
+
+    def good(self):
+        return self.valid() if self.valid is not None else GOOD[self.classes[0]]()
+
+    def judge(self, value):
+        if isinstance(value, self.classes):
+            if self.uninitialized_ok and not is_initialized(value):
+                return Accepted(value)
+            if not is_initialized(value):
+                # (pybind11's own refusal when another argument rules out the overload first)
+                return Refused(TypeError, (("not initialized", "incompatible function arguments"),))
+            return Accepted(base_copy(value))
+        return Refused(TypeError, ())
+
+
+@dataclass
+class Home(Arg):
+    """A chain's home pose: an SE3, or a (4, 4) array-like rigid motion."""
+
+    def good(self):
+        return chasles.SE3(translation=[2.0, 0.0, 0.0])
+
+    def judge(self, value):
+        if isinstance(value, chasles.SE3):
+            return Instance(self.label, (chasles.SE3,)).judge(value)
+        return judge_fixed_array(value, self.label, ((4, 4),), True)
+
+
+@dataclass
+class State(Arg):
+    """A pickled state: a tuple of Python floats, of one of `sizes`."""
+
+    sizes: tuple = (9,)
+    valid: Callable[[], Any] | None = None
+
+    def good(self):
+        return self.valid()
+
+    def judge(self, value):
+        if not isinstance(value, tuple) or len(value) not in self.sizes:
+            return Refused(ValueError, ("__setstate__", "tuple of"))
+        if not all(isinstance(x, float) for x in value):
+            return Refused(TypeError, ("__setstate__", "floats"))
+        return Accepted(tuple(float(x) for x in value))
+
+
+@dataclass
+class Anything(Arg):
+    """An argument the callable takes as any object (memo, dtype, copy, protocol)."""
+
+    valid: Any = None
+
+    def good(self):
+        return self.valid
+
+    def judge(self, value):
+        return None  # no model: any outcome but a crash or an unlisted exception
+
+
+# ---- valid values ---------------------------------------------------------------------
+
+R0 = chasles.SO3.exp([0.1, 0.2, 0.3])
+G0 = chasles.SE3(R0, [1.0, 2.0, 3.0])
+XI0 = chasles.Twist(v=[1.0, 0.0, 0.5], w=[0.0, 0.2, 1.0])
+CHAIN_SCREWS = np.array([[0.0, 0.0, 0.0, 0.0, 0.0, 1.0], [0.0, -1.0, 0.0, 0.0, 0.0, 1.0]])
+CHAIN_HOME = chasles.SE3(translation=[2.0, 0.0, 0.0])
+
+GOOD = {  # a fresh valid object of each class
+    chasles.SO3: lambda: chasles.SO3.exp([0.1, 0.2, 0.3]),
+    chasles.SE3: lambda: chasles.SE3(chasles.SO3.exp([0.1, 0.2, 0.3]), [1.0, 2.0, 3.0]),
+    chasles.Twist: lambda: chasles.Twist(v=[1.0, 0.0, 0.5], w=[0.0, 0.2, 1.0]),
+    chasles.Wrench: lambda: chasles.Wrench(f=[0.0, 1.0, 1.0], tau=[0.5, 0.0, 0.0]),
+    chasles.Screw: lambda: chasles.Screw([0.0, 1.0, 0.0], [0.0, 0.0, 1.0], 0.5, 1.0),
+    chasles.Chain: lambda: chasles.Chain(CHAIN_SCREWS, CHAIN_HOME),
+}
+
+
+def base_copy(x):
+    """An object of the base class with x's value (x may be a subclass instance)."""
+    cls = next(c for c in BOUND if isinstance(x, c))
+    y = cls.__new__(cls)
+    y.__setstate__(x.__getstate__())
+    return y
+
+
+def rotation():
+    return R0.as_matrix()
+
+
+def pose():
+    return G0.as_matrix()
+
+
+def quat():
+    return np.array([0.1, -0.2, 0.3, 0.9])
+
+
+def g_dot():
+    return G0.as_matrix() @ XI0.hat()
+
+
+# ---- the specification ----------------------------------------------------------------
+
+
+@dataclass
+class Entry:
+    """How to call one public callable.
+
+    `signatures`: argument lists (one per overload that takes other kinds of
+    arguments). `call(*args)` calls it (keyword-only parameters, such as
+    scalar_first, are passed by keyword). `self_first`: the first argument
+    is the instance a method is called on. `extra_errors`: exceptions other
+    than TypeError and ValueError the callable documents (ZeroDivisionError
+    for x / 0). `passes_arguments`: `call` hands its positional arguments
+    to the callable as they are (so a wrong count reaches the library)."""
+
+    signatures: list
+    call: Callable | None = None
+    self_first: bool = False
+    extra_errors: tuple = ()
+    passes_arguments: bool = True
+    direct: Callable | None = None
+
+    def call_with_self(self, *args):
+        """The method called on its class with args[0] as self (Twist.__mul__(x, s)
+        rather than x * s, so that a wrong self reaches the library)."""
+        return (self.direct or self.call)(*args)
+
+
+def _self(cls):
+    return Instance("self", (cls,))
+
+
+def _method(cls, name, *args, **kw):
+    return Entry(
+        [[_self(cls), *args]], call=lambda *a: getattr(cls, name)(*a), self_first=True, **kw
+    )
+
+
+def _direct(cls, name):
+    return lambda *a: getattr(cls, name)(*a)
+
+
+def _prop(cls, name):
+    return Entry(
+        [[_self(cls)]],
+        call=lambda x: getattr(cls, name).fget(x),
+        self_first=True,
+        passes_arguments=False,
+    )
+
+
+def _static(cls, name, *args, **kw):
+    return Entry([list(args)], call=lambda *a: getattr(cls, name)(*a), **kw)
+
+
+def _binop(cls, op, other, dunder, **kw):
+    return Entry(
+        [[_self(cls), other]],
+        call=op,
+        self_first=True,
+        passes_arguments=False,
+        direct=_direct(cls, dunder),
+        **kw,
+    )
+
+
+def _protocols(cls, n_state):
+    """__repr__, __array__, copy, deepcopy and pickle of a bound class."""
+    name = cls.__name__
+    out = {
+        f"{name}.__repr__": Entry(
+            [[Instance("self", (cls,), uninitialized_ok=True)]],
+            call=repr,
+            self_first=True,
+            passes_arguments=False,
+            direct=_direct(cls, "__repr__"),
+        ),
+        f"{name}.__copy__": _method(cls, "__copy__"),
+        f"{name}.__deepcopy__": _method(cls, "__deepcopy__", Anything("memo", {})),
+        f"{name}.__getstate__": _method(cls, "__getstate__"),
+        f"{name}.__setstate__": Entry(
+            [[State("state", tuple(n_state), lambda: GOOD[cls]().__getstate__())]],
+            call=lambda s: _setstate(cls, s),
+            passes_arguments=False,
+        ),
+        f"{name}.__reduce__": _method(cls, "__reduce__"),
+        f"{name}.__reduce_ex__": _method(cls, "__reduce_ex__", Anything("protocol", 2)),
+    }
+    if hasattr(cls, "__array__"):
+        out[f"{name}.__array__"] = _method(
+            cls, "__array__", Anything("dtype", None), Anything("copy", None)
+        )
+    return out
+
+
+def _setstate(cls, state):
+    x = cls.__new__(cls)
+    x.__setstate__(state)
+    return x
+
+
+def _array_function(name, operands, kw=()):
+    """An array function: operands (name, core, valid) and keyword-only flags."""
+    args = [Operand(f"{name}:{p}", tuple(core), valid) for p, core, valid in operands]
+    args += [Flag(k) for k in kw]
+    f = getattr(chasles, name)
+    n = len(operands)
+
+    def call(*a):
+        return f(*a[:n], **dict(zip(kw, a[n:])))
+
+    return Entry([args], call=call if kw else f, passes_arguments=not kw)
+
+
+def _group_function(name, make, **kw):
+    """A module function overloaded on SO3 and SE3: make(group, tangent_size).
+    Its group arguments take either group (the overload is picked by them)."""
+    f = getattr(chasles, name)
+    return Entry([make(chasles.SO3, 3), make(chasles.SE3, 6)], call=f, **kw)
+
+
+def _element(label, group):
+    """A group argument of a function overloaded on SO3 and SE3: either is
+    taken (and picks the overload), its valid value being of `group`."""
+    return Instance(label, (chasles.SO3, chasles.SE3), valid=GOOD[group])
+
+
+def _build_spec():
+    SO3, SE3, Twist, Wrench, Screw, Chain = BOUND
+    spec: dict[str, Entry] = {}
+
+    # SO3
+    spec["SO3.__init__"] = Entry([[]], call=SO3)
+    spec["SO3.identity"] = _static(SO3, "identity")
+    spec["SO3.exp"] = _static(SO3, "exp", Array("SO3.exp(w)", (3,)))
+    spec["SO3.log"] = _method(SO3, "log")
+    spec["SO3.hat"] = _static(SO3, "hat", Array("SO3.hat(w)", (3,), finite=False))
+    spec["SO3.vee"] = _static(SO3, "vee", Array("SO3.vee(matrix)", (3, 3), finite=False))
+    spec["SO3.inverse"] = _method(SO3, "inverse")
+    spec["SO3.__matmul__"] = _binop(SO3, operator.matmul, SO3Or("SO3 @ points"), "__matmul__")
+    spec["SO3.act"] = _method(SO3, "act", Points("SO3.act(points)"))
+    spec["SO3.adjoint"] = _method(SO3, "adjoint")
+    spec["SO3.as_matrix"] = _method(SO3, "as_matrix")
+    spec["SO3.from_matrix"] = _static(
+        SO3,
+        "from_matrix",
+        Array("SO3.from_matrix(matrix)", (3, 3), valid=rotation),
+        Real("SO3.from_matrix(tol)", "tolerance", 1e-6),
+    )
+    for form in ("projected", "unchecked"):
+        label = f"SO3.from_matrix_{form}(matrix)"
+        spec[f"SO3.from_matrix_{form}"] = _static(
+            SO3, f"from_matrix_{form}", Array(label, (3, 3), valid=rotation)
+        )
+    spec["SO3.rotation_defect"] = _static(
+        SO3,
+        "rotation_defect",
+        Array("SO3.rotation_defect(matrix)", (3, 3), finite=False, valid=rotation),
+    )
+    spec["SO3.from_quat"] = Entry(
+        [[Array("SO3.from_quat(quat)", (4,), valid=quat), Flag("scalar_first")]],
+        call=lambda q, f: SO3.from_quat(q, scalar_first=f),
+        passes_arguments=False,
+    )
+    spec["SO3.as_quat"] = Entry(
+        [[_self(SO3), Flag("scalar_first")]],
+        call=lambda x, f: SO3.as_quat(x, scalar_first=f),
+        self_first=True,
+        passes_arguments=False,
+    )
+    spec["SO3.normalized"] = _method(SO3, "normalized")
+    spec["SO3.interpolate"] = _static(
+        SO3, "interpolate", Instance("a", (SO3,)), Instance("b", (SO3,)), Real("SO3.interpolate(t)")
+    )
+    spec["SO3.is_approx"] = _method(
+        SO3, "is_approx", Instance("other", (SO3,)), Real("SO3.is_approx(tol)", "tolerance", 1e-6)
+    )
+    for jac in (
+        "right_jacobian",
+        "left_jacobian",
+        "right_jacobian_inverse",
+        "left_jacobian_inverse",
+    ):
+        spec[f"SO3.{jac}"] = _static(SO3, jac, Array(f"SO3.{jac}(w)", (3,)))
+        spec[f"SE3.{jac}"] = _static(SE3, jac, Array(f"SE3.{jac}(xi)", (6,)))
+    spec.update(_protocols(SO3, [9]))
+
+    # SE3
+    spec["SE3.__init__"] = Entry(
+        [[Instance("rotation", (SO3,)), Array("SE3(translation)", (3,))]], call=SE3
+    )
+    spec["SE3.identity"] = _static(SE3, "identity")
+    spec["SE3.exp"] = _static(SE3, "exp", TwistOr("SE3.exp(xi)", (6,)))
+    spec["SE3.log"] = _method(SE3, "log")
+    spec["SE3.hat"] = _static(SE3, "hat", Array("SE3.hat(xi)", (6,), finite=False))
+    spec["SE3.vee"] = _static(SE3, "vee", Array("SE3.vee(matrix)", (4, 4), finite=False))
+    spec["SE3.inverse"] = _method(SE3, "inverse")
+    spec["SE3.__matmul__"] = _binop(
+        SE3, operator.matmul, SE3Or("SE3 @ points", (SE3,)), "__matmul__"
+    )
+    spec["SE3.act"] = _method(SE3, "act", SE3Or("SE3.act(points)", (Twist, Wrench)))
+    spec["SE3.act_inv"] = _method(SE3, "act_inv", SE3Or("SE3.act_inv(points)", (Twist, Wrench)))
+    for m in ("adjoint", "rotation", "translation", "as_matrix", "normalized"):
+        spec[f"SE3.{m}"] = _method(SE3, m)
+    spec["SE3.from_matrix"] = _static(
+        SE3,
+        "from_matrix",
+        Array("SE3.from_matrix(matrix)", (4, 4), valid=pose),
+        Real("SE3.from_matrix(tol)", "tolerance", 1e-6),
+    )
+    for form in ("projected", "unchecked"):
+        label = f"SE3.from_matrix_{form}(matrix)"
+        spec[f"SE3.from_matrix_{form}"] = _static(
+            SE3, f"from_matrix_{form}", Array(label, (4, 4), valid=pose)
+        )
+    spec["SE3.transform_defect"] = _static(
+        SE3,
+        "transform_defect",
+        Array("SE3.transform_defect(matrix)", (4, 4), finite=False, valid=pose),
+    )
+    spec["SE3.interpolate"] = _static(
+        SE3, "interpolate", Instance("a", (SE3,)), Instance("b", (SE3,)), Real("SE3.interpolate(t)")
+    )
+    spec["SE3.is_approx"] = _method(
+        SE3, "is_approx", Instance("other", (SE3,)), Real("SE3.is_approx(tol)", "tolerance", 1e-6)
+    )
+    spec.update(_protocols(SE3, [12]))
+
+    # from_screw of SE3, Twist, Wrench, and Screw itself
+    for owner, cls, amount in (
+        ("SE3", SE3, "theta"),
+        ("Twist", Twist, "theta"),
+        ("Wrench", Wrench, "magnitude"),
+    ):
+        spec[f"{owner}.from_screw"] = _static(
+            cls,
+            "from_screw",
+            Array(f"{owner}.from_screw(point)", (3,)),
+            Array(f"{owner}.from_screw(direction)", (3,), valid=lambda: np.array([0.0, 0.0, 1.0])),
+            Real(f"{owner}.from_screw(pitch)", "pitch"),
+            Real(f"{owner}.from_screw({amount})"),
+        )
+    spec["Screw.__init__"] = Entry(
+        [
+            [
+                Array("Screw(point)", (3,)),
+                Array("Screw(direction)", (3,), valid=lambda: np.array([0.0, 0.0, 1.0])),
+                Real("Screw(pitch)", "pitch"),
+                Real("Screw(magnitude)"),
+            ]
+        ],
+        call=Screw,
+    )
+    for p in ("point", "direction", "pitch", "magnitude"):
+        spec[f"Screw.{p}"] = _prop(Screw, p)
+    spec["Screw.is_approx"] = _method(
+        Screw,
+        "is_approx",
+        Instance("other", (Screw,)),
+        Real("Screw.is_approx(tol)", "tolerance", 1e-6),
+    )
+    spec["Screw.__iter__"] = Entry(
+        [[_self(Screw)]],
+        call=lambda x: list(iter(x)),
+        self_first=True,
+        passes_arguments=False,
+        direct=lambda x: list(Screw.__iter__(x)),
+    )
+    spec["Screw.__len__"] = Entry(
+        [[_self(Screw)]],
+        call=len,
+        self_first=True,
+        passes_arguments=False,
+        direct=_direct(Screw, "__len__"),
+    )
+    spec.update(_protocols(Screw, [8]))
+
+    # Twist and Wrench
+    for cls, (a, b), vec, other in (
+        (Twist, ("v", "w"), "xi", Wrench),
+        (Wrench, ("f", "tau"), "F", Twist),
+    ):
+        n = cls.__name__
+        spec[f"{n}.__init__"] = Entry(
+            [[Array(f"{n}({a})", (3,)), Array(f"{n}({b})", (3,))]], call=cls
+        )
+        spec[f"{n}.from_vector"] = _static(
+            cls, "from_vector", Array(f"{n}.from_vector({vec})", (6,))
+        )
+        spec[f"{n}.__add__"] = _binop(cls, operator.add, Instance("other", (cls,)), "__add__")
+        spec[f"{n}.__sub__"] = _binop(cls, operator.sub, Instance("other", (cls,)), "__sub__")
+        for dunder, op in (("__neg__", operator.neg), ("__pos__", operator.pos)):
+            spec[f"{n}.{dunder}"] = Entry(
+                [[_self(cls)]],
+                call=op,
+                self_first=True,
+                passes_arguments=False,
+                direct=_direct(cls, dunder),
+            )
+        spec[f"{n}.__mul__"] = _binop(cls, operator.mul, Scalar(f"{n} * scalar"), "__mul__")
+        spec[f"{n}.__rmul__"] = _binop(cls, lambda x, s: s * x, Scalar(f"{n} * scalar"), "__rmul__")
+        spec[f"{n}.__truediv__"] = _binop(
+            cls,
+            operator.truediv,
+            Scalar(f"{n} / scalar"),
+            "__truediv__",
+            extra_errors=(ZeroDivisionError,),
+        )
+        spec[f"{n}.is_approx"] = _method(
+            cls,
+            "is_approx",
+            Instance("other", (cls,)),
+            Real(f"{n}.is_approx(tol)", "tolerance", 1e-6),
+        )
+        spec[f"{n}.power"] = _method(cls, "power", Instance(other.__name__.lower(), (other,)))
+        spec[f"{n}.screw"] = _method(cls, "screw")
+        for p in ("vector", "pitch"):
+            spec[f"{n}.{p}"] = _prop(cls, p)
+        spec.update(_protocols(cls, [6]))
+    spec["Twist.linear"] = _prop(Twist, "linear")
+    spec["Twist.angular"] = _prop(Twist, "angular")
+    spec["Wrench.force"] = _prop(Wrench, "force")
+    spec["Wrench.torque"] = _prop(Wrench, "torque")
+    spec["Twist.to_modern_robotics"] = _method(Twist, "to_modern_robotics")
+    spec["Twist.from_modern_robotics"] = _static(
+        Twist, "from_modern_robotics", Array("Twist.from_modern_robotics(wv)", (6,))
+    )
+    spec["Twist.hat"] = _method(Twist, "hat")
+    spec["Twist.vee"] = _static(
+        Twist, "vee", Array("Twist.vee(matrix)", (4, 4), valid=lambda: XI0.hat())
+    )
+    spec["Twist.ad"] = _method(Twist, "ad")
+    spec["Twist.bracket"] = _method(Twist, "bracket", Instance("other", (Twist,)))
+    for frame in ("spatial", "body"):
+        spec[f"Twist.{frame}"] = _static(
+            Twist, frame, Instance("g", (SE3,)), Array(f"Twist.{frame}(g_dot)", (4, 4), valid=g_dot)
+        )
+
+    # Chain
+    spec["Chain.__init__"] = Entry([[ScrewRows("Chain(screws)"), Home("Chain(home)")]], call=Chain)
+    spec["Chain.revolute_screw"] = _static(
+        Chain,
+        "revolute_screw",
+        Array("Chain.revolute_screw(axis)", (3,)),
+        Array("Chain.revolute_screw(point)", (3,)),
+    )
+    spec["Chain.prismatic_screw"] = _static(
+        Chain, "prismatic_screw", Array("Chain.prismatic_screw(direction)", (3,))
+    )
+    for m in ("forward", "forward_body", "jacobian_space", "jacobian_body"):
+        spec[f"Chain.{m}"] = _method(Chain, m, JointArray(f"Chain.{m}(theta)", 2))
+    for p in ("screws", "body_screws", "home", "n_joints"):
+        spec[f"Chain.{p}"] = _prop(Chain, p)
+    spec.update(_protocols(Chain, [6 * n + 12 for n in range(1, 33)]))
+
+    # module functions on objects, overloaded for SO3 and SE3
+    E = _element
+    spec["rplus"] = _group_function("rplus", lambda G, n: [E("g", G), Array("rplus(g, xi)", (n,))])
+    spec["lplus"] = _group_function("lplus", lambda G, n: [Array("lplus(xi, g)", (n,)), E("g", G)])
+    for f in ("rminus", "lminus"):
+        spec[f] = _group_function(f, lambda G, n: [E("g", G), E("h", G)])
+    for f in ("log_jacobian", "inverse_jacobian"):
+        spec[f] = _group_function(f, lambda G, n: [E("g", G)])
+    spec["compose_jacobians"] = _group_function(
+        "compose_jacobians", lambda G, n: [E("a", G), E("b", G)]
+    )
+    spec["act_jacobians"] = _group_function(
+        "act_jacobians", lambda G, n: [E("g", G), Array("act_jacobians(g, p)", (3,))]
+    )
+    spec["interpolate"] = _group_function(
+        "interpolate", lambda G, n: [E("a", G), E("b", G), Real("interpolate(t)")]
+    )
+    spec["interpolate_jacobian_t"] = _group_function(
+        "interpolate_jacobian_t",
+        lambda G, n: [E("a", G), E("b", G), Real("interpolate_jacobian_t(t)")],
+    )
+
+    # array functions
+    R3, G4 = ((3, 3), rotation), ((4, 4), pose)
+    v3 = ((3,), None)
+    six = ((6,), None)
+    arrays = {
+        "so3_exp": [("w",) + v3],
+        "so3_log": [("R",) + R3],
+        "so3_compose": [("a",) + R3, ("b",) + R3],
+        "so3_inverse": [("R",) + R3],
+        "so3_act": [("R",) + R3, ("p",) + v3],
+        "so3_hat": [("w",) + v3],
+        "so3_vee": [("W", (3, 3), None)],
+        "so3_interpolate": [("a",) + R3, ("b",) + R3, ("t", (), None)],
+        "se3_exp": [("xi",) + six],
+        "se3_log": [("g",) + G4],
+        "se3_compose": [("a",) + G4, ("b",) + G4],
+        "se3_inverse": [("g",) + G4],
+        "se3_act": [("g",) + G4, ("points",) + v3],
+        "se3_adjoint": [("g",) + G4],
+        "se3_act_twist": [("g",) + G4, ("xi",) + six],
+        "se3_act_wrench": [("g",) + G4, ("F",) + six],
+        "se3_interpolate": [("a",) + G4, ("b",) + G4, ("t", (), None)],
+        "twist_hat": [("xi",) + six],
+        "twist_vee": [("X", (4, 4), lambda: XI0.hat())],
+    }
+    for name, ops in arrays.items():
+        spec[name] = _array_function(name, ops)
+    spec["so3_from_quat"] = _array_function(
+        "so3_from_quat", [("q", (4,), quat)], kw=("scalar_first",)
+    )
+    spec["so3_as_quat"] = _array_function("so3_as_quat", [("R",) + R3], kw=("scalar_first",))
+    return spec
+
+
+@dataclass
+class SO3Or(Arg):
+    """The right operand of ``R @ x``: an SO3 (composition) or points."""
+
+    def good(self):
+        return np.array([[0.5, -1.0, 2.0]])
+
+    def judge(self, value):
+        if isinstance(value, chasles.SO3):
+            return Instance(self.label, (chasles.SO3,)).judge(value)
+        return Points(self.label).judge(value)
+
+
+@dataclass
+class SE3Or(Arg):
+    """The argument of ``g @ x``, ``g.act(x)``, ``g.act_inv(x)``: one of
+    `objects` (initialized), or points."""
+
+    objects: tuple = ()
+
+    def good(self):
+        return np.array([[0.5, -1.0, 2.0]])
+
+    def judge(self, value):
+        if isinstance(value, self.objects):
+            return Instance(self.label, self.objects).judge(value)
+        return Points(self.label).judge(value)
+
+
+SPEC = _build_spec()
+
+
+def is_array_function(entry) -> bool:
+    """An array function (so3_*, se3_*, twist_*): its arguments are operands and flags."""
+    args = [a for s in entry.signatures for a in s]
+    return any(isinstance(a, Operand) for a in args) and all(
+        isinstance(a, (Operand, Flag)) for a in args
+    )
+
+
+ARRAY_FUNCTIONS = sorted(name for name, entry in SPEC.items() if is_array_function(entry))
+
+# Members of the bound classes that are not part of the API to specify:
+# pybind11's own hook, and attributes that are not callables.
+NOT_API = {
+    "_pybind11_conduit_v1_",
+    "__doc__",
+    "__module__",
+    "__dict__",
+    "__weakref__",
+    "__array_ufunc__",
+    "__hash__",
+    "__eq__",
+    "__ne__",
+}
+
+
+def callables() -> dict[str, Any]:
+    """Every public callable of chasles, by name ("so3_exp", "SO3.exp",
+    "Chain.screws" for a property), found from the module: __all__ and the
+    members each class defines itself (inherited object methods excluded)."""
+    out = {}
+    for name in chasles.__all__:
+        obj = getattr(chasles, name)
+        if isinstance(obj, type):
+            for member, value in vars(obj).items():
+                if member in NOT_API or value is None:
+                    continue
+                if callable(value) or isinstance(value, (property, staticmethod)):
+                    out[f"{name}.{member}"] = value
+        elif callable(obj):
+            out[name] = obj
+    return out
+
+
+# ---- comparing outcomes ------------------------------------------------------------------
+
+
+def canon(result):
+    """A comparable, bit-exact form of a result (arrays by dtype, shape and
+    bits, NaN payloads folded: every NaN compares equal to every NaN)."""
+    if isinstance(result, np.ndarray):
+        a = np.ascontiguousarray(result)
+        bits = a.copy()
+        if a.dtype.kind == "f":
+            bits[np.isnan(a)] = np.nan
+        return ("ndarray", a.dtype.str, a.shape, bits.tobytes())
+    if isinstance(result, BOUND):
+        return (type(result).__name__, canon(np.array(result.__getstate__(), dtype=np.float64)))
+    if isinstance(result, float):
+        return ("float", canon(np.array([result])))
+    if isinstance(result, (tuple, list)):
+        return (type(result).__name__, tuple(canon(x) for x in result))
+    if isinstance(result, (bool, int, str, bytes)) or result is None:
+        return (type(result).__name__, result)
+    if isinstance(result, np.generic):
+        return canon(np.asarray(result))
+    return ("object", type(result).__name__)
+
+
+def outcome(call, args):
+    """("ok", canon(result)) or ("raise", exception type, message)."""
+    try:
+        return ("ok", canon(call(*args)))
+    except Exception as e:  # noqa: BLE001 - the caller checks the type
+        return ("raise", type(e), str(e))

@@ -1,0 +1,209 @@
+"""Threads: every array function (and the objects' actions on many points,
+which also run without the GIL) gives, from 8 threads at once on shared
+read-only input, results bit-identical to a single thread; and releases the
+GIL, so that other Python threads run during a long call.
+
+How the GIL test can tell: a counter thread increments a Python integer
+and hands the GIL back after every step (time.sleep(0)), and the switch
+interval is raised to 100 s, so that the interpreter never takes the GIL
+from the thread that holds it. The counter can then advance only while the
+main thread has let go of the GIL, i.e. only inside a call that released
+it. The same measurement around a call that keeps the GIL (sum(range(n)),
+as long as the library call) must read exactly 0: that is checked first,
+so a broken measurement fails rather than passes.
+"""
+
+from __future__ import annotations
+
+import sys
+import threading
+import time
+
+import api_spec as A
+import chasles
+import numpy as np
+import pytest
+
+ARRAY_FUNCTIONS = A.ARRAY_FUNCTIONS
+
+
+def test_the_array_functions_are_all_here():
+    prefixes = ("so3_", "se3_", "twist_")
+    public = sorted(n for n in chasles.__all__ if n.startswith(prefixes))
+    assert ARRAY_FUNCTIONS == public and len(public) == 21
+
+
+def operand(arg: A.Operand, shape, rng, dtype):
+    """Operands of `shape` batch: rotations and poses where a 3x3 or 4x4
+    core is read as one, random numbers otherwise."""
+    n = int(np.prod(shape))
+    if arg.core == (3, 3):
+        x = chasles.so3_exp(rng.normal(size=(n, 3)))
+    elif arg.core == (4, 4):
+        x = chasles.se3_exp(rng.normal(size=(n, 6)))
+    elif arg.core == ():
+        x = rng.uniform(-0.5, 1.5, size=n)
+    else:
+        x = rng.normal(size=(n,) + arg.core)
+    x = x.reshape(tuple(shape) + arg.core).astype(dtype)
+    x.flags.writeable = False  # shared and read-only
+    return x
+
+
+def calls(n, rng):
+    """(label, function, args) for every array function in float64 and
+    float32, and the objects' actions on n points."""
+    out = []
+    for name in ARRAY_FUNCTIONS:
+        entry = A.SPEC[name]
+        for dtype in (np.float64, np.float32):
+            args = [
+                operand(a, (n,), rng, dtype) if isinstance(a, A.Operand) else True
+                for a in entry.signatures[0]
+            ]
+            out.append((f"{name} {np.dtype(dtype).name}", entry.call, args))
+    points = rng.normal(size=(n, 3))
+    points.flags.writeable = False
+    g = chasles.SE3.exp(rng.normal(size=6))
+    out += [
+        ("SE3.act", chasles.SE3.act, [g, points]),
+        ("SE3.act_inv", chasles.SE3.act_inv, [g, points]),
+        ("SO3.act", chasles.SO3.act, [g.rotation(), points]),
+    ]
+    return out
+
+
+def test_eight_threads_give_bit_identical_results():
+    rng = np.random.default_rng(5)
+    work = calls(20_000, rng)  # above the GIL threshold of every call (500 and 4096 elements)
+    reference = [f(*args).tobytes() for _, f, args in work]
+    n_threads, rounds = 8, 3
+    barrier = threading.Barrier(n_threads)
+    results = [[] for _ in range(n_threads)]
+    errors = []
+
+    def worker(k):
+        try:
+            barrier.wait()
+            for r in range(rounds):
+                order = work if (k + r) % 2 == 0 else work[::-1]  # not in lockstep
+                results[k].append({label: f(*args).tobytes() for label, f, args in order})
+        except BaseException as e:  # noqa: BLE001 - reported below
+            errors.append(e)
+
+    threads = [threading.Thread(target=worker, args=(k,)) for k in range(n_threads)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert not errors, errors
+    for k in range(n_threads):
+        assert len(results[k]) == rounds
+        for got in results[k]:
+            for (label, _, _), want in zip(work, reference):
+                assert got[label] == want, (
+                    f"thread {k}: {label} differs from the single-threaded result"
+                )
+
+
+# ---- the GIL ---------------------------------------------------------------------------
+
+
+class Counter:
+    """A thread that counts while it can get the GIL, handing it back after
+    every step; the switch interval is raised so that it never gets the GIL
+    by preemption."""
+
+    def __init__(self):
+        self.count = 0
+        self._stop = threading.Event()
+        self._thread = threading.Thread(target=self._run, daemon=True)
+
+    def _run(self):
+        while not self._stop.is_set():
+            self.count += 1
+            time.sleep(0)
+
+    def __enter__(self):
+        self._old = sys.getswitchinterval()
+        sys.setswitchinterval(100.0)
+        self._thread.start()
+        while self.count == 0:  # running
+            time.sleep(0.001)
+        return self
+
+    def __exit__(self, *exc):
+        self._stop.set()
+        sys.setswitchinterval(self._old)
+        self._thread.join()
+
+    def steps_during(self, call):
+        """How far the counter advances while call() runs, and how long it takes."""
+        time.sleep(0.002)  # the counter runs here, then waits for the GIL
+        start, before = time.perf_counter(), self.count
+        call()
+        steps, seconds = self.count - before, time.perf_counter() - start
+        return steps, seconds
+
+
+_RATE = []
+
+
+def holds_the_gil_for(seconds):
+    """A call that keeps the GIL about that long: pure bytecode, sum(range(n))
+    with n from a measured rate."""
+    if not _RATE:
+        start = time.perf_counter()
+        sum(range(1_000_000))
+        _RATE.append(1_000_000 / max(time.perf_counter() - start, 1e-6))
+    n = max(1000, int(seconds * _RATE[0]))
+    return lambda: sum(range(n))
+
+
+def steps_while_releasing(counter, call, enough=1, attempts=5):
+    """The most steps the counter makes during call(), over up to `attempts`
+    calls (until one reaches `enough`): a loaded machine that does not
+    schedule the counter in time gets another chance. The control: a call of
+    the same length that keeps the GIL must see exactly 0 steps."""
+    best, seconds = 0, 0.0
+    for _ in range(attempts):
+        steps, seconds = counter.steps_during(call)
+        control, _ = counter.steps_during(holds_the_gil_for(seconds))
+        assert control == 0, f"the measurement is broken: {control} steps while the GIL was held"
+        best = max(best, steps)
+        if best >= enough:
+            break
+    return best, seconds
+
+
+@pytest.mark.parametrize(
+    "label,call",
+    [(label, (f, args)) for label, f, args in calls(50_000, np.random.default_rng(6))],
+    ids=lambda x: x if isinstance(x, str) else "",
+)
+def test_every_array_call_releases_the_gil(label, call):
+    f, args = call
+    with Counter() as counter:
+        steps, _ = steps_while_releasing(counter, lambda: f(*args))
+    assert steps > 0, f"{label}: no other thread ran during the call"
+
+
+def test_a_long_call_lets_another_thread_run_all_along():
+    """so3_log on 4e6 rotations (0.15 to 0.3 s here; a stride-0 view: no
+    input memory; 48 MB out in float32): the counter makes at least a tenth
+    of the steps it makes in a sleep as long (2000 to 4000 steps here), and
+    at least 100, i.e. it runs throughout the call, not once at its start or
+    end."""
+    R = np.broadcast_to(chasles.so3_exp(np.array([0.1, -2.0, 0.3], np.float32)), (4_000_000, 3, 3))
+    with Counter() as counter:
+        steps = baseline = seconds = 0
+        for _ in range(5):
+            got, seconds = steps_while_releasing(counter, lambda: chasles.so3_log(R), attempts=1)
+            # The free-running rate of the counter, over a GIL-free wait as long.
+            baseline, _ = counter.steps_during(lambda s=seconds: time.sleep(s))
+            steps = max(steps, got)
+            if steps >= max(100, baseline / 10):
+                break
+    assert steps >= max(100, baseline / 10), (
+        f"{steps} steps in {seconds:.3f} s; in a sleep as long: {baseline}"
+    )
