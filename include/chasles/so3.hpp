@@ -231,7 +231,7 @@ class SO3 {
       Scalar m(0);
       for (int i = 0; i < 4; ++i)
         if (abs(c[i]) > m) m = abs(c[i]);
-      if (!(m > Scalar(0)) || !(m - m == Scalar(0))) return SO3();  // zero, or not finite
+      if (!(m > Scalar(0)) || !detail::all_finite(c)) return SO3();  // zero, or not finite (a NaN never wins m)
       c /= m;
       n2 = c.squaredNorm();
     }

@@ -169,11 +169,15 @@ EIGEN_DONT_INLINE Quaternion4<Scalar> clamped_quaternion_power_step(const Eigen:
 /// The nearest rotation to s M is that of M for every s > 0, so M is first
 /// scaled to a largest entry of 1: no product in N or in the sweeps can
 /// overflow or underflow, from entries of 1e-300 to 1e300.
+/// A non-finite M gives the identity (1, 0, 0, 0): a NaN in N would stop the
+/// sweeps at once and leave the choice of the largest diagonal entry to
+/// comparisons with NaN, an arbitrary axis.
 template <typename Scalar>
 inline Eigen::Matrix<Scalar, 4, 1> nearest_rotation_quaternion(const Eigen::Matrix<Scalar, 3, 3>& M_in) noexcept {
   using std::abs;
   using std::sqrt;
   constexpr int max_sweeps = 12;
+  if (!all_finite(M_in)) return Eigen::Matrix<Scalar, 4, 1>(Scalar(1), Scalar(0), Scalar(0), Scalar(0));
   Scalar m(0);
   for (int j = 0; j < 3; ++j)
     for (int i = 0; i < 3; ++i)
