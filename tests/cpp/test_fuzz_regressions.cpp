@@ -83,4 +83,36 @@ void from_quaternion_with_nan_is_identity() {
 TEST(FuzzRegression, FromQuaternionWithNanIsIdentityFloat) { from_quaternion_with_nan_is_identity<float>(); }
 TEST(FuzzRegression, FromQuaternionWithNanIsIdentityDouble) { from_quaternion_with_nan_is_identity<double>(); }
 
+// "SO3 log: finite for every finite M", and SE3 log with it. The power
+// step u = K (K e_k) of a matrix with entries far outside [-1, 1] grows as
+// |M|^2 and was only checked for finiteness itself; its squares, as |M|^4,
+// could overflow while u did not. Then |u_v| = inf gave w = 0 with
+// theta^2 = pi^2, and (theta/2) cot(theta/2) = (pi/2) u_w / inf: NaN in
+// float (the SE3 log below, found by the fuzzer), an inconsistent 0 in
+// double. Checked: the SE3 log is finite, |w| <= pi, and the so3 log's
+// theta^2 is |w|^2 (So3Log documents it so), in float and in double (the
+// same window, |K_wz| between sqrt(max) / 2 and sqrt(max)).
+template <typename T>
+void log_of_power_step_past_sqrt_max(const Eigen::Matrix<T, 4, 4>& G) {
+  const Mat3<T> M = G.template topLeftCorner<3, 3>();
+  const Eigen::Matrix<T, 6, 1> xi = chasles::SE3<T>::from_matrix_unchecked(G).log();
+  EXPECT_TRUE(xi.allFinite()) << "G = " << str(G) << " gives " << str(xi);
+  const auto r = chasles::detail::so3_log<T>(M);
+  const long double w2 = r.omega.template cast<long double>().squaredNorm();
+  EXPECT_LE(std::sqrt(w2), 3.14159265358979323846L * (1 + 4 * std::numeric_limits<T>::epsilon())) << str(r.omega);
+  EXPECT_NEAR(double(r.theta2), double(w2), 4 * std::numeric_limits<T>::epsilon() * std::max(1.0L, w2))
+      << "M = " << str(M) << ": w = " << str(r.omega) << ", theta^2 = " << r.theta2;
+}
+TEST(FuzzRegression, LogOfPowerStepPastSqrtMaxFloat) {
+  Eigen::Matrix4f G = Eigen::Matrix4f::Zero();
+  G.row(0) << 2.77554664e-17f, -1.76425811e+19f, -0.421568602f, 9.49981268e+14f;
+  G.row(1) << 9.51492224e+14f, 6.82488404e-41f, 0, 0;
+  log_of_power_step_past_sqrt_max<float>(G);
+}
+TEST(FuzzRegression, LogOfPowerStepPastSqrtMaxDouble) {
+  Eigen::Matrix4d G = Eigen::Matrix4d::Zero();
+  G.row(0) << 0, -1e154, -0.42, 1e15;
+  log_of_power_step_past_sqrt_max<double>(G);
+}
+
 }  // namespace
