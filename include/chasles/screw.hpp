@@ -79,21 +79,20 @@ inline Screw<Scalar> screw_of_pair(const Eigen::Matrix<Scalar, 3, 1>& l,
 }
 
 /// The inverse: the pair (l, m) = magnitude * (d, q x d + pitch d) of the
-/// screw through q along d (normalized here; a zero d gives the zero pair),
-/// and (0, magnitude d) for an infinite pitch.
+/// screw through q along d (normalized here, whatever its size: a d whose
+/// |d|^2 would underflow or overflow is scaled first; a zero d gives the
+/// zero pair), and (0, magnitude d) for an infinite pitch.
 template <typename Scalar>
 inline void pair_of_screw(const Eigen::Matrix<Scalar, 3, 1>& q, const Eigen::Matrix<Scalar, 3, 1>& d,
                           const Scalar& pitch, const Scalar& magnitude, Eigen::Matrix<Scalar, 3, 1>& l,
                           Eigen::Matrix<Scalar, 3, 1>& m) noexcept {
-  using std::isinf;
-  using std::sqrt;
-  const Scalar d2 = d.squaredNorm();
-  if (!(d2 > Scalar(0))) {
+  Scalar norm;
+  Eigen::Matrix<Scalar, 3, 1> u;
+  if (!norm_and_direction(d, norm, u)) {
     l.setZero();
     m.setZero();
     return;
   }
-  const Eigen::Matrix<Scalar, 3, 1> u = d / sqrt(d2);
   if (pitch == Scalar(std::numeric_limits<RealOf<Scalar>>::infinity())) {
     l.setZero();
     m = magnitude * u;

@@ -115,4 +115,42 @@ TEST(FuzzRegression, LogOfPowerStepPastSqrtMaxDouble) {
   log_of_power_step_past_sqrt_max<double>(G);
 }
 
+// "from_screw(q, w_hat, h, theta): w_hat normalized here." The direction
+// was divided by sqrt(|w_hat|^2), which overflows or underflows for a
+// direction of large or small size: both gave the zero twist (found in
+// float: w_hat = (0, 0, -1.5e26)). Directions from the smallest normal to
+// the largest finite size, for twists, wrenches and motions.
+template <typename T>
+void from_screw_normalizes_any_direction() {
+  const T theta = T(0.75), h = T(0.5);
+  const Vec3<T> q(1, -2, 3);
+  const Vec3<T> found(0, 0, T(-1.54742505e+26));
+  std::vector<Vec3<T>> directions = {found};
+  for (const T s : {std::numeric_limits<T>::min(), T(1e-30), T(1), T(1e30), std::numeric_limits<T>::max()}) {
+    directions.push_back(s * Vec3<T>(0, 1, 0));
+    directions.push_back(s * Vec3<T>(-1, 0, 1));
+  }
+  for (const Vec3<T>& d : directions) {
+    const Eigen::Matrix<long double, 3, 1> u =
+        d.template cast<long double>() / d.template cast<long double>().norm();
+    Eigen::Matrix<long double, 6, 1> expected;  // theta (-u x q + h u, u)
+    expected << theta * (-u.cross(q.template cast<long double>()) + h * u), theta * u;
+    const Eigen::Matrix<T, 6, 1> twist = chasles::Twist<T>::from_screw(q, d, h, theta).vector();
+    const Eigen::Matrix<T, 6, 1> wrench = chasles::Wrench<T>::from_screw(q, d, h, theta).vector();
+    const long double tol = 8 * std::numeric_limits<T>::epsilon();
+    EXPECT_LE((twist.template cast<long double>() - expected).cwiseAbs().maxCoeff(), tol)
+        << "direction " << str(d) << ": twist " << str(twist);
+    // A wrench's pair is (f, tau) = magnitude (d, q x d + h d): the same numbers with the halves swapped.
+    Eigen::Matrix<long double, 6, 1> expected_wrench;
+    expected_wrench << expected.template tail<3>(), expected.template head<3>();
+    EXPECT_LE((wrench.template cast<long double>() - expected_wrench).cwiseAbs().maxCoeff(), tol)
+        << "direction " << str(d) << ": wrench " << str(wrench);
+    const chasles::SE3<T> g = chasles::SE3<T>::from_screw(q, d, h, theta);
+    const chasles::SE3<T> e = chasles::SE3<T>::exp(twist);
+    EXPECT_TRUE((g.matrix().array() == e.matrix().array()).all()) << "direction " << str(d);
+  }
+}
+TEST(FuzzRegression, FromScrewNormalizesAnyDirectionFloat) { from_screw_normalizes_any_direction<float>(); }
+TEST(FuzzRegression, FromScrewNormalizesAnyDirectionDouble) { from_screw_normalizes_any_direction<double>(); }
+
 }  // namespace
