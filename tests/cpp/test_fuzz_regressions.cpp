@@ -1,10 +1,13 @@
 // Inputs on which the fuzz targets (tests/fuzz/) found the library breaking
 // one of its documented properties, kept as plain tests after the fix. Each
 // case names the property and the input as the fuzzer reported it.
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <vector>
 
+#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
 #include <chasles/chasles.hpp>
@@ -152,5 +155,56 @@ void from_screw_normalizes_any_direction() {
 }
 TEST(FuzzRegression, FromScrewNormalizesAnyDirectionFloat) { from_screw_normalizes_any_direction<float>(); }
 TEST(FuzzRegression, FromScrewNormalizesAnyDirectionDouble) { from_screw_normalizes_any_direction<double>(); }
+
+// "from_matrix_projected(M): the rotation nearest to M, for every finite M,
+// singular matrices included." For the near rank-one matrix below (found in
+// double; Horn's N has two double eigenvalues), an entry of 1e-111 with
+// equal diagonal entries made every Jacobi sweep rotate by 45 degrees, which
+// slowed convergence to halving per sweep: after the 12 sweeps the result
+// missed the largest tr(R^T M) by 42 eps |M| (a rotation off by 1e-7), and
+// for M10 = 1, M11 ~ 1e-4, M02 ~ 1e-100 by up to 1e8 eps (2e-4 rad).
+// Checked: tr(P^T M) reaches the largest eigenvalue of Horn's N(M) (long
+// double, Eigen's SelfAdjointEigenSolver) to 16 eps sum |M_ij|.
+template <typename T>
+long double trace_deficit_in_eps(const Mat3<T>& M) {
+  using LD = long double;
+  const Eigen::Matrix<LD, 3, 3> Ml = M.template cast<LD>();
+  Eigen::Matrix<LD, 4, 4> N;
+  const LD t = Ml.trace();
+  N(0, 0) = t;
+  N(0, 1) = N(1, 0) = Ml(2, 1) - Ml(1, 2);
+  N(0, 2) = N(2, 0) = Ml(0, 2) - Ml(2, 0);
+  N(0, 3) = N(3, 0) = Ml(1, 0) - Ml(0, 1);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) N(1 + i, 1 + j) = Ml(i, j) + Ml(j, i) - (i == j ? t : LD(0));
+  const LD best = Eigen::SelfAdjointEigenSolver<Eigen::Matrix<LD, 4, 4>>(N, Eigen::EigenvaluesOnly).eigenvalues()[3];
+  const Eigen::Matrix<LD, 3, 3> P = chasles::SO3<T>::from_matrix_projected(M).matrix().template cast<LD>();
+  return (best - (P.transpose() * Ml).trace()) / (LD(std::numeric_limits<T>::epsilon()) * Ml.cwiseAbs().sum());
+}
+
+TEST(FuzzRegression, ProjectionOfNearRankOneIsNearest) {
+  Eigen::Matrix3d found;
+  found << 1.6645368047779101e-318, 5.5735492686032133e-308, -5.9800821663297637e+197,  //
+      -1.4044477619381828e+308, -5.4861240687937606e+303, 5.3049894774131808e-313,       //
+      1.2598673968951787e-321, 0, 0;
+  EXPECT_LE(trace_deficit_in_eps<double>(found), 16) << str(found);
+  std::mt19937_64 rng(chasles_test::kSeed + 61);
+  std::normal_distribution<double> n01(0, 1);
+  long double worst_d = 0, worst_f = 0;
+  for (int i = 0; i < 2000; ++i) {
+    Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
+    M(1, 0) = 1;
+    M(1, 1) = 1e-4 * n01(rng);
+    M(0, 2) = 1e-100 * n01(rng);
+    worst_d = std::max(worst_d, trace_deficit_in_eps<double>(M));
+    Eigen::Matrix3f Mf = Eigen::Matrix3f::Zero();
+    Mf(1, 0) = 1;
+    Mf(1, 1) = float(1e-2 * n01(rng));
+    Mf(0, 2) = float(1e-30 * n01(rng));
+    worst_f = std::max(worst_f, trace_deficit_in_eps<float>(Mf));
+  }
+  EXPECT_LE(worst_d, 16) << "double";
+  EXPECT_LE(worst_f, 16) << "float";
+}
 
 }  // namespace
