@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include "chasles/constants.hpp"
+#include "chasles/detail/approx.hpp"
 
 namespace chasles {
 
@@ -64,8 +65,8 @@ inline Screw<Scalar> screw_of_pair(const Eigen::Matrix<Scalar, 3, 1>& l,
   if (norm_and_direction(l, s.magnitude, s.direction)) {
     s.pitch = s.direction.dot(m) / s.magnitude;
     s.point = s.direction.cross(m) / s.magnitude;
-    const Scalar sum = s.pitch + s.point[0] + s.point[1] + s.point[2];
-    if (sum - sum == Scalar(0)) return s;  // finite
+    // Each finite (not their sum, which can overflow when none does).
+    if (s.pitch - s.pitch == Scalar(0) && all_finite(s.point)) return s;
   }
   s.point.setZero();
   if (norm_and_direction(m, s.magnitude, s.direction)) {

@@ -1,6 +1,7 @@
 // Inputs on which the fuzz targets (tests/fuzz/) found the library breaking
-// one of its documented properties, kept as plain tests after the fix. Each
-// case names the property and the input as the fuzzer reported it.
+// one of its documented properties (one was found while writing their
+// properties), kept as plain tests after the fix. Each case names the
+// property and the input as the fuzzer reported it.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -206,5 +207,30 @@ TEST(FuzzRegression, ProjectionOfNearRankOneIsNearest) {
   EXPECT_LE(worst_d, 16) << "double";
   EXPECT_LE(worst_f, 16) << "float";
 }
+
+// "The screw of a twist: with w = 0 (or w so small that the axis is beyond
+// the largest finite distance), pitch +inf." The pitch and the point were
+// tested for finiteness through their sum, which overflows for a pitch and
+// a point that are each finite: a twist whose axis lies at 0.45 of the
+// largest finite distance, with pitch 0.45 of it, came out as a pure
+// translation. (Found by reading the code while writing the fuzz property;
+// the corpus seed se3 *_screw_near_max replays it.)
+template <typename T>
+void screw_near_the_largest_distance() {
+  const T big = T(0.45L * std::numeric_limits<T>::max());
+  const T l = sizeof(T) == sizeof(float) ? T(1e-5) : T(1e-10);
+  const Vec3<T> w(l, 0, 0), v(big * l, big * l, -big * l);
+  for (const bool wrench : {false, true}) {
+    const chasles::Screw<T> s = wrench ? chasles::Wrench<T>(w, v).screw() : chasles::Twist<T>(v, w).screw();
+    EXPECT_TRUE(std::isfinite(s.pitch)) << (wrench ? "wrench" : "twist") << ": pitch " << s.pitch;
+    EXPECT_NEAR(double(s.pitch / big), 1.0, 1e-5) << (wrench ? "wrench" : "twist");
+    EXPECT_NEAR(double(s.point[1] / big), 1.0, 1e-5) << (wrench ? "wrench" : "twist") << ": point " << str(s.point);
+    EXPECT_NEAR(double(s.point[2] / big), 1.0, 1e-5) << (wrench ? "wrench" : "twist") << ": point " << str(s.point);
+    EXPECT_EQ(s.point[0], T(0));
+    EXPECT_NEAR(double(s.magnitude / l), 1.0, 1e-6);
+  }
+}
+TEST(FuzzRegression, ScrewNearTheLargestDistanceFloat) { screw_near_the_largest_distance<float>(); }
+TEST(FuzzRegression, ScrewNearTheLargestDistanceDouble) { screw_near_the_largest_distance<double>(); }
 
 }  // namespace

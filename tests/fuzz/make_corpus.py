@@ -162,6 +162,7 @@ def se3_seeds(ty):
     r = math.sqrt(t["cutoff"])
     # Layout: xi = (v, w) (6), q (4), p (3), screw point (3), direction (3), pitch, magnitude, t.
     generic_screw = [1.0, -2.0, 3.0] + [0.0, 0.0, 1.0] + [0.5, 0.75]
+    small_w = 1e-10 if ty == "double" else 1e-5
     cases = {
         "zero": [0.0] * 22,
         "negative_zero": [-0.0] * 22,
@@ -177,6 +178,10 @@ def se3_seeds(ty):
         + [INF, 2.0] + [0.5],
         "large_translation_small_rotation": [t["huge"], -t["huge"], 1.0, t["tiny"], 0, 0] + [1.0, 0, 0, 0]
         + [t["huge"], 0, 0] + generic_screw + [1.0],
+        # A screw axis at 0.45 of the largest finite distance, pitch 0.45 of it
+        # (was taken as a pure translation: the finiteness test summed them).
+        "screw_near_max": [0.45 * t["max"] * small_w, 0.45 * t["max"] * small_w, -0.45 * t["max"] * small_w,
+                           small_w, 0, 0] + [1.0, 0, 0, 0] + [0, 0, 0] + generic_screw + [0.5],
         "huge": [t["huge"]] * 6 + [t["huge"], 0, 0, 0] + [t["huge"]] * 3 + [t["huge"]] * 8 + [t["huge"]],
         "max": [t["max"]] * 22,
         "inf": [INF] * 6 + [1.0, 0, 0, 0] + [0, 0, 0] + [0, 0, 0, 0, 0, 1.0, INF, 1.0] + [INF],
