@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include "chasles/constants.hpp"
+#include "chasles/detail/approx.hpp"
 
 namespace chasles {
 
@@ -64,8 +65,8 @@ inline Screw<Scalar> screw_of_pair(const Eigen::Matrix<Scalar, 3, 1>& l,
   if (norm_and_direction(l, s.magnitude, s.direction)) {
     s.pitch = s.direction.dot(m) / s.magnitude;
     s.point = s.direction.cross(m) / s.magnitude;
-    const Scalar sum = s.pitch + s.point[0] + s.point[1] + s.point[2];
-    if (sum - sum == Scalar(0)) return s;  // finite
+    // Each finite (not their sum, which can overflow when none does).
+    if (s.pitch - s.pitch == Scalar(0) && all_finite(s.point)) return s;
   }
   s.point.setZero();
   if (norm_and_direction(m, s.magnitude, s.direction)) {
@@ -79,21 +80,20 @@ inline Screw<Scalar> screw_of_pair(const Eigen::Matrix<Scalar, 3, 1>& l,
 }
 
 /// The inverse: the pair (l, m) = magnitude * (d, q x d + pitch d) of the
-/// screw through q along d (normalized here; a zero d gives the zero pair),
-/// and (0, magnitude d) for an infinite pitch.
+/// screw through q along d (normalized here, whatever its size: a d whose
+/// |d|^2 would underflow or overflow is scaled first; a zero d gives the
+/// zero pair), and (0, magnitude d) for an infinite pitch.
 template <typename Scalar>
 inline void pair_of_screw(const Eigen::Matrix<Scalar, 3, 1>& q, const Eigen::Matrix<Scalar, 3, 1>& d,
                           const Scalar& pitch, const Scalar& magnitude, Eigen::Matrix<Scalar, 3, 1>& l,
                           Eigen::Matrix<Scalar, 3, 1>& m) noexcept {
-  using std::isinf;
-  using std::sqrt;
-  const Scalar d2 = d.squaredNorm();
-  if (!(d2 > Scalar(0))) {
+  Scalar norm;
+  Eigen::Matrix<Scalar, 3, 1> u;
+  if (!norm_and_direction(d, norm, u)) {
     l.setZero();
     m.setZero();
     return;
   }
-  const Eigen::Matrix<Scalar, 3, 1> u = d / sqrt(d2);
   if (pitch == Scalar(std::numeric_limits<RealOf<Scalar>>::infinity())) {
     l.setZero();
     m = magnitude * u;

@@ -48,23 +48,29 @@ struct So3Log {
 /// near the identity (x^2 below the Taylor cutoff / 4, as theta^2 / 4 is)
 /// the second form with the series of atan(x)/x: no sqrt of 0, no 0/0. At
 /// exactly pi, u_w = 0 and either sign of u is the same rotation.
-/// Finite for every finite M: K (K e_k) only overflows for entries of M
-/// far outside [-1, 1]; it is then recomputed from M clamped to [-2, 2].
+/// Finite for every finite M: K (K e_k) and its squares below only
+/// overflow for entries of M far outside [-1, 1] (u grows as |M|^2, its
+/// squares as |M|^4: u itself may be finite while they are not); u is then
+/// recomputed from M clamped to [-2, 2].
 template <typename Scalar>
 inline So3Log<Scalar> so3_log(const Eigen::Matrix<Scalar, 3, 3>& M) noexcept {
   using std::sqrt;
   using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
   Quaternion4<Scalar> u = quaternion_power_step(M);
-  if (!u.finite()) {
+  Scalar uv2 = u.x * u.x + u.y * u.y + u.z * u.z;
+  Scalar uw2 = u.w * u.w;
+  const Scalar u2 = uv2 + uw2;
+  if (!(u2 - u2 == Scalar(0))) {  // not finite
     u = clamped_quaternion_power_step(M);  // cold: not near a rotation
+    uv2 = u.x * u.x + u.y * u.y + u.z * u.z;
+    uw2 = u.w * u.w;
   }
   // u and -u are the same rotation: the one with u_w >= 0 has theta in [0, pi].
   const Scalar sign = u.w < Scalar(0) ? Scalar(-1) : Scalar(1);
   const Vector3 uv(sign * u.x, sign * u.y, sign * u.z);
   const Scalar uw = sign * u.w;
-  const Scalar uv2 = uv.squaredNorm();
   So3Log<Scalar> out;
-  if (uv2 < Scalar(0.25 * ThresholdsOf<Scalar>::taylor_theta2) * (uw * uw)) {
+  if (uv2 < Scalar(0.25 * ThresholdsOf<Scalar>::taylor_theta2) * uw2) {
     // x^2 = tan^2(theta/2) < cutoff / 4: 4 x^2 is theta^2 to within the series' accuracy.
     const Scalar inv_w = Scalar(1) / uw;
     const Scalar x2 = uv2 * inv_w * inv_w;
@@ -231,7 +237,7 @@ class SO3 {
       Scalar m(0);
       for (int i = 0; i < 4; ++i)
         if (abs(c[i]) > m) m = abs(c[i]);
-      if (!(m > Scalar(0)) || !(m - m == Scalar(0))) return SO3();  // zero, or not finite
+      if (!(m > Scalar(0)) || !detail::all_finite(c)) return SO3();  // zero, or not finite (a NaN never wins m)
       c /= m;
       n2 = c.squaredNorm();
     }

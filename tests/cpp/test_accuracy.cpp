@@ -580,4 +580,77 @@ void scale_invariance() {
 TEST(ScaleInvariance, Double) { scale_invariance<double>(); }
 TEST(ScaleInvariance, Float) { scale_invariance<float>(); }
 
+// ---------------------------------------------------------------------------
+// At the scalars adjacent to pi: the two representable angles below T(pi),
+// T(pi) itself and the two above it (float pi = 3.14159274 lies above pi,
+// double pi below it), along the contract axes. The cases above stop at pi
+// and sample float only down to a gap of 5e-4, so these angles, where a
+// log built on acos or sqrt(1 - c^2) returns NaN, are checked here:
+// SO3 and SE3 exp against the oracle (their formulas have no branch at pi,
+// so the contract holds just past it), log of the rounded rotation a valid
+// answer with either axis sign (exp3(log R) = R to the contract, |w| at
+// most 4 eps past pi, as above), and SE3 log of the rounded motion to its
+// contract.
+template <typename T>
+void adjacent_to_pi() {
+  using SO3 = chasles::SO3<T>;
+  using SE3 = chasles::SE3<T>;
+  const ld tol = tolerance<T>(1e-15L), tol6 = tolerance<T>(2e-15L);
+  std::vector<T> angles = {T(kPi)};
+  for (int k = 0; k < 2; ++k) {
+    angles.insert(angles.begin(), std::nextafter(angles.front(), T(0)));
+    angles.push_back(std::nextafter(angles.back(), T(4)));
+  }
+  std::mt19937_64 rng(chasles_test::kSeed + 8);
+  Worst exp3_err, log_valid, angle_excess, exp6_rot, exp6_trans, log6_rot, log6_trans;
+  for (const T a : angles) {
+    for (const Vec3<T>& u : contract_axes<T>()) {
+      const Vec3<T> w = (a * u).eval();
+      const std::string at = str(w);
+      // exp, against the oracle.
+      exp3_err.update(max_abs(SO3::exp(w).matrix().template cast<ld>() - chasles_ref::exp3(w.template cast<ld>())), at);
+      // log of the rotation rounded to T: either sign, never NaN.
+      const Mat3<T> R = rounded_rotation<T>(w.template cast<ld>());
+      const Vec3<T> got = SO3::from_matrix_unchecked(R).log();
+      log_valid.update(max_abs(chasles_ref::exp3(got.template cast<ld>()) - R.template cast<ld>()), at);
+      angle_excess.update(std::max<ld>(0, angle_of(got) - kPi), at);
+      // SE3, with a translation of size 1e3 across the axis (largest (1/2)[w] v).
+      const Vec3<T> v = (T(1000) * u.cross(chasles_test::random_unit<T>(rng)).normalized()).eval();
+      Vec6<T> xi;
+      for (int i = 0; i < 3; ++i) {
+        xi[i] = v[i];
+        xi[i + 3] = w[i];
+      }
+      const M4 g = SE3::exp(xi).matrix().template cast<ld>();
+      const M4 ref = chasles_ref::exp6(xi.template cast<ld>());
+      exp6_rot.update(max_abs(M3(g.topLeftCorner<3, 3>() - ref.topLeftCorner<3, 3>())), str(xi));
+      exp6_trans.update(relative_error<T>(g.topRightCorner<3, 1>(), ref.topRightCorner<3, 1>()), str(xi));
+      const Mat4<T> gt = ref.template cast<T>();
+      const M4 gl = gt.template cast<ld>();
+      const V6 x = SE3::from_matrix_unchecked(gt).log().template cast<ld>();
+      V6 r = chasles_ref::log6(gl);
+      if (x.tail<3>().dot(r.tail<3>()) < 0) r = chasles_ref::log6_with_rotation(-r.tail<3>(), gl.topRightCorner<3, 1>());
+      log6_rot.update((x.tail<3>() - r.tail<3>()).cwiseAbs().maxCoeff(), str(xi));
+      log6_trans.update(relative_error<T>(x.head<3>(), r.head<3>()), str(xi));
+    }
+  }
+  report_t<T>("SO3 exp entrywise, angles adjacent to pi", exp3_err, tol);
+  report_t<T>("SO3 log valid, |exp(log R) - R|, adjacent to pi", log_valid, tol);
+  report_t<T>("SO3 log: |w| - pi, adjacent to pi", angle_excess, 4 * eps<T>());
+  report_t<T>("SE3 exp rotation, adjacent to pi", exp6_rot, tol6);
+  report_t<T>("SE3 exp translation relative, adjacent to pi", exp6_trans, tol6);
+  report_t<T>("SE3 log rotation (either sign), adjacent to pi", log6_rot, tol6);
+  report_t<T>("SE3 log translation relative, adjacent to pi", log6_trans, tol6);
+  EXPECT_LE(exp3_err.err, tol) << type_name<T>() << " at w = " << exp3_err.where;
+  EXPECT_LE(log_valid.err, tol) << type_name<T>() << " at w = " << log_valid.where;
+  EXPECT_LE(angle_excess.err, 4 * eps<T>()) << type_name<T>() << " at w = " << angle_excess.where;
+  EXPECT_LE(exp6_rot.err, tol6) << type_name<T>() << " at xi = " << exp6_rot.where;
+  EXPECT_LE(exp6_trans.err, tol6) << type_name<T>() << " at xi = " << exp6_trans.where;
+  EXPECT_LE(log6_rot.err, tol6) << type_name<T>() << " at xi = " << log6_rot.where;
+  EXPECT_LE(log6_trans.err, tol6) << type_name<T>() << " at xi = " << log6_trans.where;
+}
+
+TEST(AdjacentToPi, Double) { adjacent_to_pi<double>(); }
+TEST(AdjacentToPi, Float) { adjacent_to_pi<float>(); }
+
 }  // namespace

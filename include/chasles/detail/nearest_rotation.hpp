@@ -169,11 +169,15 @@ EIGEN_DONT_INLINE Quaternion4<Scalar> clamped_quaternion_power_step(const Eigen:
 /// The nearest rotation to s M is that of M for every s > 0, so M is first
 /// scaled to a largest entry of 1: no product in N or in the sweeps can
 /// overflow or underflow, from entries of 1e-300 to 1e300.
+/// A non-finite M gives the identity (1, 0, 0, 0): a NaN in N would stop the
+/// sweeps at once and leave the choice of the largest diagonal entry to
+/// comparisons with NaN, an arbitrary axis.
 template <typename Scalar>
 inline Eigen::Matrix<Scalar, 4, 1> nearest_rotation_quaternion(const Eigen::Matrix<Scalar, 3, 3>& M_in) noexcept {
   using std::abs;
   using std::sqrt;
   constexpr int max_sweeps = 12;
+  if (!all_finite(M_in)) return Eigen::Matrix<Scalar, 4, 1>(Scalar(1), Scalar(0), Scalar(0), Scalar(0));
   Scalar m(0);
   for (int j = 0; j < 3; ++j)
     for (int i = 0; i < 3; ++i)
@@ -189,9 +193,16 @@ inline Eigen::Matrix<Scalar, 4, 1> nearest_rotation_quaternion(const Eigen::Matr
     for (int p = 0; p < 4; ++p)
       for (int q = p + 1; q < 4; ++q) off2 += A(p, q) * A(p, q);
     if (!(off2 > eps * eps * total2)) break;  // converged (or not finite)
+    bool rotated = false;
     for (int p = 0; p < 4; ++p) {
       for (int q = p + 1; q < 4; ++q) {
-        if (A(p, q) == Scalar(0)) continue;
+        // An entry below the rounding of its diagonal entries is left alone:
+        // with equal diagonal entries even a 1e-111 would call for a rotation
+        // by 45 degrees, which (repeated in every sweep, in both pairs of a
+        // matrix with two double eigenvalues: near rank-one M) mixes back the
+        // entries just zeroed and slows Jacobi to halving them per sweep.
+        if (!(abs(A(p, q)) > eps * (abs(A(p, p)) + abs(A(q, q))))) continue;
+        rotated = true;
         // The rotation in the (p, q) plane that zeroes A(p, q):
         // t = tan(phi) is the smaller root of t^2 + 2 zeta t - 1 = 0.
         const Scalar zeta = (A(q, q) - A(p, p)) / (Scalar(2) * A(p, q));
@@ -223,6 +234,7 @@ inline Eigen::Matrix<Scalar, 4, 1> nearest_rotation_quaternion(const Eigen::Matr
         }
       }
     }
+    if (!rotated) break;  // every entry negligible
   }
   int best = 0;
   for (int i = 1; i < 4; ++i)

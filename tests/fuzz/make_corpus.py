@@ -1,0 +1,213 @@
+"""Writes the seed corpus of the fuzz targets: tests/fuzz/corpus/<target>/.
+
+Each seed is the byte layout the target reads (see the top of each
+fuzz_*.cpp): one head byte (bit 0 set for float, the other bits the
+selector of fuzz_so3), then raw little-endian IEEE values. The seeds are the
+edge cases of the library's domain, in double and in float: 0, -0, the
+smallest subnormal and the smallest normal, 1e-300 (1e-30 in float), the
+Taylor cutoff, pi, just below pi, generic values, 1e300 (1e30), the largest
+finite value, inf and NaN; and the inputs on which fuzzing found bugs
+(found_*), so that the corpus run in ctest replays them.
+
+    python3 tests/fuzz/make_corpus.py      # (re)writes every seed
+
+Run it again after changing a layout (and delete the seeds it no longer
+writes). libFuzzer adds what it finds to a separate working directory
+(tests/fuzz/run.sh), never to these.
+"""
+
+import math
+import pathlib
+import struct
+import sys
+
+ROOT = pathlib.Path(__file__).resolve().parent / "corpus"
+
+TYPES = {
+    "double": {
+        "head": 0,
+        "fmt": "<d",
+        "tiny": 1e-300,
+        "huge": 1e300,
+        "max": sys.float_info.max,
+        "min": sys.float_info.min,
+        "denorm": 5e-324,
+        "eps": 2.0**-52,
+        "cutoff": 6.0554544523933395e-06,  # Thresholds<double>::taylor_theta2
+    },
+    "float": {
+        "head": 1,
+        "fmt": "<f",
+        "tiny": 1e-30,
+        "huge": 1e30,
+        "max": 3.4028234663852886e38,
+        "min": 1.1754943508222875e-38,
+        "denorm": 1.401298464324817e-45,
+        "eps": 2.0**-23,
+        "cutoff": 4.9215667e-03,  # Thresholds<float>::taylor_theta2
+    },
+}
+
+INF = math.inf
+NAN = math.nan
+
+
+def seed(ty, values, selector=0):
+    t = TYPES[ty]
+    out = bytes([t["head"] | (selector << 1)])
+    for v in values:
+        out += struct.pack(t["fmt"], v)
+    return out
+
+
+def rotation_vector_near_pi(gap):
+    s = (math.pi - gap) / math.sqrt(3.0)
+    return [s, s, s]
+
+
+def so3_seeds(ty):
+    t = TYPES[ty]
+    r = math.sqrt(t["cutoff"])  # |w|^2 at the Taylor cutoff
+    q_near_pi = [1e-9, 1.0, 1.0, 0.0]
+    cases = {
+        "zero": [0.0] * 8,
+        "negative_zero": [-0.0] * 8,
+        "denormal": [t["denorm"]] * 8,
+        "smallest_normal": [t["min"]] * 8,
+        "tiny": [t["tiny"], 0, 0] + [1.0, t["tiny"], 0, 0] + [0.5],
+        "taylor_cutoff": [r, 0, 0] + [1.0, r / 2, 0, 0] + [1.0],
+        "generic": [0.1, -0.2, 0.3] + [0.9, 0.1, 0.2, 0.3] + [0.5],
+        "pi": [math.pi, 0, 0] + [0.0, 1.0, 0, 0] + [1.0],
+        "near_pi": rotation_vector_near_pi(1e-9) + q_near_pi + [0.25],
+        "pi_minus_eps": rotation_vector_near_pi(8 * t["eps"]) + [t["eps"], 0, 1.0, 1.0] + [0.0],
+        "huge": [t["huge"], -t["huge"], t["huge"]] + [t["huge"], 0, -t["huge"], 0] + [t["huge"]],
+        "max": [t["max"]] * 3 + [t["max"], -t["max"], t["max"], 0] + [t["max"] / 4],
+        "inf": [INF, 0, 0] + [INF, 1.0, 0, 0] + [-INF],
+        "nan": [NAN, 0, 0] + [NAN, 1.0, 0, 0] + [NAN],
+    }
+    seeds = {name: seed(ty, v, selector=3 * i % 27) for i, (name, v) in enumerate(cases.items())}
+    if ty == "float":
+        # from_quaternion of (NaN, 2.2e-38, 0, 0) was a matrix of NaN.
+        seeds["found_nan_quaternion"] = seed(ty, [1.3557036e-34, 0, 0, NAN, 2.23623006e-38, 0, 0, 0], 113 % 128)
+    return seeds
+
+
+def matrix_rows(rows):
+    return [x for row in rows for x in row]
+
+
+def matrix_seeds(ty):
+    t = TYPES[ty]
+    tol = math.sqrt(t["eps"])  # rotation_tolerance: one entry off by d gives defect ~2d
+    c, s = math.cos(0.7), math.sin(0.7)
+    I4 = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]
+
+    def with_entry(i, j, v, base=I4):
+        rows = [list(r) for r in base]
+        rows[i][j] = v
+        return rows
+
+    cases = {
+        "zero": [0.0] * 16,
+        "negative_zero": [-0.0] * 16,
+        "denormal": [t["denorm"]] * 16,
+        "tiny": matrix_rows([[t["tiny"], 0, 0, 1], [0, t["tiny"], 0, 2], [0, 0, t["tiny"], 3], [0, 0, 0, 1]]),
+        "identity": matrix_rows(I4),
+        "rotation": matrix_rows([[c, -s, 0, 1.5], [s, c, 0, -2], [0, 0, 1, 300], [0, 0, 0, 1]]),
+        "pi_about_x": matrix_rows([[1, 0, 0, 0], [0, -1, 0, 0], [0, 0, -1, 0], [0, 0, 0, 1]]),
+        "reflection": matrix_rows([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, -1, 0], [0, 0, 0, 1]]),
+        "just_below_tolerance": matrix_rows(with_entry(0, 0, 1 + 0.45 * tol)),
+        "just_above_tolerance": matrix_rows(with_entry(0, 0, 1 + 0.55 * tol)),
+        "bottom_row_off": matrix_rows(with_entry(3, 0, 2 * tol)),
+        "rank_one": matrix_rows([[0, 0, 0, 0], [1, 1e-4, 0, 0], [0, 0, 0, 0], [0, 0, 0, 1]]),
+        "huge": matrix_rows([[t["huge"], -t["huge"], 0, t["huge"]], [0, t["huge"], 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]),
+        "max": [t["max"]] * 16,
+        "inf": matrix_rows(with_entry(1, 2, INF)),
+        "nan": matrix_rows(with_entry(2, 1, NAN)),
+    }
+    seeds = {name: seed(ty, v) for name, v in cases.items()}
+    if ty == "float":
+        # Projection of a matrix with a NaN off the diagonal was a rotation by pi.
+        seeds["found_projection_nan"] = seed(ty, matrix_rows([[-1e36, NAN, 8e-41, 0], [0] * 4, [0] * 4, [0] * 4]))
+        # SO3/SE3 log: the power step's squares overflowed (SE3 log was NaN).
+        seeds["found_log_power_step"] = seed(
+            ty,
+            matrix_rows(
+                [
+                    [2.77554664e-17, -1.76425811e19, -0.421568602, 9.49981268e14],
+                    [9.51492224e14, 6.82488404e-41, 0, 0],
+                    [0] * 4,
+                    [0] * 4,
+                ]
+            ),
+        )
+    else:
+        # Near rank-one: the projection's Jacobi sweeps stalled (42 eps off the nearest).
+        seeds["found_projection_rank_one"] = seed(
+            ty,
+            matrix_rows(
+                [
+                    [1.6645368047779101e-318, 5.5735492686032133e-308, -5.9800821663297637e197, 1.3852388524180133e-309],
+                    [-1.4044477619381828e308, -5.4861240687937606e303, 5.3049894774131808e-313, 1.9427338064412617e-317],
+                    [1.2598673968951787e-321, 0, 0, 0],
+                    [0, 0, 0, 0],
+                ]
+            ),
+        )
+    return seeds
+
+
+def se3_seeds(ty):
+    t = TYPES[ty]
+    r = math.sqrt(t["cutoff"])
+    # Layout: xi = (v, w) (6), q (4), p (3), screw point (3), direction (3), pitch, magnitude, t.
+    generic_screw = [1.0, -2.0, 3.0] + [0.0, 0.0, 1.0] + [0.5, 0.75]
+    small_w = 1e-10 if ty == "double" else 1e-5
+    cases = {
+        "zero": [0.0] * 22,
+        "negative_zero": [-0.0] * 22,
+        "denormal": [t["denorm"]] * 22,
+        "tiny": [t["tiny"]] * 6 + [1.0, 0, 0, 0] + [t["tiny"]] * 3 + generic_screw + [0.5],
+        "taylor_cutoff": [1.0, 2.0, 3.0, r, 0, 0] + [1.0, r / 2, 0, 0] + [1.0, 2.0, 3.0] + generic_screw + [1.0],
+        "generic": [0.1, 0.2, 0.3, 0.0, 0.0, math.pi / 2] + [0.9, 0.1, 0.2, 0.3] + [1.0, -2.0, 3.0]
+        + generic_screw + [0.5],
+        "pi": [1.0, 2.0, 3.0, math.pi, 0, 0] + [0.0, 1.0, 0, 0] + [0, 0, 0] + generic_screw + [1.0],
+        "near_pi": [100.0, -50.0, 1.0] + rotation_vector_near_pi(1e-9) + [1e-9, 1.0, 1.0, 0.0] + [5.0, 0, 0]
+        + generic_screw + [0.0],
+        "pure_translation": [1.0, 2.0, 3.0, 0, 0, 0] + [1.0, 0, 0, 0] + [1e6, 0, 0] + [0, 0, 0, 1.0, 0, 0]
+        + [INF, 2.0] + [0.5],
+        "large_translation_small_rotation": [t["huge"], -t["huge"], 1.0, t["tiny"], 0, 0] + [1.0, 0, 0, 0]
+        + [t["huge"], 0, 0] + generic_screw + [1.0],
+        # A screw axis at 0.45 of the largest finite distance, pitch 0.45 of it
+        # (was taken as a pure translation: the finiteness test summed them).
+        "screw_near_max": [0.45 * t["max"] * small_w, 0.45 * t["max"] * small_w, -0.45 * t["max"] * small_w,
+                           small_w, 0, 0] + [1.0, 0, 0, 0] + [0, 0, 0] + generic_screw + [0.5],
+        "huge": [t["huge"]] * 6 + [t["huge"], 0, 0, 0] + [t["huge"]] * 3 + [t["huge"]] * 8 + [t["huge"]],
+        "max": [t["max"]] * 22,
+        "inf": [INF] * 6 + [1.0, 0, 0, 0] + [0, 0, 0] + [0, 0, 0, 0, 0, 1.0, INF, 1.0] + [INF],
+        "nan": [NAN] * 22,
+    }
+    seeds = {name: seed(ty, v) for name, v in cases.items()}
+    if ty == "float":
+        # from_screw of a direction of size 1.5e26 gave the zero twist.
+        seeds["found_screw_large_direction"] = seed(
+            ty, [1.54142831e-44] + [0] * 15 + [0, 0, -1.54742505e26] + [-1.30320757e-43, 8388704, 9.14963819e-41]
+        )
+    return seeds
+
+
+def main():
+    makers = {"fuzz_so3": so3_seeds, "fuzz_matrix": matrix_seeds, "fuzz_se3": se3_seeds}
+    for target, make in makers.items():
+        folder = ROOT / target
+        folder.mkdir(parents=True, exist_ok=True)
+        count = 0
+        for ty in TYPES:
+            for name, data in make(ty).items():
+                (folder / f"{ty}_{name}").write_bytes(data)
+                count += 1
+        print(f"{target}: {count} seeds in {folder.relative_to(ROOT.parent.parent.parent)}")
+
+
+if __name__ == "__main__":
+    main()
