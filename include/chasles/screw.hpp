@@ -87,8 +87,10 @@ template <typename Scalar>
 inline void pair_of_screw(const Eigen::Matrix<Scalar, 3, 1>& q, const Eigen::Matrix<Scalar, 3, 1>& d,
                           const Scalar& pitch, const Scalar& magnitude, Eigen::Matrix<Scalar, 3, 1>& l,
                           Eigen::Matrix<Scalar, 3, 1>& m) noexcept {
-  Scalar norm;
-  Eigen::Matrix<Scalar, 3, 1> u;
+  // (Initialized although norm_and_direction sets both whenever it returns
+  // true: GCC's -Wmaybe-uninitialized cannot see that at -O3.)
+  Scalar norm(0);
+  Eigen::Matrix<Scalar, 3, 1> u = Eigen::Matrix<Scalar, 3, 1>::Zero();
   if (!norm_and_direction(d, norm, u)) {
     l.setZero();
     m.setZero();

@@ -8,12 +8,13 @@
 #include <random>
 #include <vector>
 
-#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include <chasles/chasles.hpp>
 
 #include "support/format.hpp"
+#include "support/reference.hpp"
 #include "support/samples.hpp"
 
 namespace {
@@ -164,21 +165,17 @@ TEST(FuzzRegression, FromScrewNormalizesAnyDirectionDouble) { from_screw_normali
 // slowed convergence to halving per sweep: after the 12 sweeps the result
 // missed the largest tr(R^T M) by 42 eps |M| (a rotation off by 1e-7), and
 // for M10 = 1, M11 ~ 1e-4, M02 ~ 1e-100 by up to 1e8 eps (2e-4 rad).
-// Checked: tr(P^T M) reaches the largest eigenvalue of Horn's N(M) (long
-// double, Eigen's SelfAdjointEigenSolver) to 16 eps sum |M_ij|.
+// Checked: tr(P^T M) reaches the largest tr(R^T M), that of the long double
+// oracle's nearest rotation (support/reference.hpp: the top eigenvector of
+// Horn's N(M)), to 16 eps sum |M_ij|.
 template <typename T>
 long double trace_deficit_in_eps(const Mat3<T>& M) {
   using LD = long double;
   const Eigen::Matrix<LD, 3, 3> Ml = M.template cast<LD>();
-  Eigen::Matrix<LD, 4, 4> N;
-  const LD t = Ml.trace();
-  N(0, 0) = t;
-  N(0, 1) = N(1, 0) = Ml(2, 1) - Ml(1, 2);
-  N(0, 2) = N(2, 0) = Ml(0, 2) - Ml(2, 0);
-  N(0, 3) = N(3, 0) = Ml(1, 0) - Ml(0, 1);
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) N(1 + i, 1 + j) = Ml(i, j) + Ml(j, i) - (i == j ? t : LD(0));
-  const LD best = Eigen::SelfAdjointEigenSolver<Eigen::Matrix<LD, 4, 4>>(N, Eigen::EigenvaluesOnly).eigenvalues()[3];
+  // The largest tr(R^T M) is tr(R(q)^T M) for the oracle's nearest quaternion.
+  const Eigen::Matrix<LD, 4, 1> q = chasles_ref::nearest_quaternion(Ml);
+  const Eigen::Matrix<LD, 3, 3> Q = Eigen::Quaternion<LD>(q[0], q[1], q[2], q[3]).toRotationMatrix();
+  const LD best = (Q.transpose() * Ml).trace();
   const Eigen::Matrix<LD, 3, 3> P = chasles::SO3<T>::from_matrix_projected(M).matrix().template cast<LD>();
   return (best - (P.transpose() * Ml).trace()) / (LD(std::numeric_limits<T>::epsilon()) * Ml.cwiseAbs().sum());
 }

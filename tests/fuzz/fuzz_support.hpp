@@ -65,6 +65,22 @@ const char* type_name() {
   return sizeof(T) == sizeof(float) ? "float" : "double";
 }
 
+/// The SO3 exp contract (README, "Accuracy"): every entry within 1e-15 of
+/// the exact rotation in double, the same number of ulps in float.
+template <typename T>
+constexpr LD exp_contract() {
+  return LD(1e-15) * eps<T>() / eps<double>();
+}
+
+/// The largest rotation defect max(|M^T M - I|, |det M - 1|) of a matrix
+/// whose entries are within e of a rotation Q, M = Q + E: (Q^T E)_ij is at
+/// most sqrt(3) e (a column of Q is a unit vector), so
+/// |M^T M - I| <= 2 sqrt(3) e + 3 e^2, and det M - 1 = tr(Q^T E) + O(e^2)
+/// with |tr(Q^T E)| <= 3 sqrt(3) e. The defects checked on fuzzed inputs
+/// are bounded this way from an entrywise contract, not from what a few
+/// samples happen to show.
+inline LD defect_bound(LD e) { return 3 * std::sqrt(LD(3)) * e + 9 * e * e; }
+
 // ---------------------------------------------------------------------------
 // Input domains.
 
