@@ -9,7 +9,6 @@
 #include <cstdio>
 #include <limits>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -17,36 +16,17 @@
 
 #include <chasles/chasles.hpp>
 
+#include "support/format.hpp"
 #include "support/samples.hpp"
 
 namespace {
 
-template <typename T>
-using Vec3 = Eigen::Matrix<T, 3, 1>;
-template <typename T>
-using Vec6 = Eigen::Matrix<T, 6, 1>;
-template <typename T>
-using Mat3 = Eigen::Matrix<T, 3, 3>;
-template <typename T>
-using Mat4 = Eigen::Matrix<T, 4, 4>;
-
-template <typename T>
-const char* type_name() {
-  return sizeof(T) == sizeof(float) ? "float" : "double";
-}
-
-template <typename Derived>
-std::string str(const Eigen::MatrixBase<Derived>& x) {
-  std::ostringstream os;
-  os.precision(std::numeric_limits<typename Derived::Scalar>::max_digits10);
-  os << "[";
-  for (Eigen::Index i = 0; i < x.rows(); ++i) {
-    for (Eigen::Index j = 0; j < x.cols(); ++j) os << (j ? " " : "") << x(i, j);
-    if (i + 1 < x.rows()) os << "; ";
-  }
-  os << "]";
-  return os.str();
-}
+using chasles_test::Mat3;
+using chasles_test::Mat4;
+using chasles_test::Vec3;
+using chasles_test::Vec6;
+using chasles_test::str;
+using chasles_test::type_name;
 
 /// Counts the inputs of one operation whose output is not finite, and
 /// keeps the first of them.

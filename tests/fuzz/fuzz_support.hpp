@@ -30,6 +30,8 @@
 
 #include <chasles/constants.hpp>
 
+#include "support/format.hpp"  // tests/cpp/support
+
 namespace chasles_fuzz {
 
 using LD = long double;
@@ -237,26 +239,7 @@ class Bytes {
 // ---------------------------------------------------------------------------
 // Checks and the figures they report.
 
-template <typename Derived>
-std::string str(const Eigen::MatrixBase<Derived>& x) {
-  std::ostringstream os;
-  os.precision(std::numeric_limits<typename Derived::Scalar>::max_digits10);
-  os << "[";
-  for (Eigen::Index i = 0; i < x.rows(); ++i) {
-    for (Eigen::Index j = 0; j < x.cols(); ++j) os << (j ? " " : "") << x(i, j);
-    if (i + 1 < x.rows()) os << "; ";
-  }
-  os << "]";
-  return os.str();
-}
-
-template <typename T, typename = typename std::enable_if<std::is_floating_point<T>::value>::type>
-std::string str(T x) {
-  std::ostringstream os;
-  os.precision(std::numeric_limits<T>::max_digits10);
-  os << x;
-  return os.str();
-}
+using chasles_test::str;  // vectors, matrices and scalars, round-trip digits
 
 /// Aborts with the property and the input when `ok` is false; `describe`
 /// (called only then) names the input.

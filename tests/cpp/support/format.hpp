@@ -1,10 +1,11 @@
 // Test support: the fixed-size aliases, machine epsilon and printing shared
-// by the accuracy and threshold suites (their reports name the worst input).
+// by the C++ suites and the fuzz targets (their reports name the input).
 #pragma once
 
 #include <limits>
 #include <sstream>
 #include <string>
+#include <type_traits>
 
 #include <Eigen/Core>
 
@@ -31,14 +32,34 @@ const char* type_name() {
   return sizeof(T) == sizeof(float) ? "float" : "double";
 }
 
-/// A vector's entries with 21 significant digits: "(x, y, z)".
+/// The entries of a vector, "(x, y, z)", or of a matrix, row by row,
+/// "[a b c; d e f]", with the digits that round-trip their scalar type
+/// (21 for the long double references).
 template <typename Derived>
 std::string str(const Eigen::MatrixBase<Derived>& x) {
   std::ostringstream os;
-  os.precision(21);
-  os << "(";
-  for (Eigen::Index i = 0; i < x.size(); ++i) os << (i ? ", " : "") << static_cast<long double>(x(i));
-  os << ")";
+  os.precision(std::numeric_limits<typename Derived::Scalar>::max_digits10);
+  if (x.cols() == 1) {
+    os << "(";
+    for (Eigen::Index i = 0; i < x.size(); ++i) os << (i ? ", " : "") << x(i);
+    os << ")";
+    return os.str();
+  }
+  os << "[";
+  for (Eigen::Index i = 0; i < x.rows(); ++i) {
+    for (Eigen::Index j = 0; j < x.cols(); ++j) os << (j ? " " : "") << x(i, j);
+    if (i + 1 < x.rows()) os << "; ";
+  }
+  os << "]";
+  return os.str();
+}
+
+/// A scalar with the digits that round-trip its type.
+template <typename T, typename = typename std::enable_if<std::is_floating_point<T>::value>::type>
+std::string str(T x) {
+  std::ostringstream os;
+  os.precision(std::numeric_limits<T>::max_digits10);
+  os << x;
   return os.str();
 }
 
