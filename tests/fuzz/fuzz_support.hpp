@@ -30,7 +30,7 @@
 
 #include <chasles/constants.hpp>
 
-#include "support/format.hpp"  // tests/cpp/support
+#include "support/format.hpp"  // tests/cpp/support: aliases, eps, str
 
 namespace chasles_fuzz {
 
@@ -46,21 +46,14 @@ constexpr LD kProj = 16;
 constexpr LD kPiMargin = 16;
 constexpr LD kPi = 3.141592653589793238462643383279502884L;
 
-template <typename T>
-using Vec3 = Eigen::Matrix<T, 3, 1>;
+using chasles_test::eps;  // eps, the fixed-size aliases and str: tests/cpp/support/format.hpp
+using chasles_test::str;
+using chasles_test::Mat3;
+using chasles_test::Mat4;
+using chasles_test::Vec3;
+using chasles_test::Vec6;
 template <typename T>
 using Vec4 = Eigen::Matrix<T, 4, 1>;
-template <typename T>
-using Vec6 = Eigen::Matrix<T, 6, 1>;
-template <typename T>
-using Mat3 = Eigen::Matrix<T, 3, 3>;
-template <typename T>
-using Mat4 = Eigen::Matrix<T, 4, 4>;
-
-template <typename T>
-constexpr LD eps() {
-  return static_cast<LD>(std::numeric_limits<T>::epsilon());
-}
 
 template <typename T>
 const char* type_name() {
@@ -239,7 +232,6 @@ class Bytes {
 // ---------------------------------------------------------------------------
 // Checks and the figures they report.
 
-using chasles_test::str;  // vectors, matrices and scalars, round-trip digits
 
 /// Aborts with the property and the input when `ok` is false; `describe`
 /// (called only then) names the input.

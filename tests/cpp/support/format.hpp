@@ -22,7 +22,7 @@ using Mat4 = Eigen::Matrix<T, 4, 4>;
 
 /// T's machine epsilon, in long double.
 template <typename T>
-long double eps() {
+constexpr long double eps() {
   return static_cast<long double>(std::numeric_limits<T>::epsilon());
 }
 
