@@ -186,14 +186,14 @@ def kinematics_table(rep: int) -> None:
         Slist = np.concatenate([screws[:, 3:], screws[:, :3]], axis=1).T.copy()
         if mr is not None:  # same pose, and the same Jacobian up to the (w, v) order of its rows
             try:
-                assert np.allclose(mr.FKinSpace(UR5_HOME, Slist, th), arm.forward(th).as_matrix(), atol=1e-9)
+                assert np.allclose(mr.FKinSpace(UR5_HOME, Slist, th), arm.forward(th), atol=1e-9)
                 Jmr = mr.JacobianSpace(Slist, th)
                 assert np.allclose(np.vstack([Jmr[3:], Jmr[:3]]), arm.jacobian_space(th), atol=1e-9)
             except Exception as e:  # noqa: BLE001 - a peer's API drift must not stop the run
                 print(f"<!-- modern_robotics skipped: {e!r} -->", file=sys.stderr)
                 mr = None
         if expm is not None:
-            assert np.allclose(expm_forward(expm, screws, UR5_HOME, th), arm.forward(th).as_matrix(), atol=1e-9)
+            assert np.allclose(expm_forward(expm, screws, UR5_HOME, th), arm.forward(th), atol=1e-9)
             assert np.allclose(expm_jacobian_space(expm, screws, th), arm.jacobian_space(th), atol=1e-9)
         ops = {
             "forward": (lambda: arm.forward(TH), lambda: arm.forward(th), {

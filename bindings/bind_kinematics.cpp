@@ -3,11 +3,15 @@
 // serial chain of up to 32 joints.
 #include <chasles/kinematics.hpp>
 
+#include <limits>
+#include <optional>
 #include <string>
 
 #include "bindings.hpp"
 #include "conventions.hpp"
 #include "convert.hpp"
+#include "numpy_capi.hpp"
+#include "ufunc.hpp"
 
 namespace chasles_py {
 
@@ -27,13 +31,15 @@ configuration in the base frame, one row (v, w) per joint, linear part first)
 and its home pose M = g(0); it keeps the body screws B_i = Ad_{M^-1} S_i.
 Revolute joints about the axis through q along w have the screw
 (-w x q, w) (``Chain.revolute_screw``), prismatic joints along v the screw
-(v, 0) (``Chain.prismatic_screw``). At most 32 joints.
+(v, 0) (``Chain.prismatic_screw``). At most 32 joints. Its methods
+forward, forward_body, jacobian_space and jacobian_body are array
+functions: joint positions of shape (..., n) in, arrays out.
 
 Example:
     >>> screws = [Chain.revolute_screw([0, 0, 1], [0, 0, 0]),
     ...           Chain.revolute_screw([0, 0, 1], [1, 0, 0])]
     >>> arm = Chain(screws, SE3(translation=[2.0, 0.0, 0.0]))
-    >>> np.round(arm.forward([np.pi / 2, 0.0]).translation(), 12) + 0.0
+    >>> np.round(arm.forward([np.pi / 2, 0.0])[:3, 3], 12) + 0.0
     array([0., 2., 0.])
     >>> arm.jacobian_space([0.0, 0.0]).shape
     (6, 2)
@@ -81,61 +87,107 @@ ChainD::Screws screws_of(py::handle h) {
   return S;
 }
 
-/// Joint positions: shape (n,) (batch = false) or (N, n) (batch = true), finite.
-struct Thetas {
-  py::array a;
-  bool batch;
-  py::ssize_t count;
-};
+// ---- the product-of-exponentials ufuncs behind Chain's methods ----------------
+//
+// (n,6),(4,4),(n)->(4,4) for the poses, (n,6),(4,4),(n)->(6,n) for the
+// Jacobians: the space screws (one row (v, w) per joint), the home pose and
+// the joint positions. Chain's methods call them with the chain's own
+// screws and home pose, so numpy does the broadcasting, dtypes, out= and
+// GIL, as for every array function; the chain is built once per loop when
+// it stays put (the screws' and home's outer strides are 0).
 
-Thetas thetas_of(const ChainD& c, py::handle h, const char* what) {
-  Thetas t{as_float64_array(h, what), false, 1};
-  const py::ssize_t n = c.joints();
-  const std::string expected = "(" + std::to_string(n) + ",) or (N, " + std::to_string(n) + ")";
-  if (t.a.ndim() == 1 && t.a.shape(0) == n) return t;
-  if (t.a.ndim() == 2 && t.a.shape(1) == n) {
-    t.batch = true;
-    t.count = t.a.shape(0);
-    return t;
+enum class ChainOp { forward, forward_body, jacobian_space, jacobian_body };
+
+template <ChainOp Op>
+void chain_loop(char** args, const npy_intp* dims, const npy_intp* steps, void* /*data*/) noexcept {
+  const npy_intp count = dims[0], n = dims[1];  // numpy: the outer size, then the core sizes (n, 6, 4)
+  const npy_intp* core = steps + 4;             // S (n, 6), M (4, 4), theta (n), result (4, 4) or (6, n)
+  const auto at = [](const char* p, npy_intp i, npy_intp si, npy_intp j, npy_intp sj) {
+    return *reinterpret_cast<const double*>(p + i * si + j * sj);
+  };
+  const auto chain_at = [&](const char* S, const char* M) {
+    ChainD::Screws screws(6, n);
+    for (npy_intp i = 0; i < n; ++i)
+      for (npy_intp k = 0; k < 6; ++k) screws(k, i) = at(S, i, core[0], k, core[1]);
+    Matrix4 home;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) home(i, j) = at(M, i, core[2], j, core[3]);
+    return ChainD(screws, SE3d::from_matrix_unchecked(home));
+  };
+  const auto write = [&](char* out, int r, npy_intp c, double x) {
+    *reinterpret_cast<double*>(out + r * core[5] + c * core[6]) = x;
+  };
+  constexpr bool pose = Op == ChainOp::forward || Op == ChainOp::forward_body;
+  const npy_intp cols = pose ? 4 : n;
+  if (n < 1 || n > kMaxJoints) {  // only Chain calls these, with 1 <= n <= 32; never read past a chain
+    for (npy_intp e = 0; e < count; ++e)
+      for (int r = 0; r < (pose ? 4 : 6); ++r)
+        for (npy_intp c = 0; c < cols; ++c) write(args[3] + e * steps[3], r, c, std::numeric_limits<double>::quiet_NaN());
+    return;
   }
-  raise_value_error(std::string(what) + ": expected shape " + expected + " for a chain of " + std::to_string(n) +
-                    " joints, got " + array_shape(t.a));
+  const bool fixed = steps[0] == 0 && steps[1] == 0;
+  std::optional<ChainD> kept;
+  if (fixed && count > 0) kept.emplace(chain_at(args[0], args[1]));
+  ChainD::JointVector theta(n);
+  for (npy_intp e = 0; e < count; ++e) {
+    const ChainD chain = fixed ? *kept : chain_at(args[0] + e * steps[0], args[1] + e * steps[1]);
+    for (npy_intp j = 0; j < n; ++j) theta(j) = at(args[2] + e * steps[2], j, core[4], 0, 0);
+    char* out = args[3] + e * steps[3];
+    if constexpr (pose) {
+      const SE3d g = Op == ChainOp::forward ? chain.forward(theta) : chain.forward_body(theta);
+      const Matrix4 G = g.matrix();
+      for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) write(out, r, c, G(r, c));
+    } else {
+      const ChainD::Jacobian J = Op == ChainOp::jacobian_space ? chain.jacobian_space(theta) : chain.jacobian_body(theta);
+      for (int r = 0; r < 6; ++r)
+        for (npy_intp c = 0; c < n; ++c) write(out, r, c, J(r, c));
+    }
+  }
+  ufunc::clear_floating_point_flags();
 }
 
-ChainD::JointVector theta_at(const Thetas& t, py::ssize_t row, py::ssize_t n, const char* what) {
-  ChainD::JointVector th(n);
-  const char* data = static_cast<const char*>(t.a.data());
-  const py::ssize_t s0 = t.batch ? t.a.strides(0) : 0, s1 = t.a.strides(t.batch ? 1 : 0);
-  for (py::ssize_t j = 0; j < n; ++j) th(j) = *reinterpret_cast<const double*>(data + row * s0 + j * s1);
-  require_finite(th, what);
-  return th;
+/// Registers chain_loop<Op> as the private ufunc `name` (float64 only: the
+/// chain is).
+template <ChainOp Op>
+py::object chain_ufunc(py::module_& m, const char* name, const char* signature) {
+  static PyUFuncGenericFunction funcs[] = {&chain_loop<Op>};
+  static void* data[] = {nullptr};
+  static char types[] = {NPY_DOUBLE, NPY_DOUBLE, NPY_DOUBLE, NPY_DOUBLE};
+  PyObject* u = PyUFunc_FromFuncAndDataAndSignature(funcs, data, types, 1, 3, 1, PyUFunc_None, name,
+                                                    "A private ufunc of chasles.Chain.", 0, signature);
+  if (u == nullptr) throw py::error_already_set();
+  py::object ufunc = py::reinterpret_steal<py::object>(u);
+  m.attr(name) = ufunc;
+  return ufunc;
 }
 
-/// forward / forward_body: an SE3 for (n,), an (N, 4, 4) array for (N, n).
-template <typename F>
-py::object poses(const ChainD& c, py::handle theta, const char* what, F f) {
-  const Thetas t = thetas_of(c, theta, what);
-  const py::ssize_t n = c.joints();
-  if (!t.batch) return py::cast(f(theta_at(t, 0, n, what)));
-  const Py_intptr_t dims[3] = {t.count, 4, 4};
-  py::array_t<double> out = new_array(3, dims);
-  double* o = array_data(out);
-  for (py::ssize_t r = 0; r < t.count; ++r)
-    Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(o + 16 * r) = f(theta_at(t, r, n, what)).matrix();
+/// The chain's space screws, shape (n, 6), and home pose, shape (4, 4), as
+/// the ufuncs' first two operands.
+py::array screws_array(const ChainD& c) {
+  const Py_intptr_t dims[2] = {c.joints(), 6};
+  py::array_t<double> out = new_array(2, dims);
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor>>(array_data(out), c.joints(), 6) =
+      c.space_screws().transpose();
   return std::move(out);
 }
 
-/// jacobian_space / jacobian_body: (6, n) for (n,), (N, 6, n) for (N, n).
-template <typename F>
-py::array_t<double> jacobians(const ChainD& c, py::handle theta, const char* what, F f) {
-  const Thetas t = thetas_of(c, theta, what);
+/// Calls the chain ufunc u with the chain and theta: numpy's rules decide
+/// dtypes and broadcasting. The last axis of theta is checked here, so that
+/// the message names the method and n.
+py::object call_chain_ufunc(PyObject* u, const ChainD& c, py::handle theta, const char* what) {
   const py::ssize_t n = c.joints();
-  const Py_intptr_t dims3[3] = {t.count, 6, n};
-  py::array_t<double> out = t.batch ? new_array(3, dims3) : new_array(2, dims3 + 1);
-  double* o = array_data(out);
-  using RowMajor = Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::RowMajor>;
-  for (py::ssize_t r = 0; r < t.count; ++r) Eigen::Map<RowMajor>(o + 6 * n * r, 6, n) = f(theta_at(t, r, n, what));
-  return out;
+  const py::object operand = ufunc_operand(theta, what);
+  if (npy().PyArray_Check_(operand.ptr())) {
+    const auto a = py::reinterpret_borrow<py::array>(operand);
+    if (a.ndim() < 1 || a.shape(a.ndim() - 1) != n)
+      raise_value_error(std::string(what) + ": expected shape (" + std::to_string(n) + ",) or (..., " +
+                        std::to_string(n) + ") for a chain of " + std::to_string(n) + " joints, got " +
+                        shape_string(a.shape(), static_cast<int>(a.ndim())));
+  }
+  const py::array S = screws_array(c);
+  const py::array M = mat_out<4, 4>(c.home().matrix());
+  return call_ufunc<3>(u, what, {S.ptr(), M.ptr(), operand.ptr()});
 }
 
 Vector3 nonzero_vector(py::handle h, const char* what) {
@@ -147,6 +199,14 @@ Vector3 nonzero_vector(py::handle h, const char* what) {
 }  // namespace
 
 void bind_kinematics(py::module_& m) {
+  const py::object u_forward = chain_ufunc<ChainOp::forward>(m, "_chain_forward", "(n,6),(4,4),(n)->(4,4)");
+  const py::object u_forward_body =
+      chain_ufunc<ChainOp::forward_body>(m, "_chain_forward_body", "(n,6),(4,4),(n)->(4,4)");
+  const py::object u_jacobian_space =
+      chain_ufunc<ChainOp::jacobian_space>(m, "_chain_jacobian_space", "(n,6),(4,4),(n)->(6,n)");
+  const py::object u_jacobian_body =
+      chain_ufunc<ChainOp::jacobian_body>(m, "_chain_jacobian_body", "(n,6),(4,4),(n)->(6,n)");
+
   const std::string doc = class_doc();
   py::class_<ChainD> cls(m, "Chain", doc.c_str());
 
@@ -211,22 +271,26 @@ Example:
 
   cls.def(
       "forward",
-      [](Obj<ChainD> c_, ArrayLike theta) {
-        const ChainD& c = *c_;
-        return poses(c, theta.obj, "Chain.forward(theta)", [&c](const ChainD::JointVector& th) { return c.forward(th); });
+      [u_forward](Obj<ChainD> c, ArrayLike theta) {
+        return call_chain_ufunc(u_forward.ptr(), *c, theta.obj, "Chain.forward(theta)");
       },
       py::arg("theta"),
       R"doc(Forward kinematics, space form: g(theta) = exp([S_1] th_1) ... exp([S_n] th_n) M.
 
+An array function: theta of shape (n,) gives one result, (..., n) one per
+configuration, by the same numpy rules as every chasles array function
+(broadcasting, dtypes, the GIL released; a NaN gives NaN in its element).
+
 Args:
-    theta: shape (n,) or (N, n), joint positions (radians or lengths), finite.
+    theta: array_like of shape (..., n), joint positions (radians or lengths).
 
 Returns:
-    SE3 | numpy.ndarray: an SE3 for shape (n,); shape (N, 4, 4) for (N, n).
+    numpy.ndarray: shape (..., 4, 4), the homogeneous matrices of the tool
+    frame (``SE3.from_matrix_unchecked`` makes an SE3 of one).
 
 Example:
     >>> arm = Chain([Chain.prismatic_screw([1, 0, 0])], np.eye(4))
-    >>> arm.forward([0.5]).translation()
+    >>> arm.forward([0.5])[:3, 3]
     array([0.5, 0. , 0. ])
     >>> arm.forward([[0.5], [1.0]]).shape
     (2, 4, 4)
@@ -234,34 +298,34 @@ Example:
 
   cls.def(
       "forward_body",
-      [](Obj<ChainD> c_, ArrayLike theta) {
-        const ChainD& c = *c_;
-        return poses(c, theta.obj, "Chain.forward_body(theta)",
-                     [&c](const ChainD::JointVector& th) { return c.forward_body(th); });
+      [u_forward_body](Obj<ChainD> c, ArrayLike theta) {
+        return call_chain_ufunc(u_forward_body.ptr(), *c, theta.obj, "Chain.forward_body(theta)");
       },
       py::arg("theta"),
       R"doc(Forward kinematics, body form: g(theta) = M exp([B_1] th_1) ... exp([B_n] th_n).
 
 Equal to ``forward`` up to rounding.
 
+An array function: theta of shape (n,) gives one result, (..., n) one per
+configuration, by the same numpy rules as every chasles array function
+(broadcasting, dtypes, the GIL released; a NaN gives NaN in its element).
+
 Args:
-    theta: shape (n,) or (N, n), finite.
+    theta: array_like of shape (..., n).
 
 Returns:
-    SE3 | numpy.ndarray: an SE3 for shape (n,); shape (N, 4, 4) for (N, n).
+    numpy.ndarray: shape (..., 4, 4).
 
 Example:
     >>> arm = Chain([Chain.revolute_screw([0, 0, 1], [1, 0, 0])], np.eye(4))
-    >>> arm.forward_body([0.3]).is_approx(arm.forward([0.3]))
+    >>> np.allclose(arm.forward_body([0.3]), arm.forward([0.3]), rtol=0, atol=1e-15)
     True
 )doc");
 
   cls.def(
       "jacobian_space",
-      [](Obj<ChainD> c_, ArrayLike theta) {
-        const ChainD& c = *c_;
-        return jacobians(c, theta.obj, "Chain.jacobian_space(theta)",
-                         [&c](const ChainD::JointVector& th) { return c.jacobian_space(th); });
+      [u_jacobian_space](Obj<ChainD> c, ArrayLike theta) {
+        return call_chain_ufunc(u_jacobian_space.ptr(), *c, theta.obj, "Chain.jacobian_space(theta)");
       },
       py::arg("theta"),
       R"doc(The space Jacobian J_s: the spatial twist (g' g^-1)^vee = J_s theta'.
@@ -269,11 +333,15 @@ Example:
 Column i is Ad_{exp([S_1] th_1) ... exp([S_{i-1}] th_{i-1})} S_i; rows (v, w).
 J_s = Ad_g J_b.
 
+An array function: theta of shape (n,) gives one result, (..., n) one per
+configuration, by the same numpy rules as every chasles array function
+(broadcasting, dtypes, the GIL released; a NaN gives NaN in its element).
+
 Args:
-    theta: shape (n,) or (N, n), finite.
+    theta: array_like of shape (..., n).
 
 Returns:
-    numpy.ndarray: shape (6, n) for shape (n,); (N, 6, n) for (N, n).
+    numpy.ndarray: shape (..., 6, n).
 
 Example:
     >>> arm = Chain([Chain.revolute_screw([0, 0, 1], [0, 0, 0])], np.eye(4))
@@ -283,21 +351,23 @@ Example:
 
   cls.def(
       "jacobian_body",
-      [](Obj<ChainD> c_, ArrayLike theta) {
-        const ChainD& c = *c_;
-        return jacobians(c, theta.obj, "Chain.jacobian_body(theta)",
-                         [&c](const ChainD::JointVector& th) { return c.jacobian_body(th); });
+      [u_jacobian_body](Obj<ChainD> c, ArrayLike theta) {
+        return call_chain_ufunc(u_jacobian_body.ptr(), *c, theta.obj, "Chain.jacobian_body(theta)");
       },
       py::arg("theta"),
       R"doc(The body Jacobian J_b: the body twist (g^-1 g')^vee = J_b theta'.
 
 Column i is Ad_{(exp([B_{i+1}] th_{i+1}) ... exp([B_n] th_n))^-1} B_i; rows (v, w).
 
+An array function: theta of shape (n,) gives one result, (..., n) one per
+configuration, by the same numpy rules as every chasles array function
+(broadcasting, dtypes, the GIL released; a NaN gives NaN in its element).
+
 Args:
-    theta: shape (n,) or (N, n), finite.
+    theta: array_like of shape (..., n).
 
 Returns:
-    numpy.ndarray: shape (6, n) for shape (n,); (N, 6, n) for (N, n).
+    numpy.ndarray: shape (..., 6, n).
 
 Example:
     >>> arm = Chain([Chain.revolute_screw([0, 0, 1], [0, 0, 0])], SE3(translation=[1.0, 0.0, 0.0]))

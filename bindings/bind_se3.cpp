@@ -201,14 +201,15 @@ Returns:
     SE3: the composed motion.
 )doc");
 
+  // The action on points is the array function se3_act with this matrix:
+  // one rule for dtypes, broadcasting and the GIL.
   const auto act_points = [](const SE3d& g, ArrayLike points, const char* what) {
-    if (!is_native_float64_array(points.obj.ptr()) && is_bound_object(points.obj))
-      raise_type_error(std::string(what) + ": expected points of shape (3,) or (N, 3), got " + type_name(points.obj) +
+    if (!npy().PyArray_Check_(points.obj.ptr()) && is_bound_object(points.obj))
+      raise_type_error(std::string(what) + ": expected points of shape (..., 3), got " + type_name(points.obj) +
                        " (an SE3 composes with an SE3 by @; it acts on a Twist or a Wrench by g.act(x))");
-    return map_points(points.obj, what, [&g](const double* q, double* out) {
-      Eigen::Map<Vector3> image(out);
-      image = g.act(Vector3(Eigen::Map<const Vector3>(q)));
-    });
+    const py::array M = mat_out<4, 4>(g.matrix());
+    const py::object p = ufunc_operand(points.obj, what);
+    return call_array_function<2>("se3_act", what, {M.ptr(), p.ptr()});
   };
 
   cls.def(
@@ -216,11 +217,14 @@ Returns:
       py::arg("points"),
       R"doc(Action on points: q_a = R q_b + p.
 
+The array function se3_act with this motion: numpy's rules for dtypes
+and broadcasting.
+
 Args:
-    points: shape (3,) or (N, 3) (any leading axes).
+    points: array_like of shape (..., 3).
 
 Returns:
-    ndarray: the moved points, same shape.
+    ndarray: the moved points, shape (..., 3).
 )doc");
 
   cls.def(
@@ -228,11 +232,14 @@ Returns:
       py::arg("points"),
       R"doc(Action on points: q_a = R q_b + p (the same as ``g @ points``).
 
+The array function se3_act with this motion: numpy's rules for dtypes
+and broadcasting.
+
 Args:
-    points: shape (3,) or (N, 3) (any leading axes).
+    points: array_like of shape (..., 3).
 
 Returns:
-    ndarray: the moved points, same shape, float64.
+    ndarray: the moved points, shape (..., 3).
 
 Example:
     >>> g = SE3(translation=[1.0, 0.0, 0.0])
@@ -243,25 +250,18 @@ Example:
 
   cls.def(
       "act_inv",
-      [](Obj<SE3d> g_, ArrayLike points) {
-        const SE3d& g = *g_;
-        if (!is_native_float64_array(points.obj.ptr()) && is_bound_object(points.obj))
-          raise_type_error("SE3.act_inv(points): expected points of shape (3,) or (N, 3), got " +
-                           type_name(points.obj));
-        const SE3d inv = g.inverse();
-        return map_points(points.obj, "SE3.act_inv(points)", [&inv](const double* q, double* out) {
-          Eigen::Map<Vector3> image(out);
-          image = inv.act(Vector3(Eigen::Map<const Vector3>(q)));
-        });
-      },
+      [act_points](Obj<SE3d> g, ArrayLike points) { return act_points(g->inverse(), points, "SE3.act_inv(points)"); },
       py::arg("points"),
       R"doc(Inverse action on points: q_b = R^T (q_a - p), i.e. g^-1 @ q_a.
 
+The array function se3_act with g^-1: numpy's rules for dtypes and
+broadcasting.
+
 Args:
-    points: shape (3,) or (N, 3) (any leading axes).
+    points: array_like of shape (..., 3).
 
 Returns:
-    ndarray: same shape.
+    ndarray: shape (..., 3).
 )doc");
 
   cls.def(

@@ -182,14 +182,15 @@ Returns:
     SO3: the composed rotation.
 )doc");
 
+  // The action on points is the array function so3_act with this matrix:
+  // one rule for dtypes, broadcasting and the GIL.
   const auto act_points = [](const SO3d& R, ArrayLike points, const char* what) {
-    if (!is_native_float64_array(points.obj.ptr()) && is_bound_object(points.obj))
-      raise_type_error(std::string(what) + ": expected points of shape (3,) or (N, 3), got " + type_name(points.obj) +
+    if (!npy().PyArray_Check_(points.obj.ptr()) && is_bound_object(points.obj))
+      raise_type_error(std::string(what) + ": expected points of shape (..., 3), got " + type_name(points.obj) +
                        " (an SO3 composes only with an SO3)");
-    return map_points(points.obj, what, [&R](const double* p, double* q) {
-      Eigen::Map<Vector3> image(q);
-      image = R.act(Eigen::Map<const Vector3>(p));
-    });
+    const py::array M = mat_out<3, 3>(R.matrix());
+    const py::object p = ufunc_operand(points.obj, what);
+    return call_array_function<2>("so3_act", what, {M.ptr(), p.ptr()});
   };
 
   cls.def(
@@ -197,11 +198,14 @@ Returns:
       py::arg("points"),
       R"doc(Action on points or vectors: p_a = R_ab @ p_b.
 
+The array function so3_act with this rotation: numpy's rules for
+dtypes and broadcasting.
+
 Args:
-    points: shape (3,) or (N, 3) (any leading axes).
+    points: array_like of shape (..., 3).
 
 Returns:
-    ndarray: the rotated points, same shape.
+    ndarray: the rotated points, shape (..., 3).
 )doc");
 
   cls.def(
@@ -209,11 +213,14 @@ Returns:
       py::arg("points"),
       R"doc(Action on points or vectors: p_a = R_ab p_b (the same as ``R @ points``).
 
+The array function so3_act with this rotation: numpy's rules for
+dtypes and broadcasting.
+
 Args:
-    points: shape (3,) or (N, 3) (any leading axes).
+    points: array_like of shape (..., 3).
 
 Returns:
-    ndarray: the rotated points, same shape, float64.
+    ndarray: the rotated points, shape (..., 3).
 
 Example:
     >>> R = SO3.exp([0.0, 0.0, np.pi])

@@ -15,8 +15,8 @@
 //   finite numbers, got [nan, 0.0, 0.0]".
 // - `to_real(obj, what)`: a Python float or int, a numpy real scalar or 0-d
 //   array, or any object with __float__ (not complex), as a double.
-// - `map_points(obj, what, f)`: f applied to every point of a (3,) or (..., 3)
-//   array-like, into a new array of the same shape (GIL released when large).
+// - `call_array_function(name, what, args)`: an array function (a numpy
+//   generalized ufunc) called from C++, its errors naming `what`.
 // - `new_array(nd, dims)`, `vec_out(v)`, `mat_out(M)`: new C-contiguous
 //   float64 arrays, built with numpy's C API directly (no shape vectors).
 // - Argument types whose conversion (and error) happens in the function body,
@@ -31,6 +31,7 @@
 // `what` is the argument as the user wrote it, e.g. "SO3.exp(w)".
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -524,54 +525,43 @@ inline py::array_t<double> mat_out(const Eigen::Matrix<double, R, C>& m) {
   return a;
 }
 
-/// Applies `f(const double* p, double* q)` (q = image of the 3-vector p) to
-/// every point of an array-like of shape (3,) or (..., 3) and returns a new
-/// array of the same shape. Rows are read with the input's strides; the GIL
-/// is released for large inputs (f must not touch Python objects).
-template <typename F>
-inline py::array_t<double> map_points(py::handle h, const char* what, const F& f) {
-  PyObject* o = h.ptr();
-  if (!is_native_float64_array(o)) {
-    Eigen::Matrix<double, 3, 1> p;
-    if (read_flat_sequence<3>(o, p)) {
-      const Py_intptr_t dims[1] = {3};
-      py::array_t<double> out = new_array(1, dims);
-      f(p.data(), array_data(out));
-      return out;
-    }
+/// Calls the ufunc u with the operands: numpy's rules decide dtypes,
+/// broadcasting and the GIL, as for a call from Python. An error is
+/// re-raised with `what` (the call as the user wrote it, e.g. "SO3 @
+/// points") before numpy's text, chained.
+template <std::size_t N>
+inline py::object call_ufunc(PyObject* u, const char* what, const std::array<PyObject*, N>& args) {
+  PyObject* r = PyObject_Vectorcall(u, args.data(), N, nullptr);
+  if (r == nullptr) {
+    py::error_already_set e;
+    raise_conversion_error(e, what);
   }
-  // (Not a default-constructed py::array: that allocates an empty ndarray.)
-  py::array a = is_native_float64_array(o) ? py::reinterpret_borrow<py::array>(h) : as_float64_array(h, what);
-  const int nd = static_cast<int>(a.ndim());
-  if (nd < 1 || a.shape(nd - 1) != 3) {
-    raise_value_error(std::string(what) + ": expected shape (3,) or (N, 3), got " + shape_string(a.shape(), nd));
+  return py::reinterpret_steal<py::object>(r);
+}
+
+/// An operand for a ufunc called from C++: an array of another library that
+/// implements __array_ufunc__ (dask) as it is, so that numpy dispatches to
+/// it; anything else through numpy.asarray (a subclass such as a masked
+/// array or np.matrix becomes its base ndarray, as the objects read every
+/// array argument), its failure re-raised naming `what`.
+inline py::object ufunc_operand(py::handle x, const char* what) {
+  const auto& api = npy();
+  if (!api.PyArray_Check_(x.ptr()) && py::hasattr(x, "__array_ufunc__") && !x.attr("__array_ufunc__").is_none())
+    return py::reinterpret_borrow<py::object>(x);
+  PyObject* a = api.PyArray_FromAny_(x.ptr(), nullptr, 0, 0, py::detail::npy_api::NPY_ARRAY_ENSUREARRAY_, nullptr);
+  if (a == nullptr) {
+    py::error_already_set e;
+    raise_conversion_error(e, std::string(what) + ": could not convert " + type_name(x) + " to an array");
   }
-  if (nd > 2) {
-    static PyObject* ascontiguousarray = numpy_attr("ascontiguousarray");
-    a = py::reinterpret_steal<py::array>(py::reinterpret_borrow<py::object>(ascontiguousarray)(a).release());
-  }
-  py::array_t<double> out = new_array(nd, a.shape());
-  double* q = array_data(out);
-  const auto* in = py::detail::array_proxy(a.ptr());
-  const char* data = in->data;
-  const Py_intptr_t n = nd == 1 ? 1 : static_cast<Py_intptr_t>(a.size() / 3);
-  const Py_intptr_t row_stride = nd == 1 ? 0 : (nd == 2 ? in->strides[0] : Py_intptr_t(3 * sizeof(double)));
-  const Py_intptr_t col_stride = in->strides[nd - 1];
-  auto run = [&]() {
-    double p[3];
-    for (Py_intptr_t k = 0; k < n; ++k) {
-      const char* row = data + k * row_stride;
-      for (int j = 0; j < 3; ++j) std::memcpy(&p[j], row + j * col_stride, sizeof(double));
-      f(p, q + 3 * k);
-    }
-  };
-  if (n >= 4096) {
-    py::gil_scoped_release release;
-    run();
-  } else {
-    run();
-  }
-  return out;
+  return py::reinterpret_steal<py::object>(a);
+}
+
+/// call_ufunc with the array function `name` of chasles._core.
+template <std::size_t N>
+inline py::object call_array_function(const char* name, const char* what, const std::array<PyObject*, N>& args) {
+  static PyObject* const core = py::module_::import("chasles._core").release().ptr();  // kept for the process
+  const py::object ufunc = py::reinterpret_borrow<py::object>(core).attr(name);
+  return call_ufunc<N>(ufunc.ptr(), what, args);
 }
 
 /// numpy's __array__ protocol for an object whose value lives in C++:

@@ -25,7 +25,7 @@ home = SE3(translation=[l1 + l2, 0.0, h])  # the tool frame at theta = 0
 arm = Chain(screws, home)
 
 theta = np.array([0.3, -0.8, 0.1, 1.2])
-g = arm.forward(theta)
+g = SE3.from_matrix(arm.forward(theta))  # forward is an array function: a 4x4 matrix
 print("tool pose at theta =", theta, "\n", np.round(g.as_matrix(), 6))
 
 # The closed form of a SCARA: planar 2R position, the quill's depth, and a
@@ -42,7 +42,8 @@ assert np.allclose(g.rotation().as_matrix(), Rz, atol=1e-14)
 theta_dot = np.array([0.2, -0.1, 0.05, 0.3])
 J = arm.jacobian_space(theta)  # (6, 4), rows (v, w)
 eps = 1e-6
-g_plus, g_minus = arm.forward(theta + eps * theta_dot), arm.forward(theta - eps * theta_dot)
+g_plus = SE3.from_matrix(arm.forward(theta + eps * theta_dot))
+g_minus = SE3.from_matrix(arm.forward(theta - eps * theta_dot))
 numeric = (g_plus @ g_minus.inverse()).log() / (2 * eps)  # log(g(t+e) g(t-e)^-1) / 2e
 print("spatial twist J_s theta' =", np.round(J @ theta_dot, 6))
 assert np.allclose(J @ theta_dot, numeric, atol=1e-8)
@@ -54,7 +55,7 @@ poses = arm.forward(thetas)  # (10000, 4, 4)
 radius = np.hypot(poses[:, 0, 3], poses[:, 1, 3])
 print(f"10000 configurations: the tool stays between {radius.min():.3f} and {radius.max():.3f} m")
 assert np.all(radius <= l1 + l2 + 1e-12) and np.all(radius >= abs(l1 - l2) - 1e-12)
-assert np.allclose(poses[0], arm.forward(thetas[0]).as_matrix())
+assert np.array_equal(poses[0], arm.forward(thetas[0]))
 # The body form gives the same poses.
 assert np.allclose(
     chasles.se3_inverse(poses[:5]) @ arm.forward_body(thetas[:5]), np.eye(4), atol=1e-13

@@ -5,8 +5,36 @@ Two layers over the same C++ kernels:
 
 - objects for one element: ``SO3``, ``SE3``, ``Twist``, ``Wrench`` and
   ``Screw``, with ``@`` for composition and action (``g @ h``, ``g @ p``);
-- array functions for batches, broadcasting over leading axes like
-  ``numpy.linalg``: ``so3_exp``, ``se3_log``, ``se3_compose``, ...
+- array functions for batches: ``so3_exp``, ``se3_log``, ``se3_compose``,
+  ... (and the methods of ``Chain``).
+
+The array functions are numpy generalized ufuncs over the C++ kernels, each
+with a core signature, ``so3_exp`` ``(3)->(3,3)``, ``se3_compose``
+``(4,4),(4,4)->(4,4)``, ``se3_act`` ``(4,4),(3)->(3)``, so numpy's own rules
+apply, as for ``np.matmul``:
+
+- the leading (batch) axes of the operands broadcast together; the trailing
+  (core) axes have the sizes of the signature, and a wrong one is a
+  ValueError naming the function and the sizes;
+- dtypes: each function has a float32 and a float64 kernel; numpy picks the
+  first to which every operand casts safely, so float32 (and float16, bool,
+  int8, int16, uint8, uint16) operands run in float32, float64 and wider
+  integers in float64, a mix of float32 and float64 in float64; Python
+  floats and ints do not change the dtype (NEP 50); complex, object, string
+  and long double arrays are a TypeError (``casting=`` and ``dtype=``
+  choose otherwise);
+- ``out=`` writes into the caller's array and returns it, ``axes=`` picks
+  the core axes, ``where=`` is not supported by generalized ufuncs;
+- the GIL is released during the loop, and arrays of other libraries that
+  implement ``__array_ufunc__`` dispatch: a dask array in gives a dask
+  array out, computed lazily chunk by chunk (its core axes in one chunk);
+- matrices are taken as given, like the C++ unchecked constructors (the
+  bottom row of a 4x4 pose is not read), and a NaN gives NaN in its own
+  element only.
+
+``so3_from_quat`` and ``so3_as_quat`` take ``scalar_first``, which a ufunc
+cannot: they are Python functions that pick one of two ufuncs and pass the
+other keywords on.
 
 Conventions (the same in C++, in README.md and in every docstring):
 
@@ -60,19 +88,18 @@ from chasles._core import (
     se3_interpolate,
     se3_inverse,
     se3_log,
+    se3_hat,
+    se3_vee,
     so3_act,
-    so3_as_quat,
     so3_compose,
     so3_exp,
-    so3_from_quat,
     so3_hat,
     so3_interpolate,
     so3_inverse,
     so3_log,
     so3_vee,
-    twist_hat,
-    twist_vee,
 )
+from chasles._arrays import so3_as_quat, so3_from_quat
 
 __all__ = [
     "Chain",
@@ -98,9 +125,11 @@ __all__ = [
     "se3_adjoint",
     "se3_compose",
     "se3_exp",
+    "se3_hat",
     "se3_interpolate",
     "se3_inverse",
     "se3_log",
+    "se3_vee",
     "so3_act",
     "so3_as_quat",
     "so3_compose",
@@ -111,6 +140,4 @@ __all__ = [
     "so3_inverse",
     "so3_log",
     "so3_vee",
-    "twist_hat",
-    "twist_vee",
 ]

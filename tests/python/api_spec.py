@@ -33,13 +33,16 @@ independently of the bindings:
   shape: ValueError); constructors refuse NaN and infinities (ValueError),
   functions that return the numbers given, rearranged (hat, vee, the
   actions on points), carry them through, and the defects are inf;
-- array functions (so3_*, se3_*, twist_*) take float32 and float64 arrays
-  as they are and convert bool and integer arrays to float64; float16,
-  longdouble, complex, object, string and datetime arrays are refused
-  with a TypeError naming the dtype (there is no float16 or long double
-  kernel, and converting silently would change the precision); a
-  zero-size batch gives an empty result of the right shape; NaN stays in
-  its own element;
+- array functions (so3_*, se3_*) are numpy generalized ufuncs with a
+  float32 and a float64 loop, so numpy's rules decide: an operand's dtype
+  must cast safely to float64 (complex, object, string, datetime and long
+  double arrays are a TypeError naming the function), and the float32 loop
+  runs when every operand casts safely to float32 (float16, bool and small
+  integers included); core shapes are checked by numpy (ValueError naming
+  the function and the sizes); a zero-size batch gives an empty result of
+  the right shape; NaN stays in its own element;
+- the objects' actions on points and Chain's batch methods call those
+  ufuncs, so the same rules hold, and their errors name the call;
 - complex numbers, None, strings, bytes and arbitrary objects are a
   TypeError; a ragged nested list is a ValueError; an object where an
   SO3 (...) is expected must be one, initialized (TypeError otherwise).
@@ -182,7 +185,9 @@ class TwistOr(Array):
 
 @dataclass
 class Points(Arg):
-    """Points of an object's action: shape (3,) or (..., 3), float64, NaN allowed."""
+    """Points of an object's action: the array function so3_act or se3_act
+    with the object's float64 matrix, so shape (..., 3), any dtype numpy casts
+    safely to float64, NaN allowed; errors name the call."""
 
     def good(self):
         return np.array([[0.5, -1.0, 2.0], [1.0, 0.0, 0.25]])
@@ -190,17 +195,24 @@ class Points(Arg):
     def judge(self, value):
         if isinstance(value, BOUND):
             return Refused(TypeError, (self.label,))
-        a = real_array(value, self.label)
+        if beyond_numpy_scalars(value):
+            return None
+        a = _asarray(value)
         if isinstance(a, Refused):
-            return a
-        if a.ndim < 1 or a.shape[-1] != 3:
-            return Refused(ValueError, (self.label, "(3,) or (N, 3)", f"got {shape_text(a.shape)}"))
+            return Refused(a.error, (self.label,))
+        if not castable_to_float64(a.dtype):
+            return Refused(TypeError, (self.label, "not supported for the input types"))
+        shape = core_shape_refusal(a.shape, (3,))
+        if shape:
+            return Refused(ValueError, (self.label,) + shape)
         return Accepted(plain(a, np.float64))
 
 
 @dataclass
 class JointArray(Arg):
-    """Joint positions of a chain of n joints: (n,) or (N, n), finite."""
+    """Joint positions of a chain of n joints, for its array-function
+    methods: shape (..., n), any dtype numpy casts safely to float64, NaN
+    allowed (NaN results); errors name the call."""
 
     n: int = 2
 
@@ -209,14 +221,16 @@ class JointArray(Arg):
 
     def judge(self, value):
         n = self.n
-        a = real_array(value, self.label)
+        a = _asarray(value)
         if isinstance(a, Refused):
-            return a
-        if not (a.shape == (n,) or (a.ndim == 2 and a.shape[1] == n)):
+            return Refused(a.error, (self.label, "could not convert"))
+        if a.ndim < 1 or a.shape[-1] != n:
             return Refused(
-                ValueError, (self.label, f"({n},) or (N, {n})", f"got {shape_text(a.shape)}")
+                ValueError, (self.label, f"({n},) or (..., {n})", f"got {shape_text(a.shape)}")
             )
-        return finite_or_refused(a, self.label)
+        if not castable_to_float64(a.dtype):
+            return Refused(TypeError, (self.label, "not supported for the input types"))
+        return Accepted(plain(a, np.float64))
 
 
 @dataclass
@@ -239,7 +253,8 @@ class ScrewRows(Arg):
 
 @dataclass
 class Operand(Arg):
-    """An operand of an array function: shape (..., *core), float32 or float64."""
+    """An operand of an array function (a numpy generalized ufunc with a
+    float32 and a float64 loop): shape (..., *core)."""
 
     core: tuple = (3,)
     valid: Callable[[], Any] | None = None
@@ -251,25 +266,67 @@ class Operand(Arg):
         return np.linspace(0.1, 0.1 * size, size).reshape(self.core) if self.core else 0.5
 
     def judge(self, value):
-        fname, name = self.label.split(":")
+        fname, _ = self.label.split(":")
+        if beyond_numpy_scalars(value):
+            return None
+        if isinstance(value, (np.matrix, np.ma.MaskedArray)):
+            # numpy's subclass rules (subok, __array_wrap__): np.matrix keeps
+            # two axes, numpy.ma maps masks as for an elementwise ufunc
+            return None
+        if getattr(type(value), "__array_ufunc__", False) is None:
+            # SO3, SE3, Twist and Wrench opt out of ufuncs (numpy then defers operators to them)
+            return Refused(TypeError, ("does not support ufuncs",))
         a = _asarray(value)
         if isinstance(a, Refused):
-            return Refused(a.error, (fname, name) + a.fragments)
-        k, size = a.dtype.kind, a.dtype.itemsize
-        if k not in REAL_KINDS or (k == "f" and size not in (4, 8)):
-            return Refused(
-                TypeError, (fname, name, "has dtype", str(a.dtype), "float32 or float64")
-            )
-        nc = len(self.core)
-        if a.ndim < nc or a.shape[a.ndim - nc :] != self.core:
-            core = ", ".join(str(d) for d in self.core)
-            return Refused(
-                ValueError, (fname, f"expected {name} of shape (..., {core})", shape_text(a.shape))
-            )
+            return Refused(a.error)  # numpy's own conversion error
+        if not castable_to_float64(a.dtype):
+            return Refused(TypeError, (fname, "not supported for the input types"))
+        shape = core_shape_refusal(a.shape, self.core)
+        if shape:
+            return Refused(ValueError, (fname,) + shape)
         if type(value) in (float, int, bool):  # a weak Python scalar, as it is
             return Accepted(value)
-        dtype = np.float32 if (k == "f" and size == 4) else np.float64
-        return Accepted(plain(a, dtype))
+        return Accepted(plain(a, np.float32 if castable_to_float32(a.dtype) else np.float64))
+
+
+# numpy's own errors for Python numbers its ufuncs cannot take as they are.
+NUMPY_SCALAR_ERRORS = (OverflowError, RuntimeWarning)
+
+
+def beyond_numpy_scalars(value) -> bool:
+    """A Python int beyond 64 bits or a Python float beyond float32's range,
+    given alone: numpy's NEP 50 handling of such a weak scalar depends on the
+    other operands (an OverflowError, a RuntimeWarning from its cast, or a
+    conversion to an object array refused as any other), so there is no
+    model beyond 'no crash and no other exception'."""
+    if type(value) is int:
+        return not -(2**63) <= value < 2**64
+    if type(value) is float:
+        return math.isfinite(value) and abs(value) > float(np.finfo(np.float32).max)
+    return False
+
+
+def castable_to_float64(dtype) -> bool:
+    """Whether numpy casts the dtype safely to float64 (the ufuncs' wider loop)."""
+    return np.can_cast(dtype, np.float64, casting="safe")
+
+
+def castable_to_float32(dtype) -> bool:
+    """Whether numpy casts the dtype safely to float32: numpy then picks the
+    float32 loop (the first one registered)."""
+    return np.can_cast(dtype, np.float32, casting="safe")
+
+
+def core_shape_refusal(shape, core) -> tuple:
+    """The fragments of numpy's message for an operand whose trailing axes
+    do not match the core shape of the signature, or () if they do."""
+    nc = len(core)
+    if len(shape) < nc:
+        return ("does not have enough dimensions",)
+    for got, want in zip(shape[len(shape) - nc :], core):
+        if got != want:
+            return (f"size {got} is different from {want}",)
+    return ()
 
 
 @dataclass
@@ -588,7 +645,12 @@ def _array_function(name, operands, kw=()):
     def call(*a):
         return f(*a[:n], **dict(zip(kw, a[n:])))
 
-    return Entry([args], call=call if kw else f, passes_arguments=not kw)
+    return Entry(
+        [args],
+        call=call if kw else f,
+        passes_arguments=not kw,
+        extra_errors=NUMPY_SCALAR_ERRORS,
+    )
 
 
 def _group_function(name, make, **kw):
@@ -863,9 +925,9 @@ def _build_spec():
         "so3_log": [("R",) + R3],
         "so3_compose": [("a",) + R3, ("b",) + R3],
         "so3_inverse": [("R",) + R3],
-        "so3_act": [("R",) + R3, ("p",) + v3],
+        "so3_act": [("R",) + R3, ("points",) + v3],
         "so3_hat": [("w",) + v3],
-        "so3_vee": [("W", (3, 3), None)],
+        "so3_vee": [("matrix", (3, 3), None)],
         "so3_interpolate": [("a",) + R3, ("b",) + R3, ("t", (), None)],
         "se3_exp": [("xi",) + six],
         "se3_log": [("g",) + G4],
@@ -876,13 +938,13 @@ def _build_spec():
         "se3_act_twist": [("g",) + G4, ("xi",) + six],
         "se3_act_wrench": [("g",) + G4, ("F",) + six],
         "se3_interpolate": [("a",) + G4, ("b",) + G4, ("t", (), None)],
-        "twist_hat": [("xi",) + six],
-        "twist_vee": [("X", (4, 4), lambda: XI0.hat())],
+        "se3_hat": [("xi",) + six],
+        "se3_vee": [("matrix", (4, 4), lambda: XI0.hat())],
     }
     for name, ops in arrays.items():
         spec[name] = _array_function(name, ops)
     spec["so3_from_quat"] = _array_function(
-        "so3_from_quat", [("q", (4,), quat)], kw=("scalar_first",)
+        "so3_from_quat", [("quat", (4,), quat)], kw=("scalar_first",)
     )
     spec["so3_as_quat"] = _array_function("so3_as_quat", [("R",) + R3], kw=("scalar_first",))
     return spec
@@ -921,7 +983,7 @@ SPEC = _build_spec()
 
 
 def is_array_function(entry) -> bool:
-    """An array function (so3_*, se3_*, twist_*): its arguments are operands and flags."""
+    """An array function (so3_*, se3_*): its arguments are operands and flags."""
     args = [a for s in entry.signatures for a in s]
     return any(isinstance(a, Operand) for a in args) and all(
         isinstance(a, (Operand, Flag)) for a in args

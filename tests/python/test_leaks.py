@@ -188,7 +188,9 @@ BAD = [
     (chasles.SO3.from_matrix, (2.0 * np.eye(3),)),  # not a rotation
     (chasles.so3_exp, (np.zeros((2, 4)),)),
     (chasles.so3_exp, ([[1.0, 2.0, 3.0], [1.0]],)),
-    (chasles.so3_exp, (np.zeros(3, np.float16),)),
+    (chasles.so3_exp, (np.zeros(3, np.complex64),)),  # no loop (numpy's refusal)
+    (chasles.SE3().act, (np.zeros((2, 4)),)),  # the ufunc's refusal, re-raised naming the call
+    (chasles.Chain([[0, 0, 0, 0, 0, 1.0]], np.eye(4)).forward, (np.zeros(1, complex),)),
     (chasles.se3_compose, (np.zeros((2, 4, 4)), np.zeros((3, 4, 4)))),
     (chasles.SO3.interpolate, (R, G, 0.5)),  # pybind11's overload refusal
     (chasles.SO3.log, (chasles.SO3.__new__(chasles.SO3),)),  # uninitialized

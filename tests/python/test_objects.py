@@ -727,8 +727,8 @@ def test_chain_pickles_its_screws_and_home_and_rebuilds_the_rest():
     back = pickle.loads(pickle.dumps(arm))
     assert back.body_screws.tobytes() == arm.body_screws.tobytes()
     assert (
-        back.forward([0.3, -0.2]).as_matrix().tobytes()
-        == arm.forward([0.3, -0.2]).as_matrix().tobytes()
+        back.forward([0.3, -0.2]).tobytes()
+        == arm.forward([0.3, -0.2]).tobytes()
     )
     for bad in ((1.0,) * 17, (1.0,) * 12, (1.0,) * (6 * 33 + 12), [1.0] * 18, None):
         with pytest.raises(
