@@ -4,22 +4,26 @@
 # Python side), then
 #   1. configures and builds the C++ tests, examples and benchmarks, and runs ctest
 #      (the tests, the examples, and a millisecond smoke run of every benchmark);
-#   2. builds the Python wheel (pip wheel .: scikit-build-core and pybind11
-#      from PyPI), installs it with its test extras into a fresh virtual
-#      environment with CC and CXX set to /bin/false (a wheel needs no
-#      compiler), and runs pytest on it from outside the source tree.
+#   2. builds the Python wheel (pip wheel .: scikit-build-core, pybind11 and
+#      cmeel-eigen from PyPI) with the system's Eigen hidden from CMake, so
+#      that it takes Eigen from cmeel-eigen as on a machine without Eigen and
+#      without root, and checks that it did; installs the wheel with its test
+#      extras into a fresh virtual environment with CC and CXX set to
+#      /bin/false (a wheel needs no compiler), and runs pytest on it from
+#      outside the source tree.
 #
 #   bash tests/run.sh            # from the repository root
 #
 # BUILD_DIR (default build/tests), VENV (default build/venv), WHEEL_DIR
-# (default build/wheel) and JOBS
-# (default: nproc) can be set.
+# (default build/wheel), WHEEL_BUILD_DIR (default build/wheel-cmake, the
+# wheel's CMake tree) and JOBS (default: nproc) can be set.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$PWD
 BUILD_DIR=${BUILD_DIR:-$ROOT/build/tests}
 VENV=${VENV:-$ROOT/build/venv}
 WHEEL_DIR=${WHEEL_DIR:-$ROOT/build/wheel}
+WHEEL_BUILD_DIR=${WHEEL_BUILD_DIR:-$ROOT/build/wheel-cmake}
 JOBS=${JOBS:-$(nproc)}
 
 need_apt=()
@@ -69,11 +73,24 @@ ctest --test-dir "$ROOT/build/fuzz" --output-on-failure
 bash "$ROOT/tests/fuzz/run.sh" "$ROOT/build/fuzz" 20
 # ---- end of the hardening block
 
-echo "== Python: pip wheel . (scikit-build-core and pybind11 from PyPI), installed into a fresh"
-echo "   virtual environment with no compiler reachable, pytest from outside the source tree"
-rm -rf "$VENV" "$WHEEL_DIR"
+echo "== Python: pip wheel . (scikit-build-core, pybind11, cmeel-eigen from PyPI) with the system's"
+echo "   Eigen hidden, installed into a fresh virtual environment with no compiler reachable,"
+echo "   pytest from outside the source tree"
+rm -rf "$VENV" "$WHEEL_DIR" "$WHEEL_BUILD_DIR"
 python3 -m venv "$VENV"
-"$VENV/bin/python" -m pip wheel --quiet --no-deps -w "$WHEEL_DIR" "$ROOT"
+# The system's Eigen (installed above for the C++ tests) is hidden from the
+# wheel's CMake: CMAKE_IGNORE_PATH makes find_package skip an Eigen3Config.cmake
+# in those directories, and only there, so CMakeLists.txt falls back on the
+# cmeel-eigen build requirement as it does on a machine with no Eigen. The
+# CMake tree is kept (build-dir) so that its cache shows which Eigen was used.
+"$VENV/bin/python" -m pip wheel --quiet --no-deps -w "$WHEEL_DIR" -C "build-dir=$WHEEL_BUILD_DIR" \
+  -C "cmake.define.CMAKE_IGNORE_PATH=/usr/share/eigen3/cmake;/usr/lib/cmake/eigen3;/usr/include/eigen3" "$ROOT"
+EIGEN_DIR=$(sed -n 's/^Eigen3_DIR:PATH=//p' "$WHEEL_BUILD_DIR/CMakeCache.txt")
+echo "   the wheel was built with Eigen3_DIR=$EIGEN_DIR"
+case "$EIGEN_DIR" in
+  */cmeel.prefix/share/eigen3/cmake) ;;
+  *) echo "error: the wheel's Eigen is not cmeel-eigen's (the system's was not hidden?)" >&2; exit 1 ;;
+esac
 WHEEL=$(ls "$WHEEL_DIR"/chasles-*.whl)
 CC=/bin/false CXX=/bin/false "$VENV/bin/python" -m pip install --quiet --only-binary=chasles "$WHEEL[test]"
 # One BLAS thread: the tests' small scipy/numpy products gain nothing from
