@@ -5,6 +5,7 @@
 
 #include <limits>
 #include <optional>
+#include <cstring>
 #include <string>
 
 #include "bindings.hpp"
@@ -98,6 +99,20 @@ ChainD::Screws screws_of(py::handle h) {
 
 enum class ChainOp { forward, forward_body, jacobian_space, jacobian_body };
 
+/// What the method computes for one configuration: the 4x4 pose or the 6 x n
+/// Jacobian (the loop and the one-configuration fast path both call this).
+template <ChainOp Op>
+auto chain_result(const ChainD& c, const ChainD::JointVector& theta) {
+  if constexpr (Op == ChainOp::forward)
+    return c.forward(theta).matrix();
+  else if constexpr (Op == ChainOp::forward_body)
+    return c.forward_body(theta).matrix();
+  else if constexpr (Op == ChainOp::jacobian_space)
+    return c.jacobian_space(theta);
+  else
+    return c.jacobian_body(theta);
+}
+
 template <ChainOp Op>
 void chain_loop(char** args, const npy_intp* dims, const npy_intp* steps, void* /*data*/) noexcept {
   const npy_intp count = dims[0], n = dims[1];  // numpy: the outer size, then the core sizes (n, 6, 4)
@@ -118,31 +133,24 @@ void chain_loop(char** args, const npy_intp* dims, const npy_intp* steps, void* 
     *reinterpret_cast<double*>(out + r * core[5] + c * core[6]) = x;
   };
   constexpr bool pose = Op == ChainOp::forward || Op == ChainOp::forward_body;
+  const int rows = pose ? 4 : 6;
   const npy_intp cols = pose ? 4 : n;
   if (n < 1 || n > kMaxJoints) {  // only Chain calls these, with 1 <= n <= 32; never read past a chain
     for (npy_intp e = 0; e < count; ++e)
-      for (int r = 0; r < (pose ? 4 : 6); ++r)
+      for (int r = 0; r < rows; ++r)
         for (npy_intp c = 0; c < cols; ++c) write(args[3] + e * steps[3], r, c, std::numeric_limits<double>::quiet_NaN());
     return;
   }
-  const bool fixed = steps[0] == 0 && steps[1] == 0;
-  std::optional<ChainD> kept;
-  if (fixed && count > 0) kept.emplace(chain_at(args[0], args[1]));
+  const bool fixed = steps[0] == 0 && steps[1] == 0;  // one chain for the whole loop: built once
+  std::optional<ChainD> chain;
   ChainD::JointVector theta(n);
   for (npy_intp e = 0; e < count; ++e) {
-    const ChainD chain = fixed ? *kept : chain_at(args[0] + e * steps[0], args[1] + e * steps[1]);
+    if (!fixed || !chain) chain.emplace(chain_at(args[0] + e * steps[0], args[1] + e * steps[1]));
     for (npy_intp j = 0; j < n; ++j) theta(j) = at(args[2] + e * steps[2], j, core[4], 0, 0);
+    const auto result = chain_result<Op>(*chain, theta);
     char* out = args[3] + e * steps[3];
-    if constexpr (pose) {
-      const SE3d g = Op == ChainOp::forward ? chain.forward(theta) : chain.forward_body(theta);
-      const Matrix4 G = g.matrix();
-      for (int r = 0; r < 4; ++r)
-        for (int c = 0; c < 4; ++c) write(out, r, c, G(r, c));
-    } else {
-      const ChainD::Jacobian J = Op == ChainOp::jacobian_space ? chain.jacobian_space(theta) : chain.jacobian_body(theta);
-      for (int r = 0; r < 6; ++r)
-        for (npy_intp c = 0; c < n; ++c) write(out, r, c, J(r, c));
-    }
+    for (int r = 0; r < rows; ++r)
+      for (npy_intp c = 0; c < cols; ++c) write(out, r, c, result(r, c));
   }
   ufunc::clear_floating_point_flags();
 }
@@ -174,9 +182,21 @@ py::array screws_array(const ChainD& c) {
 
 /// Calls the chain ufunc u with the chain and theta: numpy's rules decide
 /// dtypes and broadcasting. The last axis of theta is checked here, so that
-/// the message names the method and n.
+/// the message names the method and n. One configuration of float64 (a
+/// native float64 array of shape (n,), or a list of n Python numbers) skips
+/// numpy's dispatch: the same chain_result, the same bits
+/// (tests/python/test_ufuncs.py compares the two).
+template <ChainOp Op>
 py::object call_chain_ufunc(PyObject* u, const ChainD& c, py::handle theta, const char* what) {
   const py::ssize_t n = c.joints();
+  if (ChainD::JointVector one(n); single_element(theta, one.data(), n)) {
+    const auto result = chain_result<Op>(c, one);
+    const Py_intptr_t dims[2] = {result.rows(), result.cols()};
+    py::array_t<double> out = new_array(2, dims);
+    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(array_data(out), dims[0],
+                                                                                        dims[1]) = result;
+    return std::move(out);
+  }
   const py::object operand = ufunc_operand(theta, what);
   if (npy().PyArray_Check_(operand.ptr())) {
     const auto a = py::reinterpret_borrow<py::array>(operand);
@@ -272,7 +292,7 @@ Example:
   cls.def(
       "forward",
       [u_forward](Obj<ChainD> c, ArrayLike theta) {
-        return call_chain_ufunc(u_forward.ptr(), *c, theta.obj, "Chain.forward(theta)");
+        return call_chain_ufunc<ChainOp::forward>(u_forward.ptr(), *c, theta.obj, "Chain.forward(theta)");
       },
       py::arg("theta"),
       R"doc(Forward kinematics, space form: g(theta) = exp([S_1] th_1) ... exp([S_n] th_n) M.
@@ -299,7 +319,7 @@ Example:
   cls.def(
       "forward_body",
       [u_forward_body](Obj<ChainD> c, ArrayLike theta) {
-        return call_chain_ufunc(u_forward_body.ptr(), *c, theta.obj, "Chain.forward_body(theta)");
+        return call_chain_ufunc<ChainOp::forward_body>(u_forward_body.ptr(), *c, theta.obj, "Chain.forward_body(theta)");
       },
       py::arg("theta"),
       R"doc(Forward kinematics, body form: g(theta) = M exp([B_1] th_1) ... exp([B_n] th_n).
@@ -325,7 +345,7 @@ Example:
   cls.def(
       "jacobian_space",
       [u_jacobian_space](Obj<ChainD> c, ArrayLike theta) {
-        return call_chain_ufunc(u_jacobian_space.ptr(), *c, theta.obj, "Chain.jacobian_space(theta)");
+        return call_chain_ufunc<ChainOp::jacobian_space>(u_jacobian_space.ptr(), *c, theta.obj, "Chain.jacobian_space(theta)");
       },
       py::arg("theta"),
       R"doc(The space Jacobian J_s: the spatial twist (g' g^-1)^vee = J_s theta'.
@@ -352,7 +372,7 @@ Example:
   cls.def(
       "jacobian_body",
       [u_jacobian_body](Obj<ChainD> c, ArrayLike theta) {
-        return call_chain_ufunc(u_jacobian_body.ptr(), *c, theta.obj, "Chain.jacobian_body(theta)");
+        return call_chain_ufunc<ChainOp::jacobian_body>(u_jacobian_body.ptr(), *c, theta.obj, "Chain.jacobian_body(theta)");
       },
       py::arg("theta"),
       R"doc(The body Jacobian J_b: the body twist (g^-1 g')^vee = J_b theta'.

@@ -202,11 +202,13 @@ Returns:
 )doc");
 
   // The action on points is the array function se3_act with this matrix:
-  // one rule for dtypes, broadcasting and the GIL.
+  // one rule for dtypes, broadcasting and the GIL (one point of float64
+  // skips numpy's dispatch: the same kernel, the same bits).
   const auto act_points = [](const SE3d& g, ArrayLike points, const char* what) {
     if (!npy().PyArray_Check_(points.obj.ptr()) && is_bound_object(points.obj))
       raise_type_error(std::string(what) + ": expected points of shape (..., 3), got " + type_name(points.obj) +
                        " (an SE3 composes with an SE3 by @; it acts on a Twist or a Wrench by g.act(x))");
+    if (Vector3 p; single_element(points.obj, p.data(), 3)) return py::object(vec_out<3>(g.act(p)));
     const py::array M = mat_out<4, 4>(g.matrix());
     const py::object p = ufunc_operand(points.obj, what);
     return call_array_function<2>("se3_act", what, {M.ptr(), p.ptr()});

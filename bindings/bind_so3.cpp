@@ -183,11 +183,13 @@ Returns:
 )doc");
 
   // The action on points is the array function so3_act with this matrix:
-  // one rule for dtypes, broadcasting and the GIL.
+  // one rule for dtypes, broadcasting and the GIL (one point of float64
+  // skips numpy's dispatch: the same kernel, the same bits).
   const auto act_points = [](const SO3d& R, ArrayLike points, const char* what) {
     if (!npy().PyArray_Check_(points.obj.ptr()) && is_bound_object(points.obj))
       raise_type_error(std::string(what) + ": expected points of shape (..., 3), got " + type_name(points.obj) +
                        " (an SO3 composes only with an SO3)");
+    if (Vector3 p; single_element(points.obj, p.data(), 3)) return py::object(vec_out<3>(R.act(p)));
     const py::array M = mat_out<3, 3>(R.matrix());
     const py::object p = ufunc_operand(points.obj, what);
     return call_array_function<2>("so3_act", what, {M.ptr(), p.ptr()});

@@ -359,14 +359,13 @@ inline bool has_shape(PyObject* o) {
   return a->nd == nd && a->dimensions[0] == R && (nd == 1 || a->dimensions[1] == C);
 }
 
-/// A list or tuple of R Python floats or ints (exact types) read directly;
-/// false (and nothing raised) for anything else.
-template <int R>
-inline bool read_flat_sequence(PyObject* o, Eigen::Matrix<double, R, 1>& out) {
+/// A list or tuple of n Python floats or ints (exact types) read directly
+/// into out; false (and nothing raised) for anything else.
+inline bool read_number_sequence(PyObject* o, double* out, py::ssize_t n) {
   const bool is_list = PyList_CheckExact(o);
   if (!is_list && !PyTuple_CheckExact(o)) return false;
-  if ((is_list ? PyList_GET_SIZE(o) : PyTuple_GET_SIZE(o)) != R) return false;
-  for (int i = 0; i < R; ++i) {
+  if ((is_list ? PyList_GET_SIZE(o) : PyTuple_GET_SIZE(o)) != n) return false;
+  for (py::ssize_t i = 0; i < n; ++i) {
     PyObject* x = is_list ? PyList_GET_ITEM(o, i) : PyTuple_GET_ITEM(o, i);
     if (PyFloat_CheckExact(x)) {
       out[i] = PyFloat_AS_DOUBLE(x);
@@ -382,6 +381,11 @@ inline bool read_flat_sequence(PyObject* o, Eigen::Matrix<double, R, 1>& out) {
     }
   }
   return true;
+}
+
+template <int R>
+inline bool read_flat_sequence(PyObject* o, Eigen::Matrix<double, R, 1>& out) {
+  return read_number_sequence(o, out.data(), R);
 }
 
 /// Any array-like of shape (R,) (C = 1) or (R, C) as a double Eigen matrix.
@@ -554,6 +558,24 @@ inline py::object ufunc_operand(py::handle x, const char* what) {
     raise_conversion_error(e, std::string(what) + ": could not convert " + type_name(x) + " to an array");
   }
   return py::reinterpret_steal<py::object>(a);
+}
+
+/// The one-element fast path of a call that otherwise goes to a ufunc: true
+/// and the n numbers in `out` when x is a native float64 ndarray of shape
+/// (n,) or a list or tuple of n Python floats or ints, the inputs for which
+/// the ufunc would run its float64 loop on one element and return a new
+/// float64 array. The caller then computes that element with the same
+/// kernel, skipping numpy's dispatch (about 1 us), and returns the same
+/// bits (tests/python/test_ufuncs.py compares the two).
+inline bool single_element(py::handle x, double* out, py::ssize_t n) {
+  PyObject* o = x.ptr();
+  if (is_native_float64_array(o)) {
+    const auto* a = py::detail::array_proxy(o);
+    if (a->nd != 1 || a->dimensions[0] != n) return false;
+    for (py::ssize_t i = 0; i < n; ++i) std::memcpy(&out[i], a->data + i * a->strides[0], sizeof(double));
+    return true;
+  }
+  return read_number_sequence(o, out, n);
 }
 
 /// call_ufunc with the array function `name` of chasles._core.

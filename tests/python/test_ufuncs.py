@@ -143,6 +143,10 @@ def test_chain_methods_equal_their_gufuncs():
     np.testing.assert_array_equal(arm.forward_body(theta), core._chain_forward_body(S, M, theta))
     np.testing.assert_array_equal(arm.jacobian_space(theta), core._chain_jacobian_space(S, M, theta))
     np.testing.assert_array_equal(arm.jacobian_body(theta), core._chain_jacobian_body(S, M, theta))
+    # one configuration (the methods' fast path) gives the bits of the ufunc's loop
+    for one in (theta[1, 2], list(theta[1, 2]), theta[1, 2].astype(np.float32)):
+        np.testing.assert_array_equal(arm.forward(one), core._chain_forward(S, M, one))
+        np.testing.assert_array_equal(arm.jacobian_body(one), core._chain_jacobian_body(S, M, one))
     # several chains at once: the chain operands broadcast too
     S2 = np.stack([S, S[::-1]])
     both = core._chain_forward(S2, M, theta[0, 0])
