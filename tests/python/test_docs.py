@@ -20,7 +20,7 @@ def python_blocks(page: Path) -> list[str]:
 
 
 def test_the_pages_are_there():
-    assert {p.name for p in PAGES} >= {"conventions.md", "numerics.md", "realtime.md"}
+    assert {p.name for p in PAGES} >= {"conventions.md", "numerics.md", "realtime.md", "coming_from.md"}
 
 
 @pytest.mark.parametrize("page", PAGES, ids=[p.name for p in PAGES])
