@@ -3,6 +3,7 @@
 
 #include <limits>
 #include <optional>
+#include <type_traits>
 
 #include <Eigen/Core>
 
@@ -44,6 +45,19 @@ class SE3 {
   SE3(const Rotation& R, const Vector3& p) noexcept : R_(R), p_(p) {}
 
   static SE3 identity() noexcept { return SE3(); }
+
+  /// Not a constructor: a 4x4 matrix becomes an SE3 through one of the three
+  /// explicit forms, `from_matrix` (checked), `from_matrix_projected` or
+  /// `from_matrix_unchecked`. This declaration only turns `SE3 g(M);` and
+  /// `SE3 g = M;` into a compile error that says so.
+  template <typename Derived, std::enable_if_t<Derived::RowsAtCompileTime == 4 && Derived::ColsAtCompileTime == 4,
+                                               int> = 0>
+  SE3(const Eigen::MatrixBase<Derived>& /*M*/) noexcept : R_(), p_() {
+    static_assert(detail::always_false<Derived>::value,
+                  "chasles::SE3 is not constructible from a matrix: use SE3::from_matrix(M) (checked: an "
+                  "std::optional, empty when M is not a rigid motion), SE3::from_matrix_projected(M) (the nearest "
+                  "rotation) or SE3::from_matrix_unchecked(M) (for data known to be a rigid motion)");
+  }
 
   // ---- Lie algebra ------------------------------------------------------
 
