@@ -120,7 +120,7 @@ inline Matrix3Of<Scalar> so3_left_jacobian_inverse(const Vector3Of<Scalar>& w) n
 template <typename Derived>
 inline Matrix6Of<typename Derived::Scalar> se3_left_jacobian(const Eigen::MatrixBase<Derived>& xi) noexcept {
   using Scalar = typename Derived::Scalar;
-  EIGEN_STATIC_ASSERT_VECTOR_SPECIFIC_SIZE(Derived, 6);
+  static_assert(Derived::IsVectorAtCompileTime && Derived::SizeAtCompileTime == 6, "xi is a 6-vector (v, w)");
   const Vector3Of<Scalar> v = xi.template head<3>();
   const Vector3Of<Scalar> w = xi.template tail<3>();
   return detail::upper_block_triangular<Scalar>(so3_left_jacobian<Scalar>(w), detail::se3_q<Scalar>(v, w));
@@ -131,7 +131,7 @@ inline Matrix6Of<typename Derived::Scalar> se3_left_jacobian(const Eigen::Matrix
 template <typename Derived>
 inline Matrix6Of<typename Derived::Scalar> se3_right_jacobian(const Eigen::MatrixBase<Derived>& xi) noexcept {
   using Scalar = typename Derived::Scalar;
-  EIGEN_STATIC_ASSERT_VECTOR_SPECIFIC_SIZE(Derived, 6);
+  static_assert(Derived::IsVectorAtCompileTime && Derived::SizeAtCompileTime == 6, "xi is a 6-vector (v, w)");
   const Vector3Of<Scalar> v = -xi.template head<3>();
   const Vector3Of<Scalar> w = -xi.template tail<3>();
   return detail::upper_block_triangular<Scalar>(so3_left_jacobian<Scalar>(w), detail::se3_q<Scalar>(v, w));
@@ -142,7 +142,7 @@ inline Matrix6Of<typename Derived::Scalar> se3_right_jacobian(const Eigen::Matri
 template <typename Derived>
 inline Matrix6Of<typename Derived::Scalar> se3_left_jacobian_inverse(const Eigen::MatrixBase<Derived>& xi) noexcept {
   using Scalar = typename Derived::Scalar;
-  EIGEN_STATIC_ASSERT_VECTOR_SPECIFIC_SIZE(Derived, 6);
+  static_assert(Derived::IsVectorAtCompileTime && Derived::SizeAtCompileTime == 6, "xi is a 6-vector (v, w)");
   const Vector3Of<Scalar> v = xi.template head<3>();
   const Vector3Of<Scalar> w = xi.template tail<3>();
   const Matrix3Of<Scalar> Ji = so3_left_jacobian_inverse<Scalar>(w);
@@ -154,7 +154,7 @@ inline Matrix6Of<typename Derived::Scalar> se3_left_jacobian_inverse(const Eigen
 template <typename Derived>
 inline Matrix6Of<typename Derived::Scalar> se3_right_jacobian_inverse(const Eigen::MatrixBase<Derived>& xi) noexcept {
   using Scalar = typename Derived::Scalar;
-  EIGEN_STATIC_ASSERT_VECTOR_SPECIFIC_SIZE(Derived, 6);
+  static_assert(Derived::IsVectorAtCompileTime && Derived::SizeAtCompileTime == 6, "xi is a 6-vector (v, w)");
   return se3_left_jacobian_inverse(Vector6Of<Scalar>(-xi));
 }
 

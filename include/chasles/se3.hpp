@@ -83,7 +83,8 @@ class SE3 {
   /// store-forwarding stall that doubled the cost in batch loops.
   template <typename Derived>
   static SE3 exp(const Eigen::MatrixBase<Derived>& xi) noexcept {
-    EIGEN_STATIC_ASSERT_VECTOR_SPECIFIC_SIZE(Derived, 6);
+    static_assert(Derived::IsVectorAtCompileTime && Derived::SizeAtCompileTime == 6,
+                  "SE3::exp: a twist is a 6-vector (v, w)");
     const Vector3 v = xi.template head<3>();
     const Vector3 w = xi.template tail<3>();
     const Scalar t = w.squaredNorm();

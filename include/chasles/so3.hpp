@@ -65,7 +65,7 @@ inline So3Log<Scalar> so3_log(const Eigen::Matrix<Scalar, 3, 3>& M) noexcept {
   Scalar uv2 = u.x * u.x + u.y * u.y + u.z * u.z;
   Scalar uw2 = u.w * u.w;
   const Scalar u2 = uv2 + uw2;
-  if (!(u2 - u2 == Scalar(0))) {  // not finite
+  if (!is_finite(u2)) {
     u = clamped_quaternion_power_step(M);  // cold: not near a rotation
     uv2 = u.x * u.x + u.y * u.y + u.z * u.z;
     uw2 = u.w * u.w;
@@ -75,7 +75,7 @@ inline So3Log<Scalar> so3_log(const Eigen::Matrix<Scalar, 3, 3>& M) noexcept {
   const Vector3 uv(sign * u.x, sign * u.y, sign * u.z);
   const Scalar uw = sign * u.w;
   So3Log<Scalar> out;
-  if (uv2 < Scalar(0.25 * ThresholdsOf<Scalar>::taylor_theta2) * uw2) {
+  if (uv2 < Scalar(ThresholdsOf<Scalar>::taylor_theta2 / 4) * uw2) {
     // x^2 = tan^2(theta/2) < cutoff / 4: 4 x^2 is theta^2 to within the series' accuracy.
     const Scalar inv_w = Scalar(1) / uw;
     const Scalar x2 = uv2 * inv_w * inv_w;

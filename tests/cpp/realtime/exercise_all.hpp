@@ -112,7 +112,7 @@ S exercise_all() noexcept {
   for (int i = 0; i < 6; ++i) th6(i) = S(0.1) * S(i + 1);
   sum += c6.forward(th6).translation().sum() + c6.forward_body(th6).translation().sum();
   sum += c6.jacobian_space(th6).sum() + c6.jacobian_body(th6).sum();
-  sum += S(c6.joints()) + c6.space_screws().sum() + c6.body_screws().sum() + c6.home().translation().sum();
+  sum += S(RealOf<S>(c6.joints())) + c6.space_screws().sum() + c6.body_screws().sum() + c6.home().translation().sum();
   typename CD::Screws SD(6, 7);
   SD.template leftCols<6>() = S6;
   SD.col(6) = CD::revolute_screw(w, p);
@@ -121,7 +121,7 @@ S exercise_all() noexcept {
   for (int i = 0; i < 7; ++i) thd(i) = S(-0.2) * S(i + 1);
   sum += cd.forward(thd).translation().sum() + cd.forward_body(thd).translation().sum();
   sum += cd.jacobian_space(thd).sum() + cd.jacobian_body(thd).sum();
-  sum += S(cd.joints()) + cd.space_screws().sum() + cd.body_screws().sum() + cd.home().translation().sum();
+  sum += S(RealOf<S>(cd.joints())) + cd.space_screws().sum() + cd.body_screws().sum() + cd.home().translation().sum();
   return sum;
 }
 

@@ -1,6 +1,8 @@
 // Every header and every operation, for float, double and an autodiff
-// scalar, compiled with -fno-exceptions -fno-rtti -Wall -Wextra -Wpedantic
-// -Werror (tests/cpp/CMakeLists.txt): a build that succeeds is the test.
+// scalar, compiled with -fno-exceptions -fno-rtti and the warnings of
+// tests/cpp/strict_flags.cmake as errors (tests/cpp/CMakeLists.txt, and with
+// both GCC and Clang by strict_headers.cmake): a build that succeeds is the
+// test.
 #include <cmath>
 #include <cstdio>
 
@@ -10,6 +12,7 @@
 #include "chasles/chasles.hpp"
 #include "chasles/constants.hpp"
 #include "chasles/detail/approx.hpp"
+#include "chasles/detail/assert.hpp"
 #include "chasles/detail/nearest_rotation.hpp"
 #include "chasles/detail/series.hpp"
 #include "chasles/jacobians.hpp"
