@@ -9,6 +9,7 @@
 
 #include "chasles/constants.hpp"
 #include "chasles/detail/approx.hpp"
+#include "chasles/detail/arguments.hpp"
 #include "chasles/detail/series.hpp"
 #include "chasles/so3.hpp"
 #include "chasles/twist.hpp"
@@ -256,6 +257,12 @@ class SE3 {
 template <typename Scalar>
 inline SE3<Scalar> interpolate(const SE3<Scalar>& a, const SE3<Scalar>& b, const Scalar& t) noexcept {
   return a * SE3<Scalar>::exp(Eigen::Matrix<Scalar, 6, 1>(t * (a.inverse() * b).log()));
+}
+/// The same with t of another arithmetic type, converted to Scalar
+/// (interpolate(a, b, 0.5) for float motions).
+template <typename Scalar, typename T, detail::EnableIfOtherArithmetic<Scalar, T> = 0>
+inline SE3<Scalar> interpolate(const SE3<Scalar>& a, const SE3<Scalar>& b, const T& t) noexcept {
+  return interpolate(a, b, detail::scalar_of<Scalar>(t));
 }
 
 using SE3f = SE3<float>;

@@ -10,6 +10,7 @@
 
 #include "chasles/constants.hpp"
 #include "chasles/detail/approx.hpp"
+#include "chasles/detail/arguments.hpp"
 #include "chasles/detail/nearest_rotation.hpp"
 #include "chasles/detail/series.hpp"
 
@@ -327,6 +328,12 @@ class SO3 {
 template <typename Scalar>
 inline SO3<Scalar> interpolate(const SO3<Scalar>& a, const SO3<Scalar>& b, const Scalar& t) noexcept {
   return a * SO3<Scalar>::exp(t * (a.inverse() * b).log());
+}
+/// The same with t of another arithmetic type, converted to Scalar
+/// (interpolate(a, b, 0.5) for float rotations).
+template <typename Scalar, typename T, detail::EnableIfOtherArithmetic<Scalar, T> = 0>
+inline SO3<Scalar> interpolate(const SO3<Scalar>& a, const SO3<Scalar>& b, const T& t) noexcept {
+  return interpolate(a, b, detail::scalar_of<Scalar>(t));
 }
 
 using SO3f = SO3<float>;

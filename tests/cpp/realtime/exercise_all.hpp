@@ -100,6 +100,15 @@ S exercise_all() noexcept {
   sum += ar.group.sum() + ar.point.sum() + ag.group.sum() + ag.point.sum();
   sum += interpolate_jacobian_t(R, I, S(0.3)).sum() + interpolate_jacobian_t(g, h, S(0.3)).sum();
 
+  // Arguments in other types (detail/arguments.hpp): vector expressions, a
+  // double vector, a Twist, t and factors as double and int literals.
+  sum += rplus(R, w * S(0.5)).matrix().sum() + lplus(w * S(0.5), R).matrix().sum();
+  sum += rplus(R, Eigen::Vector3d(0.1, 0.2, 0.3)).matrix().sum() + rplus(g, xi.template head<6>()).translation().sum();
+  sum += rplus(g, tw).translation().sum() + lplus(tw, g).translation().sum() + lplus(xi * S(2), g).translation().sum();
+  sum += interpolate(R, I, 0.25).matrix().sum() + interpolate(g, h, 1).translation().sum();
+  sum += interpolate_jacobian_t(R, I, 0.5).sum() + interpolate_jacobian_t(g, h, 0.5).sum();
+  sum += (tw * 2).vector().sum() + (0.5 * tw).vector().sum() + (F * 2).vector().sum() + (0.5 * F).vector().sum();
+
   // Chain (kinematics.hpp): fixed size, and dynamic with a compile-time bound.
   using C6 = Chain<S, 6>;
   using CD = Chain<S, Eigen::Dynamic, 8>;

@@ -12,6 +12,7 @@
 #include "chasles/chasles.hpp"
 #include "chasles/constants.hpp"
 #include "chasles/detail/approx.hpp"
+#include "chasles/detail/arguments.hpp"
 #include "chasles/detail/assert.hpp"
 #include "chasles/detail/nearest_rotation.hpp"
 #include "chasles/detail/series.hpp"
