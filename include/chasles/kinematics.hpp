@@ -80,11 +80,12 @@ class Chain {
     for (Eigen::Index i = 0; i < S_.cols(); ++i) B_.col(i) = M_inv.act(Twist<Scalar>(Vector6(S_.col(i)))).vector();
   }
 
-  /// The screw of a revolute joint about the axis through q along w
-  /// (normalized here; w != 0): (-w x q, w).
-  static Vector6 revolute_screw(const Vector3& axis, const Vector3& point) noexcept {
+  /// The screw of a revolute joint about the axis through `point` (q)
+  /// along `direction` (w, normalized here; w != 0): (-w x q, w). The point
+  /// comes first, as in every screw of chasles (SE3::from_screw).
+  static Vector6 revolute_screw(const Vector3& point, const Vector3& direction) noexcept {
     using std::sqrt;
-    const Vector3 w = axis / sqrt(axis.squaredNorm());
+    const Vector3 w = direction / sqrt(direction.squaredNorm());
     return detail::stack<Scalar>(Vector3(-w.cross(point)), w);
   }
   /// The screw of a prismatic joint along v (normalized here; v != 0): (v, 0).

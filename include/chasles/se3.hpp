@@ -226,11 +226,13 @@ class SE3 {
                M.template topRightCorner<3, 1>());
   }
 
-  /// The screw motion about the axis through q along w_hat (normalized),
-  /// pitch h, by theta: exp(theta * (-w_hat x q + h w_hat, w_hat));
-  /// h = +inf is the translation theta * w_hat.
-  static SE3 from_screw(const Vector3& q, const Vector3& w_hat, const Scalar& h, const Scalar& theta) noexcept {
-    return exp(Twist<Scalar>::from_screw(q, w_hat, h, theta));
+  /// The screw motion about the axis through `point` q along `direction`
+  /// w_hat (normalized here), `pitch` h, by theta:
+  /// exp(theta * (-w_hat x q + h w_hat, w_hat)); h = +inf is the translation
+  /// theta * w_hat.
+  static SE3 from_screw(const Vector3& point, const Vector3& direction, const Scalar& pitch,
+                        const Scalar& theta) noexcept {
+    return exp(Twist<Scalar>::from_screw(point, direction, pitch, theta));
   }
 
   /// The same motion with the nearest rotation (removes drift).

@@ -95,12 +95,12 @@ class Twist {
 
   /// The unit twist of a screw times theta:
   ///   theta * (-w_hat x q + h w_hat, w_hat)
-  /// for the axis through q along w_hat (normalized here), pitch h; with
-  /// h = +inf, the translation theta * (w_hat, 0).
-  static Twist from_screw(const Vector3& q, const Vector3& w_hat, const Scalar& h,
+  /// for the axis through `point` q along `direction` w_hat (normalized
+  /// here), `pitch` h; with h = +inf, the translation theta * (w_hat, 0).
+  static Twist from_screw(const Vector3& point, const Vector3& direction, const Scalar& pitch,
                           const Scalar& theta) noexcept {
     Vector3 w, v;
-    detail::pair_of_screw(q, w_hat, h, theta, w, v);
+    detail::pair_of_screw(point, direction, pitch, theta, w, v);
     return Twist(v, w);
   }
   static Twist from_screw(const Screw<Scalar>& s) noexcept {

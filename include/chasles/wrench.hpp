@@ -52,11 +52,12 @@ class Wrench {
   Scalar pitch() const noexcept { return screw().pitch; }
 
   /// The wrench of a screw: magnitude * (d, q x d + h d) for the line
-  /// through q along d (normalized here), pitch h; with h = +inf, the couple
-  /// (0, magnitude * d).
-  static Wrench from_screw(const Vector3& q, const Vector3& d, const Scalar& h, const Scalar& magnitude) noexcept {
+  /// through `point` q along `direction` d (normalized here), `pitch` h; with
+  /// h = +inf, the couple (0, magnitude * d).
+  static Wrench from_screw(const Vector3& point, const Vector3& direction, const Scalar& pitch,
+                           const Scalar& magnitude) noexcept {
     Vector3 f, tau;
-    detail::pair_of_screw(q, d, h, magnitude, f, tau);
+    detail::pair_of_screw(point, direction, pitch, magnitude, f, tau);
     return Wrench(f, tau);
   }
   static Wrench from_screw(const Screw<Scalar>& s) noexcept {

@@ -1536,12 +1536,13 @@ class Chain:
     configuration in the base frame, one row (v, w) per joint, linear part first)
     and its home pose M = g(0); it keeps the body screws B_i = Ad_{M^-1} S_i.
     Revolute joints about the axis through q along w have the screw
-    (-w x q, w) (``Chain.revolute_screw``), prismatic joints along v the screw
-    (v, 0) (``Chain.prismatic_screw``). At most 32 joints.
+    (-w x q, w) (``Chain.revolute_screw(point, direction)``: the point first, as
+    in ``SE3.from_screw``), prismatic joints along v the screw (v, 0)
+    (``Chain.prismatic_screw``). At most 32 joints.
     
     Example:
-        >>> screws = [Chain.revolute_screw([0, 0, 1], [0, 0, 0]),
-        ...           Chain.revolute_screw([0, 0, 1], [1, 0, 0])]
+        >>> screws = [Chain.revolute_screw([0, 0, 0], [0, 0, 1]),
+        ...           Chain.revolute_screw([1, 0, 0], [0, 0, 1])]
         >>> arm = Chain(screws, SE3(translation=[2.0, 0.0, 0.0]))
         >>> np.round(arm.forward([np.pi / 2, 0.0]).translation(), 12) + 0.0
         array([0., 2., 0.])
@@ -1587,19 +1588,21 @@ class Chain:
             array([0. , 0.6, 0.8, 0. , 0. , 0. ])
         """
     @staticmethod
-    def revolute_screw(axis: numpy.typing.ArrayLike, point: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+    def revolute_screw(point: numpy.typing.ArrayLike, direction: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
-        The screw of a revolute joint: (-w x q, w), w = axis / |axis|.
+        The screw of a revolute joint about the axis through q along w: (-w x q, w).
+        
+        The point comes first, as in ``SE3.from_screw(point, direction, ...)``.
         
         Args:
-            axis: shape (3,), the joint axis, nonzero (normalized here).
             point: shape (3,), q, any point on the axis.
+            direction: shape (3,), the joint axis, nonzero (normalized here: w = direction / |direction|).
         
         Returns:
             numpy.ndarray: shape (6,), (v, w), linear part first.
         
         Example:
-            >>> Chain.revolute_screw([0, 0, 2], [1, 0, 0])
+            >>> Chain.revolute_screw([1, 0, 0], [0, 0, 2])
             array([ 0., -1.,  0.,  0.,  0.,  1.])
         """
     def __copy__(self) -> Chain:
@@ -1668,7 +1671,7 @@ class Chain:
             SE3 | numpy.ndarray: an SE3 for shape (n,); shape (N, 4, 4) for (N, n).
         
         Example:
-            >>> arm = Chain([Chain.revolute_screw([0, 0, 1], [1, 0, 0])], np.eye(4))
+            >>> arm = Chain([Chain.revolute_screw([1, 0, 0], [0, 0, 1])], np.eye(4))
             >>> arm.forward_body([0.3]).is_approx(arm.forward([0.3]))
             True
         """
@@ -1685,7 +1688,7 @@ class Chain:
             numpy.ndarray: shape (6, n) for shape (n,); (N, 6, n) for (N, n).
         
         Example:
-            >>> arm = Chain([Chain.revolute_screw([0, 0, 1], [0, 0, 0])], SE3(translation=[1.0, 0.0, 0.0]))
+            >>> arm = Chain([Chain.revolute_screw([0, 0, 0], [0, 0, 1])], SE3(translation=[1.0, 0.0, 0.0]))
             >>> np.round(arm.jacobian_body([0.3])[:, 0], 12) + 0.0
             array([0., 1., 0., 0., 0., 1.])
         """
@@ -1703,7 +1706,7 @@ class Chain:
             numpy.ndarray: shape (6, n) for shape (n,); (N, 6, n) for (N, n).
         
         Example:
-            >>> arm = Chain([Chain.revolute_screw([0, 0, 1], [0, 0, 0])], np.eye(4))
+            >>> arm = Chain([Chain.revolute_screw([0, 0, 0], [0, 0, 1])], np.eye(4))
             >>> arm.jacobian_space([0.3])[:, 0]
             array([0., 0., 0., 0., 0., 1.])
         """

@@ -115,7 +115,7 @@ S exercise_all() noexcept {
   typename C6::Screws S6;
   for (int i = 0; i < 6; ++i)
     S6.col(i) = i % 3 == 2 ? C6::prismatic_screw(V3(w + V3::Constant(S(i))))
-                           : C6::revolute_screw(V3(w + V3::Constant(S(i))), V3(p * S(i)));
+                           : C6::revolute_screw(V3(p * S(i)), V3(w + V3::Constant(S(i))));
   const C6 c6(S6, g);
   typename C6::JointVector th6;
   for (int i = 0; i < 6; ++i) th6(i) = S(0.1) * S(i + 1);
@@ -124,7 +124,7 @@ S exercise_all() noexcept {
   sum += S(RealOf<S>(c6.joints())) + c6.space_screws().sum() + c6.body_screws().sum() + c6.home().translation().sum();
   typename CD::Screws SD(6, 7);
   SD.template leftCols<6>() = S6;
-  SD.col(6) = CD::revolute_screw(w, p);
+  SD.col(6) = CD::revolute_screw(p, w);
   const CD cd(SD, h);
   typename CD::JointVector thd(7);
   for (int i = 0; i < 7; ++i) thd(i) = S(-0.2) * S(i + 1);
