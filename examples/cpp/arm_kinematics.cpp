@@ -13,10 +13,10 @@ int main() {
   const double l1 = 0.4, l2 = 0.3, h = 0.5;  // link lengths, tool height at home (m)
 
   Arm::Screws S;  // one column (v, w) per joint, at home, in the base frame
-  S.col(0) = Arm::revolute_screw(Vector3d::UnitZ(), Vector3d::Zero());
-  S.col(1) = Arm::revolute_screw(Vector3d::UnitZ(), Vector3d(l1, 0, 0));
+  S.col(0) = Arm::revolute_screw(Vector3d::Zero(), Vector3d::UnitZ());
+  S.col(1) = Arm::revolute_screw(Vector3d(l1, 0, 0), Vector3d::UnitZ());
   S.col(2) = Arm::prismatic_screw(-Vector3d::UnitZ());  // the quill goes down
-  S.col(3) = Arm::revolute_screw(Vector3d::UnitZ(), Vector3d(l1 + l2, 0, 0));
+  S.col(3) = Arm::revolute_screw(Vector3d(l1 + l2, 0, 0), Vector3d::UnitZ());
   const Arm arm(S, SE3d(SO3d(), Vector3d(l1 + l2, 0, h)));
 
   const Arm::JointVector theta(0.3, -0.8, 0.1, 1.2);

@@ -16,10 +16,10 @@ from chasles import SE3, Chain
 l1, l2, h = 0.4, 0.3, 0.5  # link lengths and the tool's height at home (m)
 z = [0.0, 0.0, 1.0]
 screws = [
-    Chain.revolute_screw(z, [0.0, 0.0, 0.0]),
-    Chain.revolute_screw(z, [l1, 0.0, 0.0]),
+    Chain.revolute_screw([0.0, 0.0, 0.0], z),
+    Chain.revolute_screw([l1, 0.0, 0.0], z),
     Chain.prismatic_screw([0.0, 0.0, -1.0]),
-    Chain.revolute_screw(z, [l1 + l2, 0.0, 0.0]),
+    Chain.revolute_screw([l1 + l2, 0.0, 0.0], z),
 ]
 home = SE3(translation=[l1 + l2, 0.0, h])  # the tool frame at theta = 0
 arm = Chain(screws, home)

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "chasles/constants.hpp"
+#include "chasles/io.hpp"
 #include "chasles/jacobians.hpp"
 #include "chasles/kinematics.hpp"
 #include "chasles/screw.hpp"

@@ -20,9 +20,11 @@
 #include <Eigen/Core>
 
 #include "chasles/constants.hpp"
+#include "chasles/detail/arguments.hpp"
 #include "chasles/detail/series.hpp"
 #include "chasles/se3.hpp"
 #include "chasles/so3.hpp"
+#include "chasles/twist.hpp"
 
 namespace chasles {
 
@@ -120,7 +122,7 @@ inline Matrix3Of<Scalar> so3_left_jacobian_inverse(const Vector3Of<Scalar>& w) n
 template <typename Derived>
 inline Matrix6Of<typename Derived::Scalar> se3_left_jacobian(const Eigen::MatrixBase<Derived>& xi) noexcept {
   using Scalar = typename Derived::Scalar;
-  EIGEN_STATIC_ASSERT_VECTOR_SPECIFIC_SIZE(Derived, 6);
+  static_assert(Derived::IsVectorAtCompileTime && Derived::SizeAtCompileTime == 6, "xi is a 6-vector (v, w)");
   const Vector3Of<Scalar> v = xi.template head<3>();
   const Vector3Of<Scalar> w = xi.template tail<3>();
   return detail::upper_block_triangular<Scalar>(so3_left_jacobian<Scalar>(w), detail::se3_q<Scalar>(v, w));
@@ -131,7 +133,7 @@ inline Matrix6Of<typename Derived::Scalar> se3_left_jacobian(const Eigen::Matrix
 template <typename Derived>
 inline Matrix6Of<typename Derived::Scalar> se3_right_jacobian(const Eigen::MatrixBase<Derived>& xi) noexcept {
   using Scalar = typename Derived::Scalar;
-  EIGEN_STATIC_ASSERT_VECTOR_SPECIFIC_SIZE(Derived, 6);
+  static_assert(Derived::IsVectorAtCompileTime && Derived::SizeAtCompileTime == 6, "xi is a 6-vector (v, w)");
   const Vector3Of<Scalar> v = -xi.template head<3>();
   const Vector3Of<Scalar> w = -xi.template tail<3>();
   return detail::upper_block_triangular<Scalar>(so3_left_jacobian<Scalar>(w), detail::se3_q<Scalar>(v, w));
@@ -142,7 +144,7 @@ inline Matrix6Of<typename Derived::Scalar> se3_right_jacobian(const Eigen::Matri
 template <typename Derived>
 inline Matrix6Of<typename Derived::Scalar> se3_left_jacobian_inverse(const Eigen::MatrixBase<Derived>& xi) noexcept {
   using Scalar = typename Derived::Scalar;
-  EIGEN_STATIC_ASSERT_VECTOR_SPECIFIC_SIZE(Derived, 6);
+  static_assert(Derived::IsVectorAtCompileTime && Derived::SizeAtCompileTime == 6, "xi is a 6-vector (v, w)");
   const Vector3Of<Scalar> v = xi.template head<3>();
   const Vector3Of<Scalar> w = xi.template tail<3>();
   const Matrix3Of<Scalar> Ji = so3_left_jacobian_inverse<Scalar>(w);
@@ -154,7 +156,7 @@ inline Matrix6Of<typename Derived::Scalar> se3_left_jacobian_inverse(const Eigen
 template <typename Derived>
 inline Matrix6Of<typename Derived::Scalar> se3_right_jacobian_inverse(const Eigen::MatrixBase<Derived>& xi) noexcept {
   using Scalar = typename Derived::Scalar;
-  EIGEN_STATIC_ASSERT_VECTOR_SPECIFIC_SIZE(Derived, 6);
+  static_assert(Derived::IsVectorAtCompileTime && Derived::SizeAtCompileTime == 6, "xi is a 6-vector (v, w)");
   return se3_left_jacobian_inverse(Vector6Of<Scalar>(-xi));
 }
 
@@ -167,15 +169,33 @@ inline Matrix6Of<typename Derived::Scalar> se3_right_jacobian_inverse(const Eige
 // lminus(g, h) = log(g h^-1), so that lplus(lminus(g, h), h) == g.
 // (Sola section III.)
 
+// Beside a vector of the group's own type, the tangent vector of rplus and
+// lplus may be any Eigen vector expression of the right size (0.1 * dx, a
+// Map, a segment), of any scalar type that converts to the group's (a double
+// expression for a float group), or a Twist for SE(3); it is converted
+// explicitly (detail/arguments.hpp).
+
 /// g rplus xi = g exp(xi).
 template <typename Scalar>
 inline SO3<Scalar> rplus(const SO3<Scalar>& g, const Vector3Of<Scalar>& xi) noexcept {
   return g * SO3<Scalar>::exp(xi);
 }
+template <typename Scalar, typename Derived>
+inline SO3<Scalar> rplus(const SO3<Scalar>& g, const Eigen::MatrixBase<Derived>& xi) noexcept {
+  return rplus(g, detail::tangent_of<Scalar, 3>(xi));
+}
 /// g rplus xi = g exp(xi), xi = (v, w).
 template <typename Scalar>
 inline SE3<Scalar> rplus(const SE3<Scalar>& g, const Vector6Of<Scalar>& xi) noexcept {
   return g * SE3<Scalar>::exp(xi);
+}
+template <typename Scalar, typename Derived>
+inline SE3<Scalar> rplus(const SE3<Scalar>& g, const Eigen::MatrixBase<Derived>& xi) noexcept {
+  return rplus(g, detail::tangent_of<Scalar, 6>(xi));
+}
+template <typename Scalar>
+inline SE3<Scalar> rplus(const SE3<Scalar>& g, const Twist<Scalar>& xi) noexcept {
+  return rplus(g, xi.vector());
 }
 
 /// g rminus h = log(h^-1 g): the xi with h exp(xi) = g.
@@ -194,10 +214,22 @@ template <typename Scalar>
 inline SO3<Scalar> lplus(const Vector3Of<Scalar>& xi, const SO3<Scalar>& g) noexcept {
   return SO3<Scalar>::exp(xi) * g;
 }
+template <typename Derived, typename Scalar>
+inline SO3<Scalar> lplus(const Eigen::MatrixBase<Derived>& xi, const SO3<Scalar>& g) noexcept {
+  return lplus(detail::tangent_of<Scalar, 3>(xi), g);
+}
 /// xi lplus g = exp(xi) g, xi = (v, w).
 template <typename Scalar>
 inline SE3<Scalar> lplus(const Vector6Of<Scalar>& xi, const SE3<Scalar>& g) noexcept {
   return SE3<Scalar>::exp(xi) * g;
+}
+template <typename Derived, typename Scalar>
+inline SE3<Scalar> lplus(const Eigen::MatrixBase<Derived>& xi, const SE3<Scalar>& g) noexcept {
+  return lplus(detail::tangent_of<Scalar, 6>(xi), g);
+}
+template <typename Scalar>
+inline SE3<Scalar> lplus(const Twist<Scalar>& xi, const SE3<Scalar>& g) noexcept {
+  return lplus(xi.vector(), g);
 }
 
 /// g lminus h = log(g h^-1): the xi with exp(xi) h = g.
@@ -286,6 +318,17 @@ inline Vector3Of<Scalar> interpolate_jacobian_t(const SO3<Scalar>& a, const SO3<
 template <typename Scalar>
 inline Vector6Of<Scalar> interpolate_jacobian_t(const SE3<Scalar>& a, const SE3<Scalar>& b,
                                                 const Scalar& /*t*/) noexcept {
+  return rminus(b, a);
+}
+/// (t of another arithmetic type, as for interpolate.)
+template <typename Scalar, typename T, detail::EnableIfOtherArithmetic<Scalar, T> = 0>
+inline Vector3Of<Scalar> interpolate_jacobian_t(const SO3<Scalar>& a, const SO3<Scalar>& b,
+                                                const T& /*t*/) noexcept {
+  return rminus(b, a);
+}
+template <typename Scalar, typename T, detail::EnableIfOtherArithmetic<Scalar, T> = 0>
+inline Vector6Of<Scalar> interpolate_jacobian_t(const SE3<Scalar>& a, const SE3<Scalar>& b,
+                                                const T& /*t*/) noexcept {
   return rminus(b, a);
 }
 

@@ -7,10 +7,35 @@
 
 #include <Eigen/Core>
 
+#include "chasles/detail/assert.hpp"
 #include "chasles/se3.hpp"
 #include "chasles/twist.hpp"
 
 namespace chasles {
+
+namespace detail {
+
+/// The compile-time check of a joint vector's size against a chain's: Size,
+/// the vector's size (Eigen::Dynamic when known only at run time), against
+/// Joints (Eigen::Dynamic for a dynamic chain, bounded by MaxJoints). The
+/// static_assert compares the two numbers directly, so that the compilers
+/// print them with the message.
+template <int Joints, int MaxJoints, int Size, bool BothFixed = Joints != Eigen::Dynamic && Size != Eigen::Dynamic>
+struct JointVectorSize {
+  static_assert(Size == Eigen::Dynamic || Size <= MaxJoints,
+                "chasles::Chain: the joint vector's fixed size exceeds the chain's bound on its number of joints "
+                "(the comparison shown is: size of the joint vector <= MaxJoints)");
+  static constexpr bool ok = true;
+};
+template <int Joints, int MaxJoints, int Size>
+struct JointVectorSize<Joints, MaxJoints, Size, true> {
+  static_assert(Size == Joints,
+                "chasles::Chain: the joint vector's fixed size is not the chain's fixed number of joints "
+                "(the comparison shown is: size of the joint vector == number of joints)");
+  static constexpr bool ok = true;
+};
+
+}  // namespace detail
 
 /// A serial chain of n one-degree-of-freedom joints (revolute, prismatic or
 /// any screw joint), given by its space screws S_i (the joint twists at the
@@ -21,7 +46,10 @@ namespace chasles {
 /// `Joints` is n, or Eigen::Dynamic with `MaxJoints` a compile-time bound:
 /// screws, Jacobians and joint vectors then have a fixed capacity and never
 /// allocate. A dynamic chain holds 1 <= n <= MaxJoints joints (checked by
-/// Eigen's assertions only, as every size in Eigen).
+/// Eigen's assertions only, as every size in Eigen). A joint vector theta
+/// must have n entries: a fixed-size one is checked at compile time (its
+/// size equals a fixed n, or is at most MaxJoints), any other by
+/// eigen_assert.
 ///
 /// Every operation is noexcept, allocation-free and of cost O(n).
 template <typename Scalar_, int Joints, int MaxJoints = Joints>
@@ -52,11 +80,12 @@ class Chain {
     for (Eigen::Index i = 0; i < S_.cols(); ++i) B_.col(i) = M_inv.act(Twist<Scalar>(Vector6(S_.col(i)))).vector();
   }
 
-  /// The screw of a revolute joint about the axis through q along w
-  /// (normalized here; w != 0): (-w x q, w).
-  static Vector6 revolute_screw(const Vector3& axis, const Vector3& point) noexcept {
+  /// The screw of a revolute joint about the axis through `point` (q)
+  /// along `direction` (w, normalized here; w != 0): (-w x q, w). The point
+  /// comes first, as in every screw of chasles (SE3::from_screw).
+  static Vector6 revolute_screw(const Vector3& point, const Vector3& direction) noexcept {
     using std::sqrt;
-    const Vector3 w = axis / sqrt(axis.squaredNorm());
+    const Vector3 w = direction / sqrt(direction.squaredNorm());
     return detail::stack<Scalar>(Vector3(-w.cross(point)), w);
   }
   /// The screw of a prismatic joint along v (normalized here; v != 0): (v, 0).
@@ -68,7 +97,7 @@ class Chain {
   /// Space form: g(theta) = exp([S_1] th_1) ... exp([S_n] th_n) M.
   template <typename Derived>
   Group forward(const Eigen::MatrixBase<Derived>& theta) const noexcept {
-    eigen_assert(theta.size() == joints());
+    check_size(theta);
     Group g;
     for (Eigen::Index i = 0; i < joints(); ++i) g *= Group::exp(S_.col(i) * theta(i));
     return g * M_;
@@ -78,7 +107,7 @@ class Chain {
   /// `forward` (M exp([B]) M^-1 = exp([Ad_M B]) = exp([S])).
   template <typename Derived>
   Group forward_body(const Eigen::MatrixBase<Derived>& theta) const noexcept {
-    eigen_assert(theta.size() == joints());
+    check_size(theta);
     Group g = M_;
     for (Eigen::Index i = 0; i < joints(); ++i) g *= Group::exp(B_.col(i) * theta(i));
     return g;
@@ -88,7 +117,7 @@ class Chain {
   ///   column i = Ad_{exp([S_1] th_1) ... exp([S_{i-1}] th_{i-1})} S_i.
   template <typename Derived>
   Jacobian jacobian_space(const Eigen::MatrixBase<Derived>& theta) const noexcept {
-    eigen_assert(theta.size() == joints());
+    check_size(theta);
     const Eigen::Index n = joints();
     Jacobian J(6, n);
     Group g;
@@ -104,7 +133,7 @@ class Chain {
   /// J_s = Ad_{g(theta)} J_b.
   template <typename Derived>
   Jacobian jacobian_body(const Eigen::MatrixBase<Derived>& theta) const noexcept {
-    eigen_assert(theta.size() == joints());
+    check_size(theta);
     const Eigen::Index n = joints();
     Jacobian J(6, n);
     Group h;  // exp([B_{i+1}] th_{i+1}) ... exp([B_n] th_n)
@@ -125,6 +154,16 @@ class Chain {
   const Group& home() const noexcept { return M_; }
 
  private:
+  /// theta has n entries: checked at compile time when its size is fixed
+  /// (against a fixed n, or MaxJoints), at run time by eigen_assert (as Eigen
+  /// checks sizes) when n or its size is dynamic.
+  template <typename Derived>
+  void check_size(const Eigen::MatrixBase<Derived>& theta) const noexcept {
+    static_assert(detail::JointVectorSize<Joints, MaxJoints, Derived::SizeAtCompileTime>::ok);
+    static_cast<void>(theta);  // (unused when assertions are off)
+    CHASLES_ASSERT(theta.size() == joints());
+  }
+
   Screws S_;
   Screws B_;
   Group M_;

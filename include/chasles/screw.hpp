@@ -66,7 +66,7 @@ inline Screw<Scalar> screw_of_pair(const Eigen::Matrix<Scalar, 3, 1>& l,
     s.pitch = s.direction.dot(m) / s.magnitude;
     s.point = s.direction.cross(m) / s.magnitude;
     // Each finite (not their sum, which can overflow when none does).
-    if (s.pitch - s.pitch == Scalar(0) && all_finite(s.point)) return s;
+    if (is_finite(s.pitch) && all_finite(s.point)) return s;
   }
   s.point.setZero();
   if (norm_and_direction(m, s.magnitude, s.direction)) {
@@ -96,7 +96,7 @@ inline void pair_of_screw(const Eigen::Matrix<Scalar, 3, 1>& q, const Eigen::Mat
     m.setZero();
     return;
   }
-  if (pitch == Scalar(std::numeric_limits<RealOf<Scalar>>::infinity())) {
+  if (exactly_equal(pitch, Scalar(std::numeric_limits<RealOf<Scalar>>::infinity()))) {
     l.setZero();
     m = magnitude * u;
     return;

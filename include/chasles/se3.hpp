@@ -3,11 +3,13 @@
 
 #include <limits>
 #include <optional>
+#include <type_traits>
 
 #include <Eigen/Core>
 
 #include "chasles/constants.hpp"
 #include "chasles/detail/approx.hpp"
+#include "chasles/detail/arguments.hpp"
 #include "chasles/detail/series.hpp"
 #include "chasles/so3.hpp"
 #include "chasles/twist.hpp"
@@ -45,6 +47,19 @@ class SE3 {
 
   static SE3 identity() noexcept { return SE3(); }
 
+  /// Not a constructor: a 4x4 matrix becomes an SE3 through one of the three
+  /// explicit forms, `from_matrix` (checked), `from_matrix_projected` or
+  /// `from_matrix_unchecked`. This declaration only turns `SE3 g(M);` and
+  /// `SE3 g = M;` into a compile error that says so.
+  template <typename Derived, std::enable_if_t<Derived::RowsAtCompileTime == 4 && Derived::ColsAtCompileTime == 4,
+                                               int> = 0>
+  SE3(const Eigen::MatrixBase<Derived>& /*M*/) noexcept : R_(), p_() {
+    static_assert(detail::always_false<Derived>::value,
+                  "chasles::SE3 is not constructible from a matrix: use SE3::from_matrix(M) (checked: an "
+                  "std::optional, empty when M is not a rigid motion), SE3::from_matrix_projected(M) (the nearest "
+                  "rotation) or SE3::from_matrix_unchecked(M) (for data known to be a rigid motion)");
+  }
+
   // ---- Lie algebra ------------------------------------------------------
 
   /// [xi] = [[ [w], v ], [0, 0]] for xi = (v, w).
@@ -69,7 +84,8 @@ class SE3 {
   /// store-forwarding stall that doubled the cost in batch loops.
   template <typename Derived>
   static SE3 exp(const Eigen::MatrixBase<Derived>& xi) noexcept {
-    EIGEN_STATIC_ASSERT_VECTOR_SPECIFIC_SIZE(Derived, 6);
+    static_assert(Derived::IsVectorAtCompileTime && Derived::SizeAtCompileTime == 6,
+                  "SE3::exp: a twist is a 6-vector (v, w)");
     const Vector3 v = xi.template head<3>();
     const Vector3 w = xi.template tail<3>();
     const Scalar t = w.squaredNorm();
@@ -210,11 +226,13 @@ class SE3 {
                M.template topRightCorner<3, 1>());
   }
 
-  /// The screw motion about the axis through q along w_hat (normalized),
-  /// pitch h, by theta: exp(theta * (-w_hat x q + h w_hat, w_hat));
-  /// h = +inf is the translation theta * w_hat.
-  static SE3 from_screw(const Vector3& q, const Vector3& w_hat, const Scalar& h, const Scalar& theta) noexcept {
-    return exp(Twist<Scalar>::from_screw(q, w_hat, h, theta));
+  /// The screw motion about the axis through `point` q along `direction`
+  /// w_hat (normalized here), `pitch` h, by theta:
+  /// exp(theta * (-w_hat x q + h w_hat, w_hat)); h = +inf is the translation
+  /// theta * w_hat.
+  static SE3 from_screw(const Vector3& point, const Vector3& direction, const Scalar& pitch,
+                        const Scalar& theta) noexcept {
+    return exp(Twist<Scalar>::from_screw(point, direction, pitch, theta));
   }
 
   /// The same motion with the nearest rotation (removes drift).
@@ -241,6 +259,12 @@ class SE3 {
 template <typename Scalar>
 inline SE3<Scalar> interpolate(const SE3<Scalar>& a, const SE3<Scalar>& b, const Scalar& t) noexcept {
   return a * SE3<Scalar>::exp(Eigen::Matrix<Scalar, 6, 1>(t * (a.inverse() * b).log()));
+}
+/// The same with t of another arithmetic type, converted to Scalar
+/// (interpolate(a, b, 0.5) for float motions).
+template <typename Scalar, typename T, detail::EnableIfOtherArithmetic<Scalar, T> = 0>
+inline SE3<Scalar> interpolate(const SE3<Scalar>& a, const SE3<Scalar>& b, const T& t) noexcept {
+  return interpolate(a, b, detail::scalar_of<Scalar>(t));
 }
 
 using SE3f = SE3<float>;

@@ -3,12 +3,14 @@
 
 #include <limits>
 #include <optional>
+#include <type_traits>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
 #include "chasles/constants.hpp"
 #include "chasles/detail/approx.hpp"
+#include "chasles/detail/arguments.hpp"
 #include "chasles/detail/nearest_rotation.hpp"
 #include "chasles/detail/series.hpp"
 
@@ -18,6 +20,10 @@ template <typename Scalar_>
 class SO3;
 
 namespace detail {
+
+/// false, for a static_assert in a template that must not be instantiated.
+template <typename T>
+struct always_false : std::false_type {};
 
 /// What the so(3) log knows besides w, for the se(3) log to reuse.
 template <typename Scalar>
@@ -60,7 +66,7 @@ inline So3Log<Scalar> so3_log(const Eigen::Matrix<Scalar, 3, 3>& M) noexcept {
   Scalar uv2 = u.x * u.x + u.y * u.y + u.z * u.z;
   Scalar uw2 = u.w * u.w;
   const Scalar u2 = uv2 + uw2;
-  if (!(u2 - u2 == Scalar(0))) {  // not finite
+  if (!is_finite(u2)) {
     u = clamped_quaternion_power_step(M);  // cold: not near a rotation
     uv2 = u.x * u.x + u.y * u.y + u.z * u.z;
     uw2 = u.w * u.w;
@@ -70,7 +76,7 @@ inline So3Log<Scalar> so3_log(const Eigen::Matrix<Scalar, 3, 3>& M) noexcept {
   const Vector3 uv(sign * u.x, sign * u.y, sign * u.z);
   const Scalar uw = sign * u.w;
   So3Log<Scalar> out;
-  if (uv2 < Scalar(0.25 * ThresholdsOf<Scalar>::taylor_theta2) * uw2) {
+  if (uv2 < Scalar(ThresholdsOf<Scalar>::taylor_theta2 / 4) * uw2) {
     // x^2 = tan^2(theta/2) < cutoff / 4: 4 x^2 is theta^2 to within the series' accuracy.
     const Scalar inv_w = Scalar(1) / uw;
     const Scalar x2 = uv2 * inv_w * inv_w;
@@ -140,6 +146,19 @@ class SO3 {
 
   static SO3 identity() noexcept { return SO3(); }
 
+  /// Not a constructor: a 3x3 matrix becomes an SO3 through one of the three
+  /// explicit forms, `from_matrix` (checked), `from_matrix_projected` or
+  /// `from_matrix_unchecked`. This declaration only turns `SO3 R(M);` and
+  /// `SO3 R = M;` into a compile error that says so.
+  template <typename Derived, std::enable_if_t<Derived::RowsAtCompileTime == 3 && Derived::ColsAtCompileTime == 3,
+                                               int> = 0>
+  SO3(const Eigen::MatrixBase<Derived>& /*M*/) noexcept : R_() {
+    static_assert(detail::always_false<Derived>::value,
+                  "chasles::SO3 is not constructible from a matrix: use SO3::from_matrix(M) (checked: an "
+                  "std::optional, empty when M is not a rotation), SO3::from_matrix_projected(M) (the nearest "
+                  "rotation) or SO3::from_matrix_unchecked(M) (for data known to be a rotation)");
+  }
+
   // ---- Lie algebra ------------------------------------------------------
 
   /// hat(w) = [w] = [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]], so [w] p = w x p.
@@ -175,10 +194,10 @@ class SO3 {
     const Scalar t = w.squaredNorm();
     if (!(t < Scalar(ThresholdsOf<Scalar>::huge_theta2))) {
       const auto r = detail::long_rotation(w);
-      return SO3(detail::rodrigues(r.axis, r.sin_theta, r.one_minus_cos));
+      return SO3(Unchecked(), detail::rodrigues(r.axis, r.sin_theta, r.one_minus_cos));
     }
     const auto k = detail::exp_coefficients(t);
-    return SO3(detail::rodrigues(w, k.a, k.b));
+    return SO3(Unchecked(), detail::rodrigues(w, k.a, k.b));
   }
 
   /// The rotation vector w with exp([w]) = R and |w| in [0, pi]. At exactly
@@ -188,10 +207,10 @@ class SO3 {
 
   // ---- group operations -------------------------------------------------
 
-  SO3 inverse() const noexcept { return SO3(R_.transpose()); }
+  SO3 inverse() const noexcept { return SO3(Unchecked(), R_.transpose()); }
 
   /// Composition: (R_ab * R_bc) = R_ac.
-  SO3 operator*(const SO3& other) const noexcept { return SO3(R_ * other.R_); }
+  SO3 operator*(const SO3& other) const noexcept { return SO3(Unchecked(), R_ * other.R_); }
   SO3& operator*=(const SO3& other) noexcept {
     R_ = R_ * other.R_;
     return *this;
@@ -247,7 +266,7 @@ class SO3 {
     R << Scalar(1) - s * (y * y + z * z), s * (x * y - z * w), s * (x * z + y * w),  //
         s * (x * y + z * w), Scalar(1) - s * (x * x + z * z), s * (y * z - x * w),  //
         s * (x * z - y * w), s * (y * z + x * w), Scalar(1) - s * (x * x + y * y);
-    return SO3(R);
+    return SO3(Unchecked(), R);
   }
 
   /// How far M is from a rotation: max(|M^T M - I|_max, |det M - 1|).
@@ -268,12 +287,12 @@ class SO3 {
   /// otherwise nothing. The default tolerance is sqrt(eps) (constants.hpp).
   static std::optional<SO3> from_matrix(
       const Matrix3& M, const Scalar& tolerance = Scalar(ThresholdsOf<Scalar>::rotation_tolerance)) noexcept {
-    if (rotation_defect(M) <= tolerance) return SO3(M);
+    if (rotation_defect(M) <= tolerance) return SO3(Unchecked(), M);
     return std::nullopt;
   }
 
   /// Unchecked construction: for data known to be a rotation. No cost.
-  static SO3 from_matrix_unchecked(const Matrix3& M) noexcept { return SO3(M); }
+  static SO3 from_matrix_unchecked(const Matrix3& M) noexcept { return SO3(Unchecked(), M); }
 
   /// Projecting construction: the rotation nearest to M in the Frobenius
   /// norm (for det M > 0, the orthogonal polar factor), for every finite M,
@@ -299,7 +318,8 @@ class SO3 {
   }
 
  private:
-  explicit SO3(const Matrix3& R) noexcept : R_(R) {}
+  struct Unchecked {};
+  SO3(Unchecked, const Matrix3& R) noexcept : R_(R) {}
 
   Matrix3 R_;
 };
@@ -308,6 +328,12 @@ class SO3 {
 template <typename Scalar>
 inline SO3<Scalar> interpolate(const SO3<Scalar>& a, const SO3<Scalar>& b, const Scalar& t) noexcept {
   return a * SO3<Scalar>::exp(t * (a.inverse() * b).log());
+}
+/// The same with t of another arithmetic type, converted to Scalar
+/// (interpolate(a, b, 0.5) for float rotations).
+template <typename Scalar, typename T, detail::EnableIfOtherArithmetic<Scalar, T> = 0>
+inline SO3<Scalar> interpolate(const SO3<Scalar>& a, const SO3<Scalar>& b, const T& t) noexcept {
+  return interpolate(a, b, detail::scalar_of<Scalar>(t));
 }
 
 using SO3f = SO3<float>;

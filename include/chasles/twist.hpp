@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 
 #include "chasles/detail/approx.hpp"
+#include "chasles/detail/arguments.hpp"
 #include "chasles/screw.hpp"
 #include "chasles/so3.hpp"
 
@@ -94,12 +95,12 @@ class Twist {
 
   /// The unit twist of a screw times theta:
   ///   theta * (-w_hat x q + h w_hat, w_hat)
-  /// for the axis through q along w_hat (normalized here), pitch h; with
-  /// h = +inf, the translation theta * (w_hat, 0).
-  static Twist from_screw(const Vector3& q, const Vector3& w_hat, const Scalar& h,
+  /// for the axis through `point` q along `direction` w_hat (normalized
+  /// here), `pitch` h; with h = +inf, the translation theta * (w_hat, 0).
+  static Twist from_screw(const Vector3& point, const Vector3& direction, const Scalar& pitch,
                           const Scalar& theta) noexcept {
     Vector3 w, v;
-    detail::pair_of_screw(q, w_hat, h, theta, w, v);
+    detail::pair_of_screw(point, direction, pitch, theta, w, v);
     return Twist(v, w);
   }
   static Twist from_screw(const Screw<Scalar>& s) noexcept {
@@ -130,6 +131,11 @@ class Twist {
   Twist operator-(const Twist& o) const noexcept { return Twist(Vector6(xi_ - o.xi_)); }
   Twist operator-() const noexcept { return Twist(Vector6(-xi_)); }
   Twist operator*(const Scalar& s) const noexcept { return Twist(Vector6(xi_ * s)); }
+  /// x * s for s of another arithmetic type (0.1 for a float twist), converted explicitly.
+  template <typename T, detail::EnableIfOtherArithmetic<Scalar, T> = 0>
+  Twist operator*(const T& s) const noexcept {
+    return *this * detail::scalar_of<Scalar>(s);
+  }
 
   /// max |xi - other| <= tol * max(1, max |xi|, max |other|).
   bool is_approx(const Twist& other, const RealOf<Scalar>& tol) const noexcept {
@@ -144,6 +150,10 @@ class Twist {
 template <typename Scalar>
 inline Twist<Scalar> operator*(const typename Twist<Scalar>::Scalar& s, const Twist<Scalar>& x) noexcept {
   return x * s;
+}
+template <typename Scalar, typename T, detail::EnableIfOtherArithmetic<Scalar, T> = 0>
+inline Twist<Scalar> operator*(const T& s, const Twist<Scalar>& x) noexcept {
+  return x * detail::scalar_of<Scalar>(s);
 }
 
 using Twistf = Twist<float>;

@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 
 #include "chasles/detail/approx.hpp"
+#include "chasles/detail/arguments.hpp"
 #include "chasles/screw.hpp"
 #include "chasles/twist.hpp"
 
@@ -51,11 +52,12 @@ class Wrench {
   Scalar pitch() const noexcept { return screw().pitch; }
 
   /// The wrench of a screw: magnitude * (d, q x d + h d) for the line
-  /// through q along d (normalized here), pitch h; with h = +inf, the couple
-  /// (0, magnitude * d).
-  static Wrench from_screw(const Vector3& q, const Vector3& d, const Scalar& h, const Scalar& magnitude) noexcept {
+  /// through `point` q along `direction` d (normalized here), `pitch` h; with
+  /// h = +inf, the couple (0, magnitude * d).
+  static Wrench from_screw(const Vector3& point, const Vector3& direction, const Scalar& pitch,
+                           const Scalar& magnitude) noexcept {
     Vector3 f, tau;
-    detail::pair_of_screw(q, d, h, magnitude, f, tau);
+    detail::pair_of_screw(point, direction, pitch, magnitude, f, tau);
     return Wrench(f, tau);
   }
   static Wrench from_screw(const Screw<Scalar>& s) noexcept {
@@ -71,6 +73,11 @@ class Wrench {
   Wrench operator-(const Wrench& o) const noexcept { return Wrench(Vector6(F_ - o.F_)); }
   Wrench operator-() const noexcept { return Wrench(Vector6(-F_)); }
   Wrench operator*(const Scalar& s) const noexcept { return Wrench(Vector6(F_ * s)); }
+  /// x * s for s of another arithmetic type (0.1 for a float wrench), converted explicitly.
+  template <typename T, detail::EnableIfOtherArithmetic<Scalar, T> = 0>
+  Wrench operator*(const T& s) const noexcept {
+    return *this * detail::scalar_of<Scalar>(s);
+  }
 
   /// max |F - other| <= tol * max(1, max |F|, max |other|).
   bool is_approx(const Wrench& other, const RealOf<Scalar>& tol) const noexcept {
@@ -91,6 +98,10 @@ inline Scalar power(const Twist<Scalar>& V, const Wrench<Scalar>& F) noexcept {
 template <typename Scalar>
 inline Wrench<Scalar> operator*(const typename Wrench<Scalar>::Scalar& s, const Wrench<Scalar>& x) noexcept {
   return x * s;
+}
+template <typename Scalar, typename T, detail::EnableIfOtherArithmetic<Scalar, T> = 0>
+inline Wrench<Scalar> operator*(const T& s, const Wrench<Scalar>& x) noexcept {
+  return x * detail::scalar_of<Scalar>(s);
 }
 
 using Wrenchf = Wrench<float>;

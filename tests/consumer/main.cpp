@@ -5,7 +5,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <iostream>
 #include <optional>
+#include <sstream>
+#include <string>
 
 int main() {
 #include "readme_quick_start.inc"
@@ -20,7 +23,12 @@ int main() {
   err += std::abs(power(g.act(V), F_a) - power(V, F_b));
   const bool accepted = R.has_value() && R->is_approx(g.rotation(), 0.0);
   const bool refused = !SO3d::from_matrix(Eigen::Matrix3d(2.0 * M)).has_value();
-  std::printf("translation %.17g %.17g %.17g, error %.3g, rotation accepted: %s, twice it refused: %s\n", p.x(), p.y(),
-              p.z(), err, accepted ? "yes" : "no", refused ? "yes" : "no");
-  return err < 1e-14 && accepted && refused ? 0 : 1;
+  std::ostringstream printed;  // what the quick start prints, as its comment says
+  printed << g;
+  const bool prints = printed.str() ==
+                      "SE3(rotation=[[0.764842, -0.644218, 0], [0.644218, 0.764842, 0], [0, 0, 1]], "
+                      "translation=[1.28844, 0.470316, 0])";
+  std::printf("translation %.17g %.17g %.17g, error %.3g, rotation accepted: %s, twice it refused: %s, prints: %s\n",
+              p.x(), p.y(), p.z(), err, accepted ? "yes" : "no", refused ? "yes" : "no", prints ? "yes" : "no");
+  return err < 1e-14 && accepted && refused && prints ? 0 : 1;
 }

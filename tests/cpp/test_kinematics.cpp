@@ -230,9 +230,9 @@ TYPED_TEST(Kinematics, RevoluteAndPrismaticScrews) {
   const V3 z(0, 0, 1), y(0, 1, 0);
   const V3 q1(0, 0, 0), q2(0, 0, S(H1)), q3(S(L1), 0, S(H1)), q4(S(L1 + L2), 0, S(H1));
   const V3 q5(S(L1 + L2), S(W1), 0), q6(S(L1 + L2), 0, S(H1 - H2));
-  const typename C::Vector6 s[6] = {C::revolute_screw(z, q1),       C::revolute_screw(S(3) * y, q2),
-                                    C::revolute_screw(y, q3),       C::revolute_screw(y, q4),
-                                    C::revolute_screw(V3(-z), q5),  C::revolute_screw(y, q6)};
+  const typename C::Vector6 s[6] = {C::revolute_screw(q1, z),       C::revolute_screw(q2, S(3) * y),
+                                    C::revolute_screw(q3, y),       C::revolute_screw(q4, y),
+                                    C::revolute_screw(q5, V3(-z)),  C::revolute_screw(q6, y)};
   for (int i = 0; i < 6; ++i) EXPECT_TRUE(near<S>(s[i], V6L(u.S.col(i)), 4)) << "joint " << i + 1;
   const typename C::Vector6 p = C::prismatic_screw(V3(0, S(3), S(4)));
   EXPECT_TRUE(near<S>(p, V6L((V6L() << 0, 0.6L, 0.8L, 0, 0, 0).finished()), 4));

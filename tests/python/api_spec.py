@@ -882,8 +882,8 @@ def _build_spec():
     spec["Chain.revolute_screw"] = _static(
         Chain,
         "revolute_screw",
-        Array("Chain.revolute_screw(axis)", (3,)),
         Array("Chain.revolute_screw(point)", (3,)),
+        Array("Chain.revolute_screw(direction)", (3,)),
     )
     spec["Chain.prismatic_screw"] = _static(
         Chain, "prismatic_screw", Array("Chain.prismatic_screw(direction)", (3,))

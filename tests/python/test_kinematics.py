@@ -156,7 +156,7 @@ def test_screws_and_properties():
          [L1 + L2, 0, H1 - H2]],
         UR5_SCREWS,
     ):
-        screw = Chain.revolute_screw(np.array(axis) * 2.5, point)
+        screw = Chain.revolute_screw(point, np.array(axis) * 2.5)
         np.testing.assert_allclose(screw, s, rtol=0, atol=4 * EPS)
     np.testing.assert_allclose(
         Chain.prismatic_screw([0, 3, 4]), [0, 0.6, 0.8, 0, 0, 0], rtol=0, atol=EPS
@@ -216,7 +216,7 @@ def test_errors_name_expected_and_received_shapes():
     with pytest.raises(TypeError, match=r"Chain.forward\(theta\): .*not supported for the input types"):
         arm.forward(np.zeros(6, complex))
     with pytest.raises(ValueError, match=r"nonzero"):
-        Chain.revolute_screw([0, 0, 0], [1, 2, 3])
+        Chain.revolute_screw([1, 2, 3], [0, 0, 0])
     with pytest.raises(ValueError, match=r"nonzero"):
         Chain.prismatic_screw([0, 0, 0])
 

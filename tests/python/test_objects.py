@@ -595,7 +595,7 @@ def all_kinds():
         Twist(v=[1.0, 2.0, 3.0], w=[0.0, 0.0, 1.0]).screw(),
         Twist(v=[1.0, 2.0, 3.0]).screw(),
         Chain(
-            [Chain.revolute_screw([0, 0, 1], [1.0 / 3.0, 0, 0]), Chain.prismatic_screw([1, 2, 3])],
+            [Chain.revolute_screw([1.0 / 3.0, 0, 0], [0, 0, 1]), Chain.prismatic_screw([1, 2, 3])],
             g,
         ),
     ]

@@ -32,14 +32,29 @@ inline bool approx_equal(const Eigen::MatrixBase<DerivedA>& a, const Eigen::Matr
   return true;
 }
 
-/// Whether every entry is finite: x - x is 0 for finite x and NaN for inf
-/// and NaN. (Eigen's allFinite() calls isfinite, which autodiff scalars lack.)
+/// Whether x is finite: x - x is 0 for finite x and NaN for inf and NaN,
+/// so x - x <= 0 holds exactly for finite x (one comparison, no ==).
+/// (std::isfinite does not take autodiff scalars.)
+template <typename Scalar>
+inline bool is_finite(const Scalar& x) noexcept {
+  return x - x <= Scalar(0);
+}
+
+/// a == b exactly (NaN equal to nothing), for the places that mean an exact
+/// comparison of floating-point numbers: spelled a <= b && b <= a, the same
+/// test, so that -Wfloat-equal keeps flagging every accidental ==.
+template <typename Scalar>
+inline bool exactly_equal(const Scalar& a, const Scalar& b) noexcept {
+  return a <= b && b <= a;
+}
+
+/// Whether every entry is finite (is_finite). (Eigen's allFinite() calls
+/// isfinite, which autodiff scalars lack.)
 template <typename Derived>
 inline bool all_finite(const Eigen::MatrixBase<Derived>& a) noexcept {
-  using Scalar = typename Derived::Scalar;
   for (Eigen::Index j = 0; j < a.cols(); ++j)
     for (Eigen::Index i = 0; i < a.rows(); ++i)
-      if (!(a(i, j) - a(i, j) == Scalar(0))) return false;
+      if (!is_finite(a(i, j))) return false;
   return true;
 }
 

@@ -20,8 +20,7 @@ struct Quaternion4 {
   /// in it is not finite (a sum that overflows also reads as not finite;
   /// callers then take their slower, clamped path).
   bool finite() const noexcept {
-    const Scalar sum = w + x + y + z;
-    return sum - sum == Scalar(0);
+    return is_finite(Scalar(w + x + y + z));
   }
 };
 

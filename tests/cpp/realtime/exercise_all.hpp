@@ -100,28 +100,37 @@ S exercise_all() noexcept {
   sum += ar.group.sum() + ar.point.sum() + ag.group.sum() + ag.point.sum();
   sum += interpolate_jacobian_t(R, I, S(0.3)).sum() + interpolate_jacobian_t(g, h, S(0.3)).sum();
 
+  // Arguments in other types (detail/arguments.hpp): vector expressions, a
+  // double vector, a Twist, t and factors as double and int literals.
+  sum += rplus(R, w * S(0.5)).matrix().sum() + lplus(w * S(0.5), R).matrix().sum();
+  sum += rplus(R, Eigen::Vector3d(0.1, 0.2, 0.3)).matrix().sum() + rplus(g, xi.template head<6>()).translation().sum();
+  sum += rplus(g, tw).translation().sum() + lplus(tw, g).translation().sum() + lplus(xi * S(2), g).translation().sum();
+  sum += interpolate(R, I, 0.25).matrix().sum() + interpolate(g, h, 1).translation().sum();
+  sum += interpolate_jacobian_t(R, I, 0.5).sum() + interpolate_jacobian_t(g, h, 0.5).sum();
+  sum += (tw * 2).vector().sum() + (0.5 * tw).vector().sum() + (F * 2).vector().sum() + (0.5 * F).vector().sum();
+
   // Chain (kinematics.hpp): fixed size, and dynamic with a compile-time bound.
   using C6 = Chain<S, 6>;
   using CD = Chain<S, Eigen::Dynamic, 8>;
   typename C6::Screws S6;
   for (int i = 0; i < 6; ++i)
     S6.col(i) = i % 3 == 2 ? C6::prismatic_screw(V3(w + V3::Constant(S(i))))
-                           : C6::revolute_screw(V3(w + V3::Constant(S(i))), V3(p * S(i)));
+                           : C6::revolute_screw(V3(p * S(i)), V3(w + V3::Constant(S(i))));
   const C6 c6(S6, g);
   typename C6::JointVector th6;
   for (int i = 0; i < 6; ++i) th6(i) = S(0.1) * S(i + 1);
   sum += c6.forward(th6).translation().sum() + c6.forward_body(th6).translation().sum();
   sum += c6.jacobian_space(th6).sum() + c6.jacobian_body(th6).sum();
-  sum += S(c6.joints()) + c6.space_screws().sum() + c6.body_screws().sum() + c6.home().translation().sum();
+  sum += S(RealOf<S>(c6.joints())) + c6.space_screws().sum() + c6.body_screws().sum() + c6.home().translation().sum();
   typename CD::Screws SD(6, 7);
   SD.template leftCols<6>() = S6;
-  SD.col(6) = CD::revolute_screw(w, p);
+  SD.col(6) = CD::revolute_screw(p, w);
   const CD cd(SD, h);
   typename CD::JointVector thd(7);
   for (int i = 0; i < 7; ++i) thd(i) = S(-0.2) * S(i + 1);
   sum += cd.forward(thd).translation().sum() + cd.forward_body(thd).translation().sum();
   sum += cd.jacobian_space(thd).sum() + cd.jacobian_body(thd).sum();
-  sum += S(cd.joints()) + cd.space_screws().sum() + cd.body_screws().sum() + cd.home().translation().sum();
+  sum += S(RealOf<S>(cd.joints())) + cd.space_screws().sum() + cd.body_screws().sum() + cd.home().translation().sum();
   return sum;
 }
 

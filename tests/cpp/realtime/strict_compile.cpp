@@ -1,8 +1,13 @@
 // Every header and every operation, for float, double and an autodiff
-// scalar, compiled with -fno-exceptions -fno-rtti -Wall -Wextra -Wpedantic
-// -Werror (tests/cpp/CMakeLists.txt): a build that succeeds is the test.
+// scalar, compiled with -fno-exceptions -fno-rtti and the warnings of
+// tests/cpp/strict_flags.cmake as errors (tests/cpp/CMakeLists.txt, and with
+// both GCC and Clang by strict_headers.cmake): a build that succeeds is the
+// test. The operator<< of every type too (io.hpp), outside exercise_all,
+// which the allocation test also runs.
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
+#include <sstream>
 
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
@@ -10,8 +15,11 @@
 #include "chasles/chasles.hpp"
 #include "chasles/constants.hpp"
 #include "chasles/detail/approx.hpp"
+#include "chasles/detail/arguments.hpp"
+#include "chasles/detail/assert.hpp"
 #include "chasles/detail/nearest_rotation.hpp"
 #include "chasles/detail/series.hpp"
+#include "chasles/io.hpp"
 #include "chasles/jacobians.hpp"
 #include "chasles/kinematics.hpp"
 #include "chasles/screw.hpp"
@@ -21,12 +29,37 @@
 #include "chasles/wrench.hpp"
 #include "realtime/exercise_all.hpp"
 
+namespace {
+
+/// Prints one object of every public type; returns the length of the text.
+template <typename S>
+std::size_t print_all() {
+  using namespace chasles;
+  using V3 = Eigen::Matrix<S, 3, 1>;
+  const V3 w(S(0.3), S(-0.2), S(0.1)), p(S(1), S(2), S(3));
+  const SO3<S> R = SO3<S>::exp(w);
+  const SE3<S> g(R, p);
+  const Twist<S> xi(p, w);
+  typename Chain<S, 2>::Screws screws;
+  screws.col(0) = Chain<S, 2>::revolute_screw(p, w);
+  screws.col(1) = Chain<S, 2>::prismatic_screw(w);
+  typename Chain<S, Eigen::Dynamic, 4>::Screws dynamic_screws(6, 1);
+  dynamic_screws.col(0) = screws.col(0);
+  std::ostringstream os;
+  os << R << g << xi << Wrench<S>(p, w) << xi.screw() << Chain<S, 2>(screws, g)
+     << Chain<S, Eigen::Dynamic, 4>(dynamic_screws, g) << compose_jacobians(g, g) << act_jacobians(R, p);
+  return os.str().size();
+}
+
+}  // namespace
+
 int main() {
   using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, 6, 1>>;
   const double a = chasles_test::exercise_all<double>();
   const float b = chasles_test::exercise_all<float>();
   const AD c = chasles_test::exercise_all<AD>();
-  const bool ok = std::isfinite(a) && std::isfinite(b) && std::isfinite(c.value());
+  const bool printed = print_all<double>() > 0 && print_all<float>() > 0 && print_all<AD>() > 0;
+  const bool ok = std::isfinite(a) && std::isfinite(b) && std::isfinite(c.value()) && printed;
   std::printf("strict compile: %s\n", ok ? "ok" : "non-finite checksum");
   return ok ? 0 : 1;
 }
