@@ -1551,14 +1551,15 @@ class Chain:
     configuration in the base frame, one row (v, w) per joint, linear part first)
     and its home pose M = g(0); it keeps the body screws B_i = Ad_{M^-1} S_i.
     Revolute joints about the axis through q along w have the screw
-    (-w x q, w) (``Chain.revolute_screw``), prismatic joints along v the screw
-    (v, 0) (``Chain.prismatic_screw``). At most 32 joints. Its methods
-    forward, forward_body, jacobian_space and jacobian_body are array
-    functions: joint positions of shape (..., n) in, arrays out.
+    (-w x q, w) (``Chain.revolute_screw(point, direction)``: the point first, as
+    in ``SE3.from_screw``), prismatic joints along v the screw (v, 0)
+    (``Chain.prismatic_screw``). At most 32 joints. Its methods forward,
+    forward_body, jacobian_space and jacobian_body are array functions: joint
+    positions of shape (..., n) in, arrays out.
     
     Example:
-        >>> screws = [Chain.revolute_screw([0, 0, 1], [0, 0, 0]),
-        ...           Chain.revolute_screw([0, 0, 1], [1, 0, 0])]
+        >>> screws = [Chain.revolute_screw([0, 0, 0], [0, 0, 1]),
+        ...           Chain.revolute_screw([1, 0, 0], [0, 0, 1])]
         >>> arm = Chain(screws, SE3(translation=[2.0, 0.0, 0.0]))
         >>> np.round(arm.forward([np.pi / 2, 0.0])[:3, 3], 12) + 0.0
         array([0., 2., 0.])
@@ -1604,19 +1605,21 @@ class Chain:
             array([0. , 0.6, 0.8, 0. , 0. , 0. ])
         """
     @staticmethod
-    def revolute_screw(axis: numpy.typing.ArrayLike, point: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+    def revolute_screw(point: numpy.typing.ArrayLike, direction: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
-        The screw of a revolute joint: (-w x q, w), w = axis / |axis|.
+        The screw of a revolute joint about the axis through q along w: (-w x q, w).
+        
+        The point comes first, as in ``SE3.from_screw(point, direction, ...)``.
         
         Args:
-            axis: shape (3,), the joint axis, nonzero (normalized here).
             point: shape (3,), q, any point on the axis.
+            direction: shape (3,), the joint axis, nonzero (normalized here: w = direction / |direction|).
         
         Returns:
             numpy.ndarray: shape (6,), (v, w), linear part first.
         
         Example:
-            >>> Chain.revolute_screw([0, 0, 2], [1, 0, 0])
+            >>> Chain.revolute_screw([1, 0, 0], [0, 0, 2])
             array([ 0., -1.,  0.,  0.,  0.,  1.])
         """
     def __copy__(self) -> Chain:
@@ -1694,7 +1697,7 @@ class Chain:
             numpy.ndarray: shape (..., 4, 4).
         
         Example:
-            >>> arm = Chain([Chain.revolute_screw([0, 0, 1], [1, 0, 0])], np.eye(4))
+            >>> arm = Chain([Chain.revolute_screw([1, 0, 0], [0, 0, 1])], np.eye(4))
             >>> np.allclose(arm.forward_body([0.3]), arm.forward([0.3]), rtol=0, atol=1e-15)
             True
         """
@@ -1715,7 +1718,7 @@ class Chain:
             numpy.ndarray: shape (..., 6, n).
         
         Example:
-            >>> arm = Chain([Chain.revolute_screw([0, 0, 1], [0, 0, 0])], SE3(translation=[1.0, 0.0, 0.0]))
+            >>> arm = Chain([Chain.revolute_screw([0, 0, 0], [0, 0, 1])], SE3(translation=[1.0, 0.0, 0.0]))
             >>> np.round(arm.jacobian_body([0.3])[:, 0], 12) + 0.0
             array([0., 1., 0., 0., 0., 1.])
         """
@@ -1737,7 +1740,7 @@ class Chain:
             numpy.ndarray: shape (..., 6, n).
         
         Example:
-            >>> arm = Chain([Chain.revolute_screw([0, 0, 1], [0, 0, 0])], np.eye(4))
+            >>> arm = Chain([Chain.revolute_screw([0, 0, 0], [0, 0, 1])], np.eye(4))
             >>> arm.jacobian_space([0.3])[:, 0]
             array([0., 0., 0., 0., 0., 1.])
         """
