@@ -33,7 +33,7 @@ Example:
     >>> screws = [Chain.revolute_screw([0, 0, 1], [0, 0, 0]),
     ...           Chain.revolute_screw([0, 0, 1], [1, 0, 0])]
     >>> arm = Chain(screws, SE3(translation=[2.0, 0.0, 0.0]))
-    >>> np.round(arm.forward([np.pi / 2, 0.0]).translation(), 12) + 0.0
+    >>> np.round(arm.forward([np.pi / 2, 0.0]).translation, 12) + 0.0
     array([0., 2., 0.])
     >>> arm.jacobian_space([0.0, 0.0]).shape
     (6, 2)
@@ -226,7 +226,7 @@ Returns:
 
 Example:
     >>> arm = Chain([Chain.prismatic_screw([1, 0, 0])], np.eye(4))
-    >>> arm.forward([0.5]).translation()
+    >>> arm.forward([0.5]).translation
     array([0.5, 0. , 0. ])
     >>> arm.forward([[0.5], [1.0]]).shape
     (2, 4, 4)

@@ -95,7 +95,7 @@ Args:
     translation: shape (3,), p, finite (default: 0).
 
 Example:
-    >>> SE3(translation=[1.0, 2.0, 3.0]).translation()
+    >>> SE3(translation=[1.0, 2.0, 3.0]).translation
     array([1., 2., 3.])
 )doc");
 
@@ -123,7 +123,7 @@ Returns:
 
 Example:
     >>> g = SE3.exp([1.0, 0.0, 0.0, 0.0, 0.0, np.pi / 2])
-    >>> np.round(g.translation(), 12) + 0.0
+    >>> np.round(g.translation, 12) + 0.0
     array([0.63661977, 0.63661977, 0.        ])
 )doc");
 
@@ -277,19 +277,14 @@ Returns:
 
   // ---- access and conversions ---------------------------------------------
 
-  cls.def("rotation", [](Obj<SE3d> g) { return g->rotation(); }, R"doc(The rotation R.
+  // Stored parts are properties (read-only: the values are immutable).
+  cls.def_property_readonly(
+      "rotation", [](Obj<SE3d> g) { return g->rotation(); },
+      R"doc(SO3: the rotation R of g = [[R, p], [0, 1]] (a stored part; a copy).)doc");
 
-Returns:
-    SO3: R.
-)doc");
-
-  cls.def(
+  cls.def_property_readonly(
       "translation", [](Obj<SE3d> g) { return vec_out<3>(g->translation()); },
-      R"doc(The translation p.
-
-Returns:
-    ndarray: p, shape (3,).
-)doc");
+      R"doc(ndarray: the translation p of g = [[R, p], [0, 1]], shape (3,) (a stored part; a new array).)doc");
 
   cls.def(
       "as_matrix", [](Obj<SE3d> g) { return mat_out<4, 4>(g->matrix()); },
@@ -412,7 +407,7 @@ Returns:
 
 Example:
     >>> g = SE3.from_screw([0.0, 2.0, 0.0], [0.0, 0.0, 1.0], 0.0, np.pi / 2)
-    >>> np.round(g.translation(), 12) + 0.0
+    >>> np.round(g.translation, 12) + 0.0
     array([2., 2., 0.])
     >>> np.round(g @ [0.0, 2.0, 5.0], 12) + 0.0
     array([0., 2., 5.])
@@ -445,7 +440,7 @@ Returns:
 
 Example:
     >>> a, b = SE3(), SE3(translation=[2.0, 0.0, 0.0])
-    >>> SE3.interpolate(a, b, 0.5).translation()
+    >>> SE3.interpolate(a, b, 0.5).translation
     array([1., 0., 0.])
 )doc");
 
@@ -541,7 +536,7 @@ Returns:
 
 Example:
     >>> m = chasles.interpolate(SE3(), SE3(translation=[0.0, 0.0, 4.0]), 0.25)
-    >>> m.translation()
+    >>> m.translation
     array([0., 0., 1.])
 )doc");
 }

@@ -391,8 +391,17 @@ Example:
     >>> s.pitch, s.magnitude
     (0.5, 1.0)
 )doc");
-  cls.def_property_readonly(
-      "pitch", [](Obj<Twistd> xi) { return xi->pitch(); }, "float: w.v / |w|^2 (inf for w = 0, 0 for the zero twist).");
+  cls.def(
+      "pitch", [](Obj<Twistd> xi) { return xi->pitch(); },
+      R"doc(The pitch of the twist's screw: w.v / |w|^2 (a computation, as ``screw().pitch``).
+
+Returns:
+    float: the pitch; inf for w = 0 (a translation), 0 for the zero twist.
+
+Example:
+    >>> Twist(v=[0.0, 0.0, 0.5], w=[0.0, 0.0, 1.0]).pitch()
+    0.5
+)doc");
 
   cls.def_static(
       "from_screw",
@@ -520,8 +529,13 @@ tau / |tau|, magnitude |tau|.
 Returns:
     Screw.
 )doc");
-  cls.def_property_readonly(
-      "pitch", [](Obj<Wrenchd> F) { return F->pitch(); }, "float: f.tau / |f|^2 (inf for f = 0, 0 for the zero wrench).");
+  cls.def(
+      "pitch", [](Obj<Wrenchd> F) { return F->pitch(); },
+      R"doc(The pitch of the wrench's screw: f.tau / |f|^2 (a computation, as ``screw().pitch``).
+
+Returns:
+    float: the pitch; inf for f = 0 (a pure couple), 0 for the zero wrench.
+)doc");
 
   cls.def_static(
       "from_screw",

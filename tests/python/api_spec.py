@@ -679,8 +679,10 @@ def _build_spec():
     )
     spec["SE3.act"] = _method(SE3, "act", SE3Or("SE3.act(points)", (Twist, Wrench)))
     spec["SE3.act_inv"] = _method(SE3, "act_inv", SE3Or("SE3.act_inv(points)", (Twist, Wrench)))
-    for m in ("adjoint", "rotation", "translation", "as_matrix", "normalized"):
+    for m in ("adjoint", "as_matrix", "normalized"):
         spec[f"SE3.{m}"] = _method(SE3, m)
+    for p in ("rotation", "translation"):
+        spec[f"SE3.{p}"] = _prop(SE3, p)
     spec["SE3.from_matrix"] = _static(
         SE3,
         "from_matrix",
@@ -793,8 +795,8 @@ def _build_spec():
         )
         spec[f"{n}.power"] = _method(cls, "power", Instance(other.__name__.lower(), (other,)))
         spec[f"{n}.screw"] = _method(cls, "screw")
-        for p in ("vector", "pitch"):
-            spec[f"{n}.{p}"] = _prop(cls, p)
+        spec[f"{n}.pitch"] = _method(cls, "pitch")
+        spec[f"{n}.vector"] = _prop(cls, "vector")
         spec.update(_protocols(cls, [6]))
     spec["Twist.linear"] = _prop(Twist, "linear")
     spec["Twist.angular"] = _prop(Twist, "angular")
