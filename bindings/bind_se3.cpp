@@ -453,8 +453,8 @@ Example:
       R"doc(Whether two motions are equal within tol.
 
 Rotation matrices within tol (absolute), translations within
-tol * max(1, |p|_max) (relative beyond unit scale). ``==`` is deliberately
-not defined (it is object identity).
+tol * max(1, |p|_max) (relative beyond unit scale). ``==`` is the exact
+comparison (every stored number equal).
 
 Args:
     other: SE3.
@@ -466,6 +466,9 @@ Returns:
 
   // ---- Python protocols ---------------------------------------------------
 
+  def_equality(cls, [](const SE3d& a, const SE3d& b) {
+    return a.rotation().matrix() == b.rotation().matrix() && a.translation() == b.translation();
+  });
   def_repr(cls, [](const SE3d& g) {
     return "SE3(rotation=" + array_repr(mat_out<3, 3>(g.rotation().matrix())) +
            ", translation=" + array_repr(vec_out<3>(g.translation())) + ")";

@@ -438,7 +438,7 @@ Example:
       py::arg("other"), py::arg_v("tol", 1e-9),
       R"doc(Whether two rotations are equal within tol: max |R_a - R_b| <= tol.
 
-``==`` is deliberately not defined (it is object identity).
+``==`` is the exact comparison (every stored number equal).
 
 Args:
     other: SO3.
@@ -450,6 +450,7 @@ Returns:
 
   // ---- Python protocols ---------------------------------------------------
 
+  def_equality(cls, [](const SO3d& a, const SO3d& b) { return a.matrix() == b.matrix(); });
   def_repr(cls, [](const SO3d& R) { return "SO3(matrix=" + array_repr(mat_out<3, 3>(R.matrix())) + ")"; });
   cls.def(
       "__array__",

@@ -26,7 +26,8 @@
 //   sets), `Returns<T>` (a T or NotImplemented, shown as T).
 // - Protocol helpers: `array_protocol` (__array__ with numpy 2's dtype and
 //   copy), `array_repr`, `float_tuple` / `state_tuple` / `read_state`
-//   (bit-exact pickling), `add_reduce` (pickling at every protocol).
+//   (bit-exact pickling), `add_reduce` (pickling at every protocol), `def_equality`
+//   (`==` exact on the stored numbers, `!=`, unhashable), `def_repr`.
 //
 // `what` is the argument as the user wrote it, e.g. "SO3.exp(w)".
 #pragma once
@@ -607,6 +608,34 @@ void add_reduce(Class& cls) {
       "__reduce_ex__", [reduce](Obj<T> self, int /*protocol*/) { return reduce(self); }, py::arg("protocol"),
       "Pickle support (every protocol): (copyreg.__newobj__, (cls,), state).");
   cls.def("__reduce__", reduce, "Pickle support: (copyreg.__newobj__, (cls,), state).");
+}
+
+/// `==` and `!=` of the bound class of `cls`: `equal(a, b)` is the exact
+/// equality of the stored numbers, compared as floats (-0.0 == 0.0; a NaN is
+/// unequal to everything, itself included), the same rule as numpy's
+/// array_equal and C++'s `==` on Eigen matrices. An operand of another type
+/// gives NotImplemented (Python then compares identities: `SO3() == 3` is
+/// False). The objects are unhashable (`__hash__` is None): a hash of exact
+/// floats would make a dictionary lookup fail on a difference of one ulp.
+template <typename Class, typename Equal>
+void def_equality(Class& cls, Equal equal) {
+  using T = typename Class::type;
+  const std::string name = py::str(cls.attr("__name__"));
+  const std::string eq_doc = "Exact equality of the stored numbers: " + name +
+                             "s are values, compared as floats (-0.0 == 0.0; a NaN is unequal to everything, "
+                             "itself included).\n\n"
+                             "For a tolerance, use ``is_approx(other, tol)``. Another type gives NotImplemented "
+                             "(so ``==`` is False). " +
+                             name + "s are unhashable.\n\nArgs:\n    other: " + name + ".\n\nReturns:\n    bool.";
+  const std::string ne_doc = "The negation of ``==``: some stored number differs (or is NaN).\n\nArgs:\n    other: " +
+                             name + ".\n\nReturns:\n    bool.";
+  cls.def(
+      "__eq__", [equal](Obj<T> a, Obj<T> b) { return static_cast<bool>(equal(*a, *b)); }, py::arg("other"),
+      py::is_operator(), eq_doc.c_str());
+  cls.def(
+      "__ne__", [equal](Obj<T> a, Obj<T> b) { return !equal(*a, *b); }, py::arg("other"), py::is_operator(),
+      ne_doc.c_str());
+  cls.attr("__hash__") = py::none();
 }
 
 /// __repr__ of the bound class of `cls` from `f(const T&)`. An instance made

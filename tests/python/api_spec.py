@@ -74,6 +74,13 @@ class Accepted:
     value: Any
 
 
+@dataclass
+class Gives:
+    """The call must return `value` (a comparison with an object of another type)."""
+
+    value: Any
+
+
 BOUND = (chasles.SO3, chasles.SE3, chasles.Twist, chasles.Wrench, chasles.Screw, chasles.Chain)
 
 
@@ -392,6 +399,25 @@ class Instance(Arg):
 
 
 @dataclass
+class Comparand(Instance):
+    """The right operand of ``==`` and ``!=``: an object of the same class is
+    compared (an uninitialized one refused, TypeError); anything else is
+    another value, so ``==`` gives False and ``!=`` True (the operator
+    returns NotImplemented and Python falls back to identity; numpy arrays
+    and scalars defer to the objects, whose __array_ufunc__ is None)."""
+
+    other_gives: bool = False
+
+    def judge(self, value):
+        if isinstance(value, self.classes):
+            return super().judge(value)
+        if isinstance(value, BOUND) and not is_initialized(value):
+            # its own __eq__, tried in turn, refuses it as every method does
+            return Refused(TypeError, ("not initialized",))
+        return Gives(self.other_gives)
+
+
+@dataclass
 class Home(Arg):
     """A chain's home pose: an SE3, or a (4, 4) array-like rigid motion."""
 
@@ -563,6 +589,10 @@ def _protocols(cls, n_state):
             passes_arguments=False,
         ),
         f"{name}.__reduce__": _method(cls, "__reduce__"),
+        f"{name}.__eq__": _binop(cls, operator.eq, Comparand("other", (cls,)), "__eq__"),
+        f"{name}.__ne__": _binop(
+            cls, operator.ne, Comparand("other", (cls,), other_gives=True), "__ne__"
+        ),
         f"{name}.__reduce_ex__": _method(cls, "__reduce_ex__", Anything("protocol", 2)),
     }
     if hasattr(cls, "__array__"):
@@ -941,9 +971,7 @@ NOT_API = {
     "__dict__",
     "__weakref__",
     "__array_ufunc__",
-    "__hash__",
-    "__eq__",
-    "__ne__",
+    "__hash__",  # None: the objects are unhashable (test_objects.py checks it)
 }
 
 

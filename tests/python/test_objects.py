@@ -832,16 +832,79 @@ def test_repr_shows_the_numbers():
     assert "0.12345679" in repr(SE3(translation=[0.123456789, 0.0, 0.0]))  # numpy's print options
 
 
-def test_equality_is_identity_never_approximate():
-    a = SE3.exp([1.0, 2.0, 3.0, 0.1, 0.2, 0.3])
-    b = copy.copy(a)
-    assert a == a  # noqa: PLR0124 (identity is what == means here)
-    assert (a == b) is False  # equal numbers, distinct objects: == is not a numeric comparison
-    assert a != b
-    assert a.is_approx(b, 0.0)
-    assert "__eq__" not in type(a).__dict__
-    for cls in (SO3, SE3, Twist, Wrench, Screw):
-        assert "__eq__" not in cls.__dict__
+def with_state(x, change):
+    """A fresh object of x's class whose state is x's, changed by `change(list)`."""
+    state = list(x.__getstate__())
+    change(state)
+    y = type(x).__new__(type(x))
+    y.__setstate__(tuple(state))
+    return y
+
+
+@pytest.mark.parametrize("x", all_kinds(), ids=lambda x: type(x).__name__)
+def test_equality_is_exact_on_the_stored_numbers(x):
+    """== is a value comparison: equal numbers are equal objects, a difference
+    of one ulp in any stored number is not; != is its negation."""
+    y = copy.copy(x)
+    assert y is not x
+    assert (x == y) is True and (x != y) is False
+    assert x == pickle.loads(pickle.dumps(x)) == copy.deepcopy(x)
+    n = len(x.__getstate__())
+    for k in range(n):
+        # the next float (toward 0 from inf: an infinite pitch is stored too)
+        z = with_state(x, lambda s, k=k: s.__setitem__(k, float(np.nextafter(s[k], -s[k] or 1.0))))
+        assert (x == z) is False and (z == x) is False, k
+        assert (x != z) is True and (z != x) is True, k
+        if hasattr(z, "is_approx") and not isinstance(x, Screw):
+            assert z.is_approx(x, 1e-9), k  # the tolerance comparison is is_approx
+
+
+def test_equality_compares_as_floats_negative_zero_and_nan():
+    a, b = Twist(v=[0.0, 1.0, 2.0]), Twist(v=[-0.0, 1.0, 2.0])
+    assert a == b and not (a != b)  # -0.0 == 0.0, as floats
+    assert math.copysign(1.0, a.vector[0]) == 1.0 and math.copysign(1.0, b.vector[0]) == -1.0
+    for x in all_kinds():
+        nan = with_state(x, lambda s: s.__setitem__(0, math.nan))
+        assert (nan == nan) is False and (nan != nan) is True  # NaN equals nothing, itself included
+        assert nan != copy.copy(nan)
+
+
+@pytest.mark.parametrize("x", all_kinds(), ids=lambda x: type(x).__name__)
+def test_objects_are_unhashable(x):
+    assert type(x).__hash__ is None
+    with pytest.raises(TypeError, match="unhashable"):
+        hash(x)
+    with pytest.raises(TypeError):
+        {x}  # noqa: B018
+
+
+def test_comparing_with_another_type_is_not_implemented():
+    R, g = SO3(), SE3()
+    assert SO3.__eq__(R, 3) is NotImplemented and SO3.__ne__(R, 3) is NotImplemented
+    assert (R == 3) is False and (R != 3) is True
+    assert (R == g) is False and (g != R) is True
+    assert (Twist() == Wrench()) is False  # the same six zeros, different quantities
+    assert (R == np.eye(3)) is False and (np.eye(3) == R) is False
+    assert (R == R.as_matrix().tolist()) is False and (R == None) is False  # noqa: E711
+    assert (g == "SE3") is False and g != [0.0] * 12
+    from api_spec import GOOD
+
+    for x in (GOOD[Screw](), GOOD[Chain]()):  # numpy defers to every class
+        assert (np.float64(1.0) == x) is False and (np.array(1.0) != x) is True
+    assert R in [g, 3, SO3()] and R not in [g, 3]  # containers compare with ==
+    raw = SO3.__new__(SO3)
+    with pytest.raises(TypeError, match="not initialized"):
+        R == raw  # noqa: B015
+
+
+def test_subclass_instances_compare_by_value():
+    class Sub(SE3):
+        pass
+
+    g = SE3.exp([0.1, 0.2, 0.3, 0.4, 0.5, 0.6])
+    h = Sub.__new__(Sub)
+    h.__setstate__(g.__getstate__())
+    assert g == h and h == g and not (g != h)
 
 
 def test_numpy_operands_defer_to_the_objects():
