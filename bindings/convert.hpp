@@ -621,20 +621,39 @@ template <typename Class, typename Equal>
 void def_equality(Class& cls, Equal equal) {
   using T = typename Class::type;
   const std::string name = py::str(cls.attr("__name__"));
-  const std::string eq_doc = "Exact equality of the stored numbers: " + name +
-                             "s are values, compared as floats (-0.0 == 0.0; a NaN is unequal to everything, "
-                             "itself included).\n\n"
-                             "For a tolerance, use ``is_approx(other, tol)``. Another type gives NotImplemented "
-                             "(so ``==`` is False). " +
-                             name + "s are unhashable.\n\nArgs:\n    other: " + name + ".\n\nReturns:\n    bool.";
-  const std::string ne_doc = "The negation of ``==``: some stored number differs (or is NaN).\n\nArgs:\n    other: " +
-                             name + ".\n\nReturns:\n    bool.";
+  const std::string eq_doc =
+      "Exact equality of the stored numbers: " + name +
+      "s are values, compared as floats\n(-0.0 == 0.0; a NaN is unequal to everything, itself included).\n\n"
+      "For a tolerance, use ``is_approx(other, tol)``. An object of another type gives\n"
+      "NotImplemented, so ``==`` is False. " +
+      name + "s are unhashable.\n\nArgs:\n    other: any object.\n\nReturns:\n    bool.";
+  const std::string ne_doc =
+      "The negation of ``==``: some stored number differs (or is NaN), or other is not a " + name +
+      ".\n\nArgs:\n    other: any object.\n\nReturns:\n    bool.";
+  // `other` is any object (as object.__eq__ takes it, and as the stub says):
+  // NotImplemented for another type, TypeError for an uninitialized T.
+  const auto name_of = [](py::handle h) { return type_name(h); };
+  const auto compare = [equal, name_of](Obj<T> a, py::handle b, bool want_equal) -> Returns<bool> {
+    const T* value = nullptr;
+    switch (instance_state<T>(b, &value)) {
+      case InstanceState::other_type:
+        return {py::reinterpret_borrow<py::object>(Py_NotImplemented)};
+      case InstanceState::uninitialized: {
+        py::detail::make_caster<Obj<T>> caster;
+        caster.load(b, false);  // raises the TypeError every method raises for it
+        raise_type_error(name_of(b) + " object is not initialized");
+      }
+      case InstanceState::initialized:
+        break;
+    }
+    return {py::bool_(static_cast<bool>(equal(*a, *value)) == want_equal)};
+  };
   cls.def(
-      "__eq__", [equal](Obj<T> a, Obj<T> b) { return static_cast<bool>(equal(*a, *b)); }, py::arg("other"),
-      py::is_operator(), eq_doc.c_str());
+      "__eq__", [compare](Obj<T> a, const py::object& other) { return compare(a, other, true); },
+      py::arg("other"), py::is_operator(), eq_doc.c_str());
   cls.def(
-      "__ne__", [equal](Obj<T> a, Obj<T> b) { return !equal(*a, *b); }, py::arg("other"), py::is_operator(),
-      ne_doc.c_str());
+      "__ne__", [compare](Obj<T> a, const py::object& other) { return compare(a, other, false); },
+      py::arg("other"), py::is_operator(), ne_doc.c_str());
   cls.attr("__hash__") = py::none();
 }
 
