@@ -1,5 +1,6 @@
 // chasles._core: registers the bindings; each concept lives in its own bind_*.cpp.
 #include "bindings.hpp"
+#include "signatures.hpp"
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "chasles C++ kernels (use the chasles package, which re-exports them).";
@@ -10,4 +11,5 @@ PYBIND11_MODULE(_core, m) {
   chasles_py::bind_batch(m);
   chasles_py::bind_jacobians(m);  // after SO3 and SE3: adds their static methods
   chasles_py::bind_kinematics(m);
+  chasles_py::finish_functions(m);  // last: signatures for help() and inspect (signatures.hpp)
 }
