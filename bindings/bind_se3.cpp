@@ -9,6 +9,7 @@
 #include "bindings.hpp"
 #include "conventions.hpp"
 #include "convert.hpp"
+#include "signatures.hpp"
 
 namespace chasles_py {
 
@@ -59,6 +60,45 @@ Vector6 twist_vector(py::handle h, const char* what) {
   return to_finite_eigen<6>(h, what);
 }
 
+/// Why SE3(...) refused its arguments, and what to call instead (the
+/// constructor takes an SO3 and a translation; raw matrices have their own
+/// checked constructors).
+std::string explain_se3_refusal(const py::args& args, const py::kwargs& kwargs) {
+  const char* usage = "SE3(rotation, translation) takes an SO3 and a translation of shape (3,)";
+  for (const auto& kw : kwargs) {
+    const std::string key = py::str(kw.first);
+    if (key != "rotation" && key != "translation")
+      return "SE3(): unexpected keyword argument '" + key + "'; " + usage;
+    if ((key == "rotation" && args.size() >= 1) || (key == "translation" && args.size() >= 2))
+      return "SE3(): " + key + " given by position and by keyword; " + usage;
+  }
+  if (args.size() > 2)
+    return "SE3(): takes at most 2 arguments (rotation, translation), got " + std::to_string(args.size()) + "; " +
+           usage;
+  const py::handle rotation = args.size() >= 1 ? args[0] : kwargs.contains("rotation") ? kwargs["rotation"] : py::handle();
+  if (!rotation) return std::string("SE3(): ") + usage;
+  std::string msg = "SE3(rotation): expected an SO3, got " + describe_argument(rotation);
+  std::vector<Py_intptr_t> shape;
+  const bool raw = raw_shape(rotation, shape);
+  if (raw && shape == std::vector<Py_intptr_t>{4, 4}) {
+    return msg +
+           ". A homogeneous matrix [[R, p], [0, 0, 0, 1]] is SE3.from_matrix(matrix) (checked: it refuses a matrix "
+           "that is not a rigid motion), SE3.from_matrix_projected(matrix) (the nearest rotation) or "
+           "SE3.from_matrix_unchecked(matrix) (no check).";
+  }
+  if (raw && shape == std::vector<Py_intptr_t>{3, 3}) {
+    return msg +
+           ". Make the rotation of a matrix with SO3.from_matrix(matrix) (checked: it refuses a matrix that is not "
+           "a rotation), SO3.from_matrix_projected(matrix) (the nearest rotation) or "
+           "SO3.from_matrix_unchecked(matrix) (no check): SE3(SO3.from_matrix(R), p).";
+  }
+  if (raw && shape == std::vector<Py_intptr_t>{3} && args.size() == 1 && kwargs.empty())
+    return msg + ". A translation alone is SE3(translation=p).";
+  if (raw && shape == std::vector<Py_intptr_t>{6})
+    return msg + ". The motion of a twist xi = (v, w) is SE3.exp(xi).";
+  return msg + ". SO3.exp(w), SO3.from_quat(quat) and SO3.from_matrix(matrix) make one; " + usage + ".";
+}
+
 [[noreturn]] void raise_not_rigid(const Matrix4& M, double tol) {
   const double rot = SO3d::rotation_defect(M.topLeftCorner<3, 3>());
   const double det = M.topLeftCorner<3, 3>().determinant();
@@ -98,6 +138,9 @@ Example:
     >>> SE3(translation=[1.0, 2.0, 3.0]).translation
     array([1., 2., 3.])
 )doc");
+
+  // SE3(matrix), SE3(np.eye(3), p) and the like: say which constructor was meant.
+  def_refusal(cls, explain_se3_refusal);
 
   cls.def_static("identity", &SE3d::identity, R"doc(The identity motion.
 

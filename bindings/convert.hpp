@@ -10,11 +10,17 @@
 //   converted to float64). Errors:
 //     TypeError  "<what>: expected real numbers (float64), got dtype complex128 (list)"
 //                (complex, object, str, bytes, datetime, void, None);
-//     ValueError "<what>: expected shape (3,), got (4,)".
+//     ValueError "<what>: expected shape (3,), got (4,)", with a hint where one
+//     helps: a batch given to a method for one element names the array
+//     function ("SO3.exp(w): expected shape (3,), got (5, 3); for a batch,
+//     call the array function chasles.so3_exp ..."), six numbers given to
+//     Twist(v) name Twist.from_vector (`shape_hint`).
 //   `to_finite_eigen` adds `require_finite`: ValueError "<what>: expected
 //   finite numbers, got [nan, 0.0, 0.0]".
 // - `to_real(obj, what)`: a Python float or int, a numpy real scalar or 0-d
 //   array, or any object with __float__ (not complex), as a double.
+// - `describe_argument(obj)`, `raw_shape(obj, shape)`: what came, for the
+//   messages of constructors that refuse raw data (SO3(matrix), ...).
 // - `map_points(obj, what, f)`: f applied to every point of a (3,) or (..., 3)
 //   array-like, into a new array of the same shape (GIL released when large).
 // - `new_array(nd, dims)`, `vec_out(v)`, `mat_out(M)`: new C-contiguous
@@ -35,7 +41,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <initializer_list>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 #include <pybind11/numpy.h>
@@ -384,6 +392,55 @@ inline bool read_flat_sequence(PyObject* o, Eigen::Matrix<double, R, 1>& out) {
   return true;
 }
 
+/// The array function of the package named first in `names` that exists
+/// ("chasles.so3_exp"), or "" (the array functions live in the package
+/// chasles, which is imported before its extension).
+inline std::string array_function(std::initializer_list<const char*> names) {
+  PyObject* package = PyImport_GetModule(py::str("chasles").ptr());  // a new reference, or nullptr
+  if (package == nullptr) {
+    PyErr_Clear();
+    return "";
+  }
+  const py::object pkg = py::reinterpret_steal<py::object>(package);
+  for (const char* name : names)
+    if (py::hasattr(pkg, name)) return std::string("chasles.") + name;
+  return "";
+}
+
+/// What the message of a wrong shape adds for the argument `what` given an
+/// array of shape `dims` where one of shape `core` belongs: the array
+/// function for a batch (a method of an object takes one element), or the
+/// constructor meant (Twist(v) given six numbers). "" when there is nothing
+/// to add.
+inline std::string shape_hint(const std::string& what, const Py_intptr_t* dims, int nd,
+                              std::initializer_list<Py_intptr_t> core) {
+  const int core_nd = static_cast<int>(core.size());
+  bool batch = nd > core_nd;
+  for (int k = 0; batch && k < core_nd; ++k) batch = dims[nd - core_nd + k] == core.begin()[k];
+  if (batch) {
+    std::string f;
+    if (what == "SO3.exp(w)") f = array_function({"so3_exp"});
+    else if (what == "SO3.hat(w)") f = array_function({"so3_hat"});
+    else if (what == "SO3.vee(matrix)") f = array_function({"so3_vee"});
+    else if (what == "SO3.from_quat(quat)") f = array_function({"so3_from_quat"});
+    else if (what == "SE3.exp(xi)") f = array_function({"se3_exp"});
+    else if (what == "SE3.hat(xi)") f = array_function({"se3_hat", "twist_hat"});
+    else if (what == "SE3.vee(matrix)" || what == "Twist.vee(matrix)") f = array_function({"se3_vee", "twist_vee"});
+    else if (what == "SO3.interpolate(t)") f = array_function({"so3_interpolate"});
+    else if (what == "SE3.interpolate(t)") f = array_function({"se3_interpolate"});
+    else if (what == "interpolate(t)") {
+      const std::string a = array_function({"so3_interpolate"}), b = array_function({"se3_interpolate"});
+      f = a.empty() || b.empty() ? a + b : a + " or " + b;
+    }
+    if (!f.empty()) return "; for a batch, call the array function " + f + " (array functions broadcast over leading axes)";
+  }
+  if (nd == 1 && dims[0] == 6 && core_nd == 1 && core.begin()[0] == 3) {
+    if (what == "Twist(v)" || what == "Twist(w)") return "; a 6-vector (v, w) is Twist.from_vector(xi)";
+    if (what == "Wrench(f)" || what == "Wrench(tau)") return "; a 6-vector (f, tau) is Wrench.from_vector(F)";
+  }
+  return "";
+}
+
 /// Any array-like of shape (R,) (C = 1) or (R, C) as a double Eigen matrix.
 template <int R, int C = 1>
 inline Eigen::Matrix<double, R, C> to_eigen(py::handle h, const char* what) {
@@ -398,8 +455,10 @@ inline Eigen::Matrix<double, R, C> to_eigen(py::handle h, const char* what) {
   }
   const py::array a = as_float64_array(h, what);
   if (!has_shape<R, C>(a.ptr())) {
+    const int nd = static_cast<int>(a.ndim());
+    const std::string hint = C == 1 ? shape_hint(what, a.shape(), nd, {R}) : shape_hint(what, a.shape(), nd, {R, C});
     raise_value_error(std::string(what) + ": expected shape " + expected_shape_string<R, C>() + ", got " +
-                      shape_string(a.shape(), static_cast<int>(a.ndim())));
+                      shape_string(a.shape(), nd) + hint);
   }
   read_array<R, C>(a.ptr(), out);
   return out;
@@ -445,7 +504,8 @@ inline double to_real(py::handle h, const char* what) {
     const py::array a = as_float64_array(h, what);
     if (a.ndim() != 0)
       raise_value_error(std::string(what) + ": expected a real number (shape ()), got shape " +
-                        shape_string(a.shape(), static_cast<int>(a.ndim())));
+                        shape_string(a.shape(), static_cast<int>(a.ndim())) +
+                        shape_hint(what, a.shape(), static_cast<int>(a.ndim()), {}));
     double x;
     std::memcpy(&x, py::detail::array_proxy(a.ptr())->data, sizeof(double));
     return x;
@@ -490,6 +550,35 @@ inline double to_tolerance(py::handle h, const char* what) {
 /// support __array__.
 inline bool is_bound_object(py::handle h) {
   return py::detail::get_type_info(Py_TYPE(h.ptr())) != nullptr;
+}
+
+/// The shape numpy gives `h` when it is raw numbers (an ndarray, a list or
+/// tuple, an object with __array__, a bound object excepted), into `shape`;
+/// false for anything else, or when numpy cannot convert it.
+inline bool raw_shape(py::handle h, std::vector<Py_intptr_t>& shape) {
+  PyObject* o = h.ptr();
+  if (is_bound_object(h) || !(npy().PyArray_Check_(o) || PyList_Check(o) || PyTuple_Check(o) ||
+                              PyObject_HasAttrString(o, "__array__")))
+    return false;
+  static PyObject* asarray = numpy_attr("asarray");
+  PyObject* a = PyObject_CallOneArg(asarray, o);
+  if (a == nullptr) {
+    PyErr_Clear();
+    return false;
+  }
+  const py::array arr = py::reinterpret_steal<py::array>(a);
+  shape.assign(arr.shape(), arr.shape() + arr.ndim());
+  return true;
+}
+
+/// An argument as an error message names it: "ndarray of shape (3, 3)",
+/// "list of shape (4, 4)", "None", "chasles._core.SE3".
+inline std::string describe_argument(py::handle h) {
+  if (h.is_none()) return "None";
+  std::string d = Py_TYPE(h.ptr())->tp_name;
+  std::vector<Py_intptr_t> shape;
+  if (raw_shape(h, shape)) d += " of shape " + shape_string(shape.data(), static_cast<int>(shape.size()));
+  return d;
 }
 
 /// A new, uninitialized, C-contiguous float64 array.
