@@ -383,6 +383,7 @@ class Instance(Arg):
     classes: tuple = (chasles.SO3,)
     valid: Callable[[], Any] | None = None
     uninitialized_ok: bool = False  # __repr__ shows an uninitialized object
+    refused: tuple = ()  # what the message of a refused other object must say
 
     def good(self):
         return self.valid() if self.valid is not None else GOOD[self.classes[0]]()
@@ -395,7 +396,7 @@ class Instance(Arg):
                 # (pybind11's own refusal when another argument rules out the overload first)
                 return Refused(TypeError, (("not initialized", "incompatible function arguments"),))
             return Accepted(base_copy(value))
-        return Refused(TypeError, ())
+        return Refused(TypeError, self.refused)
 
 
 @dataclass
@@ -695,9 +696,17 @@ def _build_spec():
     spec.update(_protocols(SO3, [9]))
 
     # SE3
-    spec["SE3.__init__"] = Entry(
-        [[Instance("rotation", (SO3,)), Array("SE3(translation)", (3,))]], call=SE3
+    # SE3(matrix) and the like: a TypeError naming what came and the
+    # constructors of raw data (test_bad_input.py checks each case).
+    rotation_arg = Instance(
+        "rotation",
+        (SO3,),
+        refused=(
+            "SE3(rotation): expected an SO3, got",
+            ("SO3.from_matrix(matrix)", "SE3.from_matrix(matrix)"),
+        ),
     )
+    spec["SE3.__init__"] = Entry([[rotation_arg, Array("SE3(translation)", (3,))]], call=SE3)
     spec["SE3.identity"] = _static(SE3, "identity")
     spec["SE3.exp"] = _static(SE3, "exp", TwistOr("SE3.exp(xi)", (6,)))
     spec["SE3.log"] = _method(SE3, "log")
