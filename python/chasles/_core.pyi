@@ -48,11 +48,14 @@ class SO3:
     rearranged (hat, SO3.vee, SE3.vee, actions on points), carry a NaN through,
     and the defects are inf for a matrix that is not finite.
     
-    Values are float64 and immutable. ``==`` is not defined (it is object
-    identity): compare with ``is_approx(other, tol)``. Objects pickle and copy
+    Values are float64 and immutable. ``==`` is the exact equality of the stored
+    numbers, compared as floats (-0.0 == 0.0; a NaN is unequal to everything,
+    itself included), ``!=`` its negation, and objects are unhashable; compare
+    within a tolerance with ``is_approx(other, tol)``. Objects pickle and copy
     bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
     """
     __array_ufunc__ = None
+    __hash__: typing.ClassVar[None] = None
     @staticmethod
     def exp(w: numpy.typing.ArrayLike) -> SO3:
         """
@@ -346,6 +349,20 @@ class SO3:
         ...
     def __deepcopy__(self, memo: typing.Any) -> SO3:
         ...
+    def __eq__(self, other: typing.Any) -> bool:
+        """
+        Exact equality of the stored numbers: SO3s are values, compared as floats
+        (-0.0 == 0.0; a NaN is unequal to everything, itself included).
+        
+        For a tolerance, use ``is_approx(other, tol)``. An object of another type gives
+        NotImplemented, so ``==`` is False. SO3s are unhashable.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
     def __getstate__(self) -> tuple:
         ...
     def __init__(self) -> None:
@@ -379,6 +396,16 @@ class SO3:
         
         Returns:
             ndarray: the rotated points, same shape.
+        """
+    def __ne__(self, other: typing.Any) -> bool:
+        """
+        The negation of ``==``: some stored number differs (or is NaN), or other is not a SO3.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
         """
     def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
         """
@@ -458,7 +485,7 @@ class SO3:
         """
         Whether two rotations are equal within tol: max |R_a - R_b| <= tol.
         
-        ``==`` is deliberately not defined (it is object identity).
+        ``==`` is the exact comparison (every stored number equal).
         
         Args:
             other: SO3.
@@ -528,11 +555,14 @@ class SE3:
     rearranged (hat, SO3.vee, SE3.vee, actions on points), carry a NaN through,
     and the defects are inf for a matrix that is not finite.
     
-    Values are float64 and immutable. ``==`` is not defined (it is object
-    identity): compare with ``is_approx(other, tol)``. Objects pickle and copy
+    Values are float64 and immutable. ``==`` is the exact equality of the stored
+    numbers, compared as floats (-0.0 == 0.0; a NaN is unequal to everything,
+    itself included), ``!=`` its negation, and objects are unhashable; compare
+    within a tolerance with ``is_approx(other, tol)``. Objects pickle and copy
     bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
     """
     __array_ufunc__ = None
+    __hash__: typing.ClassVar[None] = None
     @staticmethod
     def exp(xi: numpy.typing.ArrayLike) -> SE3:
         """
@@ -550,7 +580,7 @@ class SE3:
         
         Example:
             >>> g = SE3.exp([1.0, 0.0, 0.0, 0.0, 0.0, np.pi / 2])
-            >>> np.round(g.translation(), 12) + 0.0
+            >>> np.round(g.translation, 12) + 0.0
             array([0.63661977, 0.63661977, 0.        ])
         """
     @staticmethod
@@ -625,7 +655,7 @@ class SE3:
         
         Example:
             >>> g = SE3.from_screw([0.0, 2.0, 0.0], [0.0, 0.0, 1.0], 0.0, np.pi / 2)
-            >>> np.round(g.translation(), 12) + 0.0
+            >>> np.round(g.translation, 12) + 0.0
             array([2., 2., 0.])
             >>> np.round(g @ [0.0, 2.0, 5.0], 12) + 0.0
             array([0., 2., 5.])
@@ -673,7 +703,7 @@ class SE3:
         
         Example:
             >>> a, b = SE3(), SE3(translation=[2.0, 0.0, 0.0])
-            >>> SE3.interpolate(a, b, 0.5).translation()
+            >>> SE3.interpolate(a, b, 0.5).translation
             array([1., 0., 0.])
         """
     @staticmethod
@@ -799,6 +829,20 @@ class SE3:
         ...
     def __deepcopy__(self, memo: typing.Any) -> SE3:
         ...
+    def __eq__(self, other: typing.Any) -> bool:
+        """
+        Exact equality of the stored numbers: SE3s are values, compared as floats
+        (-0.0 == 0.0; a NaN is unequal to everything, itself included).
+        
+        For a tolerance, use ``is_approx(other, tol)``. An object of another type gives
+        NotImplemented, so ``==`` is False. SE3s are unhashable.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
     def __getstate__(self) -> tuple:
         ...
     def __init__(self, rotation: SO3 = ..., translation: numpy.typing.ArrayLike = (0.0, 0.0, 0.0)) -> None:
@@ -810,7 +854,7 @@ class SE3:
             translation: shape (3,), p, finite (default: 0).
         
         Example:
-            >>> SE3(translation=[1.0, 2.0, 3.0]).translation()
+            >>> SE3(translation=[1.0, 2.0, 3.0]).translation
             array([1., 2., 3.])
         """
     @typing.overload
@@ -834,6 +878,16 @@ class SE3:
         
         Returns:
             ndarray: the moved points, same shape.
+        """
+    def __ne__(self, other: typing.Any) -> bool:
+        """
+        The negation of ``==``: some stored number differs (or is NaN), or other is not a SE3.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
         """
     def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
         """
@@ -953,8 +1007,8 @@ class SE3:
         Whether two motions are equal within tol.
         
         Rotation matrices within tol (absolute), translations within
-        tol * max(1, |p|_max) (relative beyond unit scale). ``==`` is deliberately
-        not defined (it is object identity).
+        tol * max(1, |p|_max) (relative beyond unit scale). ``==`` is the exact
+        comparison (every stored number equal).
         
         Args:
             other: SE3.
@@ -984,19 +1038,15 @@ class SE3:
         Returns:
             SE3: the projected motion.
         """
+    @property
     def rotation(self) -> SO3:
         """
-        The rotation R.
-        
-        Returns:
-            SO3: R.
+        SO3: the rotation R of g = [[R, p], [0, 1]] (a stored part; a copy).
         """
+    @property
     def translation(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        The translation p.
-        
-        Returns:
-            ndarray: p, shape (3,).
+        ndarray: the translation p of g = [[R, p], [0, 1]], shape (3,) (a stored part; a new array).
         """
 class Screw:
     """
@@ -1019,10 +1069,26 @@ class Screw:
         >>> s.point, s.direction, s.pitch, s.magnitude
         (array([0., 2., 0.]), array([0., 0., 1.]), 0.0, 1.0)
     """
+    __array_ufunc__ = None
+    __hash__: typing.ClassVar[None] = None
     def __copy__(self) -> Screw:
         ...
     def __deepcopy__(self, memo: typing.Any) -> Screw:
         ...
+    def __eq__(self, other: typing.Any) -> bool:
+        """
+        Exact equality of the stored numbers: Screws are values, compared as floats
+        (-0.0 == 0.0; a NaN is unequal to everything, itself included).
+        
+        For a tolerance, use ``is_approx(other, tol)``. An object of another type gives
+        NotImplemented, so ``==`` is False. Screws are unhashable.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
     def __getstate__(self) -> tuple[float, float, float, float, float, float, float, float]:
         ...
     def __init__(self, point: numpy.typing.ArrayLike, direction: numpy.typing.ArrayLike, pitch: float, magnitude: float) -> None:
@@ -1040,6 +1106,16 @@ class Screw:
         ...
     def __len__(self) -> int:
         ...
+    def __ne__(self, other: typing.Any) -> bool:
+        """
+        The negation of ``==``: some stored number differs (or is NaN), or other is not a Screw.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
     def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
         """
         Pickle support: (copyreg.__newobj__, (cls,), state).
@@ -1121,11 +1197,14 @@ class Twist:
     rearranged (hat, SO3.vee, SE3.vee, actions on points), carry a NaN through,
     and the defects are inf for a matrix that is not finite.
     
-    Values are float64 and immutable. ``==`` is not defined (it is object
-    identity): compare with ``is_approx(other, tol)``. Objects pickle and copy
+    Values are float64 and immutable. ``==`` is the exact equality of the stored
+    numbers, compared as floats (-0.0 == 0.0; a NaN is unequal to everything,
+    itself included), ``!=`` its negation, and objects are unhashable; compare
+    within a tolerance with ``is_approx(other, tol)``. Objects pickle and copy
     bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
     """
     __array_ufunc__ = None
+    __hash__: typing.ClassVar[None] = None
     @staticmethod
     def body(g: SE3, g_dot: numpy.typing.ArrayLike) -> Twist:
         """
@@ -1228,6 +1307,20 @@ class Twist:
         ...
     def __deepcopy__(self, memo: typing.Any) -> Twist:
         ...
+    def __eq__(self, other: typing.Any) -> bool:
+        """
+        Exact equality of the stored numbers: Twists are values, compared as floats
+        (-0.0 == 0.0; a NaN is unequal to everything, itself included).
+        
+        For a tolerance, use ``is_approx(other, tol)``. An object of another type gives
+        NotImplemented, so ``==`` is False. Twists are unhashable.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
     def __getstate__(self) -> tuple:
         ...
     def __init__(self, v: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), w: numpy.typing.ArrayLike = (0.0, 0.0, 0.0)) -> None:
@@ -1240,6 +1333,16 @@ class Twist:
         """
     def __mul__(self, scalar: float) -> Twist:
         ...
+    def __ne__(self, other: typing.Any) -> bool:
+        """
+        The negation of ``==``: some stored number differs (or is NaN), or other is not a Twist.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
     def __neg__(self) -> Twist:
         ...
     def __pos__(self) -> Twist:
@@ -1292,7 +1395,7 @@ class Twist:
         """
         Whether two 6-vectors are equal within tol: max |x - y| <= tol * max(1, max |x|, max |y|).
         
-        ``==`` is deliberately not defined (it is object identity).
+        ``==`` is the exact comparison (every stored number equal).
         
         Args:
             other: the same type.
@@ -1300,6 +1403,17 @@ class Twist:
         
         Returns:
             bool.
+        """
+    def pitch(self) -> float:
+        """
+        The pitch of the twist's screw: w.v / |w|^2 (a computation, as ``screw().pitch``).
+        
+        Returns:
+            float: the pitch; inf for w = 0 (a translation), 0 for the zero twist.
+        
+        Example:
+            >>> Twist(v=[0.0, 0.0, 0.5], w=[0.0, 0.0, 1.0]).pitch()
+            0.5
         """
     def power(self, wrench: Wrench) -> float:
         """
@@ -1348,11 +1462,6 @@ class Twist:
         ndarray: v, shape (3,).
         """
     @property
-    def pitch(self) -> float:
-        """
-        float: w.v / |w|^2 (inf for w = 0, 0 for the zero twist).
-        """
-    @property
     def vector(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         ndarray: the 6-vector (v, w), linear part first, shape (6,).
@@ -1391,11 +1500,14 @@ class Wrench:
     rearranged (hat, SO3.vee, SE3.vee, actions on points), carry a NaN through,
     and the defects are inf for a matrix that is not finite.
     
-    Values are float64 and immutable. ``==`` is not defined (it is object
-    identity): compare with ``is_approx(other, tol)``. Objects pickle and copy
+    Values are float64 and immutable. ``==`` is the exact equality of the stored
+    numbers, compared as floats (-0.0 == 0.0; a NaN is unequal to everything,
+    itself included), ``!=`` its negation, and objects are unhashable; compare
+    within a tolerance with ``is_approx(other, tol)``. Objects pickle and copy
     bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
     """
     __array_ufunc__ = None
+    __hash__: typing.ClassVar[None] = None
     @staticmethod
     def from_screw(point: numpy.typing.ArrayLike, direction: numpy.typing.ArrayLike, pitch: float, magnitude: float) -> Wrench:
         """
@@ -1438,6 +1550,20 @@ class Wrench:
         ...
     def __deepcopy__(self, memo: typing.Any) -> Wrench:
         ...
+    def __eq__(self, other: typing.Any) -> bool:
+        """
+        Exact equality of the stored numbers: Wrenchs are values, compared as floats
+        (-0.0 == 0.0; a NaN is unequal to everything, itself included).
+        
+        For a tolerance, use ``is_approx(other, tol)``. An object of another type gives
+        NotImplemented, so ``==`` is False. Wrenchs are unhashable.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
     def __getstate__(self) -> tuple:
         ...
     def __init__(self, f: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), tau: numpy.typing.ArrayLike = (0.0, 0.0, 0.0)) -> None:
@@ -1450,6 +1576,16 @@ class Wrench:
         """
     def __mul__(self, scalar: float) -> Wrench:
         ...
+    def __ne__(self, other: typing.Any) -> bool:
+        """
+        The negation of ``==``: some stored number differs (or is NaN), or other is not a Wrench.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
     def __neg__(self) -> Wrench:
         ...
     def __pos__(self) -> Wrench:
@@ -1476,7 +1612,7 @@ class Wrench:
         """
         Whether two 6-vectors are equal within tol: max |x - y| <= tol * max(1, max |x|, max |y|).
         
-        ``==`` is deliberately not defined (it is object identity).
+        ``==`` is the exact comparison (every stored number equal).
         
         Args:
             other: the same type.
@@ -1484,6 +1620,13 @@ class Wrench:
         
         Returns:
             bool.
+        """
+    def pitch(self) -> float:
+        """
+        The pitch of the wrench's screw: f.tau / |f|^2 (a computation, as ``screw().pitch``).
+        
+        Returns:
+            float: the pitch; inf for f = 0 (a pure couple), 0 for the zero wrench.
         """
     def power(self, twist: Twist) -> float:
         """
@@ -1513,11 +1656,6 @@ class Wrench:
         ndarray: f, shape (3,).
         """
     @property
-    def pitch(self) -> float:
-        """
-        float: f.tau / |f|^2 (inf for f = 0, 0 for the zero wrench).
-        """
-    @property
     def torque(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         ndarray: tau, shape (3,).
@@ -1543,7 +1681,7 @@ class Chain:
         >>> screws = [Chain.revolute_screw([0, 0, 1], [0, 0, 0]),
         ...           Chain.revolute_screw([0, 0, 1], [1, 0, 0])]
         >>> arm = Chain(screws, SE3(translation=[2.0, 0.0, 0.0]))
-        >>> np.round(arm.forward([np.pi / 2, 0.0]).translation(), 12) + 0.0
+        >>> np.round(arm.forward([np.pi / 2, 0.0]).translation, 12) + 0.0
         array([0., 2., 0.])
         >>> arm.jacobian_space([0.0, 0.0]).shape
         (6, 2)
@@ -1567,10 +1705,14 @@ class Chain:
     rearranged (hat, SO3.vee, SE3.vee, actions on points), carry a NaN through,
     and the defects are inf for a matrix that is not finite.
     
-    Values are float64 and immutable. ``==`` is not defined (it is object
-    identity): compare with ``is_approx(other, tol)``. Objects pickle and copy
+    Values are float64 and immutable. ``==`` is the exact equality of the stored
+    numbers, compared as floats (-0.0 == 0.0; a NaN is unequal to everything,
+    itself included), ``!=`` its negation, and objects are unhashable; compare
+    within a tolerance with ``is_approx(other, tol)``. Objects pickle and copy
     bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
     """
+    __array_ufunc__ = None
+    __hash__: typing.ClassVar[None] = None
     @staticmethod
     def prismatic_screw(direction: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -1606,6 +1748,20 @@ class Chain:
         ...
     def __deepcopy__(self, memo: typing.Any) -> Chain:
         ...
+    def __eq__(self, other: typing.Any) -> bool:
+        """
+        Exact equality of the stored numbers: Chains are values, compared as floats
+        (-0.0 == 0.0; a NaN is unequal to everything, itself included).
+        
+        For a tolerance, use ``is_approx(other, tol)``. An object of another type gives
+        NotImplemented, so ``==`` is False. Chains are unhashable.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
     def __getstate__(self) -> tuple:
         ...
     def __init__(self, screws: numpy.typing.ArrayLike, home: typing.Any) -> None:
@@ -1625,6 +1781,16 @@ class Chain:
             >>> arm = Chain([[0, 0, 0, 0, 0, 1]], np.eye(4))
             >>> arm.n_joints
             1
+        """
+    def __ne__(self, other: typing.Any) -> bool:
+        """
+        The negation of ``==``: some stored number differs (or is NaN), or other is not a Chain.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
         """
     def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
         """
@@ -1650,7 +1816,7 @@ class Chain:
         
         Example:
             >>> arm = Chain([Chain.prismatic_screw([1, 0, 0])], np.eye(4))
-            >>> arm.forward([0.5]).translation()
+            >>> arm.forward([0.5]).translation
             array([0.5, 0. , 0. ])
             >>> arm.forward([[0.5], [1.0]]).shape
             (2, 4, 4)
@@ -1814,7 +1980,7 @@ def interpolate(a: SE3, b: SE3, t: float) -> SE3:
     
     Example:
         >>> m = chasles.interpolate(SE3(), SE3(translation=[0.0, 0.0, 4.0]), 0.25)
-        >>> m.translation()
+        >>> m.translation
         array([0., 0., 1.])
     """
 @typing.overload
@@ -1978,7 +2144,7 @@ def rplus(g: SE3, xi: numpy.typing.ArrayLike) -> SE3:
     
     Example:
         >>> g = chasles.SE3(translation=[1.0, 0.0, 0.0])
-        >>> chasles.rplus(g, [0.0, 2.0, 0.0, 0.0, 0.0, 0.0]).translation()
+        >>> chasles.rplus(g, [0.0, 2.0, 0.0, 0.0, 0.0, 0.0]).translation
         array([1., 2., 0.])
     """
 def se3_act(g: typing.Any, points: typing.Any) -> numpy.ndarray:

@@ -657,7 +657,7 @@ def values_for(arg):
 
 
 def fuzz_settings():
-    """Half the profile's examples per callable (there are 188 of them)."""
+    """Half the profile's examples per callable (there are 200 of them)."""
     return settings(max_examples=max(10, settings.default.max_examples // 2))
 
 
