@@ -226,14 +226,17 @@ inline std::string visible_doc(const char* name, const std::vector<const detail:
   return doc;
 }
 
+/// CPython's METH_FASTCALL | METH_KEYWORDS function, as it calls ml_meth.
 using FastCall = PyObject* (*)(PyObject*, PyObject* const*, Py_ssize_t, PyObject*);
+/// pybind11's dispatcher (cpp_function::dispatcher), as pybind11 3.1 declares it.
+using Dispatcher = PyObject* (*)(PyObject*, PyObject* const*, size_t, PyObject*);
 
 /// What a finished function's PyMethodDef and trampoline read. Kept for the
 /// life of the process, as the functions themselves are.
 struct Finished {
   PyMethodDef def{};
   PyObject* record = nullptr;   ///< pybind11's function record (a strong reference)
-  FastCall dispatch = nullptr;  ///< pybind11's dispatcher
+  Dispatcher dispatch = nullptr;  ///< pybind11's dispatcher
 };
 
 inline constexpr std::size_t kMaxFunctions = 1024;
@@ -246,7 +249,7 @@ inline std::array<Finished, kMaxFunctions>& table() {
 template <std::size_t I>
 PyObject* trampoline(PyObject* /*module*/, PyObject* const* args, Py_ssize_t nargs, PyObject* kwnames) {
   const Finished& f = table()[I];
-  return f.dispatch(f.record, args, nargs, kwnames);
+  return f.dispatch(f.record, args, static_cast<size_t>(nargs), kwnames);
 }
 
 template <std::size_t... I>
@@ -282,7 +285,7 @@ inline void finish(py::handle func, const std::string& name, py::handle module, 
   const std::string text = name + text_signature(merged_params(visible)) + "\n--\n\n" + doc;
 
   Finished& entry = table()[count];
-  entry.dispatch = reinterpret_cast<FastCall>(reinterpret_cast<void (*)()>(f->m_ml->ml_meth));
+  entry.dispatch = reinterpret_cast<Dispatcher>(reinterpret_cast<void (*)()>(f->m_ml->ml_meth));
   entry.record = f->m_self;  // the function's reference, now the table's
   entry.def.ml_name = strdup(name.c_str());
   entry.def.ml_meth = reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(kTrampolines[count]));
