@@ -56,7 +56,7 @@ PROPERTIES = {name for name, value in A.callables().items() if isinstance(value,
 
 def test_the_public_callables_are_found():
     assert len(FUNCTIONS) > 150
-    for name in ("SO3.exp", "SE3.rotation", "SE3.__init__", "Twist.vector", "rplus", "Chain.forward"):
+    for name in ("SO3.exp", "SE3.rotation", "SE3.__init__", "Twist.vector", "rplus", "Chain.__init__"):
         assert name in FUNCTIONS, name
 
 
@@ -192,8 +192,6 @@ def test_help_of_the_package_shows_every_signature():
         (SE3.__init__, "(self, rotation=Ellipsis, translation=(0.0, 0.0, 0.0))"),
         (Twist.__init__, "(self, v=(0.0, 0.0, 0.0), w=(0.0, 0.0, 0.0))"),
         (SE3.rotation.fget, "(self, /)"),
-        (SE3.act, "(self, twist_or_wrench_or_points, /)"),
-        (SO3.__matmul__, "(self, other_or_points, /)"),
         (SO3.__eq__, "(self, other)"),
         (Chain.__init__, "(self, screws, home)"),
         (chasles.rplus, "(g, xi)"),
@@ -203,6 +201,18 @@ def test_help_of_the_package_shows_every_signature():
 )
 def test_signatures_read_as_the_documentation_writes_them(f, expected):
     assert str(inspect.signature(f)) == expected
+
+
+@pytest.mark.parametrize("name", sorted(FUNCTIONS))
+def test_overloads_that_name_a_parameter_differently_take_it_by_position(name):
+    """act(self, twist) / act(self, wrench) / act(self, points) is
+    act(self, twist_or_wrench_or_points, /): no keyword reaches that parameter
+    in every overload, so it and the ones before it are positional-only."""
+    f = FUNCTIONS[name]
+    params = list(inspect.signature(f).parameters.values())
+    renamed = [i for i, p in enumerate(params) if "_or_" in p.name]
+    for p in params[: max(renamed) + 1] if renamed else []:
+        assert p.kind is inspect.Parameter.POSITIONAL_ONLY, (name, p)
 
 
 def test_bound_methods_drop_self():
