@@ -75,8 +75,14 @@ std::string explain_se3_refusal(const py::args& args, const py::kwargs& kwargs) 
   if (args.size() > 2)
     return "SE3(): takes at most 2 arguments (rotation, translation), got " + std::to_string(args.size()) + "; " +
            usage;
-  const py::handle rotation = args.size() >= 1 ? args[0] : kwargs.contains("rotation") ? kwargs["rotation"] : py::handle();
-  if (!rotation) return std::string("SE3(): ") + usage;
+  py::object rotation;
+  if (args.size() >= 1) {
+    rotation = args[0];
+  } else if (kwargs.contains("rotation")) {
+    rotation = kwargs["rotation"];
+  } else {
+    return std::string("SE3(): ") + usage;
+  }
   std::string msg = "SE3(rotation): expected an SO3, got " + describe_argument(rotation);
   std::vector<Py_intptr_t> shape;
   const bool raw = raw_shape(rotation, shape);

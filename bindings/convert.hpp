@@ -432,7 +432,8 @@ inline std::string shape_hint(const std::string& what, const Py_intptr_t* dims, 
       const std::string a = array_function({"so3_interpolate"}), b = array_function({"se3_interpolate"});
       f = a.empty() || b.empty() ? a + b : a + " or " + b;
     }
-    if (!f.empty()) return "; for a batch, call the array function " + f + " (array functions broadcast over leading axes)";
+    if (!f.empty())
+      return "; for a batch, call the array function " + f + " (array functions broadcast over leading axes)";
   }
   if (nd == 1 && dims[0] == 6 && core_nd == 1 && core.begin()[0] == 3) {
     if (what == "Twist(v)" || what == "Twist(w)") return "; a 6-vector (v, w) is Twist.from_vector(xi)";

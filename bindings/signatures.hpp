@@ -89,7 +89,8 @@ struct Param {
 /// value of the same type, or "..." when there is none (an object, NaN, inf).
 inline std::string literal(py::handle value) {
   // kept for the process (a static py::object would be released after the interpreter)
-  static PyObject* const literal_eval = py::module_::import("ast").attr("literal_eval").cast<py::object>().release().ptr();
+  static PyObject* const literal_eval =
+      py::module_::import("ast").attr("literal_eval").cast<py::object>().release().ptr();
   const std::string text = py::repr(value);
   try {
     const py::object back = py::reinterpret_borrow<py::object>(literal_eval)(text);
@@ -268,7 +269,8 @@ inline void finish(py::handle func, const std::string& name, py::handle module, 
   auto* f = reinterpret_cast<PyCFunctionObject*>(func.ptr());
   if (f->m_ml->ml_flags != (METH_FASTCALL | METH_KEYWORDS))
     py::pybind11_fail("chasles: unexpected calling convention of the pybind11 function " + name);
-  if (count == kMaxFunctions) py::pybind11_fail("chasles: more than kMaxFunctions functions; raise it in signatures.hpp");
+  if (count == kMaxFunctions)
+    py::pybind11_fail("chasles: more functions than kMaxFunctions; raise it in signatures.hpp");
 
   std::vector<const detail::function_record*> visible;
   bool hidden = false;
