@@ -40,6 +40,7 @@
 // of the stub: it is not an API.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdlib>
 #include <cstring>
@@ -91,11 +92,11 @@ inline std::string literal(py::handle value) {
   // kept for the process (a static py::object would be released after the interpreter)
   static PyObject* const literal_eval =
       py::module_::import("ast").attr("literal_eval").cast<py::object>().release().ptr();
-  const std::string text = py::repr(value);
   try {
+    const std::string text = py::repr(value);
     const py::object back = py::reinterpret_borrow<py::object>(literal_eval)(text);
     if (py::type::handle_of(back).is(py::type::handle_of(value)) && back.equal(value)) return text;
-  } catch (py::error_already_set&) {
+  } catch (py::error_already_set&) {  // no literal (literal_eval refused it), or a repr that raised
   }
   return "...";
 }
@@ -158,7 +159,7 @@ inline std::vector<Param> merged_params(const std::vector<const detail::function
       } else if (!has_name(p.name, q.name)) {
         if (both_positional) {
           p.name += "_or_" + q.name;
-          renamed = i + 1;
+          renamed = std::max(renamed, i + 1);
         } else {
           same_shape = false;
         }
@@ -242,14 +243,14 @@ struct Finished {
 
 inline constexpr std::size_t kMaxFunctions = 1024;
 
-inline std::array<Finished, kMaxFunctions>& table() {
-  static std::array<Finished, kMaxFunctions> finished;
-  return finished;
-}
+/// One entry per finished function (constant-initialized: no guard on the
+/// trampolines' path).
+inline std::array<Finished, kMaxFunctions> finished_table{};
+inline std::size_t finished_count = 0;
 
 template <std::size_t I>
 PyObject* trampoline(PyObject* /*module*/, PyObject* const* args, Py_ssize_t nargs, PyObject* kwnames) {
-  const Finished& f = table()[I];
+  const Finished& f = finished_table[I];
   return f.dispatch(f.record, args, static_cast<size_t>(nargs), kwnames);
 }
 
@@ -263,7 +264,8 @@ inline constexpr std::array<FastCall, kMaxFunctions> kTrampolines =
 
 /// Finishes one function (see the file comment); `name` is what help() calls
 /// it (pybind11 leaves property getters unnamed).
-inline void finish(py::handle func, const std::string& name, py::handle module, std::size_t& count) {
+inline void finish(py::handle func, const std::string& name, py::handle module) {
+  std::size_t& count = finished_count;
   detail::function_record* head = record_of(func.ptr());
   if (head == nullptr || std::strncmp(head->name, "_pybind11", 9) == 0) return;
   auto* f = reinterpret_cast<PyCFunctionObject*>(func.ptr());
@@ -286,7 +288,7 @@ inline void finish(py::handle func, const std::string& name, py::handle module, 
   const std::string doc = hidden || old_doc == nullptr ? visible_doc(head->name, visible) : std::string(old_doc);
   const std::string text = name + text_signature(merged_params(visible)) + "\n--\n\n" + doc;
 
-  Finished& entry = table()[count];
+  Finished& entry = finished_table[count];
   entry.dispatch = reinterpret_cast<Dispatcher>(reinterpret_cast<void (*)()>(f->m_ml->ml_meth));
   entry.record = f->m_self;  // the function's reference, now the table's
   entry.def.ml_name = strdup(name.c_str());
@@ -304,18 +306,18 @@ inline void finish(py::handle func, const std::string& name, py::handle module, 
 
 /// Finishes the function(s) inside a class attribute: an instance method, a
 /// static method, a property's accessors, or a function.
-inline void finish_member(py::handle value, const std::string& name, py::handle module, std::size_t& count) {
+inline void finish_member(py::handle value, const std::string& name, py::handle module) {
   PyObject* v = value.ptr();
   if (PyCFunction_Check(v)) {
-    finish(value, name, module, count);
+    finish(value, name, module);
   } else if (PyInstanceMethod_Check(v)) {
-    finish(PyInstanceMethod_GET_FUNCTION(v), name, module, count);
+    finish(PyInstanceMethod_GET_FUNCTION(v), name, module);
   } else if (PyObject_TypeCheck(v, &PyStaticMethod_Type)) {
-    finish(value.attr("__func__"), name, module, count);
+    finish(value.attr("__func__"), name, module);
   } else if (PyObject_TypeCheck(v, &PyProperty_Type)) {
     for (const char* accessor : {"fget", "fset", "fdel"}) {
       const py::object fn = value.attr(accessor);
-      if (!fn.is_none()) finish(fn, name, module, count);
+      if (!fn.is_none()) finish(fn, name, module);
     }
   }
 }
@@ -325,10 +327,6 @@ inline void finish_member(py::handle value, const std::string& name, py::handle 
 /// See the file comment: signatures for every function of the module `m`
 /// and of its classes. Call once, after every bind_*.
 inline void finish_functions(py::module_& m) {
-  std::size_t& count = *[] {
-    static std::size_t n = 0;
-    return &n;
-  }();
   const std::string module_name = py::str(m.attr("__name__"));
   const py::dict items = m.attr("__dict__");
   for (const auto& item : items) {
@@ -338,9 +336,9 @@ inline void finish_functions(py::module_& m) {
       if (!py::hasattr(value, "__module__") || py::str(value.attr("__module__")).cast<std::string>() != module_name)
         continue;
       const py::dict members = value.attr("__dict__");
-      for (const auto& member : members) signatures::finish_member(member.second, py::str(member.first), m, count);
+      for (const auto& member : members) signatures::finish_member(member.second, py::str(member.first), m);
     } else {
-      signatures::finish(value, name, m, count);
+      signatures::finish(value, name, m);
     }
   }
 }
