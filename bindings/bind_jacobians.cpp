@@ -158,7 +158,7 @@ Raises:
 
 Example:
     >>> g = chasles.SE3(translation=[1.0, 0.0, 0.0])
-    >>> chasles.rplus(g, [0.0, 2.0, 0.0, 0.0, 0.0, 0.0]).translation()
+    >>> chasles.rplus(g, [0.0, 2.0, 0.0, 0.0, 0.0, 0.0]).translation
     array([1., 2., 0.])
 )doc");
   m.def(

@@ -230,6 +230,7 @@ void bind_kinematics(py::module_& m) {
 
   const std::string doc = class_doc();
   py::class_<ChainD> cls(m, "Chain", doc.c_str());
+  cls.attr("__array_ufunc__") = py::none();  // numpy defers operators (np.float64(1.0) == c) to us
 
   cls.def(py::init([](ArrayLike screws, py::object home) { return ChainD(screws_of(screws.obj), home_pose(home)); }),
           py::arg("screws"), py::arg("home"),
@@ -425,6 +426,13 @@ Example:
       "home", [](Obj<ChainD> c) { return c->home(); }, R"doc(SE3: the home pose M = g(0).)doc");
   cls.def_property_readonly(
       "n_joints", [](Obj<ChainD> c) { return static_cast<int>(c->joints()); }, R"doc(int: n, the number of joints.)doc");
+  // The stored numbers: the space screws and the home pose (the body screws
+  // are computed from them).
+  def_equality(cls, [](const ChainD& a, const ChainD& b) {
+    return a.joints() == b.joints() && a.space_screws() == b.space_screws() &&
+           a.home().rotation().matrix() == b.home().rotation().matrix() &&
+           a.home().translation() == b.home().translation();
+  });
   def_repr(cls, [](const ChainD& c) { return "Chain(n_joints=" + std::to_string(c.joints()) + ")"; });
   cls.def("__copy__", [](Obj<ChainD> c) { return *c; });
   cls.def("__deepcopy__", [](Obj<ChainD> c, const py::object&) { return *c; }, py::arg("memo"));

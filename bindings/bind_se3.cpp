@@ -9,6 +9,7 @@
 #include "bindings.hpp"
 #include "conventions.hpp"
 #include "convert.hpp"
+#include "signatures.hpp"
 
 namespace chasles_py {
 
@@ -59,6 +60,51 @@ Vector6 twist_vector(py::handle h, const char* what) {
   return to_finite_eigen<6>(h, what);
 }
 
+/// Why SE3(...) refused its arguments, and what to call instead (the
+/// constructor takes an SO3 and a translation; raw matrices have their own
+/// checked constructors).
+std::string explain_se3_refusal(const py::args& args, const py::kwargs& kwargs) {
+  const char* usage = "SE3(rotation, translation) takes an SO3 and a translation of shape (3,)";
+  for (const auto& kw : kwargs) {
+    const std::string key = py::str(kw.first);
+    if (key != "rotation" && key != "translation")
+      return "SE3(): unexpected keyword argument '" + key + "'; " + usage;
+    if ((key == "rotation" && args.size() >= 1) || (key == "translation" && args.size() >= 2))
+      return "SE3(): " + key + " given by position and by keyword; " + usage;
+  }
+  if (args.size() > 2)
+    return "SE3(): takes at most 2 arguments (rotation, translation), got " + std::to_string(args.size()) + "; " +
+           usage;
+  py::object rotation;
+  if (args.size() >= 1) {
+    rotation = args[0];
+  } else if (kwargs.contains("rotation")) {
+    rotation = kwargs["rotation"];
+  } else {
+    return std::string("SE3(): ") + usage;
+  }
+  std::string msg = "SE3(rotation): expected an SO3, got " + describe_argument(rotation);
+  std::vector<Py_intptr_t> shape;
+  const bool raw = raw_shape(rotation, shape);
+  if (raw && shape == std::vector<Py_intptr_t>{4, 4}) {
+    return msg +
+           ". A homogeneous matrix [[R, p], [0, 0, 0, 1]] is SE3.from_matrix(matrix) (checked: it refuses a matrix "
+           "that is not a rigid motion), SE3.from_matrix_projected(matrix) (the nearest rotation) or "
+           "SE3.from_matrix_unchecked(matrix) (no check).";
+  }
+  if (raw && shape == std::vector<Py_intptr_t>{3, 3}) {
+    return msg +
+           ". Make the rotation of a matrix with SO3.from_matrix(matrix) (checked: it refuses a matrix that is not "
+           "a rotation), SO3.from_matrix_projected(matrix) (the nearest rotation) or "
+           "SO3.from_matrix_unchecked(matrix) (no check): SE3(SO3.from_matrix(R), p).";
+  }
+  if (raw && shape == std::vector<Py_intptr_t>{3} && args.size() == 1 && kwargs.empty())
+    return msg + ". A translation alone is SE3(translation=p).";
+  if (raw && shape == std::vector<Py_intptr_t>{6})
+    return msg + ". The motion of a twist xi = (v, w) is SE3.exp(xi).";
+  return msg + ". SO3.exp(w), SO3.from_quat(quat) and SO3.from_matrix(matrix) make one; " + usage + ".";
+}
+
 [[noreturn]] void raise_not_rigid(const Matrix4& M, double tol) {
   const double rot = SO3d::rotation_defect(M.topLeftCorner<3, 3>());
   const double det = M.topLeftCorner<3, 3>().determinant();
@@ -95,9 +141,12 @@ Args:
     translation: shape (3,), p, finite (default: 0).
 
 Example:
-    >>> SE3(translation=[1.0, 2.0, 3.0]).translation()
+    >>> SE3(translation=[1.0, 2.0, 3.0]).translation
     array([1., 2., 3.])
 )doc");
+
+  // SE3(matrix), SE3(np.eye(3), p) and the like: say which constructor was meant.
+  def_refusal(cls, explain_se3_refusal);
 
   cls.def_static("identity", &SE3d::identity, R"doc(The identity motion.
 
@@ -123,7 +172,7 @@ Returns:
 
 Example:
     >>> g = SE3.exp([1.0, 0.0, 0.0, 0.0, 0.0, np.pi / 2])
-    >>> np.round(g.translation(), 12) + 0.0
+    >>> np.round(g.translation, 12) + 0.0
     array([0.63661977, 0.63661977, 0.        ])
 )doc");
 
@@ -279,19 +328,14 @@ Returns:
 
   // ---- access and conversions ---------------------------------------------
 
-  cls.def("rotation", [](Obj<SE3d> g) { return g->rotation(); }, R"doc(The rotation R.
+  // Stored parts are properties (read-only: the values are immutable).
+  cls.def_property_readonly(
+      "rotation", [](Obj<SE3d> g) { return g->rotation(); },
+      R"doc(SO3: the rotation R of g = [[R, p], [0, 1]] (a stored part; a copy).)doc");
 
-Returns:
-    SO3: R.
-)doc");
-
-  cls.def(
+  cls.def_property_readonly(
       "translation", [](Obj<SE3d> g) { return vec_out<3>(g->translation()); },
-      R"doc(The translation p.
-
-Returns:
-    ndarray: p, shape (3,).
-)doc");
+      R"doc(ndarray: the translation p of g = [[R, p], [0, 1]], shape (3,) (a stored part; a new array).)doc");
 
   cls.def(
       "as_matrix", [](Obj<SE3d> g) { return mat_out<4, 4>(g->matrix()); },
@@ -414,7 +458,7 @@ Returns:
 
 Example:
     >>> g = SE3.from_screw([0.0, 2.0, 0.0], [0.0, 0.0, 1.0], 0.0, np.pi / 2)
-    >>> np.round(g.translation(), 12) + 0.0
+    >>> np.round(g.translation, 12) + 0.0
     array([2., 2., 0.])
     >>> np.round(g @ [0.0, 2.0, 5.0], 12) + 0.0
     array([0., 2., 5.])
@@ -447,7 +491,7 @@ Returns:
 
 Example:
     >>> a, b = SE3(), SE3(translation=[2.0, 0.0, 0.0])
-    >>> SE3.interpolate(a, b, 0.5).translation()
+    >>> SE3.interpolate(a, b, 0.5).translation
     array([1., 0., 0.])
 )doc");
 
@@ -460,8 +504,8 @@ Example:
       R"doc(Whether two motions are equal within tol.
 
 Rotation matrices within tol (absolute), translations within
-tol * max(1, |p|_max) (relative beyond unit scale). ``==`` is deliberately
-not defined (it is object identity).
+tol * max(1, |p|_max) (relative beyond unit scale). ``==`` is the exact
+comparison (every stored number equal).
 
 Args:
     other: SE3.
@@ -473,6 +517,9 @@ Returns:
 
   // ---- Python protocols ---------------------------------------------------
 
+  def_equality(cls, [](const SE3d& a, const SE3d& b) {
+    return a.rotation().matrix() == b.rotation().matrix() && a.translation() == b.translation();
+  });
   def_repr(cls, [](const SE3d& g) {
     return "SE3(rotation=" + array_repr(mat_out<3, 3>(g.rotation().matrix())) +
            ", translation=" + array_repr(vec_out<3>(g.translation())) + ")";
@@ -543,7 +590,7 @@ Returns:
 
 Example:
     >>> m = chasles.interpolate(SE3(), SE3(translation=[0.0, 0.0, 4.0]), 0.25)
-    >>> m.translation()
+    >>> m.translation
     array([0., 0., 1.])
 )doc");
 }

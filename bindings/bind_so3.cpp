@@ -6,6 +6,7 @@
 #include "bindings.hpp"
 #include "conventions.hpp"
 #include "convert.hpp"
+#include "signatures.hpp"
 
 namespace chasles_py {
 
@@ -67,6 +68,19 @@ Example:
            [0., 1., 0.],
            [0., 0., 1.]])
 )doc");
+
+  // SO3(matrix) and the like: say which constructor was meant.
+  def_refusal(cls, [](const py::args& args, const py::kwargs& kwargs) {
+    std::string got;
+    for (const auto& a : args) got += (got.empty() ? "" : ", ") + describe_argument(a);
+    for (const auto& kw : kwargs)
+      got += (got.empty() ? "" : ", ") + py::str(kw.first).cast<std::string>() + "=" + describe_argument(kw.second);
+    return "SO3(" + got +
+           "): SO3() takes no arguments, it is the identity. A rotation matrix is "
+           "SO3.from_matrix(matrix) (checked: it refuses a matrix that is not a rotation), "
+           "SO3.from_matrix_projected(matrix) (the nearest rotation) or SO3.from_matrix_unchecked(matrix) "
+           "(no check); a rotation vector is SO3.exp(w), a quaternion SO3.from_quat(quat).";
+  });
 
   cls.def_static("identity", &SO3d::identity, R"doc(The identity rotation.
 
@@ -447,7 +461,7 @@ Example:
       py::arg("other"), py::arg_v("tol", 1e-9),
       R"doc(Whether two rotations are equal within tol: max |R_a - R_b| <= tol.
 
-``==`` is deliberately not defined (it is object identity).
+``==`` is the exact comparison (every stored number equal).
 
 Args:
     other: SO3.
@@ -459,6 +473,7 @@ Returns:
 
   // ---- Python protocols ---------------------------------------------------
 
+  def_equality(cls, [](const SO3d& a, const SO3d& b) { return a.matrix() == b.matrix(); });
   def_repr(cls, [](const SO3d& R) { return "SO3(matrix=" + array_repr(mat_out<3, 3>(R.matrix())) + ")"; });
   cls.def(
       "__array__",

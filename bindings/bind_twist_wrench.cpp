@@ -154,7 +154,7 @@ void bind_six_vector_protocols(py::class_<T>& cls, const char* cls_name, const c
       py::arg("other"), py::arg_v("tol", 1e-9),
       R"doc(Whether two 6-vectors are equal within tol: max |x - y| <= tol * max(1, max |x|, max |y|).
 
-``==`` is deliberately not defined (it is object identity).
+``==`` is the exact comparison (every stored number equal).
 
 Args:
     other: the same type.
@@ -163,6 +163,7 @@ Args:
 Returns:
     bool.
 )doc");
+  def_equality(cls, [](const T& x, const T& y) { return x.vector() == y.vector(); });
   const std::string name(cls_name), an(a), bn(b);
   def_repr(cls, [name, an, bn](const T& x) {
     return name + "(" + an + "=" + array_repr(vec_out<3>(Vector3(x.vector().template head<3>()))) + ", " + bn + "=" +
@@ -190,6 +191,7 @@ Returns:
 
 void bind_screw(py::module_& m) {
   py::class_<Screwd> cls(m, "Screw", kScrewDoc);
+  cls.attr("__array_ufunc__") = py::none();  // numpy defers operators (np.float64(1.0) == s) to us
   cls.def(py::init([](ArrayLike point, ArrayLike direction, RealLike pitch, RealLike magnitude) {
             Screwd s;
             s.point = to_finite_eigen<3>(point.obj, "Screw(point)");
@@ -249,6 +251,9 @@ Args:
 Returns:
     bool.
 )doc");
+  def_equality(cls, [](const Screwd& a, const Screwd& b) {
+    return a.point == b.point && a.direction == b.direction && a.pitch == b.pitch && a.magnitude == b.magnitude;
+  });
   cls.def("__copy__", [](Obj<Screwd> s) { return *s; });
   cls.def("__deepcopy__", [](Obj<Screwd> s, const py::object&) { return *s; }, py::arg("memo"));
   cls.def(py::pickle(
@@ -391,8 +396,17 @@ Example:
     >>> s.pitch, s.magnitude
     (0.5, 1.0)
 )doc");
-  cls.def_property_readonly(
-      "pitch", [](Obj<Twistd> xi) { return xi->pitch(); }, "float: w.v / |w|^2 (inf for w = 0, 0 for the zero twist).");
+  cls.def(
+      "pitch", [](Obj<Twistd> xi) { return xi->pitch(); },
+      R"doc(The pitch of the twist's screw: w.v / |w|^2 (a computation, as ``screw().pitch``).
+
+Returns:
+    float: the pitch; inf for w = 0 (a translation), 0 for the zero twist.
+
+Example:
+    >>> Twist(v=[0.0, 0.0, 0.5], w=[0.0, 0.0, 1.0]).pitch()
+    0.5
+)doc");
 
   cls.def_static(
       "from_screw",
@@ -520,8 +534,13 @@ tau / |tau|, magnitude |tau|.
 Returns:
     Screw.
 )doc");
-  cls.def_property_readonly(
-      "pitch", [](Obj<Wrenchd> F) { return F->pitch(); }, "float: f.tau / |f|^2 (inf for f = 0, 0 for the zero wrench).");
+  cls.def(
+      "pitch", [](Obj<Wrenchd> F) { return F->pitch(); },
+      R"doc(The pitch of the wrench's screw: f.tau / |f|^2 (a computation, as ``screw().pitch``).
+
+Returns:
+    float: the pitch; inf for f = 0 (a pure couple), 0 for the zero wrench.
+)doc");
 
   cls.def_static(
       "from_screw",

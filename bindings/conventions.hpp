@@ -25,8 +25,10 @@ and infinities (ValueError); functions that return the numbers given,
 rearranged (hat, SO3.vee, SE3.vee, actions on points), carry a NaN through,
 and the defects are inf for a matrix that is not finite.
 
-Values are float64 and immutable. ``==`` is not defined (it is object
-identity): compare with ``is_approx(other, tol)``. Objects pickle and copy
+Values are float64 and immutable. ``==`` is the exact equality of the stored
+numbers, compared as floats (-0.0 == 0.0; a NaN is unequal to everything,
+itself included), ``!=`` its negation, and objects are unhashable; compare
+within a tolerance with ``is_approx(other, tol)``. Objects pickle and copy
 bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
 )doc";
 

@@ -10,13 +10,19 @@
 //   converted to float64). Errors:
 //     TypeError  "<what>: expected real numbers (float64), got dtype complex128 (list)"
 //                (complex, object, str, bytes, datetime, void, None);
-//     ValueError "<what>: expected shape (3,), got (4,)".
+//     ValueError "<what>: expected shape (3,), got (4,)", with a hint where one
+//     helps: a batch given to a method for one element names the array
+//     function ("SO3.exp(w): expected shape (3,), got (5, 3); for a batch,
+//     call the array function chasles.so3_exp ..."), six numbers given to
+//     Twist(v) name Twist.from_vector (`shape_hint`).
 //   `to_finite_eigen` adds `require_finite`: ValueError "<what>: expected
 //   finite numbers, got [nan, 0.0, 0.0]".
 // - `to_real(obj, what)`: a Python float or int, a numpy real scalar or 0-d
 //   array, or any object with __float__ (not complex), as a double.
 // - `call_array_function(name, what, args)`: an array function (a numpy
 //   generalized ufunc) called from C++, its errors naming `what`.
+// - `describe_argument(obj)`, `raw_shape(obj, shape)`: what came, for the
+//   messages of constructors that refuse raw data (SO3(matrix), ...).
 // - `new_array(nd, dims)`, `vec_out(v)`, `mat_out(M)`: new C-contiguous
 //   float64 arrays, built with numpy's C API directly (no shape vectors).
 // - Argument types whose conversion (and error) happens in the function body,
@@ -26,7 +32,8 @@
 //   sets), `Returns<T>` (a T or NotImplemented, shown as T).
 // - Protocol helpers: `array_protocol` (__array__ with numpy 2's dtype and
 //   copy), `array_repr`, `float_tuple` / `state_tuple` / `read_state`
-//   (bit-exact pickling), `add_reduce` (pickling at every protocol).
+//   (bit-exact pickling), `add_reduce` (pickling at every protocol), `def_equality`
+//   (`==` exact on the stored numbers, `!=`, unhashable), `def_repr`.
 //
 // `what` is the argument as the user wrote it, e.g. "SO3.exp(w)".
 #pragma once
@@ -35,7 +42,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <initializer_list>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 #include <pybind11/numpy.h>
@@ -388,6 +397,38 @@ inline bool read_flat_sequence(PyObject* o, Eigen::Matrix<double, R, 1>& out) {
   return read_number_sequence(o, out.data(), R);
 }
 
+/// What the message of a wrong shape adds for the argument `what` given an
+/// array of shape `dims` where one of shape `core` belongs: the array
+/// function for a batch (a method of an object takes one element), or the
+/// constructor meant (Twist(v) given six numbers). "" when there is nothing
+/// to add.
+inline std::string shape_hint(const std::string& what, const Py_intptr_t* dims, int nd,
+                              std::initializer_list<Py_intptr_t> core) {
+  const int core_nd = static_cast<int>(core.size());
+  bool batch = nd > core_nd;
+  for (int k = 0; batch && k < core_nd; ++k) batch = dims[nd - core_nd + k] == core.begin()[k];
+  if (batch) {
+    std::string f;
+    if (what == "SO3.exp(w)") f = "chasles.so3_exp";
+    else if (what == "SO3.hat(w)") f = "chasles.so3_hat";
+    else if (what == "SO3.vee(matrix)") f = "chasles.so3_vee";
+    else if (what == "SO3.from_quat(quat)") f = "chasles.so3_from_quat";
+    else if (what == "SE3.exp(xi)") f = "chasles.se3_exp";
+    else if (what == "SE3.hat(xi)") f = "chasles.se3_hat";
+    else if (what == "SE3.vee(matrix)" || what == "Twist.vee(matrix)") f = "chasles.se3_vee";
+    else if (what == "SO3.interpolate(t)") f = "chasles.so3_interpolate";
+    else if (what == "SE3.interpolate(t)") f = "chasles.se3_interpolate";
+    else if (what == "interpolate(t)") f = "chasles.so3_interpolate or chasles.se3_interpolate";
+    if (!f.empty())
+      return "; for a batch, call the array function " + f + " (array functions broadcast over leading axes)";
+  }
+  if (nd == 1 && dims[0] == 6 && core_nd == 1 && core.begin()[0] == 3) {
+    if (what == "Twist(v)" || what == "Twist(w)") return "; a 6-vector (v, w) is Twist.from_vector(xi)";
+    if (what == "Wrench(f)" || what == "Wrench(tau)") return "; a 6-vector (f, tau) is Wrench.from_vector(F)";
+  }
+  return "";
+}
+
 /// Any array-like of shape (R,) (C = 1) or (R, C) as a double Eigen matrix.
 template <int R, int C = 1>
 inline Eigen::Matrix<double, R, C> to_eigen(py::handle h, const char* what) {
@@ -402,8 +443,10 @@ inline Eigen::Matrix<double, R, C> to_eigen(py::handle h, const char* what) {
   }
   const py::array a = as_float64_array(h, what);
   if (!has_shape<R, C>(a.ptr())) {
+    const int nd = static_cast<int>(a.ndim());
+    const std::string hint = C == 1 ? shape_hint(what, a.shape(), nd, {R}) : shape_hint(what, a.shape(), nd, {R, C});
     raise_value_error(std::string(what) + ": expected shape " + expected_shape_string<R, C>() + ", got " +
-                      shape_string(a.shape(), static_cast<int>(a.ndim())));
+                      shape_string(a.shape(), nd) + hint);
   }
   read_array<R, C>(a.ptr(), out);
   return out;
@@ -449,7 +492,8 @@ inline double to_real(py::handle h, const char* what) {
     const py::array a = as_float64_array(h, what);
     if (a.ndim() != 0)
       raise_value_error(std::string(what) + ": expected a real number (shape ()), got shape " +
-                        shape_string(a.shape(), static_cast<int>(a.ndim())));
+                        shape_string(a.shape(), static_cast<int>(a.ndim())) +
+                        shape_hint(what, a.shape(), static_cast<int>(a.ndim()), {}));
     double x;
     std::memcpy(&x, py::detail::array_proxy(a.ptr())->data, sizeof(double));
     return x;
@@ -494,6 +538,35 @@ inline double to_tolerance(py::handle h, const char* what) {
 /// support __array__.
 inline bool is_bound_object(py::handle h) {
   return py::detail::get_type_info(Py_TYPE(h.ptr())) != nullptr;
+}
+
+/// The shape numpy gives `h` when it is raw numbers (an ndarray, a list or
+/// tuple, an object with __array__, a bound object excepted), into `shape`;
+/// false for anything else, or when numpy cannot convert it.
+inline bool raw_shape(py::handle h, std::vector<Py_intptr_t>& shape) {
+  PyObject* o = h.ptr();
+  if (is_bound_object(h) || !(npy().PyArray_Check_(o) || PyList_Check(o) || PyTuple_Check(o) ||
+                              PyObject_HasAttrString(o, "__array__")))
+    return false;
+  static PyObject* asarray = numpy_attr("asarray");
+  PyObject* a = PyObject_CallOneArg(asarray, o);
+  if (a == nullptr) {
+    PyErr_Clear();
+    return false;
+  }
+  const py::array arr = py::reinterpret_steal<py::array>(a);
+  shape.assign(arr.shape(), arr.shape() + arr.ndim());
+  return true;
+}
+
+/// An argument as an error message names it: "ndarray of shape (3, 3)",
+/// "list of shape (4, 4)", "None", "chasles._core.SE3".
+inline std::string describe_argument(py::handle h) {
+  if (h.is_none()) return "None";
+  std::string d = Py_TYPE(h.ptr())->tp_name;
+  std::vector<Py_intptr_t> shape;
+  if (raw_shape(h, shape)) d += " of shape " + shape_string(shape.data(), static_cast<int>(shape.size()));
+  return d;
 }
 
 /// A new, uninitialized, C-contiguous float64 array.
@@ -619,6 +692,53 @@ void add_reduce(Class& cls) {
       "__reduce_ex__", [reduce](Obj<T> self, int /*protocol*/) { return reduce(self); }, py::arg("protocol"),
       "Pickle support (every protocol): (copyreg.__newobj__, (cls,), state).");
   cls.def("__reduce__", reduce, "Pickle support: (copyreg.__newobj__, (cls,), state).");
+}
+
+/// `==` and `!=` of the bound class of `cls`: `equal(a, b)` is the exact
+/// equality of the stored numbers, compared as floats (-0.0 == 0.0; a NaN is
+/// unequal to everything, itself included), the same rule as numpy's
+/// array_equal and C++'s `==` on Eigen matrices. An operand of another type
+/// gives NotImplemented (Python then compares identities: `SO3() == 3` is
+/// False). The objects are unhashable (`__hash__` is None): a hash of exact
+/// floats would make a dictionary lookup fail on a difference of one ulp.
+template <typename Class, typename Equal>
+void def_equality(Class& cls, Equal equal) {
+  using T = typename Class::type;
+  const std::string name = py::str(cls.attr("__name__"));
+  const std::string eq_doc =
+      "Exact equality of the stored numbers: " + name +
+      "s are values, compared as floats\n(-0.0 == 0.0; a NaN is unequal to everything, itself included).\n\n"
+      "For a tolerance, use ``is_approx(other, tol)``. An object of another type gives\n"
+      "NotImplemented, so ``==`` is False. " +
+      name + "s are unhashable.\n\nArgs:\n    other: any object.\n\nReturns:\n    bool.";
+  const std::string ne_doc =
+      "The negation of ``==``: some stored number differs (or is NaN), or other is not a " + name +
+      ".\n\nArgs:\n    other: any object.\n\nReturns:\n    bool.";
+  // `other` is any object (as object.__eq__ takes it, and as the stub says):
+  // NotImplemented for another type, TypeError for an uninitialized T.
+  const auto name_of = [](py::handle h) { return type_name(h); };
+  const auto compare = [equal, name_of](Obj<T> a, py::handle b, bool want_equal) -> Returns<bool> {
+    const T* value = nullptr;
+    switch (instance_state<T>(b, &value)) {
+      case InstanceState::other_type:
+        return {py::reinterpret_borrow<py::object>(Py_NotImplemented)};
+      case InstanceState::uninitialized: {
+        py::detail::make_caster<Obj<T>> caster;
+        caster.load(b, false);  // raises the TypeError every method raises for it
+        raise_type_error(name_of(b) + " object is not initialized");
+      }
+      case InstanceState::initialized:
+        break;
+    }
+    return {py::bool_(static_cast<bool>(equal(*a, *value)) == want_equal)};
+  };
+  cls.def(
+      "__eq__", [compare](Obj<T> a, const py::object& other) { return compare(a, other, true); },
+      py::arg("other"), py::is_operator(), eq_doc.c_str());
+  cls.def(
+      "__ne__", [compare](Obj<T> a, const py::object& other) { return compare(a, other, false); },
+      py::arg("other"), py::is_operator(), ne_doc.c_str());
+  cls.attr("__hash__") = py::none();
 }
 
 /// __repr__ of the bound class of `cls` from `f(const T&)`. An instance made

@@ -1,5 +1,6 @@
 // chasles._core: registers the bindings; each concept lives in its own bind_*.cpp.
 #include "bindings.hpp"
+#include "signatures.hpp"
 
 #define CHASLES_PY_IMPORT_NUMPY  // this unit fills numpy's C API table for all of them
 #include "numpy_capi.hpp"
@@ -14,4 +15,5 @@ PYBIND11_MODULE(_core, m) {
   chasles_py::bind_batch(m);
   chasles_py::bind_jacobians(m);  // after SO3 and SE3: adds their static methods
   chasles_py::bind_kinematics(m);
+  chasles_py::finish_functions(m);  // last: signatures for help() and inspect (signatures.hpp)
 }

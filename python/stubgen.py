@@ -22,6 +22,33 @@ from pathlib import Path
 STUB = Path(__file__).resolve().parent / "chasles" / "_core.pyi"
 MODULE = "chasles._core"
 
+# pybind11-stubgen asks inspect for a function's signature first and reads
+# pybind11's typed signature lines (the top of __doc__) only when inspect
+# finds none. chasles' functions carry a __text_signature__ for help() and
+# inspect.signature (names and defaults, no types: bindings/signatures.hpp),
+# so the driver below makes inspect decline for them, and the stub keeps
+# pybind11's annotations.
+DRIVER = """
+import inspect
+import sys
+
+import pybind11_stubgen
+
+_getfullargspec = inspect.getfullargspec
+
+
+def getfullargspec(func):
+    module = getattr(func, "__module__", None) or ""
+    if module.split(".")[0] == "chasles" and getattr(func, "__text_signature__", None):
+        raise TypeError("typed signature lines in __doc__")
+    return _getfullargspec(func)
+
+
+inspect.getfullargspec = getfullargspec
+sys.argv[0] = "pybind11-stubgen"
+pybind11_stubgen.main()
+"""
+
 
 def generate() -> str:
     """The stub pybind11-stubgen writes for the installed chasles._core."""
@@ -29,7 +56,7 @@ def generate() -> str:
         # Run from the temporary directory so that `import chasles` finds the
         # installed package, not a source tree that happens to be the cwd.
         subprocess.run(
-            [sys.executable, "-m", "pybind11_stubgen", MODULE, "--exit-code", "-o", out],
+            [sys.executable, "-c", DRIVER, MODULE, "--exit-code", "-o", out],
             cwd=out,
             check=True,
             capture_output=True,

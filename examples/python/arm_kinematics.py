@@ -33,10 +33,10 @@ print("tool pose at theta =", theta, "\n", np.round(g.as_matrix(), 6))
 t1, t2, d3, t4 = theta
 x = l1 * np.cos(t1) + l2 * np.cos(t1 + t2)
 y = l1 * np.sin(t1) + l2 * np.sin(t1 + t2)
-assert np.allclose(g.translation(), [x, y, h - d3], atol=1e-14)
+assert np.allclose(g.translation, [x, y, h - d3], atol=1e-14)
 a = t1 + t2 + t4
 Rz = np.array([[np.cos(a), -np.sin(a), 0.0], [np.sin(a), np.cos(a), 0.0], [0.0, 0.0, 1.0]])
-assert np.allclose(g.rotation().as_matrix(), Rz, atol=1e-14)
+assert np.allclose(g.rotation.as_matrix(), Rz, atol=1e-14)
 
 # The space Jacobian maps joint speeds to the spatial twist (g' g^-1)^vee.
 theta_dot = np.array([0.2, -0.1, 0.05, 0.3])

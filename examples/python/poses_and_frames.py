@@ -41,7 +41,7 @@ g_wd = g_wc @ SE3(SO3.exp([0.0, np.pi / 2, 0.0]), [1.0, 0.0, 3.0])
 g_cd = g_wc.inverse() @ g_wd
 print("camera d seen from camera c, g_cd =\n", np.round(g_cd.as_matrix(), 6))
 assert (g_wc @ g_cd).is_approx(g_wd, 1e-12)
-assert np.allclose(g_cd.translation(), [1.0, 0.0, 3.0])
+assert np.allclose(g_cd.translation, [1.0, 0.0, 3.0])
 # The displacement from c to d as one screw motion (Chasles): g_cd = exp([xi]).
 xi = g_cd.log()
 assert SE3.exp(xi).is_approx(g_cd, 1e-12)

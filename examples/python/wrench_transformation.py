@@ -21,7 +21,7 @@ g_st = SE3(SO3.exp([0.0, 0.0, np.pi / 6]), [0.0, 0.0, 0.2])
 F_t_true = Wrench(f=[5.0, 0.0, 0.0], tau=[0.0, 0.0, 0.0])
 F_s = g_st.act(F_t_true)  # what the sensor measures: Ad_{g_st}^-T F_t
 print("sensor reading (f, tau):", np.round(F_s.vector, 6))
-f_s = g_st.rotation() @ [5.0, 0.0, 0.0]
+f_s = g_st.rotation @ [5.0, 0.0, 0.0]
 assert np.allclose(F_s.torque, np.cross([0.0, 0.0, 0.2], f_s))  # tau = p x f
 
 # From the reading back to the tool frame.

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['Chain', 'SE3', 'SO3', 'Screw', 'Twist', 'Wrench', 'act_jacobians', 'compose_jacobians', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'log_jacobian', 'lplus', 'rminus', 'rplus', 'se3_act', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_vee', 'so3_act', 'so3_compose', 'so3_exp', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee']
+__all__: list[str] = ['Chain', 'SE3', 'SO3', 'Screw', 'Twist', 'Wrench', 'act_jacobians', 'compose_jacobians', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'log_jacobian', 'lplus', 'rminus', 'rplus', 'se3_act', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_exp', 'se3_interpolate', 'se3_inverse', 'se3_log', 'so3_act', 'so3_as_quat', 'so3_compose', 'so3_exp', 'so3_from_quat', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee', 'twist_hat', 'twist_vee']
 class SO3:
     """
     A rotation of R^3: an element of SO(3), stored as its 3x3 matrix (float64).
@@ -48,11 +48,14 @@ class SO3:
     rearranged (hat, SO3.vee, SE3.vee, actions on points), carry a NaN through,
     and the defects are inf for a matrix that is not finite.
     
-    Values are float64 and immutable. ``==`` is not defined (it is object
-    identity): compare with ``is_approx(other, tol)``. Objects pickle and copy
+    Values are float64 and immutable. ``==`` is the exact equality of the stored
+    numbers, compared as floats (-0.0 == 0.0; a NaN is unequal to everything,
+    itself included), ``!=`` its negation, and objects are unhashable; compare
+    within a tolerance with ``is_approx(other, tol)``. Objects pickle and copy
     bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
     """
     __array_ufunc__ = None
+    __hash__: typing.ClassVar[None] = None
     @staticmethod
     def exp(w: numpy.typing.ArrayLike) -> SO3:
         """
@@ -346,6 +349,20 @@ class SO3:
         ...
     def __deepcopy__(self, memo: typing.Any) -> SO3:
         ...
+    def __eq__(self, other: typing.Any) -> bool:
+        """
+        Exact equality of the stored numbers: SO3s are values, compared as floats
+        (-0.0 == 0.0; a NaN is unequal to everything, itself included).
+        
+        For a tolerance, use ``is_approx(other, tol)``. An object of another type gives
+        NotImplemented, so ``==`` is False. SO3s are unhashable.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
     def __getstate__(self) -> tuple:
         ...
     def __init__(self) -> None:
@@ -370,18 +387,25 @@ class SO3:
             SO3: the composed rotation.
         """
     @typing.overload
-    def __matmul__(self, points: numpy.typing.ArrayLike) -> typing.Any:
+    def __matmul__(self, points: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
         Action on points or vectors: p_a = R_ab @ p_b.
         
-        The array function so3_act with this rotation: numpy's rules for
-        dtypes and broadcasting.
-        
         Args:
-            points: array_like of shape (..., 3).
+            points: shape (3,) or (N, 3) (any leading axes).
         
         Returns:
-            ndarray: the rotated points, shape (..., 3).
+            ndarray: the rotated points, same shape.
+        """
+    def __ne__(self, other: typing.Any) -> bool:
+        """
+        The negation of ``==``: some stored number differs (or is NaN), or other is not a SO3.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
         """
     def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
         """
@@ -395,18 +419,15 @@ class SO3:
         ...
     def __setstate__(self, arg0: typing.Any) -> None:
         ...
-    def act(self, points: numpy.typing.ArrayLike) -> typing.Any:
+    def act(self, points: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
         Action on points or vectors: p_a = R_ab p_b (the same as ``R @ points``).
         
-        The array function so3_act with this rotation: numpy's rules for
-        dtypes and broadcasting.
-        
         Args:
-            points: array_like of shape (..., 3).
+            points: shape (3,) or (N, 3) (any leading axes).
         
         Returns:
-            ndarray: the rotated points, shape (..., 3).
+            ndarray: the rotated points, same shape, float64.
         
         Example:
             >>> R = SO3.exp([0.0, 0.0, np.pi])
@@ -464,7 +485,7 @@ class SO3:
         """
         Whether two rotations are equal within tol: max |R_a - R_b| <= tol.
         
-        ``==`` is deliberately not defined (it is object identity).
+        ``==`` is the exact comparison (every stored number equal).
         
         Args:
             other: SO3.
@@ -534,11 +555,14 @@ class SE3:
     rearranged (hat, SO3.vee, SE3.vee, actions on points), carry a NaN through,
     and the defects are inf for a matrix that is not finite.
     
-    Values are float64 and immutable. ``==`` is not defined (it is object
-    identity): compare with ``is_approx(other, tol)``. Objects pickle and copy
+    Values are float64 and immutable. ``==`` is the exact equality of the stored
+    numbers, compared as floats (-0.0 == 0.0; a NaN is unequal to everything,
+    itself included), ``!=`` its negation, and objects are unhashable; compare
+    within a tolerance with ``is_approx(other, tol)``. Objects pickle and copy
     bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
     """
     __array_ufunc__ = None
+    __hash__: typing.ClassVar[None] = None
     @staticmethod
     def exp(xi: numpy.typing.ArrayLike) -> SE3:
         """
@@ -556,7 +580,7 @@ class SE3:
         
         Example:
             >>> g = SE3.exp([1.0, 0.0, 0.0, 0.0, 0.0, np.pi / 2])
-            >>> np.round(g.translation(), 12) + 0.0
+            >>> np.round(g.translation, 12) + 0.0
             array([0.63661977, 0.63661977, 0.        ])
         """
     @staticmethod
@@ -631,7 +655,7 @@ class SE3:
         
         Example:
             >>> g = SE3.from_screw([0.0, 2.0, 0.0], [0.0, 0.0, 1.0], 0.0, np.pi / 2)
-            >>> np.round(g.translation(), 12) + 0.0
+            >>> np.round(g.translation, 12) + 0.0
             array([2., 2., 0.])
             >>> np.round(g @ [0.0, 2.0, 5.0], 12) + 0.0
             array([0., 2., 5.])
@@ -679,7 +703,7 @@ class SE3:
         
         Example:
             >>> a, b = SE3(), SE3(translation=[2.0, 0.0, 0.0])
-            >>> SE3.interpolate(a, b, 0.5).translation()
+            >>> SE3.interpolate(a, b, 0.5).translation
             array([1., 0., 0.])
         """
     @staticmethod
@@ -805,6 +829,20 @@ class SE3:
         ...
     def __deepcopy__(self, memo: typing.Any) -> SE3:
         ...
+    def __eq__(self, other: typing.Any) -> bool:
+        """
+        Exact equality of the stored numbers: SE3s are values, compared as floats
+        (-0.0 == 0.0; a NaN is unequal to everything, itself included).
+        
+        For a tolerance, use ``is_approx(other, tol)``. An object of another type gives
+        NotImplemented, so ``==`` is False. SE3s are unhashable.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
     def __getstate__(self) -> tuple:
         ...
     def __init__(self, rotation: SO3 = ..., translation: numpy.typing.ArrayLike = (0.0, 0.0, 0.0)) -> None:
@@ -816,7 +854,7 @@ class SE3:
             translation: shape (3,), p, finite (default: 0).
         
         Example:
-            >>> SE3(translation=[1.0, 2.0, 3.0]).translation()
+            >>> SE3(translation=[1.0, 2.0, 3.0]).translation
             array([1., 2., 3.])
         """
     @typing.overload
@@ -831,18 +869,25 @@ class SE3:
             SE3: the composed motion.
         """
     @typing.overload
-    def __matmul__(self, points: numpy.typing.ArrayLike) -> typing.Any:
+    def __matmul__(self, points: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
         Action on points: q_a = R q_b + p.
         
-        The array function se3_act with this motion: numpy's rules for dtypes
-        and broadcasting.
-        
         Args:
-            points: array_like of shape (..., 3).
+            points: shape (3,) or (N, 3) (any leading axes).
         
         Returns:
-            ndarray: the moved points, shape (..., 3).
+            ndarray: the moved points, same shape.
+        """
+    def __ne__(self, other: typing.Any) -> bool:
+        """
+        The negation of ``==``: some stored number differs (or is NaN), or other is not a SE3.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
         """
     def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
         """
@@ -879,18 +924,15 @@ class SE3:
             Wrench: F_a.
         """
     @typing.overload
-    def act(self, points: numpy.typing.ArrayLike) -> typing.Any:
+    def act(self, points: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
         Action on points: q_a = R q_b + p (the same as ``g @ points``).
         
-        The array function se3_act with this motion: numpy's rules for dtypes
-        and broadcasting.
-        
         Args:
-            points: array_like of shape (..., 3).
+            points: shape (3,) or (N, 3) (any leading axes).
         
         Returns:
-            ndarray: the moved points, shape (..., 3).
+            ndarray: the moved points, same shape, float64.
         
         Example:
             >>> g = SE3(translation=[1.0, 0.0, 0.0])
@@ -921,18 +963,15 @@ class SE3:
             Wrench: F_b.
         """
     @typing.overload
-    def act_inv(self, points: numpy.typing.ArrayLike) -> typing.Any:
+    def act_inv(self, points: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
         Inverse action on points: q_b = R^T (q_a - p), i.e. g^-1 @ q_a.
         
-        The array function se3_act with g^-1: numpy's rules for dtypes and
-        broadcasting.
-        
         Args:
-            points: array_like of shape (..., 3).
+            points: shape (3,) or (N, 3) (any leading axes).
         
         Returns:
-            ndarray: shape (..., 3).
+            ndarray: same shape.
         """
     def adjoint(self) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -968,8 +1007,8 @@ class SE3:
         Whether two motions are equal within tol.
         
         Rotation matrices within tol (absolute), translations within
-        tol * max(1, |p|_max) (relative beyond unit scale). ``==`` is deliberately
-        not defined (it is object identity).
+        tol * max(1, |p|_max) (relative beyond unit scale). ``==`` is the exact
+        comparison (every stored number equal).
         
         Args:
             other: SE3.
@@ -999,19 +1038,15 @@ class SE3:
         Returns:
             SE3: the projected motion.
         """
+    @property
     def rotation(self) -> SO3:
         """
-        The rotation R.
-        
-        Returns:
-            SO3: R.
+        SO3: the rotation R of g = [[R, p], [0, 1]] (a stored part; a copy).
         """
+    @property
     def translation(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        The translation p.
-        
-        Returns:
-            ndarray: p, shape (3,).
+        ndarray: the translation p of g = [[R, p], [0, 1]], shape (3,) (a stored part; a new array).
         """
 class Screw:
     """
@@ -1034,10 +1069,26 @@ class Screw:
         >>> s.point, s.direction, s.pitch, s.magnitude
         (array([0., 2., 0.]), array([0., 0., 1.]), 0.0, 1.0)
     """
+    __array_ufunc__ = None
+    __hash__: typing.ClassVar[None] = None
     def __copy__(self) -> Screw:
         ...
     def __deepcopy__(self, memo: typing.Any) -> Screw:
         ...
+    def __eq__(self, other: typing.Any) -> bool:
+        """
+        Exact equality of the stored numbers: Screws are values, compared as floats
+        (-0.0 == 0.0; a NaN is unequal to everything, itself included).
+        
+        For a tolerance, use ``is_approx(other, tol)``. An object of another type gives
+        NotImplemented, so ``==`` is False. Screws are unhashable.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
     def __getstate__(self) -> tuple[float, float, float, float, float, float, float, float]:
         ...
     def __init__(self, point: numpy.typing.ArrayLike, direction: numpy.typing.ArrayLike, pitch: float, magnitude: float) -> None:
@@ -1055,6 +1106,16 @@ class Screw:
         ...
     def __len__(self) -> int:
         ...
+    def __ne__(self, other: typing.Any) -> bool:
+        """
+        The negation of ``==``: some stored number differs (or is NaN), or other is not a Screw.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
     def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
         """
         Pickle support: (copyreg.__newobj__, (cls,), state).
@@ -1136,11 +1197,14 @@ class Twist:
     rearranged (hat, SO3.vee, SE3.vee, actions on points), carry a NaN through,
     and the defects are inf for a matrix that is not finite.
     
-    Values are float64 and immutable. ``==`` is not defined (it is object
-    identity): compare with ``is_approx(other, tol)``. Objects pickle and copy
+    Values are float64 and immutable. ``==`` is the exact equality of the stored
+    numbers, compared as floats (-0.0 == 0.0; a NaN is unequal to everything,
+    itself included), ``!=`` its negation, and objects are unhashable; compare
+    within a tolerance with ``is_approx(other, tol)``. Objects pickle and copy
     bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
     """
     __array_ufunc__ = None
+    __hash__: typing.ClassVar[None] = None
     @staticmethod
     def body(g: SE3, g_dot: numpy.typing.ArrayLike) -> Twist:
         """
@@ -1243,6 +1307,20 @@ class Twist:
         ...
     def __deepcopy__(self, memo: typing.Any) -> Twist:
         ...
+    def __eq__(self, other: typing.Any) -> bool:
+        """
+        Exact equality of the stored numbers: Twists are values, compared as floats
+        (-0.0 == 0.0; a NaN is unequal to everything, itself included).
+        
+        For a tolerance, use ``is_approx(other, tol)``. An object of another type gives
+        NotImplemented, so ``==`` is False. Twists are unhashable.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
     def __getstate__(self) -> tuple:
         ...
     def __init__(self, v: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), w: numpy.typing.ArrayLike = (0.0, 0.0, 0.0)) -> None:
@@ -1255,6 +1333,16 @@ class Twist:
         """
     def __mul__(self, scalar: float) -> Twist:
         ...
+    def __ne__(self, other: typing.Any) -> bool:
+        """
+        The negation of ``==``: some stored number differs (or is NaN), or other is not a Twist.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
     def __neg__(self) -> Twist:
         ...
     def __pos__(self) -> Twist:
@@ -1307,7 +1395,7 @@ class Twist:
         """
         Whether two 6-vectors are equal within tol: max |x - y| <= tol * max(1, max |x|, max |y|).
         
-        ``==`` is deliberately not defined (it is object identity).
+        ``==`` is the exact comparison (every stored number equal).
         
         Args:
             other: the same type.
@@ -1315,6 +1403,17 @@ class Twist:
         
         Returns:
             bool.
+        """
+    def pitch(self) -> float:
+        """
+        The pitch of the twist's screw: w.v / |w|^2 (a computation, as ``screw().pitch``).
+        
+        Returns:
+            float: the pitch; inf for w = 0 (a translation), 0 for the zero twist.
+        
+        Example:
+            >>> Twist(v=[0.0, 0.0, 0.5], w=[0.0, 0.0, 1.0]).pitch()
+            0.5
         """
     def power(self, wrench: Wrench) -> float:
         """
@@ -1363,11 +1462,6 @@ class Twist:
         ndarray: v, shape (3,).
         """
     @property
-    def pitch(self) -> float:
-        """
-        float: w.v / |w|^2 (inf for w = 0, 0 for the zero twist).
-        """
-    @property
     def vector(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         ndarray: the 6-vector (v, w), linear part first, shape (6,).
@@ -1406,11 +1500,14 @@ class Wrench:
     rearranged (hat, SO3.vee, SE3.vee, actions on points), carry a NaN through,
     and the defects are inf for a matrix that is not finite.
     
-    Values are float64 and immutable. ``==`` is not defined (it is object
-    identity): compare with ``is_approx(other, tol)``. Objects pickle and copy
+    Values are float64 and immutable. ``==`` is the exact equality of the stored
+    numbers, compared as floats (-0.0 == 0.0; a NaN is unequal to everything,
+    itself included), ``!=`` its negation, and objects are unhashable; compare
+    within a tolerance with ``is_approx(other, tol)``. Objects pickle and copy
     bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
     """
     __array_ufunc__ = None
+    __hash__: typing.ClassVar[None] = None
     @staticmethod
     def from_screw(point: numpy.typing.ArrayLike, direction: numpy.typing.ArrayLike, pitch: float, magnitude: float) -> Wrench:
         """
@@ -1453,6 +1550,20 @@ class Wrench:
         ...
     def __deepcopy__(self, memo: typing.Any) -> Wrench:
         ...
+    def __eq__(self, other: typing.Any) -> bool:
+        """
+        Exact equality of the stored numbers: Wrenchs are values, compared as floats
+        (-0.0 == 0.0; a NaN is unequal to everything, itself included).
+        
+        For a tolerance, use ``is_approx(other, tol)``. An object of another type gives
+        NotImplemented, so ``==`` is False. Wrenchs are unhashable.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
     def __getstate__(self) -> tuple:
         ...
     def __init__(self, f: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), tau: numpy.typing.ArrayLike = (0.0, 0.0, 0.0)) -> None:
@@ -1465,6 +1576,16 @@ class Wrench:
         """
     def __mul__(self, scalar: float) -> Wrench:
         ...
+    def __ne__(self, other: typing.Any) -> bool:
+        """
+        The negation of ``==``: some stored number differs (or is NaN), or other is not a Wrench.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
     def __neg__(self) -> Wrench:
         ...
     def __pos__(self) -> Wrench:
@@ -1491,7 +1612,7 @@ class Wrench:
         """
         Whether two 6-vectors are equal within tol: max |x - y| <= tol * max(1, max |x|, max |y|).
         
-        ``==`` is deliberately not defined (it is object identity).
+        ``==`` is the exact comparison (every stored number equal).
         
         Args:
             other: the same type.
@@ -1499,6 +1620,13 @@ class Wrench:
         
         Returns:
             bool.
+        """
+    def pitch(self) -> float:
+        """
+        The pitch of the wrench's screw: f.tau / |f|^2 (a computation, as ``screw().pitch``).
+        
+        Returns:
+            float: the pitch; inf for f = 0 (a pure couple), 0 for the zero wrench.
         """
     def power(self, twist: Twist) -> float:
         """
@@ -1528,11 +1656,6 @@ class Wrench:
         ndarray: f, shape (3,).
         """
     @property
-    def pitch(self) -> float:
-        """
-        float: f.tau / |f|^2 (inf for f = 0, 0 for the zero wrench).
-        """
-    @property
     def torque(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         ndarray: tau, shape (3,).
@@ -1551,17 +1674,14 @@ class Chain:
     configuration in the base frame, one row (v, w) per joint, linear part first)
     and its home pose M = g(0); it keeps the body screws B_i = Ad_{M^-1} S_i.
     Revolute joints about the axis through q along w have the screw
-    (-w x q, w) (``Chain.revolute_screw(point, direction)``: the point first, as
-    in ``SE3.from_screw``), prismatic joints along v the screw (v, 0)
-    (``Chain.prismatic_screw``). At most 32 joints. Its methods forward,
-    forward_body, jacobian_space and jacobian_body are array functions: joint
-    positions of shape (..., n) in, arrays out.
+    (-w x q, w) (``Chain.revolute_screw``), prismatic joints along v the screw
+    (v, 0) (``Chain.prismatic_screw``). At most 32 joints.
     
     Example:
-        >>> screws = [Chain.revolute_screw([0, 0, 0], [0, 0, 1]),
-        ...           Chain.revolute_screw([1, 0, 0], [0, 0, 1])]
+        >>> screws = [Chain.revolute_screw([0, 0, 1], [0, 0, 0]),
+        ...           Chain.revolute_screw([0, 0, 1], [1, 0, 0])]
         >>> arm = Chain(screws, SE3(translation=[2.0, 0.0, 0.0]))
-        >>> np.round(arm.forward([np.pi / 2, 0.0])[:3, 3], 12) + 0.0
+        >>> np.round(arm.forward([np.pi / 2, 0.0]).translation, 12) + 0.0
         array([0., 2., 0.])
         >>> arm.jacobian_space([0.0, 0.0]).shape
         (6, 2)
@@ -1585,10 +1705,14 @@ class Chain:
     rearranged (hat, SO3.vee, SE3.vee, actions on points), carry a NaN through,
     and the defects are inf for a matrix that is not finite.
     
-    Values are float64 and immutable. ``==`` is not defined (it is object
-    identity): compare with ``is_approx(other, tol)``. Objects pickle and copy
+    Values are float64 and immutable. ``==`` is the exact equality of the stored
+    numbers, compared as floats (-0.0 == 0.0; a NaN is unequal to everything,
+    itself included), ``!=`` its negation, and objects are unhashable; compare
+    within a tolerance with ``is_approx(other, tol)``. Objects pickle and copy
     bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
     """
+    __array_ufunc__ = None
+    __hash__: typing.ClassVar[None] = None
     @staticmethod
     def prismatic_screw(direction: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -1605,27 +1729,39 @@ class Chain:
             array([0. , 0.6, 0.8, 0. , 0. , 0. ])
         """
     @staticmethod
-    def revolute_screw(point: numpy.typing.ArrayLike, direction: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+    def revolute_screw(axis: numpy.typing.ArrayLike, point: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
-        The screw of a revolute joint about the axis through q along w: (-w x q, w).
-        
-        The point comes first, as in ``SE3.from_screw(point, direction, ...)``.
+        The screw of a revolute joint: (-w x q, w), w = axis / |axis|.
         
         Args:
+            axis: shape (3,), the joint axis, nonzero (normalized here).
             point: shape (3,), q, any point on the axis.
-            direction: shape (3,), the joint axis, nonzero (normalized here: w = direction / |direction|).
         
         Returns:
             numpy.ndarray: shape (6,), (v, w), linear part first.
         
         Example:
-            >>> Chain.revolute_screw([1, 0, 0], [0, 0, 2])
+            >>> Chain.revolute_screw([0, 0, 2], [1, 0, 0])
             array([ 0., -1.,  0.,  0.,  0.,  1.])
         """
     def __copy__(self) -> Chain:
         ...
     def __deepcopy__(self, memo: typing.Any) -> Chain:
         ...
+    def __eq__(self, other: typing.Any) -> bool:
+        """
+        Exact equality of the stored numbers: Chains are values, compared as floats
+        (-0.0 == 0.0; a NaN is unequal to everything, itself included).
+        
+        For a tolerance, use ``is_approx(other, tol)``. An object of another type gives
+        NotImplemented, so ``==`` is False. Chains are unhashable.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
     def __getstate__(self) -> tuple:
         ...
     def __init__(self, screws: numpy.typing.ArrayLike, home: typing.Any) -> None:
@@ -1646,6 +1782,16 @@ class Chain:
             >>> arm.n_joints
             1
         """
+    def __ne__(self, other: typing.Any) -> bool:
+        """
+        The negation of ``==``: some stored number differs (or is NaN), or other is not a Chain.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
     def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
         """
         Pickle support: (copyreg.__newobj__, (cls,), state).
@@ -1662,20 +1808,15 @@ class Chain:
         """
         Forward kinematics, space form: g(theta) = exp([S_1] th_1) ... exp([S_n] th_n) M.
         
-        An array function: theta of shape (n,) gives one result, (..., n) one per
-        configuration, by the same numpy rules as every chasles array function
-        (broadcasting, dtypes, the GIL released; a NaN gives NaN in its element).
-        
         Args:
-            theta: array_like of shape (..., n), joint positions (radians or lengths).
+            theta: shape (n,) or (N, n), joint positions (radians or lengths), finite.
         
         Returns:
-            numpy.ndarray: shape (..., 4, 4), the homogeneous matrices of the tool
-            frame (``SE3.from_matrix_unchecked`` makes an SE3 of one).
+            SE3 | numpy.ndarray: an SE3 for shape (n,); shape (N, 4, 4) for (N, n).
         
         Example:
             >>> arm = Chain([Chain.prismatic_screw([1, 0, 0])], np.eye(4))
-            >>> arm.forward([0.5])[:3, 3]
+            >>> arm.forward([0.5]).translation
             array([0.5, 0. , 0. ])
             >>> arm.forward([[0.5], [1.0]]).shape
             (2, 4, 4)
@@ -1686,61 +1827,49 @@ class Chain:
         
         Equal to ``forward`` up to rounding.
         
-        An array function: theta of shape (n,) gives one result, (..., n) one per
-        configuration, by the same numpy rules as every chasles array function
-        (broadcasting, dtypes, the GIL released; a NaN gives NaN in its element).
-        
         Args:
-            theta: array_like of shape (..., n).
+            theta: shape (n,) or (N, n), finite.
         
         Returns:
-            numpy.ndarray: shape (..., 4, 4).
+            SE3 | numpy.ndarray: an SE3 for shape (n,); shape (N, 4, 4) for (N, n).
         
         Example:
-            >>> arm = Chain([Chain.revolute_screw([1, 0, 0], [0, 0, 1])], np.eye(4))
-            >>> np.allclose(arm.forward_body([0.3]), arm.forward([0.3]), rtol=0, atol=1e-15)
+            >>> arm = Chain([Chain.revolute_screw([0, 0, 1], [1, 0, 0])], np.eye(4))
+            >>> arm.forward_body([0.3]).is_approx(arm.forward([0.3]))
             True
         """
-    def jacobian_body(self, theta: numpy.typing.ArrayLike) -> typing.Any:
+    def jacobian_body(self, theta: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
         The body Jacobian J_b: the body twist (g^-1 g')^vee = J_b theta'.
         
         Column i is Ad_{(exp([B_{i+1}] th_{i+1}) ... exp([B_n] th_n))^-1} B_i; rows (v, w).
         
-        An array function: theta of shape (n,) gives one result, (..., n) one per
-        configuration, by the same numpy rules as every chasles array function
-        (broadcasting, dtypes, the GIL released; a NaN gives NaN in its element).
-        
         Args:
-            theta: array_like of shape (..., n).
+            theta: shape (n,) or (N, n), finite.
         
         Returns:
-            numpy.ndarray: shape (..., 6, n).
+            numpy.ndarray: shape (6, n) for shape (n,); (N, 6, n) for (N, n).
         
         Example:
-            >>> arm = Chain([Chain.revolute_screw([0, 0, 0], [0, 0, 1])], SE3(translation=[1.0, 0.0, 0.0]))
+            >>> arm = Chain([Chain.revolute_screw([0, 0, 1], [0, 0, 0])], SE3(translation=[1.0, 0.0, 0.0]))
             >>> np.round(arm.jacobian_body([0.3])[:, 0], 12) + 0.0
             array([0., 1., 0., 0., 0., 1.])
         """
-    def jacobian_space(self, theta: numpy.typing.ArrayLike) -> typing.Any:
+    def jacobian_space(self, theta: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
         The space Jacobian J_s: the spatial twist (g' g^-1)^vee = J_s theta'.
         
         Column i is Ad_{exp([S_1] th_1) ... exp([S_{i-1}] th_{i-1})} S_i; rows (v, w).
         J_s = Ad_g J_b.
         
-        An array function: theta of shape (n,) gives one result, (..., n) one per
-        configuration, by the same numpy rules as every chasles array function
-        (broadcasting, dtypes, the GIL released; a NaN gives NaN in its element).
-        
         Args:
-            theta: array_like of shape (..., n).
+            theta: shape (n,) or (N, n), finite.
         
         Returns:
-            numpy.ndarray: shape (..., 6, n).
+            numpy.ndarray: shape (6, n) for shape (n,); (N, 6, n) for (N, n).
         
         Example:
-            >>> arm = Chain([Chain.revolute_screw([0, 0, 0], [0, 0, 1])], np.eye(4))
+            >>> arm = Chain([Chain.revolute_screw([0, 0, 1], [0, 0, 0])], np.eye(4))
             >>> arm.jacobian_space([0.3])[:, 0]
             array([0., 0., 0., 0., 0., 1.])
         """
@@ -1851,7 +1980,7 @@ def interpolate(a: SE3, b: SE3, t: float) -> SE3:
     
     Example:
         >>> m = chasles.interpolate(SE3(), SE3(translation=[0.0, 0.0, 4.0]), 0.25)
-        >>> m.translation()
+        >>> m.translation
         array([0., 0., 1.])
     """
 @typing.overload
@@ -2015,34 +2144,870 @@ def rplus(g: SE3, xi: numpy.typing.ArrayLike) -> SE3:
     
     Example:
         >>> g = chasles.SE3(translation=[1.0, 0.0, 0.0])
-        >>> chasles.rplus(g, [0.0, 2.0, 0.0, 0.0, 0.0, 0.0]).translation()
+        >>> chasles.rplus(g, [0.0, 2.0, 0.0, 0.0, 0.0, 0.0]).translation
         array([1., 2., 0.])
     """
+def se3_act(g: typing.Any, points: typing.Any) -> numpy.ndarray:
+    """
+    Transformed points: q_a = R_ab q_b + p_ab.
+    
+    Broadcasts: one pose of shape (4, 4) with points of shape (N, 3), N poses
+    with N points, (N, 1, 4, 4) with (M, 3) for every pair, ...
+    
+    Args:
+        g: array_like of shape (..., 4, 4): homogeneous matrices.
+        points: array_like of shape (..., 3): points.
+    
+    Returns:
+        numpy.ndarray of shape (..., 3): the transformed points.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def se3_act_twist(g: typing.Any, xi: typing.Any) -> numpy.ndarray:
+    """
+    Twists changed from frame b to frame a: xi_a = Ad_g xi_b.
+    
+    xi_a = (R v + p x R w, R w) for xi_b = (v, w), linear part first.
+    
+    Args:
+        g: array_like of shape (..., 4, 4): homogeneous matrices g_ab.
+        xi: array_like of shape (..., 6): twists (v, w) in frame b.
+    
+    Returns:
+        numpy.ndarray of shape (..., 6): the twists (v, w) in frame a.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def se3_act_wrench(g: typing.Any, F: typing.Any) -> numpy.ndarray:
+    """
+    Wrenches changed from frame b to frame a: F_a = Ad_g^-T F_b.
+    
+    F_a = (R f, p x R f + R tau) for F_b = (f, tau), force first, so that the
+    power xi . F is the same in both frames.
+    
+    Args:
+        g: array_like of shape (..., 4, 4): homogeneous matrices g_ab.
+        F: array_like of shape (..., 6): wrenches (f, tau) in frame b.
+    
+    Returns:
+        numpy.ndarray of shape (..., 6): the wrenches (f, tau) in frame a.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def se3_adjoint(g: typing.Any) -> numpy.ndarray:
+    """
+    Adjoint matrices: Ad_g = [[R, [p] R], [0, R]] (6x6).
+    
+    Twist order (v, w), linear part first: twists change frame by
+    xi_a = Ad_g xi_b, wrenches by F_b = Ad_g^T F_a.
+    
+    Args:
+        g: array_like of shape (..., 4, 4): homogeneous matrices.
+    
+    Returns:
+        numpy.ndarray of shape (..., 6, 6): the adjoint matrices.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def se3_compose(a: typing.Any, b: typing.Any) -> numpy.ndarray:
+    """
+    Composition of rigid motions: a @ b (g_ac = g_ab g_bc).
+    
+    Args:
+        a: array_like of shape (..., 4, 4): homogeneous matrices.
+        b: array_like of shape (..., 4, 4): homogeneous matrices.
+    
+    Returns:
+        numpy.ndarray of shape (..., 4, 4): the products [[R_a R_b, R_a p_b +
+        p_a], [0, 1]], the batch shape being the broadcast of a's and b's.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def se3_exp(xi: typing.Any) -> numpy.ndarray:
+    """
+    Rigid motions of twists: g = exp([xi]) (4x4).
+    
+    Twist order xi = (v, w), linear part first (Murray, Li and Sastry). In
+    closed form: R = exp([w]), p = V v with V = I + B [w] + C [w]^2; w = 0 is a
+    pure translation.
+    
+    Args:
+        xi: array_like of shape (..., 6): twists (v, w), linear part first.
+    
+    Returns:
+        numpy.ndarray of shape (..., 4, 4): the homogeneous matrices
+        [[R, p], [0, 1]].
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def se3_interpolate(a: typing.Any, b: typing.Any, t: typing.Any) -> numpy.ndarray:
+    """
+    Screw interpolation of rigid motions: a exp(t log(a^-1 b)).
+    
+    t = 0 gives a, t = 1 gives b, one screw motion in between.
+    
+    Args:
+        a: array_like of shape (..., 4, 4): homogeneous matrices at t = 0.
+        b: array_like of shape (..., 4, 4): homogeneous matrices at t = 1.
+        t: array_like of shape (...): the parameters (a Python float keeps
+            the dtype of a and b).
+    
+    Returns:
+        numpy.ndarray of shape (..., 4, 4): the interpolated motions.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def se3_inverse(g: typing.Any) -> numpy.ndarray:
+    """
+    Inverse rigid motions: g^-1 = [[R^T, -R^T p], [0, 1]].
+    
+    Args:
+        g: array_like of shape (..., 4, 4): homogeneous matrices.
+    
+    Returns:
+        numpy.ndarray of shape (..., 4, 4): the inverses.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def se3_log(g: typing.Any) -> numpy.ndarray:
+    """
+    Twists of rigid motions: xi = log(g)^vee, xi = (v, w).
+    
+    Rotation angle |w| in [0, pi] (at exactly pi, either axis sign); v = V^-1 p.
+    
+    Args:
+        g: array_like of shape (..., 4, 4): homogeneous matrices [[R, p], [0, 1]].
+    
+    Returns:
+        numpy.ndarray of shape (..., 6): the twists (v, w), linear part first.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def so3_act(R: typing.Any, p: typing.Any) -> numpy.ndarray:
+    """
+    Rotated points or vectors: p_a = R_ab p_b.
+    
+    Broadcasts: one rotation of shape (3, 3) with points of shape (N, 3), N
+    rotations with N points, (N, 1, 3, 3) with (M, 3) for every pair, ...
+    
+    Args:
+        R: array_like of shape (..., 3, 3): rotation matrices.
+        p: array_like of shape (..., 3): points or vectors.
+    
+    Returns:
+        numpy.ndarray of shape (..., 3): the rotated points.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def so3_as_quat(R: typing.Any, *, scalar_first: bool = False) -> numpy.ndarray:
+    """
+    Unit quaternions of rotation matrices, as scipy's Rotation.as_quat.
+    
+    Shepperd's method (no small divisor for any input). Of the two quaternions
+    q and -q of a rotation, the one whose largest component is positive.
+    
+    Args:
+        R: array_like of shape (..., 3, 3): rotation matrices.
+        scalar_first: if True, return (w, x, y, z) instead of (x, y, z, w).
+    
+    Returns:
+        numpy.ndarray of shape (..., 4): the quaternions, scalar-last (x, y, z,
+        w) by default, as scipy.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def so3_compose(a: typing.Any, b: typing.Any) -> numpy.ndarray:
+    """
+    Composition of rotations: a @ b (R_ac = R_ab R_bc).
+    
+    Args:
+        a: array_like of shape (..., 3, 3): rotation matrices.
+        b: array_like of shape (..., 3, 3): rotation matrices.
+    
+    Returns:
+        numpy.ndarray of shape (..., 3, 3): the products, the batch shape being
+        the broadcast of a's and b's.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def so3_exp(w: typing.Any) -> numpy.ndarray:
+    """
+    Rotation matrices of rotation vectors: R = exp([w]).
+    
+    Rodrigues' formula, R = I + (sin t / t) [w] + ((1 - cos t) / t^2) [w]^2 with
+    t = |w|, exact to a few ulps for every w (Taylor series near 0).
+    
+    Args:
+        w: array_like of shape (..., 3): rotation vectors, axis times angle in
+            radians.
+    
+    Returns:
+        numpy.ndarray of shape (..., 3, 3): the rotation matrices.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def so3_from_quat(q: typing.Any, *, scalar_first: bool = False) -> numpy.ndarray:
+    """
+    Rotation matrices of quaternions, as scipy's Rotation.from_quat.
+    
+    Quaternions of any nonzero norm are normalized. A zero or non-finite
+    quaternion gives a matrix of NaN.
+    
+    Args:
+        q: array_like of shape (..., 4): quaternions, scalar-last (x, y, z, w)
+            by default, as scipy.
+        scalar_first: if True, q is read as (w, x, y, z).
+    
+    Returns:
+        numpy.ndarray of shape (..., 3, 3): the rotation matrices.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def so3_hat(w: typing.Any) -> numpy.ndarray:
+    """
+    Skew-symmetric matrices: [w] = [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]].
+    
+    So that [w] p = w x p.
+    
+    Args:
+        w: array_like of shape (..., 3): vectors of so(3).
+    
+    Returns:
+        numpy.ndarray of shape (..., 3, 3): the matrices [w].
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def so3_interpolate(a: typing.Any, b: typing.Any, t: typing.Any) -> numpy.ndarray:
+    """
+    Geodesic interpolation of rotations: a exp(t log(a^-1 b)).
+    
+    t = 0 gives a, t = 1 gives b, constant angular velocity in between.
+    
+    Args:
+        a: array_like of shape (..., 3, 3): rotation matrices at t = 0.
+        b: array_like of shape (..., 3, 3): rotation matrices at t = 1.
+        t: array_like of shape (...): the parameters (a Python float keeps
+            the dtype of a and b).
+    
+    Returns:
+        numpy.ndarray of shape (..., 3, 3): the interpolated rotations.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def so3_inverse(R: typing.Any) -> numpy.ndarray:
+    """
+    Inverse rotations: R^-1 = R^T.
+    
+    Args:
+        R: array_like of shape (..., 3, 3): rotation matrices.
+    
+    Returns:
+        numpy.ndarray of shape (..., 3, 3): the inverses.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def so3_log(R: typing.Any) -> numpy.ndarray:
+    """
+    Rotation vectors of rotation matrices: w = log(R)^vee.
+    
+    The angle |w| is in [0, pi]; at exactly pi either axis sign is returned,
+    never NaN. Robust near 0 and near pi, and as accurate for a matrix slightly
+    off SO(3) as projecting it first.
+    
+    Args:
+        R: array_like of shape (..., 3, 3): rotation matrices.
+    
+    Returns:
+        numpy.ndarray of shape (..., 3): the rotation vectors (axis times angle).
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def so3_vee(W: typing.Any) -> numpy.ndarray:
+    """
+    The vectors of skew-symmetric matrices: vee([w]) = w.
+    
+    Reads the antisymmetric part (W - W^T) / 2, so a matrix that is not exactly
+    skew gives the w of its nearest skew matrix.
+    
+    Args:
+        W: array_like of shape (..., 3, 3): skew-symmetric matrices.
+    
+    Returns:
+        numpy.ndarray of shape (..., 3): the vectors w.
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def twist_hat(xi: typing.Any) -> numpy.ndarray:
+    """
+    Matrices of twists: [xi] = [[ [w], v ], [0, 0]] (4x4).
+    
+    Args:
+        xi: array_like of shape (..., 6): twists (v, w), linear part first.
+    
+    Returns:
+        numpy.ndarray of shape (..., 4, 4): the matrices [xi].
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
+def twist_vee(X: typing.Any) -> numpy.ndarray:
+    """
+    Twists of 4x4 matrices: [xi]^vee = (v, w), linear part first.
+    
+    v is the last column's top three entries, w the vee of the antisymmetric
+    part of the top-left 3x3 block; the bottom row is not read.
+    
+    Args:
+        X: array_like of shape (..., 4, 4): matrices [[ [w], v ], [0, 0]].
+    
+    Returns:
+        numpy.ndarray of shape (..., 6): the twists (v, w).
+    
+    Raises:
+        TypeError: an operand's dtype is not float32, float64, integer or bool
+            (float16, long double, complex, object, string and datetime arrays
+            are refused: there is no kernel in those types, and a silent
+            conversion would change the precision).
+        ValueError: an operand's trailing (core) shape is wrong, the leading
+            (batch) shapes of the operands do not broadcast, or numpy cannot
+            make an array of an operand (a ragged nested list).
+        MemoryError: the result does not fit in memory (as numpy's own).
+    
+    Note:
+        Batch rules, shared by every chasles array function:
+    
+        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
+          as np.linalg does); the trailing core shapes are fixed. Zero-length
+          batch axes give an empty result of the right shape.
+        * dtype: float32 operands give a float32 result, computed by the float
+          C++ kernels; any float64 operand makes the call float64; integer and
+          bool arrays are converted to float64. Python int and float scalars do
+          not change the result type.
+        * Operands are read in place through their strides (slices, transposes,
+          Fortran order and read-only arrays need no copy); the result is a
+          fresh C-contiguous array. The GIL is released during the loop.
+        * Inputs are taken as given, like the C++ unchecked constructors:
+          matrices are not checked for being rotations or rigid motions (the
+          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
+          own element only, never an exception.
+    """
 __version__: str = '0.1.0'
-_chain_forward: numpy.ufunc
-_chain_forward_body: numpy.ufunc
-_chain_jacobian_body: numpy.ufunc
-_chain_jacobian_space: numpy.ufunc
-_so3_as_quat_wxyz: numpy.ufunc
-_so3_as_quat_xyzw: numpy.ufunc
-_so3_from_quat_wxyz: numpy.ufunc
-_so3_from_quat_xyzw: numpy.ufunc
-se3_act: numpy.ufunc
-se3_act_twist: numpy.ufunc
-se3_act_wrench: numpy.ufunc
-se3_adjoint: numpy.ufunc
-se3_compose: numpy.ufunc
-se3_exp: numpy.ufunc
-se3_hat: numpy.ufunc
-se3_interpolate: numpy.ufunc
-se3_inverse: numpy.ufunc
-se3_log: numpy.ufunc
-se3_vee: numpy.ufunc
-so3_act: numpy.ufunc
-so3_compose: numpy.ufunc
-so3_exp: numpy.ufunc
-so3_hat: numpy.ufunc
-so3_interpolate: numpy.ufunc
-so3_inverse: numpy.ufunc
-so3_log: numpy.ufunc
-so3_vee: numpy.ufunc

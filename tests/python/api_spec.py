@@ -77,6 +77,13 @@ class Accepted:
     value: Any
 
 
+@dataclass
+class Gives:
+    """The call must return `value` (a comparison with an object of another type)."""
+
+    value: Any
+
+
 BOUND = (chasles.SO3, chasles.SE3, chasles.Twist, chasles.Wrench, chasles.Screw, chasles.Chain)
 
 
@@ -433,6 +440,7 @@ class Instance(Arg):
     classes: tuple = (chasles.SO3,)
     valid: Callable[[], Any] | None = None
     uninitialized_ok: bool = False  # __repr__ shows an uninitialized object
+    refused: tuple = ()  # what the message of a refused other object must say
 
     def good(self):
         return self.valid() if self.valid is not None else GOOD[self.classes[0]]()
@@ -445,7 +453,26 @@ class Instance(Arg):
                 # (pybind11's own refusal when another argument rules out the overload first)
                 return Refused(TypeError, (("not initialized", "incompatible function arguments"),))
             return Accepted(base_copy(value))
-        return Refused(TypeError, ())
+        return Refused(TypeError, self.refused)
+
+
+@dataclass
+class Comparand(Instance):
+    """The right operand of ``==`` and ``!=``: an object of the same class is
+    compared (an uninitialized one refused, TypeError); anything else is
+    another value, so ``==`` gives False and ``!=`` True (the operator
+    returns NotImplemented and Python falls back to identity; numpy arrays
+    and scalars defer to the objects, whose __array_ufunc__ is None)."""
+
+    other_gives: bool = False
+
+    def judge(self, value):
+        if isinstance(value, self.classes):
+            return super().judge(value)
+        if isinstance(value, BOUND) and not is_initialized(value):
+            # its own __eq__, tried in turn, refuses it as every method does
+            return Refused(TypeError, ("not initialized",))
+        return Gives(self.other_gives)
 
 
 @dataclass
@@ -620,6 +647,10 @@ def _protocols(cls, n_state):
             passes_arguments=False,
         ),
         f"{name}.__reduce__": _method(cls, "__reduce__"),
+        f"{name}.__eq__": _binop(cls, operator.eq, Comparand("other", (cls,)), "__eq__"),
+        f"{name}.__ne__": _binop(
+            cls, operator.ne, Comparand("other", (cls,), other_gives=True), "__ne__"
+        ),
         f"{name}.__reduce_ex__": _method(cls, "__reduce_ex__", Anything("protocol", 2)),
     }
     if hasattr(cls, "__array__"):
@@ -727,9 +758,17 @@ def _build_spec():
     spec.update(_protocols(SO3, [9]))
 
     # SE3
-    spec["SE3.__init__"] = Entry(
-        [[Instance("rotation", (SO3,)), Array("SE3(translation)", (3,))]], call=SE3
+    # SE3(matrix) and the like: a TypeError naming what came and the
+    # constructors of raw data (test_bad_input.py checks each case).
+    rotation_arg = Instance(
+        "rotation",
+        (SO3,),
+        refused=(
+            "SE3(rotation): expected an SO3, got",
+            ("SO3.from_matrix(matrix)", "SE3.from_matrix(matrix)"),
+        ),
     )
+    spec["SE3.__init__"] = Entry([[rotation_arg, Array("SE3(translation)", (3,))]], call=SE3)
     spec["SE3.identity"] = _static(SE3, "identity")
     spec["SE3.exp"] = _static(SE3, "exp", TwistOr("SE3.exp(xi)", (6,)))
     spec["SE3.log"] = _method(SE3, "log")
@@ -741,8 +780,10 @@ def _build_spec():
     )
     spec["SE3.act"] = _method(SE3, "act", SE3Or("SE3.act(points)", (Twist, Wrench)))
     spec["SE3.act_inv"] = _method(SE3, "act_inv", SE3Or("SE3.act_inv(points)", (Twist, Wrench)))
-    for m in ("adjoint", "rotation", "translation", "as_matrix", "normalized"):
+    for m in ("adjoint", "as_matrix", "normalized"):
         spec[f"SE3.{m}"] = _method(SE3, m)
+    for p in ("rotation", "translation"):
+        spec[f"SE3.{p}"] = _prop(SE3, p)
     spec["SE3.from_matrix"] = _static(
         SE3,
         "from_matrix",
@@ -855,8 +896,8 @@ def _build_spec():
         )
         spec[f"{n}.power"] = _method(cls, "power", Instance(other.__name__.lower(), (other,)))
         spec[f"{n}.screw"] = _method(cls, "screw")
-        for p in ("vector", "pitch"):
-            spec[f"{n}.{p}"] = _prop(cls, p)
+        spec[f"{n}.pitch"] = _method(cls, "pitch")
+        spec[f"{n}.vector"] = _prop(cls, "vector")
         spec.update(_protocols(cls, [6]))
     spec["Twist.linear"] = _prop(Twist, "linear")
     spec["Twist.angular"] = _prop(Twist, "angular")
@@ -1001,9 +1042,7 @@ NOT_API = {
     "__dict__",
     "__weakref__",
     "__array_ufunc__",
-    "__hash__",
-    "__eq__",
-    "__ne__",
+    "__hash__",  # None: the objects are unhashable (test_objects.py checks it)
 }
 
 

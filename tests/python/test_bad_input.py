@@ -475,6 +475,139 @@ def test_huge_integers_are_a_value_error():
 # ---- objects where numbers are expected, and the reverse ------------------------------
 
 
+# ---- constructors given raw data say what to call instead ----------------------------
+
+MATRIX_FORMS = (
+    "from_matrix(matrix)",
+    "from_matrix_projected(matrix)",
+    "from_matrix_unchecked(matrix)",
+)
+
+
+@pytest.mark.parametrize(
+    "make",
+    [np.eye(3), np.eye(3).tolist(), np.zeros(3), [0.0, 0.0, 0.0, 1.0], R0],
+    ids=["matrix", "nested-list", "vector", "quaternion", "SO3"],
+)
+def test_so3_takes_no_arguments_and_names_its_constructors(make):
+    for call in (lambda: SO3(make), lambda: SO3(matrix=make)):
+        with pytest.raises(TypeError) as e:
+            call()
+        check_message(e, "SO3(", "SO3() takes no arguments", "SO3.exp(w)", "SO3.from_quat(quat)")
+        for form in MATRIX_FORMS:
+            check_message(e, f"SO3.{form}")
+    with pytest.raises(TypeError) as e:
+        SO3(np.eye(3))
+    check_message(e, "SO3(numpy.ndarray of shape (3, 3))")
+
+
+def test_se3_takes_a_rotation_and_a_translation_and_names_the_matrix_constructors():
+    p = [1.0, 2.0, 3.0]
+    g = SE3(R0, p)  # design.md: from (R, p)
+    assert g.rotation == R0 and np.array_equal(g.translation, p)
+    assert g == SE3(rotation=R0, translation=p) == SE3.from_matrix(g.as_matrix())
+    for rotation in (np.eye(3), np.eye(3).tolist(), R0.as_matrix()):
+        for call in (lambda: SE3(rotation, p), lambda: SE3(rotation=rotation, translation=p)):
+            with pytest.raises(TypeError) as e:
+                call()
+            check_message(e, "SE3(rotation): expected an SO3, got", "of shape (3, 3)")
+            check_message(e, "SE3(SO3.from_matrix(R), p)", *(f"SO3.{f}" for f in MATRIX_FORMS))
+    for matrix in (np.eye(4), np.eye(4).tolist(), G0.as_matrix()):
+        with pytest.raises(TypeError) as e:
+            SE3(matrix)
+        check_message(e, "SE3(rotation): expected an SO3, got", "of shape (4, 4)")
+        check_message(e, *(f"SE3.{f}" for f in MATRIX_FORMS))
+        assert "SO3.from_matrix" not in str(e.value)
+    with pytest.raises(TypeError) as e:
+        SE3(p)
+    check_message(e, "got list of shape (3,)", "SE3(translation=p)")
+    with pytest.raises(TypeError) as e:
+        SE3(np.zeros(6))
+    check_message(e, "SE3.exp(xi)")
+    for bad in (None, G0, XI0, "abc"):
+        with pytest.raises(TypeError) as e:
+            SE3(bad, p)
+        check_message(e, "SE3(rotation): expected an SO3, got", "SO3.from_matrix(matrix)")
+    with pytest.raises(TypeError) as e:
+        SE3(R0, p, p)
+    check_message(e, "at most 2 arguments", "got 3")
+    with pytest.raises(TypeError) as e:
+        SE3(R0, scale=2.0)
+    check_message(e, "unexpected keyword argument 'scale'")
+    with pytest.raises(TypeError) as e:
+        SE3(R0, rotation=R0)
+    check_message(e, "rotation given by position and by keyword")
+    with pytest.raises(TypeError) as e:
+        SE3(SO3.__new__(SO3), p)
+    check_message(e, "SO3 object is not initialized")
+
+
+@pytest.mark.parametrize(
+    "cls,parts,vector",
+    [(Twist, ("v", "w"), "Twist.from_vector(xi)"), (Wrench, ("f", "tau"), "Wrench.from_vector(F)")],
+)
+def test_twist_and_wrench_given_six_numbers_name_from_vector(cls, parts, vector):
+    six = np.arange(6.0)
+    for part in parts:
+        with pytest.raises(ValueError) as e:
+            cls(**{part: six})
+        check_message(e, f"{cls.__name__}({part}): expected shape (3,), got (6,)", vector)
+    with pytest.raises(ValueError) as e:
+        cls(six)
+    check_message(e, vector)
+    assert np.array_equal(cls.from_vector(six).vector, six)  # what the message names
+    with pytest.raises(ValueError) as e:
+        cls(np.zeros(4))
+    assert "from_vector" not in str(e.value)  # the hint is for six numbers only
+
+
+# (the call with the argument under test, its name, the shape of one element,
+# a batch of them, the array function the message names: the first of these
+# names the package has)
+BATCHES = [
+    (SO3.exp, "SO3.exp(w)", (3,), np.zeros((5, 3)), ["so3_exp"]),
+    (SO3.hat, "SO3.hat(w)", (3,), np.zeros((2, 3)), ["so3_hat"]),
+    (SO3.vee, "SO3.vee(matrix)", (3, 3), np.zeros((2, 3, 3)), ["so3_vee"]),
+    (SO3.from_quat, "SO3.from_quat(quat)", (4,), np.ones((5, 4)), ["so3_from_quat"]),
+    (SE3.exp, "SE3.exp(xi)", (6,), np.zeros((10, 6)), ["se3_exp"]),
+    (SE3.hat, "SE3.hat(xi)", (6,), np.zeros((4, 6)), ["se3_hat", "twist_hat"]),
+    (SE3.vee, "SE3.vee(matrix)", (4, 4), np.zeros((3, 4, 4)), ["se3_vee", "twist_vee"]),
+    (Twist.vee, "Twist.vee(matrix)", (4, 4), np.zeros((2, 1, 4, 4)), ["se3_vee", "twist_vee"]),
+]
+
+
+@pytest.mark.parametrize("case", BATCHES, ids=lambda c: c[1])
+def test_a_batch_given_to_a_method_names_the_array_function(case):
+    call, name, core, batch, candidates = case
+    function = next(f for f in candidates if hasattr(chasles, f))
+    with pytest.raises(ValueError) as e:
+        call(batch)
+    check_message(e, f"{name}: expected shape {core}, got {batch.shape}")
+    check_message(e, f"for a batch, call the array function chasles.{function}")
+    leading = batch.shape[: batch.ndim - len(core)]
+    assert getattr(chasles, function)(batch).shape[: len(leading)] == leading  # it takes the batch
+    with pytest.raises(ValueError) as e:
+        call(np.zeros((5, 7)))  # not a batch of elements: no hint
+    assert "array function" not in str(e.value)
+
+
+def test_many_fractions_given_to_interpolate_name_the_array_functions():
+    ts = np.linspace(0.0, 1.0, 5)
+    for call, name, functions in (
+        (lambda t: SO3.interpolate(R0, R0, t), "SO3.interpolate(t)", ["chasles.so3_interpolate"]),
+        (lambda t: SE3.interpolate(G0, G0, t), "SE3.interpolate(t)", ["chasles.se3_interpolate"]),
+        (
+            lambda t: chasles.interpolate(G0, G0, t),
+            "interpolate(t)",
+            ["chasles.so3_interpolate", "chasles.se3_interpolate"],
+        ),
+    ):
+        with pytest.raises(ValueError) as e:
+            call(ts)
+        check_message(e, name, "expected a real number (shape ()), got shape (5,)", *functions)
+    assert chasles.se3_interpolate(G0.as_matrix(), G0.as_matrix(), ts).shape == (5, 4, 4)
+
+
 def test_wrong_object_types_are_type_errors():
     with pytest.raises(TypeError):
         SE3(np.eye(3), [0, 0, 0])  # rotation must be an SO3
@@ -577,9 +710,9 @@ def test_uninitialized_objects_are_never_read():
         (SO3, lambda x: x.normalized()),
         (SE3, lambda x: x.normalized()),
         (Twist, lambda x: x.screw()),
-        (Twist, lambda x: x.pitch),
+        (Twist, lambda x: x.pitch()),
         (Wrench, lambda x: x.screw()),
-        (Wrench, lambda x: x.pitch),
+        (Wrench, lambda x: x.pitch()),
         (Screw, lambda x: x.point),
         (Screw, lambda x: x.direction),
         (Screw, lambda x: x.pitch),

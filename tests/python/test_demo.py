@@ -155,11 +155,11 @@ def test_the_picture_draws_the_worked_example_where_the_maths_puts_it(l1, seed):
     assert np.allclose(axis - np.outer(axis @ s.direction, s.direction), 0.0, atol=1e-12)
     helix = points(pic.random_screw.helix)
     assert np.allclose(helix[0], 0.0, atol=1e-15)
-    assert np.allclose(helix[-1], g.translation(), atol=1e-12)
+    assert np.allclose(helix[-1], g.translation, atol=1e-12)
     last = pic.random_frames.frames[-1]
     moved = SE3.exp(g.log())
     assert np.allclose(
-        points(last.z)[1] - points(last.z)[0], 0.6 * moved.rotation().as_matrix()[:, 2]
+        points(last.z)[1] - points(last.z)[0], 0.6 * moved.rotation.as_matrix()[:, 2]
     )
     assert last.label.get_text().strip() == "g"
 
@@ -187,6 +187,6 @@ def test_checks_pass_for_many_seeds(seed, capsys):
 
 def test_random_motion_is_a_rigid_motion():
     g = random_motion(0)
-    R = g.rotation().as_matrix()
+    R = g.rotation.as_matrix()
     assert np.allclose(R.T @ R, np.eye(3), atol=1e-15, rtol=0)
-    assert np.all(np.abs(g.translation()) <= 2.0)
+    assert np.all(np.abs(g.translation) <= 2.0)

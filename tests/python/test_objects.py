@@ -66,7 +66,7 @@ def hat_ref(group, xi):
 
 
 def adjoint_ref(g: SE3) -> np.ndarray:
-    R, p = g.rotation().as_matrix(), g.translation()
+    R, p = g.rotation.as_matrix(), g.translation
     A = np.zeros((6, 6))
     A[:3, :3] = R
     A[:3, 3:] = hat3(p) @ R
@@ -280,7 +280,7 @@ def test_conjugation_is_exp_of_adjoint(G, data):
 @given(g=se3s())
 def test_se3_adjoint_matches_its_definition(g):
     assert close(g.adjoint(), adjoint_ref(g), 1e-15)
-    assert np.array_equal(g.rotation().adjoint(), g.rotation().as_matrix())
+    assert np.array_equal(g.rotation.adjoint(), g.rotation.as_matrix())
 
 
 # ---- twists, wrenches and frames ------------------------------------------------
@@ -292,7 +292,7 @@ def test_power_is_frame_independent(g, V, F):
     assert p == F.power(V)
     # Power can cancel to 0: compare with |V| |F| (times the lever arm |p|), from
     # max-norms, which do not underflow for tiny vectors as |x|^2 does.
-    lever = 1.0 + float(np.max(np.abs(g.translation())))
+    lever = 1.0 + float(np.max(np.abs(g.translation)))
     scale = 6.0 * float(np.max(np.abs(V.vector))) * float(np.max(np.abs(F.vector))) * lever
     assert abs(g.act(V).power(g.act(F)) - p) <= 1e-13 * scale + 1e-300
     assert abs(g.act_inv(V).power(g.act_inv(F)) - p) <= 1e-13 * scale + 1e-300
@@ -368,6 +368,62 @@ def test_parts_and_orders():
     assert np.array_equal(Wrench().vector, np.zeros(6))
 
 
+# The vocabulary: what an object stores is a read-only property, what it
+# computes is a method. Every property and method of every class is listed
+# here, so that a new one has to be placed on one side or the other.
+STORED = {
+    SO3: set(),
+    SE3: {"rotation", "translation"},
+    Twist: {"vector", "linear", "angular"},
+    Wrench: {"vector", "force", "torque"},
+    Screw: {"point", "direction", "pitch", "magnitude"},
+    Chain: {"screws", "body_screws", "home", "n_joints"},
+}
+COMPUTED = {
+    SO3: {"log", "inverse", "act", "adjoint", "as_matrix", "as_quat", "normalized", "is_approx"},
+    SE3: {"log", "inverse", "act", "act_inv", "adjoint", "as_matrix", "normalized", "is_approx"},
+    Twist: {"to_modern_robotics", "hat", "ad", "bracket", "screw", "pitch", "power", "is_approx"},
+    Wrench: {"power", "screw", "pitch", "is_approx"},
+    Screw: {"is_approx"},
+    Chain: {"forward", "forward_body", "jacobian_space", "jacobian_body"},
+}
+
+
+@pytest.mark.parametrize("cls", list(STORED), ids=lambda c: c.__name__)
+def test_stored_parts_are_properties_and_computations_are_methods(cls):
+    members = {n: v for n, v in vars(cls).items() if not n.startswith("_")}
+    properties = {n for n, v in members.items() if isinstance(v, property)}
+    methods = {n for n, v in members.items() if callable(v) and not isinstance(v, staticmethod)}
+    assert properties == STORED[cls]
+    assert methods == COMPUTED[cls]
+    from api_spec import GOOD
+
+    x = GOOD[cls]()
+    for name in STORED[cls]:
+        value = getattr(x, name)
+        assert not callable(value), f"{cls.__name__}.{name} is a {type(value).__name__}"
+        with pytest.raises(AttributeError):
+            setattr(x, name, value)  # read-only: the objects are values
+    for name in COMPUTED[cls]:
+        assert callable(getattr(x, name)), f"{cls.__name__}.{name}"
+
+
+def test_se3_rotation_and_translation_are_properties():
+    R = SO3.exp([0.1, 0.2, 0.3])
+    g = SE3(R, [1.0, 2.0, 3.0])
+    assert isinstance(g.rotation, SO3) and g.rotation.is_approx(R, 0.0)
+    assert isinstance(g.translation, np.ndarray) and g.translation.shape == (3,)
+    assert np.array_equal(g.translation, [1.0, 2.0, 3.0])
+    with pytest.raises(TypeError, match="not callable"):
+        g.translation()  # noqa: the old method form fails loudly, never a bound method
+    with pytest.raises(TypeError, match="not callable"):
+        g.rotation()
+    xi = Twist(v=[0.0, 0.0, 0.5], w=[0.0, 0.0, 2.0])
+    assert xi.pitch() == 0.25 == xi.screw().pitch
+    F = Wrench(f=[0.0, 0.0, 2.0], tau=[0.0, 0.0, 1.0])
+    assert F.pitch() == 0.5 == F.screw().pitch
+
+
 # ---- screws (Chasles and Poinsot) -----------------------------------------------
 
 
@@ -409,11 +465,11 @@ def test_screw_of_a_twist(xi):
         assert close(s.direction, u, 1e-15)
         assert math.isclose(s.pitch, pitch, rel_tol=rel, abs_tol=1e-12)
         assert close(s.point, point, rel)
-        assert xi.pitch == s.pitch
+        assert xi.pitch() == s.pitch
     elif math.hypot(*v) > 0:
         # w = 0, or so small that the axis is beyond the largest finite
         # distance: a pure translation.
-        assert s.pitch == math.inf and xi.pitch == math.inf
+        assert s.pitch == math.inf and xi.pitch() == math.inf
         assert math.isclose(s.magnitude, math.hypot(*v), rel_tol=1e-15)
     assert_same(Twist.from_screw(*s), xi, 1e-9)
 
@@ -441,7 +497,7 @@ def test_screw_of_a_wrench(F):
         rel = max(1e-12, 4 * SUBNORMAL_SPACING / nf)  # as for twists
         assert math.isclose(s.magnitude, nf, rel_tol=1e-15, abs_tol=2 * SUBNORMAL_SPACING)
         assert math.isclose(s.pitch, pitch, rel_tol=rel, abs_tol=1e-12)
-        assert F.pitch == s.pitch
+        assert F.pitch() == s.pitch
     elif math.hypot(*tau) > 0:
         # f = 0, or so small that the line is beyond the largest finite
         # distance: a pure couple.
@@ -524,11 +580,11 @@ def test_interpolation(G, data, t):
 def test_se3_parts():
     R = SO3.exp([0.1, 0.2, 0.3])
     g = SE3(R, [1.0, 2.0, 3.0])
-    assert_same(g.rotation(), R, 0.0)
-    assert np.array_equal(g.translation(), [1.0, 2.0, 3.0])
+    assert_same(g.rotation, R, 0.0)
+    assert np.array_equal(g.translation, [1.0, 2.0, 3.0])
     assert np.array_equal(g.as_matrix()[3], [0.0, 0.0, 0.0, 1.0])
     assert_same(SE3(rotation=R), SE3(R, (0, 0, 0)), 0.0)
-    assert_same(SE3(translation=[1, 2, 3]).rotation(), SO3(), 0.0)
+    assert_same(SE3(translation=[1, 2, 3]).rotation, SO3(), 0.0)
     assert close(g.act_inv(g @ [4.0, 5.0, 6.0]), [4.0, 5.0, 6.0], 1e-15)
 
 
@@ -542,7 +598,7 @@ def test_points_of_any_leading_shape_layout_and_dtype(G):
     base = rng.normal(size=(2, 5, 3))
     ref = (g.as_matrix()[:3, :3] @ base.reshape(-1, 3).T).T.reshape(2, 5, 3)
     if G is SE3:
-        ref = ref + g.translation()
+        ref = ref + g.translation
     assert close(g @ base, ref, 1e-14) and (g @ base).shape == (2, 5, 3)
     flat = base.reshape(-1, 3)
     assert np.array_equal(g @ flat, (g @ base).reshape(-1, 3))
@@ -573,9 +629,9 @@ def test_results_are_fresh_arrays():
     m = g.as_matrix()
     m[0, 0] = 42.0
     assert g.as_matrix()[0, 0] != 42.0
-    t = g.translation()
+    t = g.translation
     t[0] = 42.0
-    assert g.translation()[0] != 42.0
+    assert g.translation[0] != 42.0
     xi = Twist(v=[1.0, 2.0, 3.0])
     v = xi.vector
     v[0] = 42.0
@@ -588,7 +644,7 @@ def test_results_are_fresh_arrays():
 def all_kinds():
     g = SE3(SO3.exp([0.1, -0.2, 0.3]), [1.0 / 3.0, 2.0, -7.25])
     return [
-        g.rotation(),
+        g.rotation,
         g,
         Twist(v=[0.1, 0.2, 1.0 / 3.0], w=[1e-300, -0.0, 5.0]),
         Wrench(f=[1.0, 2.0, 3.0], tau=[math.pi, 0.0, -1e10]),
@@ -673,11 +729,11 @@ def special_objects(values):
 def arrays_of(x):
     """Every array the object shows (its matrix, vectors, screws, home)."""
     out = {}
-    for name in ("as_matrix", "translation", "to_modern_robotics", "log"):
+    for name in ("as_matrix", "to_modern_robotics", "log"):
         if hasattr(x, name) and not isinstance(x, Chain):
             with np.errstate(all="ignore"):
                 out[name] = getattr(x, name)()
-    for name in ("vector", "point", "direction", "screws", "body_screws"):
+    for name in ("translation", "vector", "point", "direction", "screws", "body_screws"):
         if hasattr(type(x), name):
             out[name] = np.asarray(getattr(x, name))
     if isinstance(x, Chain):
@@ -776,16 +832,79 @@ def test_repr_shows_the_numbers():
     assert "0.12345679" in repr(SE3(translation=[0.123456789, 0.0, 0.0]))  # numpy's print options
 
 
-def test_equality_is_identity_never_approximate():
-    a = SE3.exp([1.0, 2.0, 3.0, 0.1, 0.2, 0.3])
-    b = copy.copy(a)
-    assert a == a  # noqa: PLR0124 (identity is what == means here)
-    assert (a == b) is False  # equal numbers, distinct objects: == is not a numeric comparison
-    assert a != b
-    assert a.is_approx(b, 0.0)
-    assert "__eq__" not in type(a).__dict__
-    for cls in (SO3, SE3, Twist, Wrench, Screw):
-        assert "__eq__" not in cls.__dict__
+def with_state(x, change):
+    """A fresh object of x's class whose state is x's, changed by `change(list)`."""
+    state = list(x.__getstate__())
+    change(state)
+    y = type(x).__new__(type(x))
+    y.__setstate__(tuple(state))
+    return y
+
+
+@pytest.mark.parametrize("x", all_kinds(), ids=lambda x: type(x).__name__)
+def test_equality_is_exact_on_the_stored_numbers(x):
+    """== is a value comparison: equal numbers are equal objects, a difference
+    of one ulp in any stored number is not; != is its negation."""
+    y = copy.copy(x)
+    assert y is not x
+    assert (x == y) is True and (x != y) is False
+    assert x == pickle.loads(pickle.dumps(x)) == copy.deepcopy(x)
+    n = len(x.__getstate__())
+    for k in range(n):
+        # the next float (toward 0 from inf: an infinite pitch is stored too)
+        z = with_state(x, lambda s, k=k: s.__setitem__(k, float(np.nextafter(s[k], -s[k] or 1.0))))
+        assert (x == z) is False and (z == x) is False, k
+        assert (x != z) is True and (z != x) is True, k
+        if hasattr(z, "is_approx") and not isinstance(x, Screw):
+            assert z.is_approx(x, 1e-9), k  # the tolerance comparison is is_approx
+
+
+def test_equality_compares_as_floats_negative_zero_and_nan():
+    a, b = Twist(v=[0.0, 1.0, 2.0]), Twist(v=[-0.0, 1.0, 2.0])
+    assert a == b and not (a != b)  # -0.0 == 0.0, as floats
+    assert math.copysign(1.0, a.vector[0]) == 1.0 and math.copysign(1.0, b.vector[0]) == -1.0
+    for x in all_kinds():
+        nan = with_state(x, lambda s: s.__setitem__(0, math.nan))
+        assert (nan == nan) is False and (nan != nan) is True  # NaN equals nothing, itself included
+        assert nan != copy.copy(nan)
+
+
+@pytest.mark.parametrize("x", all_kinds(), ids=lambda x: type(x).__name__)
+def test_objects_are_unhashable(x):
+    assert type(x).__hash__ is None
+    with pytest.raises(TypeError, match="unhashable"):
+        hash(x)
+    with pytest.raises(TypeError):
+        {x}  # noqa: B018
+
+
+def test_comparing_with_another_type_is_not_implemented():
+    R, g = SO3(), SE3()
+    assert SO3.__eq__(R, 3) is NotImplemented and SO3.__ne__(R, 3) is NotImplemented
+    assert (R == 3) is False and (R != 3) is True
+    assert (R == g) is False and (g != R) is True
+    assert (Twist() == Wrench()) is False  # the same six zeros, different quantities
+    assert (R == np.eye(3)) is False and (np.eye(3) == R) is False
+    assert (R == R.as_matrix().tolist()) is False and (R == None) is False  # noqa: E711
+    assert (g == "SE3") is False and g != [0.0] * 12
+    from api_spec import GOOD
+
+    for x in (GOOD[Screw](), GOOD[Chain]()):  # numpy defers to every class
+        assert (np.float64(1.0) == x) is False and (np.array(1.0) != x) is True
+    assert R in [g, 3, SO3()] and R not in [g, 3]  # containers compare with ==
+    raw = SO3.__new__(SO3)
+    with pytest.raises(TypeError, match="not initialized"):
+        R == raw  # noqa: B015
+
+
+def test_subclass_instances_compare_by_value():
+    class Sub(SE3):
+        pass
+
+    g = SE3.exp([0.1, 0.2, 0.3, 0.4, 0.5, 0.6])
+    h = Sub.__new__(Sub)
+    h.__setstate__(g.__getstate__())
+    assert g == h and h == g and not (g != h)
 
 
 def test_numpy_operands_defer_to_the_objects():

@@ -92,7 +92,7 @@ def test_frame_draws_the_rotation_columns_from_the_origin(ax):
     rng = np.random.default_rng(1)
     for _ in range(20):
         g = random_pose(rng)
-        R, p = g.rotation().as_matrix(), g.translation()
+        R, p = g.rotation.as_matrix(), g.translation
         f = plot.frame(g, ax=ax, label="b", length=0.7)
         for i, (line, color) in enumerate(
             zip((f.x, f.y, f.z), ("tab:red", "tab:green", "tab:blue"))
@@ -153,7 +153,7 @@ def test_frames_of_an_array_and_of_a_list_agree(ax):
         for i in range(3):
             assert np.array_equal(data(fa[i]), data(fb[i]))
             assert np.allclose(
-                data(fa[i])[1] - g.translation(), 0.3 * g.rotation().as_matrix()[:, i]
+                data(fa[i])[1] - g.translation, 0.3 * g.rotation.as_matrix()[:, i]
             )
     assert [f.label.get_text().strip() for f in a.frames] == [str(i) for i in range(6)]
     assert np.allclose(data(a.path), stacked[:, :3, 3], atol=0, rtol=0)

@@ -36,3 +36,22 @@ def test_the_package_ships_the_stub_and_the_marker():
     package = Path(chasles.__file__).parent
     assert (package / "py.typed").exists()
     assert (package / "_core.pyi").exists()
+
+
+def test_the_stub_keeps_the_types_of_pybind11s_signature_lines():
+    """The functions carry a __text_signature__ without types (for help and
+    inspect); stubgen.py makes pybind11-stubgen read the typed lines instead."""
+    stub = (ROOT / "python" / "chasles" / "_core.pyi").read_text()
+    for line in (
+        "def exp(w: numpy.typing.ArrayLike) -> SO3:",
+        "def from_screw(point: numpy.typing.ArrayLike, direction: numpy.typing.ArrayLike, "
+        "pitch: float, theta: float) -> SE3:",
+        "def is_approx(self, other: SO3, tol: float = 1e-09) -> bool:",
+        "def rotation(self) -> SO3:",
+        "def translation(self) -> numpy.typing.NDArray[numpy.float64]:",
+        "def pitch(self) -> float:",
+        "def __eq__(self, other: typing.Any) -> bool:",
+        "def rplus(g: SE3, xi: numpy.typing.ArrayLike) -> SE3:",
+    ):
+        assert line in stub, line
+    assert "def exp(w):" not in stub

@@ -68,7 +68,7 @@ def calls(n, rng):
     out += [
         ("SE3.act", chasles.SE3.act, [g, points]),
         ("SE3.act_inv", chasles.SE3.act_inv, [g, points]),
-        ("SO3.act", chasles.SO3.act, [g.rotation(), points]),
+        ("SO3.act", chasles.SO3.act, [g.rotation, points]),
     ]
     # A 6-joint arm (rows (v, w), unit axes) and n joint configurations.
     screws = np.array(
