@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['Chain', 'SE3', 'SO3', 'Screw', 'Twist', 'Wrench', 'act_jacobians', 'compose_jacobians', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'log_jacobian', 'lplus', 'rminus', 'rplus', 'se3_act', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_exp', 'se3_interpolate', 'se3_inverse', 'se3_log', 'so3_act', 'so3_as_quat', 'so3_compose', 'so3_exp', 'so3_from_quat', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee', 'twist_hat', 'twist_vee']
+__all__: list[str] = ['Chain', 'SE3', 'SO3', 'Screw', 'Twist', 'Wrench', 'act_jacobians', 'compose_jacobians', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'log_jacobian', 'lplus', 'rminus', 'rplus', 'se3_act', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_vee', 'so3_act', 'so3_compose', 'so3_exp', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee']
 class SO3:
     """
     A rotation of R^3: an element of SO(3), stored as its 3x3 matrix (float64).
@@ -387,15 +387,18 @@ class SO3:
             SO3: the composed rotation.
         """
     @typing.overload
-    def __matmul__(self, points: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+    def __matmul__(self, points: numpy.typing.ArrayLike) -> typing.Any:
         """
         Action on points or vectors: p_a = R_ab @ p_b.
         
+        The array function so3_act with this rotation: numpy's rules for
+        dtypes and broadcasting.
+        
         Args:
-            points: shape (3,) or (N, 3) (any leading axes).
+            points: array_like of shape (..., 3).
         
         Returns:
-            ndarray: the rotated points, same shape.
+            ndarray: the rotated points, shape (..., 3).
         """
     def __ne__(self, other: typing.Any) -> bool:
         """
@@ -419,15 +422,18 @@ class SO3:
         ...
     def __setstate__(self, arg0: typing.Any) -> None:
         ...
-    def act(self, points: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+    def act(self, points: numpy.typing.ArrayLike) -> typing.Any:
         """
         Action on points or vectors: p_a = R_ab p_b (the same as ``R @ points``).
         
+        The array function so3_act with this rotation: numpy's rules for
+        dtypes and broadcasting.
+        
         Args:
-            points: shape (3,) or (N, 3) (any leading axes).
+            points: array_like of shape (..., 3).
         
         Returns:
-            ndarray: the rotated points, same shape, float64.
+            ndarray: the rotated points, shape (..., 3).
         
         Example:
             >>> R = SO3.exp([0.0, 0.0, np.pi])
@@ -869,15 +875,18 @@ class SE3:
             SE3: the composed motion.
         """
     @typing.overload
-    def __matmul__(self, points: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+    def __matmul__(self, points: numpy.typing.ArrayLike) -> typing.Any:
         """
         Action on points: q_a = R q_b + p.
         
+        The array function se3_act with this motion: numpy's rules for dtypes
+        and broadcasting.
+        
         Args:
-            points: shape (3,) or (N, 3) (any leading axes).
+            points: array_like of shape (..., 3).
         
         Returns:
-            ndarray: the moved points, same shape.
+            ndarray: the moved points, shape (..., 3).
         """
     def __ne__(self, other: typing.Any) -> bool:
         """
@@ -924,15 +933,18 @@ class SE3:
             Wrench: F_a.
         """
     @typing.overload
-    def act(self, points: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+    def act(self, points: numpy.typing.ArrayLike) -> typing.Any:
         """
         Action on points: q_a = R q_b + p (the same as ``g @ points``).
         
+        The array function se3_act with this motion: numpy's rules for dtypes
+        and broadcasting.
+        
         Args:
-            points: shape (3,) or (N, 3) (any leading axes).
+            points: array_like of shape (..., 3).
         
         Returns:
-            ndarray: the moved points, same shape, float64.
+            ndarray: the moved points, shape (..., 3).
         
         Example:
             >>> g = SE3(translation=[1.0, 0.0, 0.0])
@@ -963,15 +975,18 @@ class SE3:
             Wrench: F_b.
         """
     @typing.overload
-    def act_inv(self, points: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+    def act_inv(self, points: numpy.typing.ArrayLike) -> typing.Any:
         """
         Inverse action on points: q_b = R^T (q_a - p), i.e. g^-1 @ q_a.
         
+        The array function se3_act with g^-1: numpy's rules for dtypes and
+        broadcasting.
+        
         Args:
-            points: shape (3,) or (N, 3) (any leading axes).
+            points: array_like of shape (..., 3).
         
         Returns:
-            ndarray: same shape.
+            ndarray: shape (..., 3).
         """
     def adjoint(self) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -1674,14 +1689,17 @@ class Chain:
     configuration in the base frame, one row (v, w) per joint, linear part first)
     and its home pose M = g(0); it keeps the body screws B_i = Ad_{M^-1} S_i.
     Revolute joints about the axis through q along w have the screw
-    (-w x q, w) (``Chain.revolute_screw``), prismatic joints along v the screw
-    (v, 0) (``Chain.prismatic_screw``). At most 32 joints.
+    (-w x q, w) (``Chain.revolute_screw(point, direction)``: the point first, as
+    in ``SE3.from_screw``), prismatic joints along v the screw (v, 0)
+    (``Chain.prismatic_screw``). At most 32 joints. Its methods forward,
+    forward_body, jacobian_space and jacobian_body are array functions: joint
+    positions of shape (..., n) in, arrays out.
     
     Example:
-        >>> screws = [Chain.revolute_screw([0, 0, 1], [0, 0, 0]),
-        ...           Chain.revolute_screw([0, 0, 1], [1, 0, 0])]
+        >>> screws = [Chain.revolute_screw([0, 0, 0], [0, 0, 1]),
+        ...           Chain.revolute_screw([1, 0, 0], [0, 0, 1])]
         >>> arm = Chain(screws, SE3(translation=[2.0, 0.0, 0.0]))
-        >>> np.round(arm.forward([np.pi / 2, 0.0]).translation, 12) + 0.0
+        >>> np.round(arm.forward([np.pi / 2, 0.0])[:3, 3], 12) + 0.0
         array([0., 2., 0.])
         >>> arm.jacobian_space([0.0, 0.0]).shape
         (6, 2)
@@ -1729,19 +1747,21 @@ class Chain:
             array([0. , 0.6, 0.8, 0. , 0. , 0. ])
         """
     @staticmethod
-    def revolute_screw(axis: numpy.typing.ArrayLike, point: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+    def revolute_screw(point: numpy.typing.ArrayLike, direction: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
-        The screw of a revolute joint: (-w x q, w), w = axis / |axis|.
+        The screw of a revolute joint about the axis through q along w: (-w x q, w).
+        
+        The point comes first, as in ``SE3.from_screw(point, direction, ...)``.
         
         Args:
-            axis: shape (3,), the joint axis, nonzero (normalized here).
             point: shape (3,), q, any point on the axis.
+            direction: shape (3,), the joint axis, nonzero (normalized here: w = direction / |direction|).
         
         Returns:
             numpy.ndarray: shape (6,), (v, w), linear part first.
         
         Example:
-            >>> Chain.revolute_screw([0, 0, 2], [1, 0, 0])
+            >>> Chain.revolute_screw([1, 0, 0], [0, 0, 2])
             array([ 0., -1.,  0.,  0.,  0.,  1.])
         """
     def __copy__(self) -> Chain:
@@ -1808,15 +1828,20 @@ class Chain:
         """
         Forward kinematics, space form: g(theta) = exp([S_1] th_1) ... exp([S_n] th_n) M.
         
+        An array function: theta of shape (n,) gives one result, (..., n) one per
+        configuration, by the same numpy rules as every chasles array function
+        (broadcasting, dtypes, the GIL released; a NaN gives NaN in its element).
+        
         Args:
-            theta: shape (n,) or (N, n), joint positions (radians or lengths), finite.
+            theta: array_like of shape (..., n), joint positions (radians or lengths).
         
         Returns:
-            SE3 | numpy.ndarray: an SE3 for shape (n,); shape (N, 4, 4) for (N, n).
+            numpy.ndarray: shape (..., 4, 4), the homogeneous matrices of the tool
+            frame (``SE3.from_matrix_unchecked`` makes an SE3 of one).
         
         Example:
             >>> arm = Chain([Chain.prismatic_screw([1, 0, 0])], np.eye(4))
-            >>> arm.forward([0.5]).translation
+            >>> arm.forward([0.5])[:3, 3]
             array([0.5, 0. , 0. ])
             >>> arm.forward([[0.5], [1.0]]).shape
             (2, 4, 4)
@@ -1827,49 +1852,61 @@ class Chain:
         
         Equal to ``forward`` up to rounding.
         
+        An array function: theta of shape (n,) gives one result, (..., n) one per
+        configuration, by the same numpy rules as every chasles array function
+        (broadcasting, dtypes, the GIL released; a NaN gives NaN in its element).
+        
         Args:
-            theta: shape (n,) or (N, n), finite.
+            theta: array_like of shape (..., n).
         
         Returns:
-            SE3 | numpy.ndarray: an SE3 for shape (n,); shape (N, 4, 4) for (N, n).
+            numpy.ndarray: shape (..., 4, 4).
         
         Example:
-            >>> arm = Chain([Chain.revolute_screw([0, 0, 1], [1, 0, 0])], np.eye(4))
-            >>> arm.forward_body([0.3]).is_approx(arm.forward([0.3]))
+            >>> arm = Chain([Chain.revolute_screw([1, 0, 0], [0, 0, 1])], np.eye(4))
+            >>> np.allclose(arm.forward_body([0.3]), arm.forward([0.3]), rtol=0, atol=1e-15)
             True
         """
-    def jacobian_body(self, theta: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+    def jacobian_body(self, theta: numpy.typing.ArrayLike) -> typing.Any:
         """
         The body Jacobian J_b: the body twist (g^-1 g')^vee = J_b theta'.
         
         Column i is Ad_{(exp([B_{i+1}] th_{i+1}) ... exp([B_n] th_n))^-1} B_i; rows (v, w).
         
+        An array function: theta of shape (n,) gives one result, (..., n) one per
+        configuration, by the same numpy rules as every chasles array function
+        (broadcasting, dtypes, the GIL released; a NaN gives NaN in its element).
+        
         Args:
-            theta: shape (n,) or (N, n), finite.
+            theta: array_like of shape (..., n).
         
         Returns:
-            numpy.ndarray: shape (6, n) for shape (n,); (N, 6, n) for (N, n).
+            numpy.ndarray: shape (..., 6, n).
         
         Example:
-            >>> arm = Chain([Chain.revolute_screw([0, 0, 1], [0, 0, 0])], SE3(translation=[1.0, 0.0, 0.0]))
+            >>> arm = Chain([Chain.revolute_screw([0, 0, 0], [0, 0, 1])], SE3(translation=[1.0, 0.0, 0.0]))
             >>> np.round(arm.jacobian_body([0.3])[:, 0], 12) + 0.0
             array([0., 1., 0., 0., 0., 1.])
         """
-    def jacobian_space(self, theta: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+    def jacobian_space(self, theta: numpy.typing.ArrayLike) -> typing.Any:
         """
         The space Jacobian J_s: the spatial twist (g' g^-1)^vee = J_s theta'.
         
         Column i is Ad_{exp([S_1] th_1) ... exp([S_{i-1}] th_{i-1})} S_i; rows (v, w).
         J_s = Ad_g J_b.
         
+        An array function: theta of shape (n,) gives one result, (..., n) one per
+        configuration, by the same numpy rules as every chasles array function
+        (broadcasting, dtypes, the GIL released; a NaN gives NaN in its element).
+        
         Args:
-            theta: shape (n,) or (N, n), finite.
+            theta: array_like of shape (..., n).
         
         Returns:
-            numpy.ndarray: shape (6, n) for shape (n,); (N, 6, n) for (N, n).
+            numpy.ndarray: shape (..., 6, n).
         
         Example:
-            >>> arm = Chain([Chain.revolute_screw([0, 0, 1], [0, 0, 0])], np.eye(4))
+            >>> arm = Chain([Chain.revolute_screw([0, 0, 0], [0, 0, 1])], np.eye(4))
             >>> arm.jacobian_space([0.3])[:, 0]
             array([0., 0., 0., 0., 0., 1.])
         """
@@ -2147,867 +2184,31 @@ def rplus(g: SE3, xi: numpy.typing.ArrayLike) -> SE3:
         >>> chasles.rplus(g, [0.0, 2.0, 0.0, 0.0, 0.0, 0.0]).translation
         array([1., 2., 0.])
     """
-def se3_act(g: typing.Any, points: typing.Any) -> numpy.ndarray:
-    """
-    Transformed points: q_a = R_ab q_b + p_ab.
-    
-    Broadcasts: one pose of shape (4, 4) with points of shape (N, 3), N poses
-    with N points, (N, 1, 4, 4) with (M, 3) for every pair, ...
-    
-    Args:
-        g: array_like of shape (..., 4, 4): homogeneous matrices.
-        points: array_like of shape (..., 3): points.
-    
-    Returns:
-        numpy.ndarray of shape (..., 3): the transformed points.
-    
-    Raises:
-        TypeError: an operand's dtype is not float32, float64, integer or bool
-            (float16, long double, complex, object, string and datetime arrays
-            are refused: there is no kernel in those types, and a silent
-            conversion would change the precision).
-        ValueError: an operand's trailing (core) shape is wrong, the leading
-            (batch) shapes of the operands do not broadcast, or numpy cannot
-            make an array of an operand (a ragged nested list).
-        MemoryError: the result does not fit in memory (as numpy's own).
-    
-    Note:
-        Batch rules, shared by every chasles array function:
-    
-        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
-          as np.linalg does); the trailing core shapes are fixed. Zero-length
-          batch axes give an empty result of the right shape.
-        * dtype: float32 operands give a float32 result, computed by the float
-          C++ kernels; any float64 operand makes the call float64; integer and
-          bool arrays are converted to float64. Python int and float scalars do
-          not change the result type.
-        * Operands are read in place through their strides (slices, transposes,
-          Fortran order and read-only arrays need no copy); the result is a
-          fresh C-contiguous array. The GIL is released during the loop.
-        * Inputs are taken as given, like the C++ unchecked constructors:
-          matrices are not checked for being rotations or rigid motions (the
-          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
-          own element only, never an exception.
-    """
-def se3_act_twist(g: typing.Any, xi: typing.Any) -> numpy.ndarray:
-    """
-    Twists changed from frame b to frame a: xi_a = Ad_g xi_b.
-    
-    xi_a = (R v + p x R w, R w) for xi_b = (v, w), linear part first.
-    
-    Args:
-        g: array_like of shape (..., 4, 4): homogeneous matrices g_ab.
-        xi: array_like of shape (..., 6): twists (v, w) in frame b.
-    
-    Returns:
-        numpy.ndarray of shape (..., 6): the twists (v, w) in frame a.
-    
-    Raises:
-        TypeError: an operand's dtype is not float32, float64, integer or bool
-            (float16, long double, complex, object, string and datetime arrays
-            are refused: there is no kernel in those types, and a silent
-            conversion would change the precision).
-        ValueError: an operand's trailing (core) shape is wrong, the leading
-            (batch) shapes of the operands do not broadcast, or numpy cannot
-            make an array of an operand (a ragged nested list).
-        MemoryError: the result does not fit in memory (as numpy's own).
-    
-    Note:
-        Batch rules, shared by every chasles array function:
-    
-        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
-          as np.linalg does); the trailing core shapes are fixed. Zero-length
-          batch axes give an empty result of the right shape.
-        * dtype: float32 operands give a float32 result, computed by the float
-          C++ kernels; any float64 operand makes the call float64; integer and
-          bool arrays are converted to float64. Python int and float scalars do
-          not change the result type.
-        * Operands are read in place through their strides (slices, transposes,
-          Fortran order and read-only arrays need no copy); the result is a
-          fresh C-contiguous array. The GIL is released during the loop.
-        * Inputs are taken as given, like the C++ unchecked constructors:
-          matrices are not checked for being rotations or rigid motions (the
-          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
-          own element only, never an exception.
-    """
-def se3_act_wrench(g: typing.Any, F: typing.Any) -> numpy.ndarray:
-    """
-    Wrenches changed from frame b to frame a: F_a = Ad_g^-T F_b.
-    
-    F_a = (R f, p x R f + R tau) for F_b = (f, tau), force first, so that the
-    power xi . F is the same in both frames.
-    
-    Args:
-        g: array_like of shape (..., 4, 4): homogeneous matrices g_ab.
-        F: array_like of shape (..., 6): wrenches (f, tau) in frame b.
-    
-    Returns:
-        numpy.ndarray of shape (..., 6): the wrenches (f, tau) in frame a.
-    
-    Raises:
-        TypeError: an operand's dtype is not float32, float64, integer or bool
-            (float16, long double, complex, object, string and datetime arrays
-            are refused: there is no kernel in those types, and a silent
-            conversion would change the precision).
-        ValueError: an operand's trailing (core) shape is wrong, the leading
-            (batch) shapes of the operands do not broadcast, or numpy cannot
-            make an array of an operand (a ragged nested list).
-        MemoryError: the result does not fit in memory (as numpy's own).
-    
-    Note:
-        Batch rules, shared by every chasles array function:
-    
-        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
-          as np.linalg does); the trailing core shapes are fixed. Zero-length
-          batch axes give an empty result of the right shape.
-        * dtype: float32 operands give a float32 result, computed by the float
-          C++ kernels; any float64 operand makes the call float64; integer and
-          bool arrays are converted to float64. Python int and float scalars do
-          not change the result type.
-        * Operands are read in place through their strides (slices, transposes,
-          Fortran order and read-only arrays need no copy); the result is a
-          fresh C-contiguous array. The GIL is released during the loop.
-        * Inputs are taken as given, like the C++ unchecked constructors:
-          matrices are not checked for being rotations or rigid motions (the
-          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
-          own element only, never an exception.
-    """
-def se3_adjoint(g: typing.Any) -> numpy.ndarray:
-    """
-    Adjoint matrices: Ad_g = [[R, [p] R], [0, R]] (6x6).
-    
-    Twist order (v, w), linear part first: twists change frame by
-    xi_a = Ad_g xi_b, wrenches by F_b = Ad_g^T F_a.
-    
-    Args:
-        g: array_like of shape (..., 4, 4): homogeneous matrices.
-    
-    Returns:
-        numpy.ndarray of shape (..., 6, 6): the adjoint matrices.
-    
-    Raises:
-        TypeError: an operand's dtype is not float32, float64, integer or bool
-            (float16, long double, complex, object, string and datetime arrays
-            are refused: there is no kernel in those types, and a silent
-            conversion would change the precision).
-        ValueError: an operand's trailing (core) shape is wrong, the leading
-            (batch) shapes of the operands do not broadcast, or numpy cannot
-            make an array of an operand (a ragged nested list).
-        MemoryError: the result does not fit in memory (as numpy's own).
-    
-    Note:
-        Batch rules, shared by every chasles array function:
-    
-        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
-          as np.linalg does); the trailing core shapes are fixed. Zero-length
-          batch axes give an empty result of the right shape.
-        * dtype: float32 operands give a float32 result, computed by the float
-          C++ kernels; any float64 operand makes the call float64; integer and
-          bool arrays are converted to float64. Python int and float scalars do
-          not change the result type.
-        * Operands are read in place through their strides (slices, transposes,
-          Fortran order and read-only arrays need no copy); the result is a
-          fresh C-contiguous array. The GIL is released during the loop.
-        * Inputs are taken as given, like the C++ unchecked constructors:
-          matrices are not checked for being rotations or rigid motions (the
-          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
-          own element only, never an exception.
-    """
-def se3_compose(a: typing.Any, b: typing.Any) -> numpy.ndarray:
-    """
-    Composition of rigid motions: a @ b (g_ac = g_ab g_bc).
-    
-    Args:
-        a: array_like of shape (..., 4, 4): homogeneous matrices.
-        b: array_like of shape (..., 4, 4): homogeneous matrices.
-    
-    Returns:
-        numpy.ndarray of shape (..., 4, 4): the products [[R_a R_b, R_a p_b +
-        p_a], [0, 1]], the batch shape being the broadcast of a's and b's.
-    
-    Raises:
-        TypeError: an operand's dtype is not float32, float64, integer or bool
-            (float16, long double, complex, object, string and datetime arrays
-            are refused: there is no kernel in those types, and a silent
-            conversion would change the precision).
-        ValueError: an operand's trailing (core) shape is wrong, the leading
-            (batch) shapes of the operands do not broadcast, or numpy cannot
-            make an array of an operand (a ragged nested list).
-        MemoryError: the result does not fit in memory (as numpy's own).
-    
-    Note:
-        Batch rules, shared by every chasles array function:
-    
-        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
-          as np.linalg does); the trailing core shapes are fixed. Zero-length
-          batch axes give an empty result of the right shape.
-        * dtype: float32 operands give a float32 result, computed by the float
-          C++ kernels; any float64 operand makes the call float64; integer and
-          bool arrays are converted to float64. Python int and float scalars do
-          not change the result type.
-        * Operands are read in place through their strides (slices, transposes,
-          Fortran order and read-only arrays need no copy); the result is a
-          fresh C-contiguous array. The GIL is released during the loop.
-        * Inputs are taken as given, like the C++ unchecked constructors:
-          matrices are not checked for being rotations or rigid motions (the
-          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
-          own element only, never an exception.
-    """
-def se3_exp(xi: typing.Any) -> numpy.ndarray:
-    """
-    Rigid motions of twists: g = exp([xi]) (4x4).
-    
-    Twist order xi = (v, w), linear part first (Murray, Li and Sastry). In
-    closed form: R = exp([w]), p = V v with V = I + B [w] + C [w]^2; w = 0 is a
-    pure translation.
-    
-    Args:
-        xi: array_like of shape (..., 6): twists (v, w), linear part first.
-    
-    Returns:
-        numpy.ndarray of shape (..., 4, 4): the homogeneous matrices
-        [[R, p], [0, 1]].
-    
-    Raises:
-        TypeError: an operand's dtype is not float32, float64, integer or bool
-            (float16, long double, complex, object, string and datetime arrays
-            are refused: there is no kernel in those types, and a silent
-            conversion would change the precision).
-        ValueError: an operand's trailing (core) shape is wrong, the leading
-            (batch) shapes of the operands do not broadcast, or numpy cannot
-            make an array of an operand (a ragged nested list).
-        MemoryError: the result does not fit in memory (as numpy's own).
-    
-    Note:
-        Batch rules, shared by every chasles array function:
-    
-        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
-          as np.linalg does); the trailing core shapes are fixed. Zero-length
-          batch axes give an empty result of the right shape.
-        * dtype: float32 operands give a float32 result, computed by the float
-          C++ kernels; any float64 operand makes the call float64; integer and
-          bool arrays are converted to float64. Python int and float scalars do
-          not change the result type.
-        * Operands are read in place through their strides (slices, transposes,
-          Fortran order and read-only arrays need no copy); the result is a
-          fresh C-contiguous array. The GIL is released during the loop.
-        * Inputs are taken as given, like the C++ unchecked constructors:
-          matrices are not checked for being rotations or rigid motions (the
-          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
-          own element only, never an exception.
-    """
-def se3_interpolate(a: typing.Any, b: typing.Any, t: typing.Any) -> numpy.ndarray:
-    """
-    Screw interpolation of rigid motions: a exp(t log(a^-1 b)).
-    
-    t = 0 gives a, t = 1 gives b, one screw motion in between.
-    
-    Args:
-        a: array_like of shape (..., 4, 4): homogeneous matrices at t = 0.
-        b: array_like of shape (..., 4, 4): homogeneous matrices at t = 1.
-        t: array_like of shape (...): the parameters (a Python float keeps
-            the dtype of a and b).
-    
-    Returns:
-        numpy.ndarray of shape (..., 4, 4): the interpolated motions.
-    
-    Raises:
-        TypeError: an operand's dtype is not float32, float64, integer or bool
-            (float16, long double, complex, object, string and datetime arrays
-            are refused: there is no kernel in those types, and a silent
-            conversion would change the precision).
-        ValueError: an operand's trailing (core) shape is wrong, the leading
-            (batch) shapes of the operands do not broadcast, or numpy cannot
-            make an array of an operand (a ragged nested list).
-        MemoryError: the result does not fit in memory (as numpy's own).
-    
-    Note:
-        Batch rules, shared by every chasles array function:
-    
-        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
-          as np.linalg does); the trailing core shapes are fixed. Zero-length
-          batch axes give an empty result of the right shape.
-        * dtype: float32 operands give a float32 result, computed by the float
-          C++ kernels; any float64 operand makes the call float64; integer and
-          bool arrays are converted to float64. Python int and float scalars do
-          not change the result type.
-        * Operands are read in place through their strides (slices, transposes,
-          Fortran order and read-only arrays need no copy); the result is a
-          fresh C-contiguous array. The GIL is released during the loop.
-        * Inputs are taken as given, like the C++ unchecked constructors:
-          matrices are not checked for being rotations or rigid motions (the
-          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
-          own element only, never an exception.
-    """
-def se3_inverse(g: typing.Any) -> numpy.ndarray:
-    """
-    Inverse rigid motions: g^-1 = [[R^T, -R^T p], [0, 1]].
-    
-    Args:
-        g: array_like of shape (..., 4, 4): homogeneous matrices.
-    
-    Returns:
-        numpy.ndarray of shape (..., 4, 4): the inverses.
-    
-    Raises:
-        TypeError: an operand's dtype is not float32, float64, integer or bool
-            (float16, long double, complex, object, string and datetime arrays
-            are refused: there is no kernel in those types, and a silent
-            conversion would change the precision).
-        ValueError: an operand's trailing (core) shape is wrong, the leading
-            (batch) shapes of the operands do not broadcast, or numpy cannot
-            make an array of an operand (a ragged nested list).
-        MemoryError: the result does not fit in memory (as numpy's own).
-    
-    Note:
-        Batch rules, shared by every chasles array function:
-    
-        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
-          as np.linalg does); the trailing core shapes are fixed. Zero-length
-          batch axes give an empty result of the right shape.
-        * dtype: float32 operands give a float32 result, computed by the float
-          C++ kernels; any float64 operand makes the call float64; integer and
-          bool arrays are converted to float64. Python int and float scalars do
-          not change the result type.
-        * Operands are read in place through their strides (slices, transposes,
-          Fortran order and read-only arrays need no copy); the result is a
-          fresh C-contiguous array. The GIL is released during the loop.
-        * Inputs are taken as given, like the C++ unchecked constructors:
-          matrices are not checked for being rotations or rigid motions (the
-          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
-          own element only, never an exception.
-    """
-def se3_log(g: typing.Any) -> numpy.ndarray:
-    """
-    Twists of rigid motions: xi = log(g)^vee, xi = (v, w).
-    
-    Rotation angle |w| in [0, pi] (at exactly pi, either axis sign); v = V^-1 p.
-    
-    Args:
-        g: array_like of shape (..., 4, 4): homogeneous matrices [[R, p], [0, 1]].
-    
-    Returns:
-        numpy.ndarray of shape (..., 6): the twists (v, w), linear part first.
-    
-    Raises:
-        TypeError: an operand's dtype is not float32, float64, integer or bool
-            (float16, long double, complex, object, string and datetime arrays
-            are refused: there is no kernel in those types, and a silent
-            conversion would change the precision).
-        ValueError: an operand's trailing (core) shape is wrong, the leading
-            (batch) shapes of the operands do not broadcast, or numpy cannot
-            make an array of an operand (a ragged nested list).
-        MemoryError: the result does not fit in memory (as numpy's own).
-    
-    Note:
-        Batch rules, shared by every chasles array function:
-    
-        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
-          as np.linalg does); the trailing core shapes are fixed. Zero-length
-          batch axes give an empty result of the right shape.
-        * dtype: float32 operands give a float32 result, computed by the float
-          C++ kernels; any float64 operand makes the call float64; integer and
-          bool arrays are converted to float64. Python int and float scalars do
-          not change the result type.
-        * Operands are read in place through their strides (slices, transposes,
-          Fortran order and read-only arrays need no copy); the result is a
-          fresh C-contiguous array. The GIL is released during the loop.
-        * Inputs are taken as given, like the C++ unchecked constructors:
-          matrices are not checked for being rotations or rigid motions (the
-          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
-          own element only, never an exception.
-    """
-def so3_act(R: typing.Any, p: typing.Any) -> numpy.ndarray:
-    """
-    Rotated points or vectors: p_a = R_ab p_b.
-    
-    Broadcasts: one rotation of shape (3, 3) with points of shape (N, 3), N
-    rotations with N points, (N, 1, 3, 3) with (M, 3) for every pair, ...
-    
-    Args:
-        R: array_like of shape (..., 3, 3): rotation matrices.
-        p: array_like of shape (..., 3): points or vectors.
-    
-    Returns:
-        numpy.ndarray of shape (..., 3): the rotated points.
-    
-    Raises:
-        TypeError: an operand's dtype is not float32, float64, integer or bool
-            (float16, long double, complex, object, string and datetime arrays
-            are refused: there is no kernel in those types, and a silent
-            conversion would change the precision).
-        ValueError: an operand's trailing (core) shape is wrong, the leading
-            (batch) shapes of the operands do not broadcast, or numpy cannot
-            make an array of an operand (a ragged nested list).
-        MemoryError: the result does not fit in memory (as numpy's own).
-    
-    Note:
-        Batch rules, shared by every chasles array function:
-    
-        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
-          as np.linalg does); the trailing core shapes are fixed. Zero-length
-          batch axes give an empty result of the right shape.
-        * dtype: float32 operands give a float32 result, computed by the float
-          C++ kernels; any float64 operand makes the call float64; integer and
-          bool arrays are converted to float64. Python int and float scalars do
-          not change the result type.
-        * Operands are read in place through their strides (slices, transposes,
-          Fortran order and read-only arrays need no copy); the result is a
-          fresh C-contiguous array. The GIL is released during the loop.
-        * Inputs are taken as given, like the C++ unchecked constructors:
-          matrices are not checked for being rotations or rigid motions (the
-          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
-          own element only, never an exception.
-    """
-def so3_as_quat(R: typing.Any, *, scalar_first: bool = False) -> numpy.ndarray:
-    """
-    Unit quaternions of rotation matrices, as scipy's Rotation.as_quat.
-    
-    Shepperd's method (no small divisor for any input). Of the two quaternions
-    q and -q of a rotation, the one whose largest component is positive.
-    
-    Args:
-        R: array_like of shape (..., 3, 3): rotation matrices.
-        scalar_first: if True, return (w, x, y, z) instead of (x, y, z, w).
-    
-    Returns:
-        numpy.ndarray of shape (..., 4): the quaternions, scalar-last (x, y, z,
-        w) by default, as scipy.
-    
-    Raises:
-        TypeError: an operand's dtype is not float32, float64, integer or bool
-            (float16, long double, complex, object, string and datetime arrays
-            are refused: there is no kernel in those types, and a silent
-            conversion would change the precision).
-        ValueError: an operand's trailing (core) shape is wrong, the leading
-            (batch) shapes of the operands do not broadcast, or numpy cannot
-            make an array of an operand (a ragged nested list).
-        MemoryError: the result does not fit in memory (as numpy's own).
-    
-    Note:
-        Batch rules, shared by every chasles array function:
-    
-        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
-          as np.linalg does); the trailing core shapes are fixed. Zero-length
-          batch axes give an empty result of the right shape.
-        * dtype: float32 operands give a float32 result, computed by the float
-          C++ kernels; any float64 operand makes the call float64; integer and
-          bool arrays are converted to float64. Python int and float scalars do
-          not change the result type.
-        * Operands are read in place through their strides (slices, transposes,
-          Fortran order and read-only arrays need no copy); the result is a
-          fresh C-contiguous array. The GIL is released during the loop.
-        * Inputs are taken as given, like the C++ unchecked constructors:
-          matrices are not checked for being rotations or rigid motions (the
-          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
-          own element only, never an exception.
-    """
-def so3_compose(a: typing.Any, b: typing.Any) -> numpy.ndarray:
-    """
-    Composition of rotations: a @ b (R_ac = R_ab R_bc).
-    
-    Args:
-        a: array_like of shape (..., 3, 3): rotation matrices.
-        b: array_like of shape (..., 3, 3): rotation matrices.
-    
-    Returns:
-        numpy.ndarray of shape (..., 3, 3): the products, the batch shape being
-        the broadcast of a's and b's.
-    
-    Raises:
-        TypeError: an operand's dtype is not float32, float64, integer or bool
-            (float16, long double, complex, object, string and datetime arrays
-            are refused: there is no kernel in those types, and a silent
-            conversion would change the precision).
-        ValueError: an operand's trailing (core) shape is wrong, the leading
-            (batch) shapes of the operands do not broadcast, or numpy cannot
-            make an array of an operand (a ragged nested list).
-        MemoryError: the result does not fit in memory (as numpy's own).
-    
-    Note:
-        Batch rules, shared by every chasles array function:
-    
-        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
-          as np.linalg does); the trailing core shapes are fixed. Zero-length
-          batch axes give an empty result of the right shape.
-        * dtype: float32 operands give a float32 result, computed by the float
-          C++ kernels; any float64 operand makes the call float64; integer and
-          bool arrays are converted to float64. Python int and float scalars do
-          not change the result type.
-        * Operands are read in place through their strides (slices, transposes,
-          Fortran order and read-only arrays need no copy); the result is a
-          fresh C-contiguous array. The GIL is released during the loop.
-        * Inputs are taken as given, like the C++ unchecked constructors:
-          matrices are not checked for being rotations or rigid motions (the
-          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
-          own element only, never an exception.
-    """
-def so3_exp(w: typing.Any) -> numpy.ndarray:
-    """
-    Rotation matrices of rotation vectors: R = exp([w]).
-    
-    Rodrigues' formula, R = I + (sin t / t) [w] + ((1 - cos t) / t^2) [w]^2 with
-    t = |w|, exact to a few ulps for every w (Taylor series near 0).
-    
-    Args:
-        w: array_like of shape (..., 3): rotation vectors, axis times angle in
-            radians.
-    
-    Returns:
-        numpy.ndarray of shape (..., 3, 3): the rotation matrices.
-    
-    Raises:
-        TypeError: an operand's dtype is not float32, float64, integer or bool
-            (float16, long double, complex, object, string and datetime arrays
-            are refused: there is no kernel in those types, and a silent
-            conversion would change the precision).
-        ValueError: an operand's trailing (core) shape is wrong, the leading
-            (batch) shapes of the operands do not broadcast, or numpy cannot
-            make an array of an operand (a ragged nested list).
-        MemoryError: the result does not fit in memory (as numpy's own).
-    
-    Note:
-        Batch rules, shared by every chasles array function:
-    
-        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
-          as np.linalg does); the trailing core shapes are fixed. Zero-length
-          batch axes give an empty result of the right shape.
-        * dtype: float32 operands give a float32 result, computed by the float
-          C++ kernels; any float64 operand makes the call float64; integer and
-          bool arrays are converted to float64. Python int and float scalars do
-          not change the result type.
-        * Operands are read in place through their strides (slices, transposes,
-          Fortran order and read-only arrays need no copy); the result is a
-          fresh C-contiguous array. The GIL is released during the loop.
-        * Inputs are taken as given, like the C++ unchecked constructors:
-          matrices are not checked for being rotations or rigid motions (the
-          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
-          own element only, never an exception.
-    """
-def so3_from_quat(q: typing.Any, *, scalar_first: bool = False) -> numpy.ndarray:
-    """
-    Rotation matrices of quaternions, as scipy's Rotation.from_quat.
-    
-    Quaternions of any nonzero norm are normalized. A zero or non-finite
-    quaternion gives a matrix of NaN.
-    
-    Args:
-        q: array_like of shape (..., 4): quaternions, scalar-last (x, y, z, w)
-            by default, as scipy.
-        scalar_first: if True, q is read as (w, x, y, z).
-    
-    Returns:
-        numpy.ndarray of shape (..., 3, 3): the rotation matrices.
-    
-    Raises:
-        TypeError: an operand's dtype is not float32, float64, integer or bool
-            (float16, long double, complex, object, string and datetime arrays
-            are refused: there is no kernel in those types, and a silent
-            conversion would change the precision).
-        ValueError: an operand's trailing (core) shape is wrong, the leading
-            (batch) shapes of the operands do not broadcast, or numpy cannot
-            make an array of an operand (a ragged nested list).
-        MemoryError: the result does not fit in memory (as numpy's own).
-    
-    Note:
-        Batch rules, shared by every chasles array function:
-    
-        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
-          as np.linalg does); the trailing core shapes are fixed. Zero-length
-          batch axes give an empty result of the right shape.
-        * dtype: float32 operands give a float32 result, computed by the float
-          C++ kernels; any float64 operand makes the call float64; integer and
-          bool arrays are converted to float64. Python int and float scalars do
-          not change the result type.
-        * Operands are read in place through their strides (slices, transposes,
-          Fortran order and read-only arrays need no copy); the result is a
-          fresh C-contiguous array. The GIL is released during the loop.
-        * Inputs are taken as given, like the C++ unchecked constructors:
-          matrices are not checked for being rotations or rigid motions (the
-          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
-          own element only, never an exception.
-    """
-def so3_hat(w: typing.Any) -> numpy.ndarray:
-    """
-    Skew-symmetric matrices: [w] = [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]].
-    
-    So that [w] p = w x p.
-    
-    Args:
-        w: array_like of shape (..., 3): vectors of so(3).
-    
-    Returns:
-        numpy.ndarray of shape (..., 3, 3): the matrices [w].
-    
-    Raises:
-        TypeError: an operand's dtype is not float32, float64, integer or bool
-            (float16, long double, complex, object, string and datetime arrays
-            are refused: there is no kernel in those types, and a silent
-            conversion would change the precision).
-        ValueError: an operand's trailing (core) shape is wrong, the leading
-            (batch) shapes of the operands do not broadcast, or numpy cannot
-            make an array of an operand (a ragged nested list).
-        MemoryError: the result does not fit in memory (as numpy's own).
-    
-    Note:
-        Batch rules, shared by every chasles array function:
-    
-        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
-          as np.linalg does); the trailing core shapes are fixed. Zero-length
-          batch axes give an empty result of the right shape.
-        * dtype: float32 operands give a float32 result, computed by the float
-          C++ kernels; any float64 operand makes the call float64; integer and
-          bool arrays are converted to float64. Python int and float scalars do
-          not change the result type.
-        * Operands are read in place through their strides (slices, transposes,
-          Fortran order and read-only arrays need no copy); the result is a
-          fresh C-contiguous array. The GIL is released during the loop.
-        * Inputs are taken as given, like the C++ unchecked constructors:
-          matrices are not checked for being rotations or rigid motions (the
-          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
-          own element only, never an exception.
-    """
-def so3_interpolate(a: typing.Any, b: typing.Any, t: typing.Any) -> numpy.ndarray:
-    """
-    Geodesic interpolation of rotations: a exp(t log(a^-1 b)).
-    
-    t = 0 gives a, t = 1 gives b, constant angular velocity in between.
-    
-    Args:
-        a: array_like of shape (..., 3, 3): rotation matrices at t = 0.
-        b: array_like of shape (..., 3, 3): rotation matrices at t = 1.
-        t: array_like of shape (...): the parameters (a Python float keeps
-            the dtype of a and b).
-    
-    Returns:
-        numpy.ndarray of shape (..., 3, 3): the interpolated rotations.
-    
-    Raises:
-        TypeError: an operand's dtype is not float32, float64, integer or bool
-            (float16, long double, complex, object, string and datetime arrays
-            are refused: there is no kernel in those types, and a silent
-            conversion would change the precision).
-        ValueError: an operand's trailing (core) shape is wrong, the leading
-            (batch) shapes of the operands do not broadcast, or numpy cannot
-            make an array of an operand (a ragged nested list).
-        MemoryError: the result does not fit in memory (as numpy's own).
-    
-    Note:
-        Batch rules, shared by every chasles array function:
-    
-        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
-          as np.linalg does); the trailing core shapes are fixed. Zero-length
-          batch axes give an empty result of the right shape.
-        * dtype: float32 operands give a float32 result, computed by the float
-          C++ kernels; any float64 operand makes the call float64; integer and
-          bool arrays are converted to float64. Python int and float scalars do
-          not change the result type.
-        * Operands are read in place through their strides (slices, transposes,
-          Fortran order and read-only arrays need no copy); the result is a
-          fresh C-contiguous array. The GIL is released during the loop.
-        * Inputs are taken as given, like the C++ unchecked constructors:
-          matrices are not checked for being rotations or rigid motions (the
-          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
-          own element only, never an exception.
-    """
-def so3_inverse(R: typing.Any) -> numpy.ndarray:
-    """
-    Inverse rotations: R^-1 = R^T.
-    
-    Args:
-        R: array_like of shape (..., 3, 3): rotation matrices.
-    
-    Returns:
-        numpy.ndarray of shape (..., 3, 3): the inverses.
-    
-    Raises:
-        TypeError: an operand's dtype is not float32, float64, integer or bool
-            (float16, long double, complex, object, string and datetime arrays
-            are refused: there is no kernel in those types, and a silent
-            conversion would change the precision).
-        ValueError: an operand's trailing (core) shape is wrong, the leading
-            (batch) shapes of the operands do not broadcast, or numpy cannot
-            make an array of an operand (a ragged nested list).
-        MemoryError: the result does not fit in memory (as numpy's own).
-    
-    Note:
-        Batch rules, shared by every chasles array function:
-    
-        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
-          as np.linalg does); the trailing core shapes are fixed. Zero-length
-          batch axes give an empty result of the right shape.
-        * dtype: float32 operands give a float32 result, computed by the float
-          C++ kernels; any float64 operand makes the call float64; integer and
-          bool arrays are converted to float64. Python int and float scalars do
-          not change the result type.
-        * Operands are read in place through their strides (slices, transposes,
-          Fortran order and read-only arrays need no copy); the result is a
-          fresh C-contiguous array. The GIL is released during the loop.
-        * Inputs are taken as given, like the C++ unchecked constructors:
-          matrices are not checked for being rotations or rigid motions (the
-          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
-          own element only, never an exception.
-    """
-def so3_log(R: typing.Any) -> numpy.ndarray:
-    """
-    Rotation vectors of rotation matrices: w = log(R)^vee.
-    
-    The angle |w| is in [0, pi]; at exactly pi either axis sign is returned,
-    never NaN. Robust near 0 and near pi, and as accurate for a matrix slightly
-    off SO(3) as projecting it first.
-    
-    Args:
-        R: array_like of shape (..., 3, 3): rotation matrices.
-    
-    Returns:
-        numpy.ndarray of shape (..., 3): the rotation vectors (axis times angle).
-    
-    Raises:
-        TypeError: an operand's dtype is not float32, float64, integer or bool
-            (float16, long double, complex, object, string and datetime arrays
-            are refused: there is no kernel in those types, and a silent
-            conversion would change the precision).
-        ValueError: an operand's trailing (core) shape is wrong, the leading
-            (batch) shapes of the operands do not broadcast, or numpy cannot
-            make an array of an operand (a ragged nested list).
-        MemoryError: the result does not fit in memory (as numpy's own).
-    
-    Note:
-        Batch rules, shared by every chasles array function:
-    
-        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
-          as np.linalg does); the trailing core shapes are fixed. Zero-length
-          batch axes give an empty result of the right shape.
-        * dtype: float32 operands give a float32 result, computed by the float
-          C++ kernels; any float64 operand makes the call float64; integer and
-          bool arrays are converted to float64. Python int and float scalars do
-          not change the result type.
-        * Operands are read in place through their strides (slices, transposes,
-          Fortran order and read-only arrays need no copy); the result is a
-          fresh C-contiguous array. The GIL is released during the loop.
-        * Inputs are taken as given, like the C++ unchecked constructors:
-          matrices are not checked for being rotations or rigid motions (the
-          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
-          own element only, never an exception.
-    """
-def so3_vee(W: typing.Any) -> numpy.ndarray:
-    """
-    The vectors of skew-symmetric matrices: vee([w]) = w.
-    
-    Reads the antisymmetric part (W - W^T) / 2, so a matrix that is not exactly
-    skew gives the w of its nearest skew matrix.
-    
-    Args:
-        W: array_like of shape (..., 3, 3): skew-symmetric matrices.
-    
-    Returns:
-        numpy.ndarray of shape (..., 3): the vectors w.
-    
-    Raises:
-        TypeError: an operand's dtype is not float32, float64, integer or bool
-            (float16, long double, complex, object, string and datetime arrays
-            are refused: there is no kernel in those types, and a silent
-            conversion would change the precision).
-        ValueError: an operand's trailing (core) shape is wrong, the leading
-            (batch) shapes of the operands do not broadcast, or numpy cannot
-            make an array of an operand (a ragged nested list).
-        MemoryError: the result does not fit in memory (as numpy's own).
-    
-    Note:
-        Batch rules, shared by every chasles array function:
-    
-        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
-          as np.linalg does); the trailing core shapes are fixed. Zero-length
-          batch axes give an empty result of the right shape.
-        * dtype: float32 operands give a float32 result, computed by the float
-          C++ kernels; any float64 operand makes the call float64; integer and
-          bool arrays are converted to float64. Python int and float scalars do
-          not change the result type.
-        * Operands are read in place through their strides (slices, transposes,
-          Fortran order and read-only arrays need no copy); the result is a
-          fresh C-contiguous array. The GIL is released during the loop.
-        * Inputs are taken as given, like the C++ unchecked constructors:
-          matrices are not checked for being rotations or rigid motions (the
-          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
-          own element only, never an exception.
-    """
-def twist_hat(xi: typing.Any) -> numpy.ndarray:
-    """
-    Matrices of twists: [xi] = [[ [w], v ], [0, 0]] (4x4).
-    
-    Args:
-        xi: array_like of shape (..., 6): twists (v, w), linear part first.
-    
-    Returns:
-        numpy.ndarray of shape (..., 4, 4): the matrices [xi].
-    
-    Raises:
-        TypeError: an operand's dtype is not float32, float64, integer or bool
-            (float16, long double, complex, object, string and datetime arrays
-            are refused: there is no kernel in those types, and a silent
-            conversion would change the precision).
-        ValueError: an operand's trailing (core) shape is wrong, the leading
-            (batch) shapes of the operands do not broadcast, or numpy cannot
-            make an array of an operand (a ragged nested list).
-        MemoryError: the result does not fit in memory (as numpy's own).
-    
-    Note:
-        Batch rules, shared by every chasles array function:
-    
-        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
-          as np.linalg does); the trailing core shapes are fixed. Zero-length
-          batch axes give an empty result of the right shape.
-        * dtype: float32 operands give a float32 result, computed by the float
-          C++ kernels; any float64 operand makes the call float64; integer and
-          bool arrays are converted to float64. Python int and float scalars do
-          not change the result type.
-        * Operands are read in place through their strides (slices, transposes,
-          Fortran order and read-only arrays need no copy); the result is a
-          fresh C-contiguous array. The GIL is released during the loop.
-        * Inputs are taken as given, like the C++ unchecked constructors:
-          matrices are not checked for being rotations or rigid motions (the
-          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
-          own element only, never an exception.
-    """
-def twist_vee(X: typing.Any) -> numpy.ndarray:
-    """
-    Twists of 4x4 matrices: [xi]^vee = (v, w), linear part first.
-    
-    v is the last column's top three entries, w the vee of the antisymmetric
-    part of the top-left 3x3 block; the bottom row is not read.
-    
-    Args:
-        X: array_like of shape (..., 4, 4): matrices [[ [w], v ], [0, 0]].
-    
-    Returns:
-        numpy.ndarray of shape (..., 6): the twists (v, w).
-    
-    Raises:
-        TypeError: an operand's dtype is not float32, float64, integer or bool
-            (float16, long double, complex, object, string and datetime arrays
-            are refused: there is no kernel in those types, and a silent
-            conversion would change the precision).
-        ValueError: an operand's trailing (core) shape is wrong, the leading
-            (batch) shapes of the operands do not broadcast, or numpy cannot
-            make an array of an operand (a ragged nested list).
-        MemoryError: the result does not fit in memory (as numpy's own).
-    
-    Note:
-        Batch rules, shared by every chasles array function:
-    
-        * The leading axes broadcast together as in numpy (np.broadcast_shapes,
-          as np.linalg does); the trailing core shapes are fixed. Zero-length
-          batch axes give an empty result of the right shape.
-        * dtype: float32 operands give a float32 result, computed by the float
-          C++ kernels; any float64 operand makes the call float64; integer and
-          bool arrays are converted to float64. Python int and float scalars do
-          not change the result type.
-        * Operands are read in place through their strides (slices, transposes,
-          Fortran order and read-only arrays need no copy); the result is a
-          fresh C-contiguous array. The GIL is released during the loop.
-        * Inputs are taken as given, like the C++ unchecked constructors:
-          matrices are not checked for being rotations or rigid motions (the
-          bottom row of a 4x4 pose is not read), and a NaN gives NaN in its
-          own element only, never an exception.
-    """
 __version__: str = '0.1.0'
+_chain_forward: numpy.ufunc
+_chain_forward_body: numpy.ufunc
+_chain_jacobian_body: numpy.ufunc
+_chain_jacobian_space: numpy.ufunc
+_so3_as_quat_wxyz: numpy.ufunc
+_so3_as_quat_xyzw: numpy.ufunc
+_so3_from_quat_wxyz: numpy.ufunc
+_so3_from_quat_xyzw: numpy.ufunc
+se3_act: numpy.ufunc
+se3_act_twist: numpy.ufunc
+se3_act_wrench: numpy.ufunc
+se3_adjoint: numpy.ufunc
+se3_compose: numpy.ufunc
+se3_exp: numpy.ufunc
+se3_hat: numpy.ufunc
+se3_interpolate: numpy.ufunc
+se3_inverse: numpy.ufunc
+se3_log: numpy.ufunc
+se3_vee: numpy.ufunc
+so3_act: numpy.ufunc
+so3_compose: numpy.ufunc
+so3_exp: numpy.ufunc
+so3_hat: numpy.ufunc
+so3_interpolate: numpy.ufunc
+so3_inverse: numpy.ufunc
+so3_log: numpy.ufunc
+so3_vee: numpy.ufunc
