@@ -306,6 +306,89 @@ inline ActJacobians<Eigen::Matrix<Scalar, 3, 6>> act_jacobians(const SE3<Scalar>
   return {Jg, R};
 }
 
+/// The two Jacobians of a function of two arguments f(x, y), right-local in
+/// both: f(x (+) dx, y (+) dy) = f(x, y) (+) (J_x dx + J_y dy + o(dx, dy)),
+/// where (+) is rplus on a group and + on a tangent vector.
+template <typename Matrix>
+struct BinaryJacobians {
+  Matrix lhs;  ///< d f / d(first argument)
+  Matrix rhs;  ///< d f / d(second argument)
+};
+
+/// rplus(g, xi) = g exp(xi):  J_g = Ad_{exp(xi)}^-1 = Ad_{exp(-xi)},  J_xi = J_r(xi)
+/// (Sola section IV: g exp(dg) exp(xi) = g exp(xi) exp(Ad_{exp(-xi)} dg)).
+template <typename Scalar>
+inline BinaryJacobians<Matrix3Of<Scalar>> rplus_jacobians(const SO3<Scalar>& /*g*/,
+                                                          const Vector3Of<Scalar>& xi) noexcept {
+  return {SO3<Scalar>::exp(xi).inverse().adjoint(), so3_right_jacobian<Scalar>(xi)};
+}
+template <typename Scalar>
+inline BinaryJacobians<Matrix6Of<Scalar>> rplus_jacobians(const SE3<Scalar>& /*g*/,
+                                                          const Vector6Of<Scalar>& xi) noexcept {
+  return {SE3<Scalar>::exp(xi).inverse().adjoint(), se3_right_jacobian(xi)};
+}
+
+/// rminus(g, h) = log(h^-1 g) = xi:  J_g = J_r(xi)^-1,  J_h = -J_l(xi)^-1
+/// (Sola section IV; the Jacobians of the branch log returns, finite for
+/// |w| < 2 pi, so at and near pi too).
+template <typename Scalar>
+inline BinaryJacobians<Matrix3Of<Scalar>> rminus_jacobians(const SO3<Scalar>& g, const SO3<Scalar>& h) noexcept {
+  const Vector3Of<Scalar> xi = rminus(g, h);
+  return {so3_right_jacobian_inverse<Scalar>(xi), Matrix3Of<Scalar>(-so3_left_jacobian_inverse<Scalar>(xi))};
+}
+template <typename Scalar>
+inline BinaryJacobians<Matrix6Of<Scalar>> rminus_jacobians(const SE3<Scalar>& g, const SE3<Scalar>& h) noexcept {
+  const Vector6Of<Scalar> xi = rminus(g, h);
+  return {se3_right_jacobian_inverse(xi), Matrix6Of<Scalar>(-se3_left_jacobian_inverse(xi))};
+}
+
+/// lplus(xi, g) = exp(xi) g:  J_xi = Ad_{g^-1} J_r(xi),  J_g = I.
+/// exp(xi + dxi) g = exp(J_l dxi) exp(xi) g = exp(xi) g exp(Ad_{(exp(xi) g)^-1} J_l dxi),
+/// and Ad_{g^-1} Ad_{exp(-xi)} J_l(xi) = Ad_{g^-1} J_r(xi) (J_r = Ad_{exp(-xi)} J_l, Sola section III).
+template <typename Scalar>
+inline BinaryJacobians<Matrix3Of<Scalar>> lplus_jacobians(const Vector3Of<Scalar>& xi, const SO3<Scalar>& g) noexcept {
+  return {Matrix3Of<Scalar>(g.inverse().adjoint() * so3_right_jacobian<Scalar>(xi)), Matrix3Of<Scalar>::Identity()};
+}
+template <typename Scalar>
+inline BinaryJacobians<Matrix6Of<Scalar>> lplus_jacobians(const Vector6Of<Scalar>& xi, const SE3<Scalar>& g) noexcept {
+  return {Matrix6Of<Scalar>(g.inverse().adjoint() * se3_right_jacobian(xi)), Matrix6Of<Scalar>::Identity()};
+}
+
+/// lminus(g, h) = log(g h^-1) = xi:  J_g = J_r(xi)^-1 Ad_h,  J_h = -J_r(xi)^-1 Ad_h.
+/// g exp(dg) h^-1 = exp(xi) exp(Ad_h dg), so d xi = J_r(xi)^-1 Ad_h dg; and
+/// g (h exp(dh))^-1 = exp(xi) exp(-Ad_h dh)   (Sola section IV).
+template <typename Scalar>
+inline BinaryJacobians<Matrix3Of<Scalar>> lminus_jacobians(const SO3<Scalar>& g, const SO3<Scalar>& h) noexcept {
+  const Matrix3Of<Scalar> J = so3_right_jacobian_inverse<Scalar>(lminus(g, h)) * h.adjoint();
+  return {J, Matrix3Of<Scalar>(-J)};
+}
+template <typename Scalar>
+inline BinaryJacobians<Matrix6Of<Scalar>> lminus_jacobians(const SE3<Scalar>& g, const SE3<Scalar>& h) noexcept {
+  const Matrix6Of<Scalar> J = se3_right_jacobian_inverse(lminus(g, h)) * h.adjoint();
+  return {J, Matrix6Of<Scalar>(-J)};
+}
+
+/// between(a, b) = a^-1 b, the motion from a to b.
+template <typename Scalar>
+inline SO3<Scalar> between(const SO3<Scalar>& a, const SO3<Scalar>& b) noexcept {
+  return a.inverse() * b;
+}
+template <typename Scalar>
+inline SE3<Scalar> between(const SE3<Scalar>& a, const SE3<Scalar>& b) noexcept {
+  return a.inverse() * b;
+}
+
+/// between(a, b) = a^-1 b:  J_a = -Ad_{b^-1 a},  J_b = I
+/// ((a exp(da))^-1 b = exp(-da) a^-1 b = a^-1 b exp(-Ad_{b^-1 a} da); Sola section IV, manif's between).
+template <typename Scalar>
+inline BinaryJacobians<Matrix3Of<Scalar>> between_jacobians(const SO3<Scalar>& a, const SO3<Scalar>& b) noexcept {
+  return {Matrix3Of<Scalar>(-(b.inverse() * a).adjoint()), Matrix3Of<Scalar>::Identity()};
+}
+template <typename Scalar>
+inline BinaryJacobians<Matrix6Of<Scalar>> between_jacobians(const SE3<Scalar>& a, const SE3<Scalar>& b) noexcept {
+  return {Matrix6Of<Scalar>(-(b.inverse() * a).adjoint()), Matrix6Of<Scalar>::Identity()};
+}
+
 /// d interpolate(a, b, t) / dt in the right-local convention:
 ///   a exp((t + dt) xi) = a exp(t xi) exp(J_r(t xi) xi dt),  xi = log(a^-1 b) = b rminus a,
 /// and J_r(t xi) xi = xi exactly (ad_xi xi = 0: every power of [t xi] beyond

@@ -29,6 +29,7 @@
 #include <functional>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -295,6 +296,43 @@ void first_order_checks() {
     const auto aj = act_jacobians(X, p);
     EXPECT_LE(LD(max_abs(V3(rplus(X, dx) * p - (X * p + aj.group * dx)))), bound * 4) << at;
     EXPECT_LE(LD(max_abs(V3(X * V3(p + dp) - (X * p + aj.point * dp)))), 64 * eps<S>() * s * 4) << at;
+    // rplus(X, xi) = X exp(xi), perturbing X then xi (xi another sample, up to pi).
+    const Tangent xi = xs[(i + 3) % xs.size()];
+    const LD sx = std::max(s, T::scale(xi));
+    const LD bound_x = 8 * LD(d) * LD(d) * sx + 64 * eps<S>() * sx;
+    const auto rpj = rplus_jacobians(X, xi);
+    EXPECT_LE(LD(max_abs(rminus(rplus(rplus(X, dx), xi), rplus(rplus(X, xi), Tangent(rpj.lhs * dx))))), bound_x)
+        << "rplus_jacobians lhs " << at;
+    EXPECT_LE(LD(max_abs(rminus(rplus(X, Tangent(xi + dx)), rplus(rplus(X, xi), Tangent(rpj.rhs * dx))))), bound_x)
+        << "rplus_jacobians rhs " << at;
+    // lplus(xi, X) = exp(xi) X.
+    const auto lpj = lplus_jacobians(xi, X);
+    EXPECT_LE(LD(max_abs(rminus(lplus(Tangent(xi + dx), X), rplus(lplus(xi, X), Tangent(lpj.lhs * dx))))), bound_x)
+        << "lplus_jacobians lhs " << at;
+    EXPECT_LE(LD(max_abs(rminus(lplus(xi, rplus(X, dx)), rplus(lplus(xi, X), Tangent(lpj.rhs * dx))))), bound_x)
+        << "lplus_jacobians rhs " << at;
+    // between(X, Y) = X^-1 Y.
+    const auto bj = between_jacobians(X, Y);
+    EXPECT_LE(LD(max_abs(rminus(between(rplus(X, dx), Y), rplus(between(X, Y), Tangent(bj.lhs * dx))))), bound)
+        << "between_jacobians lhs " << at;
+    EXPECT_LE(LD(max_abs(rminus(between(X, rplus(Y, dx)), rplus(between(X, Y), Tangent(bj.rhs * dx))))), bound)
+        << "between_jacobians rhs " << at;
+    // rminus(X, Y) = log(Y^-1 X) and lminus(X, Y) = log(X Y^-1): vector-valued,
+    // away from angle pi where log jumps between w and -w.
+    if (chasles_test::rotation_angle<G>(rminus(X, Y)) < chasles_test::kPi - 1e-2L) {
+      const auto rmj = rminus_jacobians(X, Y);
+      EXPECT_LE(LD(max_abs(Tangent(rminus(rplus(X, dx), Y) - (rminus(X, Y) + rmj.lhs * dx)))), bound * 4)
+          << "rminus_jacobians lhs " << at;
+      EXPECT_LE(LD(max_abs(Tangent(rminus(X, rplus(Y, dx)) - (rminus(X, Y) + rmj.rhs * dx)))), bound * 4)
+          << "rminus_jacobians rhs " << at;
+    }
+    if (chasles_test::rotation_angle<G>(lminus(X, Y)) < chasles_test::kPi - 1e-2L) {
+      const auto lmj = lminus_jacobians(X, Y);
+      EXPECT_LE(LD(max_abs(Tangent(lminus(rplus(X, dx), Y) - (lminus(X, Y) + lmj.lhs * dx)))), bound * 4)
+          << "lminus_jacobians lhs " << at;
+      EXPECT_LE(LD(max_abs(Tangent(lminus(X, rplus(Y, dx)) - (lminus(X, Y) + lmj.rhs * dx)))), bound * 4)
+          << "lminus_jacobians rhs " << at;
+    }
     // log: a vector-valued function, away from angle pi where it is discontinuous.
     if (chasles_test::rotation_angle<G>(xs[i]) < chasles_test::kPi - 1e-2L) {
       EXPECT_LE(LD(max_abs(Tangent(rplus(X, dx).log() - (X.log() + log_jacobian(X) * dx)))), bound * 4) << at;
@@ -477,6 +515,116 @@ TEST(JacobiansAutodiff, JacobiansAtExactlyZeroAreFiniteAndExact) {
     EXPECT_TRUE(near<double>(dJ, Eigen::Matrix<double, 6, 6>(-0.5 * adk), 2));
     EXPECT_TRUE(near<double>(dJi, Eigen::Matrix<double, 6, 6>(0.5 * adk), 2));
   }
+}
+
+// ---- the Jacobians of rplus, rminus, lplus, lminus, between by autodiff ------
+//
+// The derivative of the implementation itself, exact up to rounding, at
+// d = 0 of f(X exp(d), Y) rminus f(X, Y) (or f(X exp(d), Y) - f(X, Y) for the
+// vector-valued rminus, lminus), and likewise in the second argument, compared
+// with the closed forms, at identity, 1e-8, near pi and random elements.
+// Tolerance 256 eps (double) relative to max(1, |J|): Ad_g, J_r and their
+// inverses are products of a few 3x3 and 6x6 matrices with entries up to
+// |p| ~ 100, each rounding to a few eps of the largest entry (measured
+// worst: 4 eps SO(3), 64 eps SE(3)); a wrong term errs by order 1.
+
+template <typename G, int N>
+struct AdGroup {
+  using A = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
+  using GA = decltype(std::declval<G>().template cast<A>());
+  using VA = Eigen::Matrix<A, N, 1>;
+  using M = Eigen::Matrix<double, N, N>;
+  static VA seed() {
+    VA d;
+    for (int i = 0; i < N; ++i) d[i] = A(0.0, N, i);
+    return d;
+  }
+  static M jacobian(const VA& y) {
+    M J;
+    for (int i = 0; i < N; ++i) J.row(i) = y[i].derivatives().transpose();
+    return J;
+  }
+};
+
+template <typename G, int N>
+void autodiff_operation_jacobians() {
+  using Ad = AdGroup<G, N>;
+  using A = typename Ad::A;
+  using VA = typename Ad::VA;
+  using M = typename Ad::M;
+  using Tangent = Eigen::Matrix<double, N, 1>;
+  using T = chasles_test::GroupTraits<G>;
+  const auto xs = T::tangents(12);
+  const VA d = Ad::seed();
+  const LD tol = 256 * eps<double>();
+  LD worst = 0;
+  const auto check = [&](const M& ad, const M& closed, const std::string& what) {
+    const LD err = rel_err(closed, MX(ad.template cast<LD>()));
+    worst = std::max(worst, err);
+    EXPECT_LE(err, tol) << what;
+  };
+  for (std::size_t i = 0; i < xs.size(); ++i) {
+    const G X = G::exp(xs[i]), Y = G::exp(xs[(i + 5) % xs.size()]);
+    const Tangent xi = xs[(i + 3) % xs.size()];
+    const auto XA = X.template cast<A>();
+    const auto YA = Y.template cast<A>();
+    const VA xiA = xi.template cast<A>();
+    const std::string at = " at sample " + std::to_string(i);
+    const auto rpj = rplus_jacobians(X, xi);
+    const auto rp0 = rplus(X, xi).template cast<A>();
+    check(Ad::jacobian(rminus(rplus(rplus(XA, d), xiA), rp0)), rpj.lhs, "rplus lhs" + at);
+    check(Ad::jacobian(rminus(rplus(XA, VA(xiA + d)), rp0)), rpj.rhs, "rplus rhs" + at);
+    const auto lpj = lplus_jacobians(xi, X);
+    const auto lp0 = lplus(xi, X).template cast<A>();
+    check(Ad::jacobian(rminus(lplus(VA(xiA + d), XA), lp0)), lpj.lhs, "lplus lhs" + at);
+    check(Ad::jacobian(rminus(lplus(xiA, rplus(XA, d)), lp0)), lpj.rhs, "lplus rhs" + at);
+    const auto bj = between_jacobians(X, Y);
+    const auto b0 = between(X, Y).template cast<A>();
+    check(Ad::jacobian(rminus(between(rplus(XA, d), YA), b0)), bj.lhs, "between lhs" + at);
+    check(Ad::jacobian(rminus(between(XA, rplus(YA, d)), b0)), bj.rhs, "between rhs" + at);
+    // rminus and lminus are differentiable where log is: below the angle pi.
+    if (chasles_test::rotation_angle<G>(rminus(X, Y)) < chasles_test::kPi - 1e-6L) {
+      const auto rmj = rminus_jacobians(X, Y);
+      check(Ad::jacobian(rminus(rplus(XA, d), YA)), rmj.lhs, "rminus lhs" + at);
+      check(Ad::jacobian(rminus(XA, rplus(YA, d))), rmj.rhs, "rminus rhs" + at);
+    }
+    if (chasles_test::rotation_angle<G>(lminus(X, Y)) < chasles_test::kPi - 1e-6L) {
+      const auto lmj = lminus_jacobians(X, Y);
+      check(Ad::jacobian(lminus(rplus(XA, d), YA)), lmj.lhs, "lminus lhs" + at);
+      check(Ad::jacobian(lminus(XA, rplus(YA, d))), lmj.rhs, "lminus rhs" + at);
+    }
+  }
+  report(N == 3 ? "SO3 rplus/rminus/lplus/lminus/between autodiff" : "SE3 rplus/rminus/lplus/lminus/between autodiff",
+         worst, tol);
+}
+
+TEST(JacobiansAutodiff, So3PlusMinusBetweenJacobians) { autodiff_operation_jacobians<SO3d, 3>(); }
+TEST(JacobiansAutodiff, Se3PlusMinusBetweenJacobians) { autodiff_operation_jacobians<SE3d, 6>(); }
+
+TEST(JacobiansAutodiff, PlusMinusJacobiansAtIdentityAndPinned) {
+  // At X = Y = identity and xi = 0 every Jacobian is +-I; and the SO(3) values
+  // at a quarter turn: rplus's J_g = Ad_{exp(-xi)} = R^T, between's J_a = -R_b^T R_a.
+  const SO3d I;
+  const Eigen::Vector3d z = Eigen::Vector3d::Zero();
+  const Eigen::Matrix3d E = Eigen::Matrix3d::Identity();
+  EXPECT_EQ(rplus_jacobians(I, z).lhs, E);
+  EXPECT_EQ(rplus_jacobians(I, z).rhs, E);
+  EXPECT_EQ(lplus_jacobians(z, I).lhs, E);
+  EXPECT_EQ(rminus_jacobians(I, I).lhs, E);
+  EXPECT_EQ(rminus_jacobians(I, I).rhs, Eigen::Matrix3d(-E));
+  EXPECT_EQ(lminus_jacobians(I, I).rhs, Eigen::Matrix3d(-E));
+  EXPECT_EQ(between_jacobians(I, I).lhs, Eigen::Matrix3d(-E));
+  const Eigen::Vector3d q(0, 0, 1.5707963267948966);
+  const Eigen::Matrix3d Rz = SO3d::exp(q).matrix();
+  EXPECT_TRUE(near<double>(rplus_jacobians(I, q).lhs, Eigen::Matrix3d(Rz.transpose()), 4));
+  EXPECT_TRUE(near<double>(between_jacobians(SO3d::exp(q), I).lhs, Eigen::Matrix3d(-Rz), 4));
+  const SE3d gI;
+  const Eigen::Matrix<double, 6, 1> z6 = Eigen::Matrix<double, 6, 1>::Zero();
+  using M6 = Eigen::Matrix<double, 6, 6>;
+  const M6 E6 = M6::Identity();
+  EXPECT_EQ(rplus_jacobians(gI, z6).rhs, E6);
+  EXPECT_EQ(rminus_jacobians(gI, gI).rhs, M6(-E6));
+  EXPECT_EQ(lplus_jacobians(z6, gI).lhs, E6);
 }
 
 }  // namespace

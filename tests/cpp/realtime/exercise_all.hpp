@@ -99,6 +99,14 @@ S exercise_all() noexcept {
   const auto ag = act_jacobians(g, p);
   sum += ar.group.sum() + ar.point.sum() + ag.group.sum() + ag.point.sum();
   sum += interpolate_jacobian_t(R, I, S(0.3)).sum() + interpolate_jacobian_t(g, h, S(0.3)).sum();
+  const auto rpr = rplus_jacobians(R, w), rmr = rminus_jacobians(R, I), lpr = lplus_jacobians(w, R);
+  const auto lmr = lminus_jacobians(R, I), btr = between_jacobians(R, I);
+  sum += rpr.lhs.sum() + rpr.rhs.sum() + rmr.lhs.sum() + rmr.rhs.sum() + lpr.lhs.sum() + lpr.rhs.sum();
+  sum += lmr.lhs.sum() + lmr.rhs.sum() + btr.lhs.sum() + btr.rhs.sum() + between(R, I).matrix().sum();
+  const auto rpg = rplus_jacobians(g, xi), rmg = rminus_jacobians(g, h), lpg = lplus_jacobians(xi, g);
+  const auto lmg = lminus_jacobians(g, h), btg = between_jacobians(g, h);
+  sum += rpg.lhs.sum() + rpg.rhs.sum() + rmg.lhs.sum() + rmg.rhs.sum() + lpg.lhs.sum() + lpg.rhs.sum();
+  sum += lmg.lhs.sum() + lmg.rhs.sum() + btg.lhs.sum() + btg.rhs.sum() + between(g, h).translation().sum();
 
   // Arguments in other types (detail/arguments.hpp): vector expressions, a
   // double vector, a Twist, t and factors as double and int literals.
