@@ -2,8 +2,11 @@
 // methods of SO3 and SE3 (right_jacobian, left_jacobian and their inverses),
 // the module-level rplus, rminus, lplus, lminus for SO3 and SE3, and the
 // module-level Jacobians of the group operations (log_jacobian,
-// inverse_jacobian, compose_jacobians, act_jacobians, interpolate_jacobian_t),
-// overloaded for SO3 and SE3, in the right-local convention.
+// inverse_jacobian, compose_jacobians, act_jacobians, interpolate_jacobian_t,
+// rplus_jacobians, rminus_jacobians, lplus_jacobians, lminus_jacobians,
+// between_jacobians) and between,
+// overloaded for SO3 and SE3, in the right-local convention; and the array
+// functions so3_act_jacobian, se3_act_jacobian (generalized ufuncs).
 #include <chasles/jacobians.hpp>
 
 #include <cstdio>
@@ -12,6 +15,7 @@
 
 #include "bindings.hpp"
 #include "convert.hpp"
+#include "ufunc.hpp"
 
 namespace chasles_py {
 
@@ -348,6 +352,223 @@ Example:
            [ 0.,  0.,  1.,  0.,  0.,  0.]])
 )doc");
 
+  // ---- Jacobians of plus, minus and between (right-local convention) ----
+
+  m.def(
+      "rplus_jacobians",
+      [](Obj<SO3d> g, ArrayLike xi) {
+        const auto J = chasles::rplus_jacobians(*g, to_finite_eigen<3>(xi.obj, "rplus_jacobians(g, xi)"));
+        return Matrices(mat_out<3, 3>(J.lhs), mat_out<3, 3>(J.rhs));
+      },
+      py::arg("g"), py::arg("xi"));
+  m.def(
+      "rplus_jacobians",
+      [](Obj<SE3d> g, ArrayLike xi) {
+        const auto J = chasles::rplus_jacobians(*g, to_finite_eigen<6>(xi.obj, "rplus_jacobians(g, xi)"));
+        return Matrices(mat_out<6, 6>(J.lhs), mat_out<6, 6>(J.rhs));
+      },
+      py::arg("g"), py::arg("xi"),
+      R"doc(The Jacobians (J_g, J_xi) of (g, xi) -> rplus(g, xi) = g exp(xi).
+
+Right-local: rplus(g exp(dg), xi + dxi) = rplus(g, xi) exp(J_g dg + J_xi dxi
++ o), with J_g = Ad_{exp(xi)}^-1 = Ad_{exp(-xi)} and J_xi = J_r(xi) (Sola et
+al. 2018, section IV; manif's rplus Jacobians).
+
+Args:
+    g: SO3 or SE3.
+    xi: tangent vector, shape (3,) for SO3, (6,) for SE3 ((v, w), linear
+        part first), finite.
+
+Returns:
+    tuple[ndarray, ndarray]: (J_g, J_xi), each of shape (3, 3) for SO3,
+    (6, 6) for SE3, float64.
+
+Raises:
+    ValueError: xi has the wrong shape for g, or is not finite.
+
+Example:
+    >>> J_g, J_xi = chasles.rplus_jacobians(chasles.SO3(), [0.0, 0.0, 0.0])
+    >>> bool(np.array_equal(J_g, np.eye(3))), bool(np.array_equal(J_xi, np.eye(3)))
+    (True, True)
+)doc");
+
+  m.def(
+      "rminus_jacobians",
+      [](Obj<SO3d> g, Obj<SO3d> h) {
+        const auto J = chasles::rminus_jacobians(*g, *h);
+        return Matrices(mat_out<3, 3>(J.lhs), mat_out<3, 3>(J.rhs));
+      },
+      py::arg("g"), py::arg("h"));
+  m.def(
+      "rminus_jacobians",
+      [](Obj<SE3d> g, Obj<SE3d> h) {
+        const auto J = chasles::rminus_jacobians(*g, *h);
+        return Matrices(mat_out<6, 6>(J.lhs), mat_out<6, 6>(J.rhs));
+      },
+      py::arg("g"), py::arg("h"),
+      R"doc(The Jacobians (J_g, J_h) of (g, h) -> rminus(g, h) = log(h^-1 g).
+
+Right-local: rminus(g exp(dg), h exp(dh)) = rminus(g, h) + J_g dg + J_h dh
++ o, with xi = rminus(g, h), J_g = J_r(xi)^-1 and J_h = -J_l(xi)^-1 (Sola et
+al. 2018, section IV; manif's rminus Jacobians). They are those of the branch
+log returns: finite up to the angle pi, where log jumps between w and -w.
+
+Args:
+    g: SO3 or SE3.
+    h: of the same group as g.
+
+Returns:
+    tuple[ndarray, ndarray]: (J_g, J_h), each of shape (3, 3) for SO3,
+    (6, 6) for SE3 (twists (v, w), linear part first), float64.
+
+Raises:
+    TypeError: g and h are not of the same group.
+
+Example:
+    >>> J_g, J_h = chasles.rminus_jacobians(chasles.SE3(), chasles.SE3())
+    >>> bool(np.array_equal(J_g, np.eye(6))), bool(np.array_equal(J_h, -np.eye(6)))
+    (True, True)
+)doc");
+
+  m.def(
+      "lplus_jacobians",
+      [](ArrayLike xi, Obj<SO3d> g) {
+        const auto J = chasles::lplus_jacobians(to_finite_eigen<3>(xi.obj, "lplus_jacobians(xi, g)"), *g);
+        return Matrices(mat_out<3, 3>(J.lhs), mat_out<3, 3>(J.rhs));
+      },
+      py::arg("xi"), py::arg("g"));
+  m.def(
+      "lplus_jacobians",
+      [](ArrayLike xi, Obj<SE3d> g) {
+        const auto J = chasles::lplus_jacobians(to_finite_eigen<6>(xi.obj, "lplus_jacobians(xi, g)"), *g);
+        return Matrices(mat_out<6, 6>(J.lhs), mat_out<6, 6>(J.rhs));
+      },
+      py::arg("xi"), py::arg("g"),
+      R"doc(The Jacobians (J_xi, J_g) of (xi, g) -> lplus(xi, g) = exp(xi) g.
+
+Right-local in the result and in g: lplus(xi + dxi, g exp(dg)) =
+lplus(xi, g) exp(J_xi dxi + J_g dg + o), with J_xi = Ad_{g^-1} J_r(xi) and
+J_g = I (Sola et al. 2018, sections III and IV).
+
+Args:
+    xi: tangent vector, shape (3,) for SO3, (6,) for SE3 ((v, w), linear
+        part first), finite.
+    g: SO3 or SE3.
+
+Returns:
+    tuple[ndarray, ndarray]: (J_xi, J_g), each of shape (3, 3) for SO3,
+    (6, 6) for SE3, float64.
+
+Raises:
+    ValueError: xi has the wrong shape for g, or is not finite.
+
+Example:
+    >>> g = chasles.SO3.exp([0.0, 0.0, np.pi / 2])
+    >>> J_xi, J_g = chasles.lplus_jacobians([0.0, 0.0, 0.0], g)
+    >>> bool(np.allclose(J_xi, g.inverse().as_matrix())), bool(np.array_equal(J_g, np.eye(3)))
+    (True, True)
+)doc");
+
+  m.def(
+      "lminus_jacobians",
+      [](Obj<SO3d> g, Obj<SO3d> h) {
+        const auto J = chasles::lminus_jacobians(*g, *h);
+        return Matrices(mat_out<3, 3>(J.lhs), mat_out<3, 3>(J.rhs));
+      },
+      py::arg("g"), py::arg("h"));
+  m.def(
+      "lminus_jacobians",
+      [](Obj<SE3d> g, Obj<SE3d> h) {
+        const auto J = chasles::lminus_jacobians(*g, *h);
+        return Matrices(mat_out<6, 6>(J.lhs), mat_out<6, 6>(J.rhs));
+      },
+      py::arg("g"), py::arg("h"),
+      R"doc(The Jacobians (J_g, J_h) of (g, h) -> lminus(g, h) = log(g h^-1).
+
+Right-local in the arguments: lminus(g exp(dg), h exp(dh)) = lminus(g, h) +
+J_g dg + J_h dh + o, with xi = lminus(g, h), J_g = J_r(xi)^-1 Ad_h and
+J_h = -J_g (Sola et al. 2018, section IV). Finite up to the angle pi, where
+log jumps between w and -w.
+
+Args:
+    g: SO3 or SE3.
+    h: of the same group as g.
+
+Returns:
+    tuple[ndarray, ndarray]: (J_g, J_h), each of shape (3, 3) for SO3,
+    (6, 6) for SE3 (twists (v, w), linear part first), float64.
+
+Raises:
+    TypeError: g and h are not of the same group.
+
+Example:
+    >>> h = chasles.SO3.exp([0.0, 0.0, np.pi / 2])
+    >>> J_g, J_h = chasles.lminus_jacobians(h, h)
+    >>> bool(np.allclose(J_g, h.as_matrix())), bool(np.array_equal(J_h, -J_g))
+    (True, True)
+)doc");
+
+  m.def(
+      "between", [](Obj<SO3d> a, Obj<SO3d> b) { return chasles::between(*a, *b); }, py::arg("a"), py::arg("b"));
+  m.def(
+      "between", [](Obj<SE3d> a, Obj<SE3d> b) { return chasles::between(*a, *b); }, py::arg("a"), py::arg("b"),
+      R"doc(between(a, b) = a^-1 b: b seen from a (manif's a.between(b)).
+
+Args:
+    a: SO3 or SE3.
+    b: of the same group as a.
+
+Returns:
+    SO3 or SE3: a^-1 b.
+
+Raises:
+    TypeError: a and b are not of the same group.
+
+Example:
+    >>> a = chasles.SE3(translation=[1.0, 0.0, 0.0])
+    >>> b = chasles.SE3(translation=[1.0, 2.0, 0.0])
+    >>> chasles.between(a, b).translation
+    array([0., 2., 0.])
+)doc");
+
+  m.def(
+      "between_jacobians",
+      [](Obj<SO3d> a, Obj<SO3d> b) {
+        const auto J = chasles::between_jacobians(*a, *b);
+        return Matrices(mat_out<3, 3>(J.lhs), mat_out<3, 3>(J.rhs));
+      },
+      py::arg("a"), py::arg("b"));
+  m.def(
+      "between_jacobians",
+      [](Obj<SE3d> a, Obj<SE3d> b) {
+        const auto J = chasles::between_jacobians(*a, *b);
+        return Matrices(mat_out<6, 6>(J.lhs), mat_out<6, 6>(J.rhs));
+      },
+      py::arg("a"), py::arg("b"),
+      R"doc(The Jacobians (J_a, J_b) of (a, b) -> between(a, b) = a^-1 b.
+
+Right-local: between(a exp(da), b exp(db)) = between(a, b) exp(J_a da +
+J_b db + o), with J_a = -Ad_{b^-1 a} and J_b = I (Sola et al. 2018,
+section IV; manif's between Jacobians).
+
+Args:
+    a: SO3 or SE3.
+    b: of the same group as a.
+
+Returns:
+    tuple[ndarray, ndarray]: (J_a, J_b), each of shape (3, 3) for SO3,
+    (6, 6) for SE3 (twists (v, w), linear part first), float64.
+
+Raises:
+    TypeError: a and b are not of the same group.
+
+Example:
+    >>> a = chasles.SO3.exp([0.0, 0.0, np.pi / 2])
+    >>> J_a, J_b = chasles.between_jacobians(a, chasles.SO3())
+    >>> bool(np.allclose(J_a, -a.as_matrix())), bool(np.array_equal(J_b, np.eye(3)))
+    (True, True)
+)doc");
+
   m.def(
       "interpolate_jacobian_t",
       [](Obj<SO3d> a, Obj<SO3d> b, RealLike t) {
@@ -386,6 +607,70 @@ Example:
     >>> chasles.interpolate_jacobian_t(a, b, 0.5)
     array([2., 0., 0., 0., 0., 0.])
 )doc");
+
+  // ---- the Jacobian of the point action for many points (array functions) ----
+
+  using ufunc::Core;
+  using ufunc::def_ufunc;
+  def_ufunc<Core<3, 3>(Core<3, 3>, Core<3>)>(m, "so3_act_jacobian", "R, points",
+                                              R"(Jacobians d(R p)/dR = -R [p] of rotated points, right-local in R.
+
+(R exp(dw)) p = R p - R [p] dw + o(dw) (Sola et al. 2018, appendix B), as
+act_jacobians(R, p)[0] for one rotation. The Jacobian with respect to the
+point, d(R p)/dp, is R itself: no array is made for it.
+
+Broadcasts: one rotation of shape (3, 3) with points of shape (N, 3) gives
+(N, 3, 3), N rotations with N points, ...
+
+Args:
+    R: array_like of shape (..., 3, 3): rotation matrices.
+    points: array_like of shape (..., 3): points or vectors.
+
+Returns:
+    numpy.ndarray of shape (..., 3, 3): the Jacobians (columns: the rotation
+    vector dw).
+
+A numpy generalized ufunc: numpy's rules for broadcasting, dtypes
+(float32 and float64 kernels), out= and axes= apply (``help(chasles)``).
+Matrices are taken as given, like the C++ unchecked constructors, and a NaN
+gives NaN in its own element only.)",
+                                              [](const auto& R, const auto& p) {
+                                                using T = typename std::decay_t<decltype(R)>::Scalar;
+                                                return chasles::act_jacobians<T>(
+                                                           chasles::SO3<T>::from_matrix_unchecked(R),
+                                                           chasles::Vector3Of<T>(p))
+                                                    .group;
+                                              });
+  def_ufunc<Core<3, 6>(Core<4, 4>, Core<3>)>(m, "se3_act_jacobian", "g, points",
+                                              R"(Jacobians d(g p)/dg = [R, -R [p]] of transformed points, right-local in g.
+
+(g exp(dxi)) p = g p + [R, -R [p]] dxi + o(dxi), dxi = (v, w) linear part
+first (Sola et al. 2018, appendix D), as act_jacobians(g, p)[0] for one
+motion. The Jacobian with respect to the point, d(g p)/dp, is the rotation
+block R = g[..., :3, :3]: no array is made for it.
+
+Broadcasts: one pose of shape (4, 4) with points of shape (N, 3) gives
+(N, 3, 6), N poses with N points, ...
+
+Args:
+    g: array_like of shape (..., 4, 4): homogeneous matrices.
+    points: array_like of shape (..., 3): points.
+
+Returns:
+    numpy.ndarray of shape (..., 3, 6): the Jacobians (columns: the twist
+    (v, w)).
+
+A numpy generalized ufunc: numpy's rules for broadcasting, dtypes
+(float32 and float64 kernels), out= and axes= apply (``help(chasles)``).
+Matrices are taken as given, like the C++ unchecked constructors, and a NaN
+gives NaN in its own element only.)",
+                                              [](const auto& g, const auto& p) {
+                                                using T = typename std::decay_t<decltype(g)>::Scalar;
+                                                return chasles::act_jacobians<T>(
+                                                           chasles::SE3<T>::from_matrix_unchecked(g),
+                                                           chasles::Vector3Of<T>(p))
+                                                    .group;
+                                              });
 }
 
 }  // namespace chasles_py

@@ -532,6 +532,7 @@ Returns:
       },
       py::arg_v("dtype", py::none(), "None"), py::arg_v("copy", py::none(), "None"),
       "The homogeneous matrix, shape (4, 4), for np.asarray (numpy's dtype and copy keywords).");
+  def_array_dtype(cls);  // float64, for numpy's and scipy's dtype discovery (convert.hpp)
   cls.def("__copy__", [](Obj<SE3d> g) { return *g; });
   cls.def("__deepcopy__", [](Obj<SE3d> g, const py::object&) { return *g; }, py::arg("memo"));
   cls.def(py::pickle(

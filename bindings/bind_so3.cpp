@@ -483,6 +483,7 @@ Returns:
       },
       py::arg_v("dtype", py::none(), "None"), py::arg_v("copy", py::none(), "None"),
       "The rotation matrix, shape (3, 3), for np.asarray (numpy's dtype and copy keywords).");
+  def_array_dtype(cls);  // float64, for numpy's and scipy's dtype discovery (convert.hpp)
   cls.def("__copy__", [](Obj<SO3d> R) { return *R; });
   cls.def("__deepcopy__", [](Obj<SO3d> R, const py::object&) { return *R; }, py::arg("memo"));
   cls.def(py::pickle([](Obj<SO3d> R) { return float_tuple(R->matrix()); },

@@ -177,6 +177,7 @@ Returns:
       },
       py::arg_v("dtype", py::none(), "None"), py::arg_v("copy", py::none(), "None"),
       "The 6-vector, shape (6,), for np.asarray (numpy's dtype and copy keywords).");
+  def_array_dtype(cls);  // float64, for numpy's and scipy's dtype discovery (convert.hpp)
   cls.def("__copy__", [](Obj<T> x) { return *x; });
   cls.def("__deepcopy__", [](Obj<T> x, const py::object&) { return *x; }, py::arg("memo"));
   cls.def(py::pickle([](Obj<T> x) { return float_tuple(x->vector()); },

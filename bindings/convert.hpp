@@ -673,6 +673,21 @@ inline py::array array_protocol(py::array_t<double> value, DTypeLike dtype, Copy
   return value.attr("astype")(dtype.obj);
 }
 
+/// The class attribute `dtype` = float64 that goes with __array__: the dtype
+/// of np.asarray(x). numpy's dtype discovery (np.dtype(x), np.result_type(x,
+/// ...)) reads an object's `dtype` attribute. Without it an object that is
+/// neither an ndarray nor iterable is no array to code that promotes dtypes
+/// before it converts: scipy's Rotation.from_matrix(R) and
+/// RigidTransform.from_matrix(g) (scipy._lib._array_api.xp_result_type) pass
+/// R itself to np.result_type, which cannot read it as a dtype, and then to
+/// np.isdtype (TypeError "dtype argument must be a NumPy dtype, but it is a
+/// <class 'chasles._core.SO3'>"); with it they call np.asarray(R,
+/// dtype=float64), which __array__ answers.
+template <typename Class>
+void def_array_dtype(Class& cls) {
+  cls.attr("dtype") = py::dtype::of<double>();
+}
+
 /// __reduce_ex__ and __reduce__ returning (copyreg.__newobj__, (cls,), state)
 /// for every pickle protocol. The default reduction of protocols 0 and 1
 /// calls the pybind11 base type with the object, which aborts the process

@@ -519,6 +519,44 @@ class Anything(Arg):
         return None  # no model: any outcome but a crash or an unlisted exception
 
 
+@dataclass
+class ScipyElement(Arg):
+    """One scipy.spatial.transform object of class `kind` ("Rotation" or
+    "RigidTransform"): a single one is taken as it is; a stack is a
+    ValueError naming the array functions; anything else a TypeError naming
+    the expected class. (scipy is imported here only when judged.)"""
+
+    kind: str = "Rotation"
+
+    def _cls(self):
+        from scipy.spatial import transform
+
+        return getattr(transform, self.kind)
+
+    def good(self):
+        from scipy.spatial.transform import Rotation
+
+        r = Rotation.from_rotvec([0.1, 0.2, 0.3])
+        return r if self.kind == "Rotation" else self._cls().from_components([1.0, 2.0, 3.0], r)
+
+    def variants(self):
+        """Values to try: the good one, stacks (of one too), the other
+        scipy class, its matrix as an array."""
+        from scipy.spatial.transform import RigidTransform, Rotation
+
+        r = Rotation.from_rotvec([[0.1, 0.2, 0.3], [0.0, 0.0, 3.0], [np.pi, 0.0, 0.0]])
+        tf = RigidTransform.from_components(np.ones((3, 3)), r)
+        good = self.good()
+        return [good, r, r[:1], r[2], tf, tf[:1], tf[1], good.as_matrix(), [good]]
+
+    def judge(self, value):
+        if isinstance(value, self._cls()):
+            if value.single:
+                return Accepted(value)
+            return Refused(ValueError, (self.label, f"single {self.kind}", "stack", "as_matrix()"))
+        return Refused(TypeError, (self.label, f"scipy.spatial.transform.{self.kind}"))
+
+
 # ---- valid values ---------------------------------------------------------------------
 
 R0 = chasles.SO3.exp([0.1, 0.2, 0.3])
@@ -949,6 +987,22 @@ def _build_spec():
     spec["act_jacobians"] = _group_function(
         "act_jacobians", lambda G, n: [E("g", G), Array("act_jacobians(g, p)", (3,))]
     )
+    spec["rplus_jacobians"] = _group_function(
+        "rplus_jacobians", lambda G, n: [E("g", G), Array("rplus_jacobians(g, xi)", (n,))]
+    )
+    spec["lplus_jacobians"] = _group_function(
+        "lplus_jacobians", lambda G, n: [Array("lplus_jacobians(xi, g)", (n,)), E("g", G)]
+    )
+    for f in ("rminus_jacobians", "lminus_jacobians"):
+        spec[f] = _group_function(f, lambda G, n: [E("g", G), E("h", G)])
+    for f in ("between", "between_jacobians"):
+        spec[f] = _group_function(f, lambda G, n: [E("a", G), E("b", G)])
+    spec["SO3.from_scipy"] = _static(SO3, "from_scipy", ScipyElement("SO3.from_scipy(r)", "Rotation"))
+    spec["SE3.from_scipy"] = _static(
+        SE3, "from_scipy", ScipyElement("SE3.from_scipy(tf)", "RigidTransform")
+    )
+    spec["SO3.to_scipy"] = _method(SO3, "to_scipy")
+    spec["SE3.to_scipy"] = _method(SE3, "to_scipy")
     spec["interpolate"] = _group_function(
         "interpolate", lambda G, n: [E("a", G), E("b", G), Real("interpolate(t)")]
     )
@@ -967,6 +1021,7 @@ def _build_spec():
         "so3_compose": [("a",) + R3, ("b",) + R3],
         "so3_inverse": [("R",) + R3],
         "so3_act": [("R",) + R3, ("points",) + v3],
+        "so3_act_jacobian": [("R",) + R3, ("points",) + v3],
         "so3_hat": [("w",) + v3],
         "so3_vee": [("matrix", (3, 3), None)],
         "so3_interpolate": [("a",) + R3, ("b",) + R3, ("t", (), None)],
@@ -975,6 +1030,7 @@ def _build_spec():
         "se3_compose": [("a",) + G4, ("b",) + G4],
         "se3_inverse": [("g",) + G4],
         "se3_act": [("g",) + G4, ("points",) + v3],
+        "se3_act_jacobian": [("g",) + G4, ("points",) + v3],
         "se3_adjoint": [("g",) + G4],
         "se3_act_twist": [("g",) + G4, ("xi",) + six],
         "se3_act_wrench": [("g",) + G4, ("F",) + six],

@@ -655,6 +655,8 @@ def values_for(arg):
             ),
             others,
         )
+    if isinstance(arg, A.ScipyElement):
+        return st.one_of(st.sampled_from(arg.variants()), others)
     if isinstance(arg, A.Instance):
         return others
     base = arg.good()

@@ -25,7 +25,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 from scipy.linalg import expm, logm
 from scipy.spatial.transform import Rotation
-from strategies import PI, elements, points, rotation_vectors, twist_vectors
+from strategies import PI, elements, points, rotation_vectors, tangents, twist_vectors
 
 H = 1e-5
 FD_TOL = 1e-7
@@ -401,3 +401,197 @@ def test_operation_jacobians_validate_their_arguments():
 def test_operation_jacobians_are_documented_and_examples_run(name):
     test_module_functions_are_documented_and_examples_run(name)
     assert "right-local" in getattr(chasles, name).__doc__.lower()
+
+
+# ---- Jacobians of rplus, rminus, lplus, lminus, between (both arguments) ----
+#
+# Central differences as above, right-local in every group argument, plain in
+# a tangent argument; rminus and lminus follow the branch log returned (near
+# and at pi). Then manif's first-order check with a random small step w:
+# f(X rplus w) ~ f(X) rplus (J w), error O(|w|^2).
+
+
+def fd_tangent_map(f, xi):
+    """Central differences of the group-valued xi -> f(xi) in the plain tangent xi."""
+    f0 = f(xi)
+    cols = []
+    for k in range(len(xi)):
+        e = H * unit(len(xi), k)
+        cols.append((chasles.rminus(f(xi + e), f0) - chasles.rminus(f(xi - e), f0)) / (2 * H))
+    return np.column_stack(cols)
+
+
+def check_plus_minus_between_jacobians(g, h, xi):
+    J_g, J_xi = chasles.rplus_jacobians(g, xi)
+    assert_jacobian_close(J_g, fd_group_map(lambda x: chasles.rplus(x, xi), g))
+    assert_jacobian_close(J_xi, fd_tangent_map(lambda t: chasles.rplus(g, t), xi))
+    J_xi, J_g = chasles.lplus_jacobians(xi, g)
+    assert_jacobian_close(J_xi, fd_tangent_map(lambda t: chasles.lplus(t, g), xi))
+    assert_jacobian_close(J_g, fd_group_map(lambda x: chasles.lplus(xi, x), g))
+    J_a, J_b = chasles.between_jacobians(g, h)
+    assert_jacobian_close(J_a, fd_group_map(lambda x: chasles.between(x, h), g))
+    assert_jacobian_close(J_b, fd_group_map(lambda x: chasles.between(g, x), h))
+    ref = chasles.rminus(g, h)
+    J_g, J_h = chasles.rminus_jacobians(g, h)
+    assert_jacobian_close(J_g, fd_vector_map(lambda x: log_branch_near(h.inverse() @ x, ref), g))
+    assert_jacobian_close(J_h, fd_vector_map(lambda x: log_branch_near(x.inverse() @ g, ref), h))
+    ref = chasles.lminus(g, h)
+    J_g, J_h = chasles.lminus_jacobians(g, h)
+    assert_jacobian_close(J_g, fd_vector_map(lambda x: log_branch_near(x @ h.inverse(), ref), g))
+    assert_jacobian_close(J_h, fd_vector_map(lambda x: log_branch_near(g @ x.inverse(), ref), h))
+
+
+@pytest.mark.parametrize("g", list(named_elements()))
+def test_plus_minus_between_jacobians_at_named_points(g):
+    G = type(g)
+    n = tangent_dim(g)
+    others = [G(), G.exp(np.linspace(0.2, 0.7, n)), g @ G.exp(1e-9 * np.ones(n))]
+    for h in others:
+        # xi: 0, tiny, generic and near pi (the named rotation vectors of g's own log).
+        for xi in (np.zeros(n), 1e-9 * np.ones(n), np.linspace(-0.7, 0.4, n), g.log()):
+            check_plus_minus_between_jacobians(g, h, xi)
+            check_plus_minus_between_jacobians(h, g, xi)
+
+
+@pytest.mark.parametrize("group", [SO3, SE3], ids=["SO3", "SE3"])
+@given(data=st.data())
+def test_plus_minus_between_jacobians_against_finite_differences(group, data):
+    g, h = data.draw(elements(group)), data.draw(elements(group))
+    check_plus_minus_between_jacobians(g, h, data.draw(tangents(group)))
+
+
+@pytest.mark.parametrize("group", [SO3, SE3], ids=["SO3", "SE3"])
+def test_plus_minus_between_jacobians_first_order(group):
+    # manif's check: f(X rplus w) rminus (f(X) rplus J w) = O(|w|^2), here
+    # with |w| = 1e-4 below 2e-7 (|f''| <~ 10 for these |x| <~ 3, 8 |w|^2 s);
+    # a wrong Jacobian errs by about |w| = 1e-4.
+    rng = np.random.default_rng(20261124)
+    n = 3 if group is SO3 else 6
+    d = 1e-4
+    for _ in range(50):
+        g = group.exp(rng.uniform(-1.0, 1.0, n) * (PI / np.sqrt(3)))
+        h = group.exp(rng.uniform(-1.0, 1.0, n) * (PI / np.sqrt(3)))
+        xi = rng.uniform(-1.0, 1.0, n)
+        w = rng.normal(size=n)
+        w *= d / np.linalg.norm(w)
+        s = max(1.0, np.max(np.abs(np.asarray(g)[:3, 3:])) if n == 6 else 1.0)
+        bound = 8 * d * d * s * 10
+
+        def group_err(got, base, J):
+            return np.max(np.abs(chasles.rminus(got, chasles.rplus(base, J @ w))))
+
+        J_g, J_xi = chasles.rplus_jacobians(g, xi)
+        assert group_err(chasles.rplus(chasles.rplus(g, w), xi), chasles.rplus(g, xi), J_g) <= bound
+        assert group_err(chasles.rplus(g, xi + w), chasles.rplus(g, xi), J_xi) <= bound
+        J_xi, J_g = chasles.lplus_jacobians(xi, g)
+        assert group_err(chasles.lplus(xi + w, g), chasles.lplus(xi, g), J_xi) <= bound
+        assert group_err(chasles.lplus(xi, chasles.rplus(g, w)), chasles.lplus(xi, g), J_g) <= bound
+        J_a, J_b = chasles.between_jacobians(g, h)
+        assert group_err(chasles.between(chasles.rplus(g, w), h), chasles.between(g, h), J_a) <= bound
+        assert group_err(chasles.between(g, chasles.rplus(h, w)), chasles.between(g, h), J_b) <= bound
+        # the minus maps are vector-valued: f(X rplus w) ~ f(X) + J w, away
+        # from pi, where log's second derivative grows (the finite-difference
+        # tests above reach pi)
+        for minus, jac in ((chasles.rminus, chasles.rminus_jacobians), (chasles.lminus, chasles.lminus_jacobians)):
+            x0 = minus(g, h)
+            if np.linalg.norm(x0[-3:]) > PI - 0.3:
+                continue
+            J_g, J_h = jac(g, h)
+            assert np.max(np.abs(minus(chasles.rplus(g, w), h) - (x0 + J_g @ w))) <= bound
+            assert np.max(np.abs(minus(g, chasles.rplus(h, w)) - (x0 + J_h @ w))) <= bound
+
+
+def test_plus_minus_between_jacobians_values():
+    a = SE3(SO3.exp([0.0, 0.0, PI / 2]), [1.0, 2.0, 3.0])
+    b = SE3(SO3.exp([0.4, 0.0, 0.0]), [0.0, -1.0, 0.5])
+    J_a, J_b = chasles.between_jacobians(a, b)
+    np.testing.assert_allclose(J_a, -(b.inverse() @ a).adjoint(), rtol=0, atol=1e-15)
+    np.testing.assert_array_equal(J_b, np.eye(6))
+    assert chasles.between(a, b).is_approx(a.inverse() @ b, 1e-15)
+    xi = np.array([0.3, -0.2, 0.1, 0.5, 0.1, -0.4])
+    J_g, J_xi = chasles.rplus_jacobians(a, xi)
+    np.testing.assert_allclose(J_g, SE3.exp(-xi).adjoint(), rtol=0, atol=1e-15)
+    np.testing.assert_array_equal(J_xi, SE3.right_jacobian(xi))
+    J_xi, J_g = chasles.lplus_jacobians(xi, a)
+    np.testing.assert_allclose(J_xi, a.inverse().adjoint() @ SE3.right_jacobian(xi), rtol=0, atol=1e-14)
+    np.testing.assert_array_equal(J_g, np.eye(6))
+    J_g, J_h = chasles.rminus_jacobians(a, b)
+    x = chasles.rminus(a, b)
+    np.testing.assert_array_equal(J_g, SE3.right_jacobian_inverse(x))
+    np.testing.assert_array_equal(J_h, -SE3.left_jacobian_inverse(x))
+    J_g, J_h = chasles.lminus_jacobians(a, b)
+    np.testing.assert_allclose(
+        J_g, SE3.right_jacobian_inverse(chasles.lminus(a, b)) @ b.adjoint(), rtol=0, atol=1e-14
+    )
+    np.testing.assert_array_equal(J_h, -J_g)
+
+
+def test_plus_minus_between_jacobians_validate_their_arguments():
+    with pytest.raises(ValueError, match=r"rplus_jacobians\(g, xi\): expected shape \(6,\), got \(3,\)"):
+        chasles.rplus_jacobians(SE3(), np.zeros(3))
+    with pytest.raises(ValueError, match=r"lplus_jacobians\(xi, g\): expected finite numbers"):
+        chasles.lplus_jacobians([np.inf, 0.0, 0.0], SO3())
+    for f in (chasles.rminus_jacobians, chasles.lminus_jacobians, chasles.between, chasles.between_jacobians):
+        with pytest.raises(TypeError):
+            f(SO3(), SE3())
+        with pytest.raises(TypeError):
+            f(np.eye(3), SO3())
+
+
+@pytest.mark.parametrize(
+    "name", ["rplus_jacobians", "rminus_jacobians", "lplus_jacobians", "lminus_jacobians", "between_jacobians"]
+)
+def test_plus_minus_between_jacobians_are_documented_and_examples_run(name):
+    test_module_functions_are_documented_and_examples_run(name)
+    assert "right-local" in getattr(chasles, name).__doc__.lower()
+
+
+def test_between_is_documented_and_its_example_runs():
+    test_module_functions_are_documented_and_examples_run("between")
+
+
+# ---- the point-action Jacobian for many points (array functions) ----
+
+
+@pytest.mark.parametrize("group", [SO3, SE3], ids=["SO3", "SE3"])
+def test_act_jacobian_array_functions_match_act_jacobians(group):
+    rng = np.random.default_rng(7)
+    n = 3 if group is SO3 else 6
+    f = chasles.so3_act_jacobian if group is SO3 else chasles.se3_act_jacobian
+    gs = [group.exp(rng.uniform(-1.0, 1.0, n) * 2.0) for _ in range(5)] + [
+        group(),
+        group.exp(np.r_[np.zeros(n - 3), PI, 0.0, 0.0]),
+    ]
+    pts = rng.normal(size=(9, 3)) * 5.0
+    for g in gs:
+        M = np.asarray(g)
+        J = f(M, pts)  # one element, many points
+        assert J.shape == (9, 3, n) and J.dtype == np.float64
+        for p, Jp in zip(pts, J):
+            np.testing.assert_array_equal(Jp, chasles.act_jacobians(g, p)[0])
+            # and against central differences of the action
+            assert_jacobian_close(Jp, fd_vector_map(lambda x: x @ p, g))
+    # broadcasting: N elements with N points, and every pair
+    Ms = np.stack([np.asarray(g) for g in gs])
+    J = f(Ms, pts[: len(gs)])
+    assert J.shape == (len(gs), 3, n)
+    for k, g in enumerate(gs):
+        np.testing.assert_array_equal(J[k], chasles.act_jacobians(g, pts[k])[0])
+    assert f(Ms[:, None], pts).shape == (len(gs), 9, 3, n)
+    # float32 in, float32 out, the float32 kernel within a few float32 eps
+    J32 = f(Ms.astype(np.float32), pts[: len(gs)].astype(np.float32))
+    assert J32.dtype == np.float32
+    np.testing.assert_allclose(J32, J, rtol=0, atol=64 * np.finfo(np.float32).eps * 5.0)
+    # the Jacobian in the point is the rotation block
+    np.testing.assert_array_equal(chasles.act_jacobians(gs[0], pts[0])[1], Ms[0][:3, :3])
+
+
+def test_act_jacobian_array_functions_are_documented():
+    for name in ("so3_act_jacobian", "se3_act_jacobian"):
+        f = getattr(chasles, name)
+        assert isinstance(f, np.ufunc) and name in chasles.__all__
+        doc = " ".join(f.__doc__.split())
+        assert "Args:" in doc and "right-local" in doc
+        assert "d(R p)/dp, is R itself" in doc or "d(g p)/dp, is the rotation block R" in doc
+    assert chasles.so3_act_jacobian.signature == "(3,3),(3)->(3,3)"
+    assert chasles.se3_act_jacobian.signature == "(4,4),(3)->(3,6)"

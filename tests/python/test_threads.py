@@ -30,7 +30,7 @@ ARRAY_FUNCTIONS = A.ARRAY_FUNCTIONS
 def test_the_array_functions_are_all_here():
     prefixes = ("so3_", "se3_")
     public = sorted(n for n in chasles.__all__ if n.startswith(prefixes))
-    assert ARRAY_FUNCTIONS == public and len(public) == 21
+    assert ARRAY_FUNCTIONS == public and len(public) == 23
 
 
 def operand(arg: A.Operand, shape, rng, dtype):
