@@ -129,6 +129,18 @@ def np_hat6(xi: np.ndarray) -> np.ndarray:
     return np.array([[0, -w[2], w[1], v[0]], [w[2], 0, -w[0], v[1]], [-w[1], w[0], 0, v[2]], [0, 0, 0, 0]])
 
 
+def np_act_jacobian(g: np.ndarray, P: np.ndarray) -> np.ndarray:
+    """d(g p)/dg = [R, -R [p]] for many points, in numpy (the peer of se3_act_jacobian)."""
+    R = g[:3, :3]
+    H = np.zeros((len(P), 3, 3))
+    H[:, 0, 1], H[:, 0, 2], H[:, 1, 2] = -P[:, 2], P[:, 1], -P[:, 0]
+    H[:, 1, 0], H[:, 2, 0], H[:, 2, 1] = P[:, 2], -P[:, 1], P[:, 0]
+    J = np.empty((len(P), 3, 6))
+    J[:, :, :3] = R
+    J[:, :, 3:] = -(R @ H)
+    return J
+
+
 def np_adjoint(g: np.ndarray) -> np.ndarray:
     """Ad_g = [[R, [p] R], [0, R]] for twists (v, w)."""
     R, p = g[:3, :3], g[:3, 3]
@@ -352,6 +364,8 @@ def main() -> int:
                 "scipy": (lambda: st1.apply(P)) if RigidTransform else None,
                 "numpy": lambda: P @ gm[:3, :3].T + gm[:3, 3],
                 "pytransform3d": None}),
+            "SE3 act Jacobian (1 pose, N points)": (lambda: chasles.se3_act_jacobian(gm, P), {
+                "scipy": None, "numpy": lambda: np_act_jacobian(gm, P), "pytransform3d": None}),
         }
         names = ["scipy", "numpy", "pytransform3d"]
         print(f"### Python array functions, N = {n:.0e}, per element (ns, median of {rep})\n")
