@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['Chain', 'SE3', 'SO3', 'Screw', 'Twist', 'Wrench', 'act_jacobians', 'compose_jacobians', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'log_jacobian', 'lplus', 'rminus', 'rplus', 'se3_act', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_vee', 'so3_act', 'so3_compose', 'so3_exp', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee']
+__all__: list[str] = ['Chain', 'SE3', 'SO3', 'Screw', 'Twist', 'Wrench', 'act_jacobians', 'compose_jacobians', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'log_jacobian', 'lplus', 'rminus', 'rplus', 'se3_act', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_distance', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_vee', 'so3_act', 'so3_angle', 'so3_compose', 'so3_distance', 'so3_exp', 'so3_from_uniforms', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee']
 class SO3:
     """
     A rotation of R^3: an element of SO(3), stored as its 3x3 matrix (float64).
@@ -260,6 +260,25 @@ class SO3:
             TypeError: w is not real.
         """
     @staticmethod
+    def random(rng: typing.Any = None) -> SO3:
+        """
+        A uniform random rotation (the Haar measure), as scipy's Rotation.random().
+        
+        Shoemake's method over three uniforms drawn from ``rng``: one element of
+        ``chasles.so3_random``.
+        
+        Args:
+            rng: None (a fresh ``numpy.random.default_rng()``), an int seed or a
+                numpy Generator.
+        
+        Returns:
+            SO3: the rotation.
+        
+        Example:
+            >>> SO3.random(rng=7).is_approx(SO3.random(rng=7), 0.0)
+            True
+        """
+    @staticmethod
     def right_jacobian(w: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
         The right Jacobian J_r of SO(3) at the rotation vector w, shape (3, 3).
@@ -447,6 +466,21 @@ class SO3:
         
         Returns:
             ndarray: shape (3, 3).
+        """
+    def angle(self) -> float:
+        """
+        The rotation angle theta = |log()| in [0, pi], radians.
+        
+        From the halves of the quaternion, theta = 2 atan2(|q_v|, |q_w|), accurate
+        to a few ulps near 0 and near pi (acos of the trace loses half the digits
+        there). scipy: ``Rotation.magnitude()``.
+        
+        Returns:
+            float: the angle.
+        
+        Example:
+            >>> round(SO3.exp([0.0, 0.0, 0.5]).angle(), 12)
+            0.5
         """
     def as_matrix(self) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -755,6 +789,28 @@ class SE3:
         Raises:
             ValueError: xi is not of shape (6,), or not finite.
             TypeError: xi is not real.
+        """
+    @staticmethod
+    def random(rng: typing.Any = None, *, low: typing.Any = -1.0, high: typing.Any = 1.0) -> SE3:
+        """
+        A random rigid motion: a uniform rotation and a translation uniform in a box.
+        
+        One element of ``chasles.se3_random``: the rotation as SO3.random, then the
+        translation uniform in [low, high] componentwise.
+        
+        Args:
+            rng: None (a fresh ``numpy.random.default_rng()``), an int seed or a
+                numpy Generator.
+            low: float or array_like of shape (3,): the box's lower corner.
+            high: float or array_like of shape (3,): the box's upper corner.
+        
+        Returns:
+            SE3: the pose.
+        
+        Example:
+            >>> g = SE3.random(rng=1, low=0.0, high=0.5)
+            >>> bool(np.all((0.0 <= g.translation) & (g.translation <= 0.5)))
+            True
         """
     @staticmethod
     def right_jacobian(xi: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
@@ -2198,6 +2254,7 @@ se3_act_twist: numpy.ufunc
 se3_act_wrench: numpy.ufunc
 se3_adjoint: numpy.ufunc
 se3_compose: numpy.ufunc
+se3_distance: numpy.ufunc
 se3_exp: numpy.ufunc
 se3_hat: numpy.ufunc
 se3_interpolate: numpy.ufunc
@@ -2205,8 +2262,11 @@ se3_inverse: numpy.ufunc
 se3_log: numpy.ufunc
 se3_vee: numpy.ufunc
 so3_act: numpy.ufunc
+so3_angle: numpy.ufunc
 so3_compose: numpy.ufunc
+so3_distance: numpy.ufunc
 so3_exp: numpy.ufunc
+so3_from_uniforms: numpy.ufunc
 so3_hat: numpy.ufunc
 so3_interpolate: numpy.ufunc
 so3_inverse: numpy.ufunc
