@@ -5,9 +5,11 @@
 // numpy's Generator is the one source of randomness. No mathematics here:
 // each kernel calls the C++ API on one element.
 #include <string>
+#include <vector>
 #include <type_traits>
 
 #include <chasles/distance.hpp>
+#include <chasles/mean.hpp>
 #include <chasles/random.hpp>
 #include <chasles/se3.hpp>
 #include <chasles/so3.hpp>
@@ -169,11 +171,53 @@ Example:
 )doc");
 }
 
+/// The mean of N elements stored as (N, D, D) row-major float64 and N
+/// weights, already checked by the Python caller (python/chasles/_mean.py):
+/// (matrix, iterations, converged). A reduction over the batch axis, so not
+/// a gufunc: the elements are copied into a vector, then the C++ mean runs
+/// without the GIL.
+template <typename Group, int D>
+py::tuple mean_of(const py::array_t<double, py::array::c_style | py::array::forcecast>& elements,
+                  const py::array_t<double, py::array::c_style | py::array::forcecast>& weights, bool geodesic,
+                  int max_iterations) {
+  const py::ssize_t n = elements.shape(0);
+  std::vector<Group> X;
+  X.reserve(static_cast<std::size_t>(n));
+  const double* d = elements.data();
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const Eigen::Map<const Eigen::Matrix<double, D, D, Eigen::RowMajor>> M(d + i * D * D);
+    X.push_back(Group::from_matrix_unchecked(Eigen::Matrix<double, D, D>(M)));
+  }
+  const double* w = weights.data();
+  chasles::MeanResult<Group> r{Group(), 0, true};
+  {
+    py::gil_scoped_release release;
+    if (geodesic) {
+      r = chasles::geodesic_mean(X.begin(), X.end(), w, max_iterations);
+    } else {
+      r.mean = chasles::chordal_mean(X.begin(), X.end(), w);
+    }
+  }
+  return py::make_tuple(mat_out<D, D>(Eigen::Matrix<double, D, D>(r.mean.matrix())), r.iterations, r.converged);
+}
+
+void bind_means(py::module_& m) {
+  m.def("_so3_mean", &mean_of<SO3d, 3>, py::arg("matrices"), py::arg("weights"), py::arg("geodesic"),
+        py::arg("max_iterations"),
+        "The C++ mean behind chasles.so3_mean, on checked (N, 3, 3) float64 rotations and (N,) weights: "
+        "(mean, iterations, converged).");
+  m.def("_se3_mean", &mean_of<SE3d, 4>, py::arg("matrices"), py::arg("weights"), py::arg("geodesic"),
+        py::arg("max_iterations"),
+        "The C++ mean behind chasles.se3_mean, on checked (N, 4, 4) float64 poses and (N,) weights: "
+        "(mean, iterations, converged).");
+}
+
 }  // namespace
 
 void bind_statistics(py::module_& m) {
   bind_distances(m);
   bind_sampling(m);
+  bind_means(m);
 }
 
 }  // namespace chasles_py

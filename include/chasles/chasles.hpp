@@ -13,6 +13,7 @@
 #include "chasles/io.hpp"
 #include "chasles/jacobians.hpp"
 #include "chasles/kinematics.hpp"
+#include "chasles/mean.hpp"
 #include "chasles/random.hpp"
 #include "chasles/screw.hpp"
 #include "chasles/se3.hpp"

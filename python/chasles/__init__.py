@@ -104,6 +104,7 @@ from chasles._core import (
     so3_vee,
 )
 from chasles._arrays import so3_as_quat, so3_from_quat
+from chasles._mean import se3_mean, so3_mean
 from chasles._random import se3_gaussian, se3_random, so3_gaussian, so3_random
 
 __all__ = [
@@ -136,6 +137,7 @@ __all__ = [
     "se3_interpolate",
     "se3_inverse",
     "se3_log",
+    "se3_mean",
     "se3_random",
     "se3_vee",
     "so3_act",
@@ -151,6 +153,7 @@ __all__ = [
     "so3_interpolate",
     "so3_inverse",
     "so3_log",
+    "so3_mean",
     "so3_random",
     "so3_vee",
 ]

@@ -1986,6 +1986,14 @@ class Chain:
         """
         numpy.ndarray: shape (n, 6), the space screws S_i, one row (v, w) per joint (a copy).
         """
+def _se3_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], geodesic: bool, max_iterations: typing.SupportsInt | typing.SupportsIndex) -> tuple:
+    """
+    The C++ mean behind chasles.se3_mean, on checked (N, 4, 4) float64 poses and (N,) weights: (mean, iterations, converged).
+    """
+def _so3_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], geodesic: bool, max_iterations: typing.SupportsInt | typing.SupportsIndex) -> tuple:
+    """
+    The C++ mean behind chasles.so3_mean, on checked (N, 3, 3) float64 rotations and (N,) weights: (mean, iterations, converged).
+    """
 @typing.overload
 def act_jacobians(g: SO3, p: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     ...

@@ -1054,6 +1054,17 @@ def _build_spec():
             ],
             call=getattr(chasles, name),
         )
+    for name, k in (("so3_mean", 3), ("se3_mean", 4)):
+        spec[name] = Entry(
+            [
+                [
+                    Anything("matrices", np.stack([np.eye(k), np.eye(k)])),
+                    Anything("weights", None),
+                    Anything("method", "geodesic"),
+                ]
+            ],
+            call=getattr(chasles, name),
+        )
     spec["SO3.random"] = _static(SO3, "random", Rng("so3_random(rng)"))
     spec["SE3.random"] = _static(SE3, "random", Rng("se3_random(rng)"))
     return spec
