@@ -105,9 +105,11 @@ struct Thresholds<long double> {
 //   sum (about sqrt(N) eps) exceeds it. tests/cpp/test_mean.cpp checks the
 //   residual sum against 1e-14 (double) after convergence.
 //
-// mean_max_iterations: the bound on those Newton steps, 20 (the default of
-//   other libraries' Karcher means, which take up to 19 plain
-//   gradient steps at a 1 rad spread); Newton takes 3 to 5 there.
+// mean_max_iterations: the bound on those Newton steps, 20 (the cap of
+//   other libraries' Karcher means, which take plain gradient steps: 10 to
+//   13 of them at a 1 rad spread); Newton takes 2 (float) or 3 (double)
+//   there, so the bound is only reached by spreads near pi, where the mean
+//   is not unique.
 //
 /// The thresholds that apply to a Scalar (autodiff scalars use their real type's).
 template <typename Scalar>

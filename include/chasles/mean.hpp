@@ -129,8 +129,11 @@ inline detail::GroupOf<Iterator> chordal_mean(Iterator first, Iterator last) noe
 /// changes e_i to log(exp(-delta) exp(e_i)) = e_i - J_l(e_i)^-1 delta + o(delta)
 /// (J_l the left Jacobian, jacobians.hpp), so the Newton step is
 ///   delta = (sum_i w_i J_l(e_i)^-1)^-1 sum_i w_i e_i,
-/// which converges quadratically (plain gradient steps, delta = mean of the
-/// e_i, converge linearly: about 19 steps at a spread of 1 rad). Stops when
+/// which converges quadratically: at a 1 rad spread (N = 1000) 3 steps
+/// bring the residual below 1e-14 in double, where plain gradient steps
+/// (delta = the weighted mean of the e_i, as other libraries iterate, capped
+/// at 20) converge linearly and take 10 from the chordal mean, 13 from the
+/// identity (tests/cpp/test_mean.cpp, tests/python/test_mean.py). Stops when
 /// |delta| <= mean_step_tolerance (1 + rms of |e_i|) (constants.hpp), after
 /// applying that step, or after max_iterations steps (converged = false).
 /// A singular Newton system (spread near pi) falls back to the gradient
