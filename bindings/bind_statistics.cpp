@@ -4,6 +4,7 @@
 // SE3.random over the Python samplers (python/chasles/_random.py), so that
 // numpy's Generator is the one source of randomness. No mathematics here:
 // each kernel calls the C++ API on one element.
+#include <cstdio>
 #include <string>
 #include <vector>
 #include <type_traits>
@@ -184,8 +185,21 @@ py::tuple mean_of(const py::array_t<double, py::array::c_style | py::array::forc
   std::vector<Group> X;
   X.reserve(static_cast<std::size_t>(n));
   const double* d = elements.data();
+  const double tolerance = chasles::Thresholds<double>::rotation_tolerance;
   for (py::ssize_t i = 0; i < n; ++i) {
     const Eigen::Map<const Eigen::Matrix<double, D, D, Eigen::RowMajor>> M(d + i * D * D);
+    // The mean of matrices that are not rotations is not defined (and its
+    // iteration need not converge): refused, as SO3.from_matrix refuses them.
+    const double defect = SO3d::rotation_defect(M.template topLeftCorner<3, 3>());
+    if (!(defect <= tolerance)) {
+      char text[320];
+      std::snprintf(text, sizeof text,
+                    "%s(matrices): element %zd is not a rotation%s: defect max(|R^T R - I|, |det R - 1|) = %.3g > "
+                    "%.3g (project it first: SO3.from_matrix_projected)",
+                    D == 3 ? "so3_mean" : "se3_mean", static_cast<Py_ssize_t>(i), D == 3 ? "" : " block", defect,
+                    tolerance);
+      throw py::value_error(text);
+    }
     X.push_back(Group::from_matrix_unchecked(Eigen::Matrix<double, D, D>(M)));
   }
   const double* w = weights.data();

@@ -3,7 +3,8 @@
 A mean reduces over the batch axis, so it is not a generalized ufunc (whose
 loops broadcast over that axis): these Python functions check the arguments
 and call the C++ mean (chasles/mean.hpp) once over the whole (N, 3, 3) or
-(N, 4, 4) array, without the GIL.
+(N, 4, 4) array, without the GIL; the C++ side refuses an element that is
+not a rotation (bindings/bind_statistics.cpp).
 """
 
 from __future__ import annotations
@@ -19,7 +20,6 @@ from chasles import _core
 from chasles._random import _asarray
 
 METHODS = ("geodesic", "chordal")
-ROTATION_TOLERANCE = float(np.sqrt(np.finfo(np.float64).eps))  # constants.hpp rotation_tolerance
 
 
 def _mean(name: str, core: int, matrices: ArrayLike, weights: Optional[ArrayLike], method: Any,
@@ -36,21 +36,6 @@ def _mean(name: str, core: int, matrices: ArrayLike, weights: Optional[ArrayLike
     X = np.ascontiguousarray(X, dtype=np.float64)
     if not np.all(np.isfinite(X)):
         raise ValueError(f"{name}(matrices): expected finite numbers")
-    # The mean of matrices that are not rotations is not defined (and its
-    # iteration need not converge): refused, with the checked constructors'
-    # tolerance sqrt(eps), as SO3.from_matrix does.
-    R = X[:, :3, :3]
-    with np.errstate(over="ignore", invalid="ignore"):
-        E = np.abs(np.swapaxes(R, -1, -2) @ R - np.eye(3)).max(axis=(1, 2))
-        defect = np.maximum(E, np.abs(np.linalg.det(R) - 1.0))
-    bad = ~(defect <= ROTATION_TOLERANCE)
-    if np.any(bad):
-        i = int(np.argmax(bad))
-        raise ValueError(
-            f"{name}(matrices): element {i} is not a rotation{' block' if core == 4 else ''}: defect "
-            f"max(|R^T R - I|, |det R - 1|) = {defect[i]:.3g} > {ROTATION_TOLERANCE:.3g} "
-            "(project it first: SO3.from_matrix_projected)"
-        )
     n = X.shape[0]
     if weights is None:
         w = np.ones(n)
