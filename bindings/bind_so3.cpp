@@ -134,6 +134,22 @@ Example:
     array([ 0.1, -0.2,  0.3])
 )doc");
 
+  cls.def(
+      "angle", [](Obj<SO3d> R) { return R->angle(); },
+      R"doc(The rotation angle theta = |log()| in [0, pi], radians.
+
+From the halves of the quaternion, theta = 2 atan2(|q_v|, |q_w|), accurate
+to a few ulps near 0 and near pi (acos of the trace loses half the digits
+there). scipy: ``Rotation.magnitude()``.
+
+Returns:
+    float: the angle.
+
+Example:
+    >>> round(SO3.exp([0.0, 0.0, 0.5]).angle(), 12)
+    0.5
+)doc");
+
   cls.def_static(
       "hat", [](ArrayLike w) { return mat_out<3, 3>(SO3d::hat(to_eigen<3>(w.obj, "SO3.hat(w)"))); }, py::arg("w"),
       R"doc(The skew-symmetric matrix [w] of w, so that [w] @ p = w x p.

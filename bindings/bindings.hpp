@@ -14,5 +14,6 @@ void bind_batch(py::module_& m);         // bind_batch.cpp: broadcasting array f
 void bind_jacobians(py::module_& m);     // bind_jacobians.cpp: SO3/SE3 Jacobians, rplus/rminus/lplus/lminus
 void bind_kinematics(py::module_& m);    // bind_kinematics.cpp: class Chain
 void bind_scipy(py::module_& m);         // bind_scipy.cpp: SO3/SE3 from_scipy, to_scipy
+void bind_statistics(py::module_& m);    // bind_statistics.cpp: angles, distances (array functions)
 
 }  // namespace chasles_py

@@ -9,9 +9,12 @@
 #pragma once
 
 #include "chasles/constants.hpp"
+#include "chasles/distance.hpp"
 #include "chasles/io.hpp"
 #include "chasles/jacobians.hpp"
 #include "chasles/kinematics.hpp"
+#include "chasles/mean.hpp"
+#include "chasles/random.hpp"
 #include "chasles/screw.hpp"
 #include "chasles/se3.hpp"
 #include "chasles/so3.hpp"

@@ -205,6 +205,33 @@ class SO3 {
   /// Accurate to a few ulps, and to O(d) for a matrix off SO(3) by d.
   Vector3 log() const noexcept { return detail::so3_log(R_).omega; }
 
+  /// The rotation angle theta = |log()| in [0, pi], from the halves of the
+  /// quaternion u (as log, through Horn's matrix: detail::so3_log):
+  ///   theta = 2 atan2(|u_v|, |u_w|),  |u_v| ~ sin(theta/2), |u_w| ~ cos(theta/2)
+  /// (Sola, Deray and Atchuthan 2018, the Log of unit quaternions). Unlike acos((tr R - 1) / 2), which loses
+  /// half the digits near 0 and near pi, it is accurate to a few ulps over
+  /// the whole range, and to O(d) for a matrix off SO(3) by d. Below
+  /// tiny_norm2 (constants.hpp) |u_v|^2 is formed from u_v scaled by its
+  /// largest component, so that tiny angles do not underflow to 0. Exactly 0
+  /// at the identity, without a sqrt of 0 (autodiff derivatives stay finite).
+  Scalar angle() const noexcept {
+    using std::abs;
+    using std::atan2;
+    using std::sqrt;
+    detail::Quaternion4<Scalar> u = detail::quaternion_power_step(R_);
+    if (!u.finite()) u = detail::clamped_quaternion_power_step(R_);  // cold: far from SO(3)
+    const Scalar uv2 = u.x * u.x + u.y * u.y + u.z * u.z;
+    if (!(uv2 < Scalar(ThresholdsOf<Scalar>::tiny_norm2))) return Scalar(2) * atan2(sqrt(uv2), abs(u.w));
+    // Cold: |u_v|^2 may have underflowed (theta below about 1e-18 in float,
+    // 1e-150 in double): |u_v| = m |u_v / m| with m its largest component.
+    Scalar m = abs(u.x);
+    if (abs(u.y) > m) m = abs(u.y);
+    if (abs(u.z) > m) m = abs(u.z);
+    if (!(m > Scalar(0))) return Scalar(0);  // the identity: no sqrt of 0
+    const Scalar x = u.x / m, y = u.y / m, z = u.z / m;
+    return Scalar(2) * atan2(m * sqrt(x * x + y * y + z * z), abs(u.w));
+  }
+
   // ---- group operations -------------------------------------------------
 
   SO3 inverse() const noexcept { return SO3(Unchecked(), R_.transpose()); }

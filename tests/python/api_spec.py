@@ -555,6 +555,43 @@ class ScipyElement(Arg):
                 return Accepted(value)
             return Refused(ValueError, (self.label, f"single {self.kind}", "stack", "as_matrix()"))
         return Refused(TypeError, (self.label, f"scipy.spatial.transform.{self.kind}"))
+class Size(Arg):
+    """The number of samples of the samplers (so3_random, ...): None, an int
+    >= 0 or a tuple of them (a batch shape)."""
+
+    def good(self):
+        return 3
+
+    def judge(self, value):
+        if value is None:
+            return Accepted(None)
+        if isinstance(value, (bool, np.bool_)):
+            return Refused(TypeError, (self.label,))
+        if isinstance(value, (int, np.integer)):
+            if value < 0:
+                return Refused(ValueError, (self.label, ">= 0"))
+            return Accepted(int(value))
+        if isinstance(value, (float, complex, str, bytes, np.floating)):
+            return Refused(TypeError, (self.label,))
+        return None  # sequences and other objects: no model
+
+
+@dataclass
+class Rng(Arg):
+    """The rng of the samplers, as scipy and numpy.random.default_rng take
+    it; an int seed is the one value whose outcome is reproducible."""
+
+    def good(self):
+        return 1234
+
+    def judge(self, value):
+        if isinstance(value, (int, np.integer)) and not isinstance(value, (bool, np.bool_)):
+            if value < 0:
+                return Refused(ValueError, (self.label,))
+            return Accepted(int(value))
+        if isinstance(value, (str, bytes, complex)):
+            return Refused(TypeError, (self.label,))
+        return None  # None (fresh entropy), generators (advanced): no model
 
 
 # ---- valid values ---------------------------------------------------------------------
@@ -744,6 +781,7 @@ def _build_spec():
     spec["SO3.identity"] = _static(SO3, "identity")
     spec["SO3.exp"] = _static(SO3, "exp", Array("SO3.exp(w)", (3,)))
     spec["SO3.log"] = _method(SO3, "log")
+    spec["SO3.angle"] = _method(SO3, "angle")
     spec["SO3.hat"] = _static(SO3, "hat", Array("SO3.hat(w)", (3,), finite=False))
     spec["SO3.vee"] = _static(SO3, "vee", Array("SO3.vee(matrix)", (3, 3), finite=False))
     spec["SO3.inverse"] = _method(SO3, "inverse")
@@ -1037,6 +1075,9 @@ def _build_spec():
         "se3_interpolate": [("a",) + G4, ("b",) + G4, ("t", (), None)],
         "se3_hat": [("xi",) + six],
         "se3_vee": [("matrix", (4, 4), lambda: XI0.hat())],
+        "so3_angle": [("R",) + R3],
+        "so3_distance": [("a",) + R3, ("b",) + R3],
+        "se3_distance": [("a",) + G4, ("b",) + G4],
     }
     for name, ops in arrays.items():
         spec[name] = _array_function(name, ops)
@@ -1044,6 +1085,41 @@ def _build_spec():
         "so3_from_quat", [("quat", (4,), quat)], kw=("scalar_first",)
     )
     spec["so3_as_quat"] = _array_function("so3_as_quat", [("R",) + R3], kw=("scalar_first",))
+
+    # samplers (numpy's Generator draws, C++ kernels map)
+    spec["so3_from_uniforms"] = _array_function("so3_from_uniforms", [("u", (3,), None)])
+    spec["so3_random"] = Entry(
+        [[Size("so3_random(n)"), Rng("so3_random(rng)")]], call=chasles.so3_random
+    )
+    spec["se3_random"] = Entry(
+        [[Size("se3_random(n)"), Rng("se3_random(rng)")]], call=chasles.se3_random
+    )
+    for name, n, group in (("so3_gaussian", 3, SO3), ("se3_gaussian", 6, SE3)):
+        k = 3 if n == 3 else 4
+        spec[name] = Entry(
+            [
+                [
+                    Array(f"{name}(mean)", (k, k), valid=lambda G=group: np.asarray(GOOD[G]())),
+                    Anything("cov", 0.01 * np.eye(n)),
+                    Size(f"{name}(n)"),
+                    Rng(f"{name}(rng)"),
+                ]
+            ],
+            call=getattr(chasles, name),
+        )
+    for name, k in (("so3_mean", 3), ("se3_mean", 4)):
+        spec[name] = Entry(
+            [
+                [
+                    Anything("matrices", np.stack([np.eye(k), np.eye(k)])),
+                    Anything("weights", None),
+                    Anything("method", "geodesic"),
+                ]
+            ],
+            call=getattr(chasles, name),
+        )
+    spec["SO3.random"] = _static(SO3, "random", Rng("so3_random(rng)"))
+    spec["SE3.random"] = _static(SE3, "random", Rng("se3_random(rng)"))
     return spec
 
 
@@ -1126,6 +1202,10 @@ def callables() -> dict[str, Any]:
 def canon(result):
     """A comparable, bit-exact form of a result (arrays by dtype, shape and
     bits, NaN payloads folded: every NaN compares equal to every NaN)."""
+    if isinstance(result, np.ndarray) and type(result) is not np.ndarray and result.ndim == 0:
+        # numpy gives a scalar for a 0-d ufunc result, but a 0-d array of
+        # an ndarray subclass operand's type (__array_wrap__): the same outcome
+        return canon(result[()])
     if isinstance(result, np.ndarray):
         a = np.ascontiguousarray(result)
         bits = a.copy()

@@ -3,6 +3,10 @@
 // compiles it with -fno-exceptions -fno-rtti -Wpedantic -Werror.
 #pragma once
 
+#include <array>
+#include <random>
+#include <type_traits>
+
 #include <chasles/chasles.hpp>
 
 namespace chasles_test {
@@ -38,6 +42,7 @@ S exercise_all() noexcept {
   sum += R.normalized().matrix().sum() + R.template cast<S>().matrix().sum();
   sum += S(R.is_approx(I, RealOf<S>(1e-3)) ? 1 : 0) + S(R0.is_approx(I, RealOf<S>(0)) ? 1 : 0);
   sum += interpolate(R, I, S(0.3)).matrix().sum();
+  sum += R.angle() + I.angle() + distance(R, I);
 
   // SE3
   const SE3<S> g = SE3<S>::exp(xi), h(R, p), e = SE3<S>::identity();
@@ -59,6 +64,25 @@ S exercise_all() noexcept {
   sum += SE3<S>::from_screw(p, w, S(0.1), S(0.5)).translation().sum();
   sum += g.normalized().translation().sum() + g.template cast<S>().translation().sum();
   sum += S(g.is_approx(e, RealOf<S>(1e-3)) ? 1 : 0) + interpolate(g, h, S(0.7)).translation().sum();
+  const SE3Distance<S> dgh = distance(g, h);
+  sum += dgh.angle + dgh.translation;
+  sum += so3_from_uniforms(V3(S(0.2), S(0.5), S(0.7))).matrix().sum() + so3_gaussian_from_normals(R, M3(M3::Identity()), w).matrix().sum();
+  sum += se3_gaussian_from_normals(g, Eigen::Matrix<S, 6, 6>(Eigen::Matrix<S, 6, 6>::Identity()), xi).translation().sum();
+  {
+    const std::array<SO3<S>, 3> Rs{R, I, SO3<S>::exp(p * S(0.1))};
+    const std::array<SE3<S>, 3> gs{g, h, e};
+    const std::array<S, 3> ws{S(1), S(2), S(0.5)};
+    const MeanResult<SO3<S>> mr = geodesic_mean(Rs.begin(), Rs.end(), ws.begin());
+    const MeanResult<SE3<S>> mg = geodesic_mean(gs.begin(), gs.end(), 5);
+    sum += mr.mean.matrix().sum() + S(mr.iterations) + mg.mean.translation().sum() + S(mg.converged ? 1 : 0);
+    sum += chordal_mean(Rs.begin(), Rs.end()).matrix().sum() + chordal_mean(gs.begin(), gs.end(), ws.begin()).translation().sum();
+  }
+  if constexpr (std::is_floating_point<S>::value) {  // the standard distributions: real scalars only
+    std::minstd_rand gen(7);
+    sum += random_rotation<S>(gen).matrix().sum() + random_pose<S>(gen, -p, p).translation().sum();
+    sum += random_gaussian(gen, R, M3(M3::Identity())).matrix().sum();
+    sum += random_gaussian(gen, g, Eigen::Matrix<S, 6, 6>(Eigen::Matrix<S, 6, 6>::Identity())).translation().sum();
+  }
 
   // Twist
   sum += tw.vector().sum() + tw.linear().sum() + tw.angular().sum() + tw2.to_modern_robotics().sum();

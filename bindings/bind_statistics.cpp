@@ -1,0 +1,237 @@
+// chasles._core: angles and distances of rotations and rigid motions, and
+// the map of random samples, as numpy generalized ufuncs
+// (chasles/distance.hpp, chasles/random.hpp, SO3::angle); SO3.random and
+// SE3.random over the Python samplers (python/chasles/_random.py), so that
+// numpy's Generator is the one source of randomness. No mathematics here:
+// each kernel calls the C++ API on one element.
+#include <cstdio>
+#include <string>
+#include <vector>
+#include <type_traits>
+
+#include <chasles/distance.hpp>
+#include <chasles/mean.hpp>
+#include <chasles/random.hpp>
+#include <chasles/se3.hpp>
+#include <chasles/so3.hpp>
+
+#include "bindings.hpp"
+#include "convert.hpp"
+#include "ufunc.hpp"
+
+namespace chasles_py {
+
+namespace {
+
+using ufunc::Core;
+using ufunc::def_ufunc;
+using SO3d = chasles::SO3<double>;
+using SE3d = chasles::SE3<double>;
+using namespace pybind11::literals;
+
+template <typename V>
+using ScalarOf = typename std::decay_t<V>::Scalar;
+
+/// The paragraph every array function's docstring ends with (as bind_batch.cpp).
+std::string doc(const char* body) {
+  return std::string(body) + R"(
+
+A numpy generalized ufunc: numpy's rules for broadcasting, dtypes
+(float32 and float64 kernels), out= and axes= apply (``help(chasles)``).
+Matrices are taken as given, like the C++ unchecked constructors, and a NaN
+gives NaN in its own element only.)";
+}
+
+void bind_distances(py::module_& m) {
+  def_ufunc<Core<>(Core<3, 3>)>(m, "so3_angle", "R", doc(R"(Rotation angles of rotation matrices: theta = |log(R)| in [0, pi].
+
+From the halves of the quaternion, theta = 2 atan2(|q_v|, |q_w|): a few
+ulps near 0 and near pi, where acos((tr R - 1) / 2) loses half the digits.
+scipy: ``Rotation.magnitude()``.
+
+Args:
+    R: array_like of shape (..., 3, 3): rotation matrices.
+
+Returns:
+    numpy.ndarray of shape (...): the angles, radians.)"),
+      [](const auto& R) {
+        using T = ScalarOf<decltype(R)>;
+        return chasles::SO3<T>::from_matrix_unchecked(R).angle();
+      });
+
+  def_ufunc<Core<>(Core<3, 3>, Core<3, 3>)>(m, "so3_distance", "a, b", doc(R"(Geodesic distances of rotations: the angle of a^-1 b, in [0, pi].
+
+d(a, b) = |log(a^T b)|, the bi-invariant (angular) distance: symmetric and
+unchanged by d(g a, g b) and d(a g, b g). scipy:
+``(a.inv() * b).magnitude()``.
+
+Args:
+    a: array_like of shape (..., 3, 3): rotation matrices.
+    b: array_like of shape (..., 3, 3): rotation matrices.
+
+Returns:
+    numpy.ndarray of shape (...): the distances, radians, the batch shape
+    being the broadcast of a's and b's.)"),
+      [](const auto& a, const auto& b) {
+        using T = ScalarOf<decltype(a)>;
+        return chasles::distance(chasles::SO3<T>::from_matrix_unchecked(a), chasles::SO3<T>::from_matrix_unchecked(b));
+      });
+
+  def_ufunc<Core<2>(Core<4, 4>, Core<4, 4>)>(m, "se3_distance", "a, b", doc(R"(Distances of rigid motions: (rotation angle, translation distance).
+
+[angle, translation] with angle = |log(R_a^T R_b)| in [0, pi] (so3_distance
+of the rotations) and translation = |p_b - p_a|, the Euclidean distance
+between the two frames' origins (equal to the length of the translation of
+a^-1 b; not the v of log(a^-1 b), which depends on the rotation). SE(3) has
+no bi-invariant metric, so the two are returned apart, for the caller to
+weigh; both are unchanged by a change of the fixed frame, d(g a, g b).
+
+Args:
+    a: array_like of shape (..., 4, 4): homogeneous matrices.
+    b: array_like of shape (..., 4, 4): homogeneous matrices.
+
+Returns:
+    numpy.ndarray of shape (..., 2): [angle (radians), translation
+    distance], the batch shape being the broadcast of a's and b's.)"),
+      [](const auto& a, const auto& b) {
+        using T = ScalarOf<decltype(a)>;
+        const chasles::SE3Distance<T> d =
+            chasles::distance(chasles::SE3<T>::from_matrix_unchecked(a), chasles::SE3<T>::from_matrix_unchecked(b));
+        return Eigen::Matrix<T, 2, 1>(d.angle, d.translation);
+      });
+}
+
+void bind_sampling(py::module_& m) {
+  def_ufunc<Core<3, 3>(Core<3>)>(m, "so3_from_uniforms", "u", doc(R"(Rotations of three uniforms each, by Shoemake's method (uniform rotations).
+
+q = (sqrt(1 - u0) sin(2 pi u1), sqrt(1 - u0) cos(2 pi u1), sqrt(u0) sin(2 pi u2),
+sqrt(u0) cos(2 pi u2)) (x, y, z, w), so that u uniform in [0, 1)^3 gives a
+rotation uniform on SO(3) (the Haar measure): the map behind so3_random.
+
+Args:
+    u: array_like of shape (..., 3): numbers in [0, 1].
+
+Returns:
+    numpy.ndarray of shape (..., 3, 3): the rotation matrices.)"),
+      [](const auto& u) {
+        using T = ScalarOf<decltype(u)>;
+        return chasles::so3_from_uniforms(Eigen::Matrix<T, 3, 1>(u)).matrix();
+      });
+
+  auto so3 = py::reinterpret_borrow<py::class_<SO3d>>(m.attr("SO3"));
+  auto se3 = py::reinterpret_borrow<py::class_<SE3d>>(m.attr("SE3"));
+  so3.def_static(
+      "random",
+      [](py::object rng) {
+        const py::object R = py::module_::import("chasles._random").attr("so3_random")(py::none(), rng);
+        return SO3d::from_matrix_unchecked(to_eigen<3, 3>(R, "SO3.random"));
+      },
+      py::arg("rng") = py::none(),
+      R"doc(A uniform random rotation (the Haar measure), as scipy's Rotation.random().
+
+Shoemake's method over three uniforms drawn from ``rng``: one element of
+``chasles.so3_random``.
+
+Args:
+    rng: None (a fresh ``numpy.random.default_rng()``), an int seed or a
+        numpy Generator.
+
+Returns:
+    SO3: the rotation.
+
+Example:
+    >>> SO3.random(rng=7).is_approx(SO3.random(rng=7), 0.0)
+    True
+)doc");
+  se3.def_static(
+      "random",
+      [](py::object rng, py::object low, py::object high) {
+        const py::object g =
+            py::module_::import("chasles._random").attr("se3_random")(py::none(), rng, "low"_a = low, "high"_a = high);
+        return SE3d::from_matrix_unchecked(to_eigen<4, 4>(g, "SE3.random"));
+      },
+      py::arg("rng") = py::none(), py::kw_only(), py::arg("low") = -1.0, py::arg("high") = 1.0,
+      R"doc(A random rigid motion: a uniform rotation and a translation uniform in a box.
+
+One element of ``chasles.se3_random``: the rotation as SO3.random, then the
+translation uniform in [low, high] componentwise.
+
+Args:
+    rng: None (a fresh ``numpy.random.default_rng()``), an int seed or a
+        numpy Generator.
+    low: float or array_like of shape (3,): the box's lower corner.
+    high: float or array_like of shape (3,): the box's upper corner.
+
+Returns:
+    SE3: the pose.
+
+Example:
+    >>> g = SE3.random(rng=1, low=0.0, high=0.5)
+    >>> bool(np.all((0.0 <= g.translation) & (g.translation <= 0.5)))
+    True
+)doc");
+}
+
+/// The mean of N elements stored as (N, D, D) row-major float64 and N
+/// weights, already checked by the Python caller (python/chasles/_mean.py):
+/// (matrix, iterations, converged). A reduction over the batch axis, so not
+/// a gufunc: the elements are copied into a vector, then the C++ mean runs
+/// without the GIL.
+template <typename Group, int D>
+py::tuple mean_of(const py::array_t<double, py::array::c_style | py::array::forcecast>& elements,
+                  const py::array_t<double, py::array::c_style | py::array::forcecast>& weights, bool geodesic,
+                  int max_iterations) {
+  const py::ssize_t n = elements.shape(0);
+  std::vector<Group> X;
+  X.reserve(static_cast<std::size_t>(n));
+  const double* d = elements.data();
+  const double tolerance = chasles::Thresholds<double>::rotation_tolerance;
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const Eigen::Map<const Eigen::Matrix<double, D, D, Eigen::RowMajor>> M(d + i * D * D);
+    // The mean of matrices that are not rotations is not defined (and its
+    // iteration need not converge): refused, as SO3.from_matrix refuses them.
+    const double defect = SO3d::rotation_defect(M.template topLeftCorner<3, 3>());
+    if (!(defect <= tolerance)) {
+      char text[320];
+      std::snprintf(text, sizeof text,
+                    "%s(matrices): element %zd is not a rotation%s: defect max(|R^T R - I|, |det R - 1|) = %.3g > "
+                    "%.3g (project it first: SO3.from_matrix_projected)",
+                    D == 3 ? "so3_mean" : "se3_mean", static_cast<Py_ssize_t>(i), D == 3 ? "" : " block", defect,
+                    tolerance);
+      throw py::value_error(text);
+    }
+    X.push_back(Group::from_matrix_unchecked(Eigen::Matrix<double, D, D>(M)));
+  }
+  const double* w = weights.data();
+  chasles::MeanResult<Group> r{Group(), 0, true};
+  {
+    py::gil_scoped_release release;
+    if (geodesic) {
+      r = chasles::geodesic_mean(X.begin(), X.end(), w, max_iterations);
+    } else {
+      r.mean = chasles::chordal_mean(X.begin(), X.end(), w);
+    }
+  }
+  return py::make_tuple(mat_out<D, D>(Eigen::Matrix<double, D, D>(r.mean.matrix())), r.iterations, r.converged);
+}
+
+void bind_means(py::module_& m) {
+  m.def("_so3_mean", &mean_of<SO3d, 3>, py::arg("matrices"), py::arg("weights"), py::arg("geodesic"),
+        py::arg("max_iterations"),
+        "The C++ mean behind chasles.so3_mean, on checked (N, 3, 3) float64 rotations and (N,) weights: "
+        "(mean, iterations, converged).");
+  m.def("_se3_mean", &mean_of<SE3d, 4>, py::arg("matrices"), py::arg("weights"), py::arg("geodesic"),
+        py::arg("max_iterations"),
+        "The C++ mean behind chasles.se3_mean, on checked (N, 4, 4) float64 poses and (N,) weights: "
+        "(mean, iterations, converged).");
+}
+
+}  // namespace
+
+void bind_statistics(py::module_& m) {
+  bind_distances(m);
+  bind_sampling(m);
+  bind_means(m);
+}
+
+}  // namespace chasles_py

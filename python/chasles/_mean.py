@@ -1,0 +1,128 @@
+"""Weighted means of rotations and rigid motions.
+
+A mean reduces over the batch axis, so it is not a generalized ufunc (whose
+loops broadcast over that axis): these Python functions check the arguments
+and call the C++ mean (chasles/mean.hpp) once over the whole (N, 3, 3) or
+(N, 4, 4) array, without the GIL; the C++ side refuses an element that is
+not a rotation (bindings/bind_statistics.cpp).
+"""
+
+from __future__ import annotations
+
+import numbers
+import warnings
+from typing import Any, Optional
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from chasles import _core
+from chasles._random import _asarray
+
+METHODS = ("geodesic", "chordal")
+
+
+def _mean(name: str, core: int, matrices: ArrayLike, weights: Optional[ArrayLike], method: Any,
+          max_iterations: Any, reduce) -> np.ndarray:
+    if not isinstance(method, str) or method not in METHODS:
+        raise ValueError(f"{name}(method): expected 'geodesic' or 'chordal', got {method!r}")
+    if isinstance(max_iterations, (bool, np.bool_)) or not isinstance(max_iterations, (numbers.Integral, np.integer)):
+        raise TypeError(f"{name}(max_iterations): expected an int, got {type(max_iterations).__name__}")
+    if not 1 <= int(max_iterations) <= 1000:
+        raise ValueError(f"{name}(max_iterations): expected 1 <= max_iterations <= 1000, got {max_iterations}")
+    X = _asarray(matrices, f"{name}(matrices)")
+    if X.ndim != 3 or X.shape[1:] != (core, core) or X.shape[0] == 0:
+        raise ValueError(f"{name}(matrices): expected shape (N, {core}, {core}) with N >= 1, got {X.shape}")
+    X = np.ascontiguousarray(X, dtype=np.float64)
+    if not np.all(np.isfinite(X)):
+        raise ValueError(f"{name}(matrices): expected finite numbers")
+    n = X.shape[0]
+    if weights is None:
+        w = np.ones(n)
+    else:
+        w = np.ascontiguousarray(_asarray(weights, f"{name}(weights)"), dtype=np.float64)
+        if w.shape != (n,):
+            raise ValueError(f"{name}(weights): expected shape ({n},), got {w.shape}")
+        if not np.all(np.isfinite(w)) or np.any(w < 0) or not w.sum() > 0:
+            raise ValueError(f"{name}(weights): expected finite weights >= 0 with a positive sum, got {w!r}")
+    mean, iterations, converged = reduce(X, w, method == "geodesic", int(max_iterations))
+    if not converged:
+        warnings.warn(
+            f"{name}: the geodesic mean did not converge in {iterations} iterations "
+            "(elements spread near pi apart have no unique mean); the last iterate is returned",
+            RuntimeWarning,
+            stacklevel=3,
+        )
+    return mean
+
+
+def so3_mean(matrices: ArrayLike, weights: Optional[ArrayLike] = None, method: str = "geodesic", *,
+             max_iterations: int = 20) -> np.ndarray:
+    """The weighted mean of rotations.
+
+    ``method="geodesic"`` (default): the Karcher mean M with
+    sum_i w_i log(M^T R_i) = 0, the minimizer of sum_i w_i d(M, R_i)^2 for
+    the angle distance ``so3_distance``; Newton's method from the chordal
+    mean, 2 or 3 steps at a 1 rad spread (at most ``max_iterations``; a
+    RuntimeWarning if it did not converge). ``method="chordal"``: the
+    rotation nearest to sum_i w_i R_i, the quaternion eigenvector mean that
+    scipy's ``Rotation.mean`` computes. Both are invariant on both sides,
+    mean(g R_i h) = g mean(R_i) h.
+
+    A reduction over the batch axis, not a gufunc: one C++ call over the
+    array, without the GIL.
+
+    Args:
+        matrices: array_like of shape (N, 3, 3), N >= 1: rotation matrices
+            (a ValueError names the first whose defect exceeds sqrt(eps),
+            as SO3.from_matrix).
+        weights: array_like of shape (N,), finite, >= 0, with a positive
+            sum; None for equal weights.
+        method: "geodesic" or "chordal".
+        max_iterations: the bound on the Newton steps (geodesic).
+
+    Returns:
+        numpy.ndarray of shape (3, 3): the mean rotation, float64.
+
+    Example:
+        >>> import chasles
+        >>> R = chasles.so3_exp([[0.0, 0.0, 0.1], [0.0, 0.0, 0.3]])
+        >>> np.allclose(chasles.so3_mean(R), chasles.so3_exp([0.0, 0.0, 0.2]))
+        True
+    """
+    return _mean("so3_mean", 3, matrices, weights, method, max_iterations, _core._so3_mean)
+
+
+def se3_mean(matrices: ArrayLike, weights: Optional[ArrayLike] = None, method: str = "geodesic", *,
+             max_iterations: int = 20) -> np.ndarray:
+    """The weighted mean of rigid motions.
+
+    ``method="geodesic"`` (default): the bi-invariant exponential barycenter
+    M with sum_i w_i log(M^-1 g_i) = 0 in the twists (Pennec and Arsigny;
+    manif's average), by Newton's method from the chordal mean. SE(3) has
+    no bi-invariant metric, but this mean is invariant on both sides,
+    mean(a g_i b) = a mean(g_i) b, which the per-part mean is not under
+    g_i b. ``method="chordal"``: per part, the chordal mean of the rotations
+    (as ``so3_mean``) and the weighted average of the translations
+    (invariant on the left only). A RuntimeWarning if the geodesic mean did
+    not converge in ``max_iterations`` steps.
+
+    Args:
+        matrices: array_like of shape (N, 4, 4), N >= 1: homogeneous matrices
+            (a ValueError names the first whose rotation block's defect
+            exceeds sqrt(eps)).
+        weights: array_like of shape (N,), finite, >= 0, with a positive
+            sum; None for equal weights.
+        method: "geodesic" or "chordal".
+        max_iterations: the bound on the Newton steps (geodesic).
+
+    Returns:
+        numpy.ndarray of shape (4, 4): the mean pose, float64.
+
+    Example:
+        >>> import chasles
+        >>> g = chasles.se3_exp([[1.0, 0, 0, 0, 0, 0], [3.0, 0, 0, 0, 0, 0]])
+        >>> np.allclose(chasles.se3_mean(g)[:3, 3], [2.0, 0.0, 0.0])
+        True
+    """
+    return _mean("se3_mean", 4, matrices, weights, method, max_iterations, _core._se3_mean)

@@ -1,0 +1,172 @@
+// SO3::angle and the distances of distance.hpp against the long double
+// reference (support/reference.hpp: Mercator series near 0, Horn's
+// eigenvector elsewhere), near 0, near pi and at pi, and their invariances.
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+
+#include <Eigen/Core>
+#include <gtest/gtest.h>
+#include <unsupported/Eigen/AutoDiff>
+
+#include <chasles/distance.hpp>
+#include <chasles/se3.hpp>
+#include <chasles/so3.hpp>
+
+#include "support/reference.hpp"
+
+namespace {
+
+using chasles::SE3;
+using chasles::SO3;
+using chasles_ref::ld;
+
+template <typename T>
+class Distance : public ::testing::Test {};
+struct ScalarName {
+  template <typename T>
+  static std::string GetName(int) {
+    return sizeof(T) == sizeof(float) ? "float" : "double";
+  }
+};
+using ScalarTypes = ::testing::Types<float, double>;
+TYPED_TEST_SUITE(Distance, ScalarTypes, ScalarName);
+
+/// A unit axis, fixed per index: not a coordinate axis, so that every entry
+/// of R carries the angle.
+chasles_ref::V3 axis(int i) {
+  const chasles_ref::V3 a(ld(0.3) + ld(i) * ld(0.1), ld(-0.7), ld(0.2) * ld(i % 3) + ld(0.5));
+  return a / a.norm();
+}
+
+/// The angles of the accuracy test: 0, tiny, small, generic, near pi, pi.
+/// 1e-160 and 1e-30 are below the cutoff tiny_norm2 on |u_v|^2 in double and in
+/// float, 1e-12 and 1e-7 above it.
+const ld kAngles[] = {0.0L, 1e-160L, 1e-30L, 1e-12L, 1e-7L, 1e-4L, 0.05L, 0.3L, 1.0L, 2.0L, 3.0L,
+                      chasles_ref::kPi - 1e-3L, chasles_ref::kPi - 1e-6L, chasles_ref::kPi - 1e-9L,
+                      chasles_ref::kPi};
+
+TYPED_TEST(Distance, AngleMatchesTheLongDoubleReferenceNearZeroAndNearPi) {
+  using S = TypeParam;
+  const ld eps = std::numeric_limits<S>::epsilon();
+  int n = 0;
+  for (const ld theta : kAngles) {
+    for (int i = 0; i < 4; ++i, ++n) {
+      // Round the long double rotation to S; the reference is the angle of
+      // the rounded matrix, in long double, by formulas chasles does not use.
+      const chasles_ref::M3 exact = chasles_ref::exp3(theta * axis(i));
+      const Eigen::Matrix<S, 3, 3> M = exact.cast<S>();
+      const ld reference = chasles_ref::scaled_norm(chasles_ref::log3(M.template cast<ld>()));
+      const S got = SO3<S>::from_matrix_unchecked(M).angle();
+      // Relative accuracy near 0 (an absolute bound would accept 0 for 1e-30),
+      // a few ulps of pi elsewhere.
+      const ld bound = 4 * eps * (reference < 1 ? reference : chasles_ref::kPi);
+      EXPECT_LE(std::fabs(ld(got) - reference), bound) << "theta " << double(theta) << " axis " << i;
+      EXPECT_GE(got, S(0));
+      EXPECT_LE(got, S(3.14159265358979323846));
+    }
+  }
+  EXPECT_EQ(n, 4 * int(sizeof(kAngles) / sizeof(kAngles[0])));
+}
+
+TYPED_TEST(Distance, AcosOfTheTraceWouldFailTheSameBound) {
+  // The test above can fail: acos((tr R - 1) / 2) loses half the digits at
+  // 1e-4 and near pi, and is off by far more than its bound there.
+  using S = TypeParam;
+  const ld eps = std::numeric_limits<S>::epsilon();
+  const ld theta = sizeof(S) == 4 ? 1e-2L : 1e-6L;
+  const Eigen::Matrix<S, 3, 3> M = chasles_ref::exp3(theta * axis(1)).cast<S>();
+  const ld reference = chasles_ref::scaled_norm(chasles_ref::log3(M.template cast<ld>()));
+  using std::acos;
+  const S c = (M.trace() - S(1)) / S(2);
+  const S naive = acos(c < S(1) ? c : S(1));
+  EXPECT_GT(std::fabs(ld(naive) - reference), 4 * eps * reference);
+  EXPECT_LE(std::fabs(ld(SO3<S>::from_matrix_unchecked(M).angle()) - reference), 4 * eps * reference);
+}
+
+TYPED_TEST(Distance, AngleIsExactlyZeroAtTheIdentityAndPiAtAHalfTurn) {
+  using S = TypeParam;
+  EXPECT_EQ(SO3<S>::identity().angle(), S(0));
+  Eigen::Matrix<S, 3, 3> half_turn = Eigen::Matrix<S, 3, 3>::Identity();
+  half_turn(1, 1) = half_turn(2, 2) = S(-1);  // pi about x, exactly
+  EXPECT_EQ(SO3<S>::from_matrix_unchecked(half_turn).angle(), S(3.14159265358979323846));
+}
+
+TYPED_TEST(Distance, AngleOfAMatrixOffSO3IsTheAngleOfItsNearestRotationToFirstOrder) {
+  using S = TypeParam;
+  const S d = sizeof(S) == 4 ? S(1e-3) : S(1e-6);
+  const SO3<S> R = SO3<S>::exp(Eigen::Matrix<S, 3, 1>(S(0.4), S(-1.1), S(0.7)));
+  const Eigen::Matrix<S, 3, 3> E = (Eigen::Matrix<S, 3, 3>() << 1, -2, 0.5, 0.3, 1, -1, 2, 0.1, -0.4).finished();
+  const Eigen::Matrix<S, 3, 3> M = R.matrix() + d * E;
+  const S projected = SO3<S>::from_matrix_projected(M).angle();
+  const S off = SO3<S>::from_matrix_unchecked(M).angle();
+  EXPECT_LE(std::fabs(off - projected), S(10) * d * d + S(16) * std::numeric_limits<S>::epsilon());
+}
+
+TYPED_TEST(Distance, RotationDistanceIsTheAngleOfTheRelativeRotationAndBiInvariant) {
+  using S = TypeParam;
+  using V3 = Eigen::Matrix<S, 3, 1>;
+  const S tol = S(64) * std::numeric_limits<S>::epsilon();
+  std::mt19937_64 rng(20261124);
+  std::uniform_real_distribution<S> u(S(-2), S(2));
+  for (int k = 0; k < 200; ++k) {
+    const SO3<S> a = SO3<S>::exp(V3(u(rng), u(rng), u(rng)));
+    const SO3<S> b = SO3<S>::exp(V3(u(rng), u(rng), u(rng)));
+    const SO3<S> g = SO3<S>::exp(V3(u(rng), u(rng), u(rng)));
+    const S d = chasles::distance(a, b);
+    // The reference: the long double angle of the relative rotation.
+    const chasles_ref::M3 rel = a.matrix().template cast<ld>().transpose() * b.matrix().template cast<ld>();
+    EXPECT_NEAR(double(d), double(chasles_ref::scaled_norm(chasles_ref::log3(rel))), double(tol));
+    EXPECT_NEAR(d, chasles::distance(b, a), tol);
+    EXPECT_NEAR(d, chasles::distance(g * a, g * b), tol);
+    EXPECT_NEAR(d, chasles::distance(a * g, b * g), tol);
+  }
+  EXPECT_EQ(chasles::distance(SO3<S>::identity(), SO3<S>::identity()), S(0));
+}
+
+TYPED_TEST(Distance, PoseDistanceIsTheRotationAngleAndTheDistanceOfTheOrigins) {
+  using S = TypeParam;
+  using V3 = Eigen::Matrix<S, 3, 1>;
+  using V6 = Eigen::Matrix<S, 6, 1>;
+  const S tol = S(64) * std::numeric_limits<S>::epsilon();
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<S> u(S(-2), S(2));
+  for (int k = 0; k < 200; ++k) {
+    V6 x, y, z;
+    for (int i = 0; i < 6; ++i) {
+      x[i] = u(rng);
+      y[i] = u(rng);
+      z[i] = u(rng);
+    }
+    const SE3<S> a = SE3<S>::exp(x), b = SE3<S>::exp(y), g = SE3<S>::exp(z);
+    const chasles::SE3Distance<S> d = chasles::distance(a, b);
+    EXPECT_EQ(d.angle, chasles::distance(a.rotation(), b.rotation()));
+    const V3 diff = b.translation() - a.translation();
+    EXPECT_NEAR(d.translation, std::sqrt(diff[0] * diff[0] + diff[1] * diff[1] + diff[2] * diff[2]), tol);
+    // |p_b - p_a| is the length of the translation of a^-1 b ...
+    EXPECT_NEAR(d.translation, (a.inverse() * b).translation().norm(), S(4) * tol);
+    // ... and both parts are invariant under a change of the fixed frame.
+    const chasles::SE3Distance<S> dg = chasles::distance(g * a, g * b);
+    EXPECT_NEAR(dg.angle, d.angle, tol);
+    EXPECT_NEAR(dg.translation, d.translation, S(8) * tol);
+  }
+}
+
+TEST(DistanceAutodiff, AngleHasTheRightDerivativeAndAFiniteOneAtTheIdentity) {
+  using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, 1, 1>>;
+  using V3 = Eigen::Matrix<AD, 3, 1>;
+  const Eigen::Vector3d n = Eigen::Vector3d(0.2, -0.6, 0.3).normalized();
+  for (const double t : {0.7, 2.5}) {
+    const AD s(t, 1, 0);  // d/ds angle(exp(s n)) = 1 for 0 < s < pi
+    const AD a = SO3<AD>::exp(V3(s * n[0], s * n[1], s * n[2])).angle();
+    EXPECT_NEAR(a.value(), t, 1e-14);
+    EXPECT_NEAR(a.derivatives()[0], 1.0, 1e-12);
+  }
+  const AD zero(0.0, 1, 0);
+  const AD a0 = SO3<AD>::exp(V3(zero * n[0], zero * n[1], zero * n[2])).angle();
+  EXPECT_EQ(a0.value(), 0.0);
+  EXPECT_TRUE(std::isfinite(a0.derivatives()[0]));
+}
+
+}  // namespace

@@ -1,0 +1,166 @@
+// random.hpp: the maps from uniforms / normals checked exactly, and the
+// samplers checked statistically at fixed seeds: the angle of uniform
+// rotations follows the Haar CDF (theta - sin theta) / pi (Kolmogorov-
+// Smirnov), their mean matrix tends to 0, and Gaussian samples have the
+// tangent covariance they were given.
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <gtest/gtest.h>
+
+#include <chasles/random.hpp>
+#include <chasles/se3.hpp>
+#include <chasles/so3.hpp>
+
+namespace {
+
+using chasles::SE3;
+using chasles::SO3;
+
+template <typename T>
+class Random : public ::testing::Test {};
+struct ScalarName {
+  template <typename S>
+  static std::string GetName(int) {
+    return std::is_same<S, float>::value ? "float" : "double";
+  }
+};
+using ScalarTypes = ::testing::Types<float, double>;
+TYPED_TEST_SUITE(Random, ScalarTypes, ScalarName);
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// The Kolmogorov-Smirnov statistic sup |F_n - F| of samples against a CDF.
+template <typename Cdf>
+double ks_statistic(std::vector<double> x, Cdf cdf) {
+  std::sort(x.begin(), x.end());
+  const double n = double(x.size());
+  double d = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double f = cdf(x[i]);
+    d = std::max(d, std::max(double(i + 1) / n - f, f - double(i) / n));
+  }
+  return d;
+}
+
+TYPED_TEST(Random, ShoemakesMapAtKnownPoints) {
+  using S = TypeParam;
+  using V3 = Eigen::Matrix<S, 3, 1>;
+  const S tol = S(8) * std::numeric_limits<S>::epsilon();
+  // u0 = 1, u2 = 0: q = (0, 0, 0, 1), the identity.
+  EXPECT_TRUE(chasles::so3_from_uniforms(V3(S(1), S(0), S(0))).is_approx(SO3<S>(), tol));
+  // u0 = 0, u1 = 0: q = (0, 1, 0, 0), a half turn about y.
+  const Eigen::Matrix<S, 3, 3> half_turn_y = Eigen::Matrix<S, 3, 1>(S(-1), S(1), S(-1)).asDiagonal();
+  EXPECT_TRUE(chasles::so3_from_uniforms(V3(S(0), S(0), S(0))).matrix().isApprox(half_turn_y, tol));
+  // u0 = 1/2, u1 = 1/4, u2 = 0: q = (1, 0, 0, 1) / sqrt(2), a quarter turn about x.
+  const SO3<S> quarter_x = SO3<S>::exp(V3(S(kPi / 2), S(0), S(0)));
+  EXPECT_TRUE(chasles::so3_from_uniforms(V3(S(0.5), S(0.25), S(0))).is_approx(quarter_x, tol));
+}
+
+TYPED_TEST(Random, UniformRotationAnglesFollowTheHaarDistribution) {
+  using S = TypeParam;
+  std::mt19937_64 gen(12345);
+  const int n = 20000;
+  std::vector<double> angles;
+  Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
+  Eigen::Vector4d quaternion_sum = Eigen::Vector4d::Zero();
+  for (int i = 0; i < n; ++i) {
+    const SO3<S> R = chasles::random_rotation<S>(gen);
+    ASSERT_LE(SO3<S>::rotation_defect(R.matrix()), S(16) * std::numeric_limits<S>::epsilon());
+    angles.push_back(double(R.angle()));
+    sum += R.matrix().template cast<double>();
+    // |q| components: each |q_i| has the same distribution on S^3 ...
+    quaternion_sum += R.quaternion().coeffs().template cast<double>().cwiseAbs();
+  }
+  // Kolmogorov-Smirnov at the 0.1 % level: D < 1.95 / sqrt(n).
+  const double d = ks_statistic(angles, [](double t) { return (t - std::sin(t)) / kPi; });
+  EXPECT_LT(d, 1.95 / std::sqrt(double(n)));
+  // ... and the KS test can fail: a uniform angle in [0, pi] is far off.
+  std::vector<double> wrong(angles.size());
+  for (std::size_t i = 0; i < wrong.size(); ++i) wrong[i] = kPi * (double(i) + 0.5) / double(n);
+  EXPECT_GT(ks_statistic(wrong, [](double t) { return (t - std::sin(t)) / kPi; }), 0.1);
+  // E[R] = 0: each entry has variance 1/3, so the mean is within 5 sigma of 0.
+  EXPECT_LT((sum / n).cwiseAbs().maxCoeff(), 5 * std::sqrt(1.0 / (3.0 * n)));
+  // E|q_i| = 4 / (3 pi) for a uniform point of S^3 (the same for all four).
+  const double expected = 4.0 / (3.0 * kPi);
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(quaternion_sum[i] / n, expected, 5 * 0.2 / std::sqrt(double(n)));
+}
+
+TYPED_TEST(Random, RandomPosesHaveTheirTranslationInTheBox) {
+  using S = TypeParam;
+  using V3 = Eigen::Matrix<S, 3, 1>;
+  std::mt19937_64 gen(99);
+  const V3 low(S(-1), S(2), S(0)), high(S(1), S(5), S(0.5));
+  const int n = 5000;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (int i = 0; i < n; ++i) {
+    const SE3<S> g = chasles::random_pose<S>(gen, low, high);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_GE(g.translation()[k], low[k]);
+      EXPECT_LE(g.translation()[k], high[k]);
+    }
+    sum += g.translation().template cast<double>();
+  }
+  const Eigen::Vector3d centre = ((low + high) / S(2)).template cast<double>();
+  const Eigen::Vector3d width = (high - low).template cast<double>();
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(sum[k] / n, centre[k], 5 * width[k] / std::sqrt(12.0 * n));
+}
+
+TYPED_TEST(Random, GaussianSamplesHaveTheTangentCovarianceGiven) {
+  using S = TypeParam;
+  using M6 = Eigen::Matrix<S, 6, 6>;
+  std::mt19937_64 gen(2026);
+  Eigen::Matrix<double, 6, 6> A;
+  A << 2, 0, 0, 0, 0, 0,  //
+      0.5, 1, 0, 0, 0, 0,   //
+      0, 0.3, 0.8, 0, 0, 0,  //
+      0.1, 0, 0, 0.3, 0, 0,  //
+      0, 0.2, 0, 0.05, 0.2, 0,  //
+      0, 0, 0.1, 0, 0.1, 0.4;
+  const Eigen::Matrix<double, 6, 6> cov = A * A.transpose();
+  const M6 L = cov.llt().matrixL().toDenseMatrix().template cast<S>();
+  const SE3<S> mean = SE3<S>::exp((Eigen::Matrix<S, 6, 1>() << 1, -2, 3, 0.4, 0.5, -0.6).finished());
+  const int n = 40000;
+  Eigen::Matrix<double, 6, 6> second = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 3, 3> second3 = Eigen::Matrix<double, 3, 3>::Zero();
+  const Eigen::Matrix<S, 3, 3> L3 = L.template bottomRightCorner<3, 3>();
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Matrix<double, 6, 1> e =
+        (mean.inverse() * chasles::random_gaussian(gen, mean, L)).log().template cast<double>();
+    second += e * e.transpose();
+    const Eigen::Vector3d r =
+        (mean.rotation().inverse() * chasles::random_gaussian(gen, mean.rotation(), L3)).log().template cast<double>();
+    second3 += r * r.transpose();
+  }
+  second /= n;
+  second3 /= n;
+  // Each entry of the sample covariance has standard deviation
+  // sqrt((c_ii c_jj + c_ij^2) / n); 5 of them.
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j)
+      EXPECT_NEAR(second(i, j), cov(i, j), 5 * std::sqrt((cov(i, i) * cov(j, j) + cov(i, j) * cov(i, j)) / n))
+          << i << ", " << j;
+  const Eigen::Matrix3d cov3 = (L3 * L3.transpose()).template cast<double>();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      EXPECT_NEAR(second3(i, j), cov3(i, j), 5 * std::sqrt((cov3(i, i) * cov3(j, j) + cov3(i, j) * cov3(i, j)) / n));
+}
+
+TYPED_TEST(Random, GaussianMapIsTheRightPerturbation) {
+  using S = TypeParam;
+  using V6 = Eigen::Matrix<S, 6, 1>;
+  const SE3<S> mean = SE3<S>::exp((V6() << 0.3, -0.1, 2, 1.0, -0.5, 0.2).finished());
+  const Eigen::Matrix<S, 6, 6> L = Eigen::Matrix<S, 6, 1>(S(1), S(2), S(3), S(0.1), S(0.2), S(0.3)).asDiagonal();
+  const V6 z = (V6() << 0.5, -1, 0.25, 2, -1, 0.5).finished();
+  const SE3<S> x = chasles::se3_gaussian_from_normals(mean, L, z);
+  const V6 e = (mean.inverse() * x).log();
+  EXPECT_TRUE(e.isApprox(V6(L * z), S(64) * std::numeric_limits<S>::epsilon()));
+}
+
+}  // namespace
