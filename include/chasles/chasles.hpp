@@ -9,6 +9,7 @@
 #pragma once
 
 #include "chasles/constants.hpp"
+#include "chasles/euler.hpp"
 #include "chasles/io.hpp"
 #include "chasles/jacobians.hpp"
 #include "chasles/kinematics.hpp"

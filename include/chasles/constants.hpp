@@ -67,6 +67,7 @@ struct Thresholds<float> {
   static constexpr float rotation_tolerance = 3.4526698e-04f;  // eps^(1/2)
   static constexpr float huge_theta2 = 3.4e30f;                // max / 1e8
   static constexpr float tiny_norm2 = 1.0f / huge_theta2;
+  static constexpr float euler_lock2 = 1.4210855e-14f;  // eps^2
 };
 
 template <>
@@ -76,6 +77,7 @@ struct Thresholds<double> {
   static constexpr double rotation_tolerance = 1.4901161193847656e-08;  // eps^(1/2)
   static constexpr double huge_theta2 = 1.7e300;                        // max / 1e8
   static constexpr double tiny_norm2 = 1.0 / huge_theta2;
+  static constexpr double euler_lock2 = 4.930380657631324e-32;  // eps^2
 };
 
 template <>
@@ -87,6 +89,7 @@ struct Thresholds<long double> {
   static constexpr long double rotation_tolerance = 3.2927225399135962334e-10L;  // eps^(1/2)
   static constexpr long double huge_theta2 = 1.7e300L;  // as double: safe for both long double formats
   static constexpr long double tiny_norm2 = 1.0L / huge_theta2;
+  static constexpr long double euler_lock2 = 1.1754943508222875079687e-38L;  // eps^2
 };
 
 /// The thresholds that apply to a Scalar (autodiff scalars use their real type's).

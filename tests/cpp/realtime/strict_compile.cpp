@@ -19,6 +19,7 @@
 #include "chasles/detail/assert.hpp"
 #include "chasles/detail/nearest_rotation.hpp"
 #include "chasles/detail/series.hpp"
+#include "chasles/euler.hpp"
 #include "chasles/io.hpp"
 #include "chasles/jacobians.hpp"
 #include "chasles/kinematics.hpp"
