@@ -13,5 +13,6 @@ void bind_twist_wrench(py::module_& m);  // bind_twist_wrench.cpp: classes Twist
 void bind_batch(py::module_& m);         // bind_batch.cpp: broadcasting array functions
 void bind_jacobians(py::module_& m);     // bind_jacobians.cpp: SO3/SE3 Jacobians, rplus/rminus/lplus/lminus
 void bind_kinematics(py::module_& m);    // bind_kinematics.cpp: class Chain
+void bind_euler(py::module_& m);         // bind_euler.cpp: SO3 Euler angles and RPY, their private ufuncs
 
 }  // namespace chasles_py

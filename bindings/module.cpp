@@ -15,5 +15,6 @@ PYBIND11_MODULE(_core, m) {
   chasles_py::bind_batch(m);
   chasles_py::bind_jacobians(m);  // after SO3 and SE3: adds their static methods
   chasles_py::bind_kinematics(m);
+  chasles_py::bind_euler(m);  // after SO3: adds its Euler methods
   chasles_py::finish_functions(m);  // last: signatures for help() and inspect (signatures.hpp)
 }

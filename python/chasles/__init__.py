@@ -34,7 +34,9 @@ apply, as for ``np.matmul``:
 
 ``so3_from_quat`` and ``so3_as_quat`` take ``scalar_first``, which a ufunc
 cannot: they are Python functions that pick one of two ufuncs and pass the
-other keywords on.
+other keywords on. So are ``so3_from_euler`` / ``so3_as_euler`` (an Euler
+sequence such as ``"xyz"`` or ``"ZYX"``, ``degrees=``) and ``so3_from_rpy`` /
+``so3_as_rpy`` (URDF's roll, pitch, yaw).
 
 Conventions (the same in C++, in README.md and in every docstring):
 
@@ -99,7 +101,14 @@ from chasles._core import (
     so3_log,
     so3_vee,
 )
-from chasles._arrays import so3_as_quat, so3_from_quat
+from chasles._arrays import (
+    so3_as_euler,
+    so3_as_quat,
+    so3_as_rpy,
+    so3_from_euler,
+    so3_from_quat,
+    so3_from_rpy,
+)
 
 __all__ = [
     "Chain",
@@ -131,10 +140,14 @@ __all__ = [
     "se3_log",
     "se3_vee",
     "so3_act",
+    "so3_as_euler",
     "so3_as_quat",
+    "so3_as_rpy",
     "so3_compose",
     "so3_exp",
+    "so3_from_euler",
     "so3_from_quat",
+    "so3_from_rpy",
     "so3_hat",
     "so3_interpolate",
     "so3_inverse",
