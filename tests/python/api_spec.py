@@ -1039,7 +1039,13 @@ def _build_spec():
     for name, core, valid in (("so3_from_euler", (3,), None), ("so3_as_euler", (3, 3), rotation)):
         operand = "angles" if name == "so3_from_euler" else "R"
         spec[name] = Entry(
-            [[Sequence(f"{name}(seq)"), Operand(f"{name}:{operand}", core, valid), Flag("degrees")]],
+            [
+                [
+                    Sequence(f"{name}(seq)"),
+                    Operand(f"{name}:{operand}", core, valid),
+                    Flag("degrees"),
+                ]
+            ],
             call=lambda q, a, d, f=getattr(chasles, name): f(q, a, degrees=d),
             passes_arguments=False,
             extra_errors=NUMPY_SCALAR_ERRORS,
@@ -1082,10 +1088,11 @@ SPEC = _build_spec()
 
 
 def is_array_function(entry) -> bool:
-    """An array function (so3_*, se3_*): its arguments are operands and flags."""
+    """An array function (so3_*, se3_*): its arguments are operands, flags and
+    an Euler sequence."""
     args = [a for s in entry.signatures for a in s]
     return any(isinstance(a, Operand) for a in args) and all(
-        isinstance(a, (Operand, Flag)) for a in args
+        isinstance(a, (Operand, Flag, Sequence)) for a in args
     )
 
 

@@ -30,7 +30,7 @@ ARRAY_FUNCTIONS = A.ARRAY_FUNCTIONS
 def test_the_array_functions_are_all_here():
     prefixes = ("so3_", "se3_")
     public = sorted(n for n in chasles.__all__ if n.startswith(prefixes))
-    assert ARRAY_FUNCTIONS == public and len(public) == 21
+    assert ARRAY_FUNCTIONS == public and len(public) == 25
 
 
 def operand(arg: A.Operand, shape, rng, dtype):
@@ -58,7 +58,9 @@ def calls(n, rng):
         entry = A.SPEC[name]
         for dtype in (np.float64, np.float32):
             args = [
-                operand(a, (n,), rng, dtype) if isinstance(a, A.Operand) else True
+                operand(a, (n,), rng, dtype)
+                if isinstance(a, A.Operand)
+                else (a.good() if isinstance(a, A.Sequence) else True)
                 for a in entry.signatures[0]
             ]
             out.append((f"{name} {np.dtype(dtype).name}", entry.call, args))
