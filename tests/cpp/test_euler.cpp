@@ -244,3 +244,17 @@ TEST(EulerAutodiff, DerivativeOfTheRoundTripIsTheIdentity) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(EulerThreshold, LockIsEpsSquared) {
+  // constants.hpp: the lock pair's squared norm is compared with eps^2 (a power of two, exact).
+  EXPECT_EQ(chasles::Thresholds<float>::euler_lock2,
+            std::numeric_limits<float>::epsilon() * std::numeric_limits<float>::epsilon());
+  EXPECT_EQ(chasles::Thresholds<double>::euler_lock2,
+            std::numeric_limits<double>::epsilon() * std::numeric_limits<double>::epsilon());
+  EXPECT_EQ(chasles::Thresholds<long double>::euler_lock2,
+            std::numeric_limits<long double>::epsilon() * std::numeric_limits<long double>::epsilon());
+}
+
+}  // namespace
