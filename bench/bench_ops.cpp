@@ -168,6 +168,20 @@ void register_all(const std::string& sn) {
   add("SO3/interpolate/generic/" + sn, Rpairs,
       [](const auto& p) { return interpolate(p.first, p.second, S(0.3)); });
   add("SO3/normalized/generic/" + sn, Rs, [](const SO3<S>& R) { return R.normalized(); });
+  // Euler angles: intrinsic ZYX (= extrinsic xyz, RPY) and ZXZ beside Eigen's
+  // AngleAxis product and eulerAngles (the same sequences, Eigen's ranges).
+  std::vector<V3> eul;
+  for (const auto& R : Rs) eul.push_back(as_euler<EulerSequence::ZYX>(R).angles);
+  add("SO3/from_euler_ZYX/generic/" + sn, eul, [](const V3& t) { return from_euler<EulerSequence::ZYX>(t); });
+  add("Eigen/AngleAxis_product_ZYX/generic/" + sn, eul, [](const V3& t) {
+    return M3((Eigen::AngleAxis<S>(t[0], V3::UnitZ()) * Eigen::AngleAxis<S>(t[1], V3::UnitY()) *
+               Eigen::AngleAxis<S>(t[2], V3::UnitX()))
+                  .toRotationMatrix());
+  });
+  add("SO3/as_euler_ZYX/generic/" + sn, Rs, [](const SO3<S>& R) { return as_euler<EulerSequence::ZYX>(R).angles; });
+  add("SO3/as_euler_ZXZ/generic/" + sn, Rs, [](const SO3<S>& R) { return as_euler<EulerSequence::ZXZ>(R).angles; });
+  add("Eigen/eulerAngles_ZYX/generic/" + sn, Rs, [](const SO3<S>& R) { return V3(R.matrix().eulerAngles(2, 1, 0)); });
+  add("Eigen/eulerAngles_ZXZ/generic/" + sn, Rs, [](const SO3<S>& R) { return V3(R.matrix().eulerAngles(2, 0, 2)); });
   add("Eigen/quaternion_compose/generic/" + sn, Qpairs, [](const auto& p) { return Q(p.first * p.second); });
   add("Eigen/quaternion_act/generic/" + sn, Qpoints, [](const auto& p) { return V3(p.first * p.second); });
   add("Eigen/quaternion_to_matrix/generic/" + sn, Qs, [](const Q& q) { return q.toRotationMatrix(); });

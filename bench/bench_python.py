@@ -300,6 +300,11 @@ def main() -> int:
                              "pytransform3d": (lambda: pt3t.transform(gm, np.append(p, 1.0))) if pt3t else None}
     peers_call["SE3 adjoint"] = {"scipy": None, "pin": (lambda: pg.action) if pin else None,
                                  "pytransform3d": (lambda: pt3t.adjoint_from_transform(gm)) if pt3t else None}
+    eul = R.as_euler("xyz")
+    peers_call["SO3 from_euler"] = {"scipy": (lambda: Rotation.from_euler("xyz", eul).as_matrix()) if Rotation else None,
+                                    "pin": (lambda: pin.rpy.rpyToMatrix(eul)) if pin else None, "pytransform3d": None}
+    peers_call["SO3 as_euler"] = {"scipy": (lambda: sr.as_euler("xyz")) if Rotation else None,
+                                  "pin": (lambda: pin.rpy.matrixToRpy(pR)) if pin else None, "pytransform3d": None}
     ours_call: dict[str, Callable[[], object]] = {
         "SO3 exp": lambda: chasles.SO3.exp(w),
         "SO3 log": lambda: R.log(),
@@ -312,6 +317,8 @@ def main() -> int:
         "SE3 inverse": lambda: g.inverse(),
         "SE3 act": lambda: g @ p,
         "SE3 adjoint": lambda: g.adjoint(),
+        "SO3 from_euler": lambda: chasles.SO3.from_euler("xyz", eul),
+        "SO3 as_euler": lambda: R.as_euler("xyz"),
     }
     names = ["scipy", "pin", "pytransform3d"]
     print("### Python objects, per call (us, median of %d)\n" % rep)
@@ -335,6 +342,7 @@ def main() -> int:
         S6s = np.concatenate([W, XI[:, :3]], axis=1)
         srs = Rotation.from_matrix(Rs) if Rotation else None
         Rc = chasles.so3_exp(0.5 * rng.normal(size=(n, 3)))  # a cloud for the means (0.87 rad rms)
+        E = chasles.so3_as_euler("xyz", Rs)
         sts = RigidTransform.from_matrix(Gs) if RigidTransform else None
         sts2 = RigidTransform.from_matrix(Gs2) if RigidTransform else None
         st1 = RigidTransform.from_matrix(gm) if RigidTransform else None
@@ -350,6 +358,12 @@ def main() -> int:
             "SO3 compose": (lambda: chasles.so3_compose(Rs, Rs), {
                 "scipy": (lambda: srs * srs) if Rotation else None, "numpy": lambda: np.matmul(Rs, Rs),
                 "pytransform3d": None}),
+            "SO3 from_euler": (lambda: chasles.so3_from_euler("xyz", E), {
+                "scipy": (lambda: Rotation.from_euler("xyz", E).as_matrix()) if Rotation else None,
+                "numpy": None, "pytransform3d": None}),
+            "SO3 as_euler": (lambda: chasles.so3_as_euler("xyz", Rs), {
+                "scipy": (lambda: srs.as_euler("xyz")) if Rotation else None,
+                "numpy": None, "pytransform3d": None}),
             "SE3 exp": (lambda: chasles.se3_exp(XI), {
                 "scipy": (lambda: RigidTransform.from_exp_coords(S6s).as_matrix()) if RigidTransform else None,
                 "numpy": None,

@@ -69,6 +69,7 @@ struct Thresholds<float> {
   static constexpr float tiny_norm2 = 1.0f / huge_theta2;
   static constexpr float mean_step_tolerance = 3.4526698e-04f;  // eps^(1/2)
   static constexpr int mean_max_iterations = 20;
+  static constexpr float euler_lock2 = 1.4210855e-14f;  // eps^2
 };
 
 template <>
@@ -80,6 +81,7 @@ struct Thresholds<double> {
   static constexpr double tiny_norm2 = 1.0 / huge_theta2;
   static constexpr double mean_step_tolerance = 1.4901161193847656e-08;  // eps^(1/2)
   static constexpr int mean_max_iterations = 20;
+  static constexpr double euler_lock2 = 4.930380657631324e-32;  // eps^2
 };
 
 template <>
@@ -93,6 +95,7 @@ struct Thresholds<long double> {
   static constexpr long double tiny_norm2 = 1.0L / huge_theta2;
   static constexpr long double mean_step_tolerance = 3.2927225399135962334e-10L;  // eps^(1/2)
   static constexpr int mean_max_iterations = 20;
+  static constexpr long double euler_lock2 = 1.1754943508222875079687e-38L;  // eps^2
 };
 
 // mean_step_tolerance: the geodesic (Karcher) mean (mean.hpp) stops after

@@ -34,7 +34,9 @@ apply, as for ``np.matmul``:
 
 ``so3_from_quat`` and ``so3_as_quat`` take ``scalar_first``, which a ufunc
 cannot: they are Python functions that pick one of two ufuncs and pass the
-other keywords on.
+other keywords on. So are ``so3_from_euler`` / ``so3_as_euler`` (an Euler
+sequence such as ``"xyz"`` or ``"ZYX"``, ``degrees=``) and ``so3_from_rpy`` /
+``so3_as_rpy`` (URDF's roll, pitch, yaw).
 
 Conventions (the same in C++, in README.md and in every docstring):
 
@@ -114,6 +116,14 @@ from chasles._core import (
 from chasles._arrays import so3_as_quat, so3_from_quat
 from chasles._mean import se3_mean, so3_mean
 from chasles._random import se3_gaussian, se3_random, so3_gaussian, so3_random
+from chasles._arrays import (
+    so3_as_euler,
+    so3_as_quat,
+    so3_as_rpy,
+    so3_from_euler,
+    so3_from_quat,
+    so3_from_rpy,
+)
 
 __all__ = [
     "Chain",
@@ -158,11 +168,15 @@ __all__ = [
     "so3_act",
     "so3_act_jacobian",
     "so3_angle",
+    "so3_as_euler",
     "so3_as_quat",
+    "so3_as_rpy",
     "so3_compose",
     "so3_distance",
     "so3_exp",
+    "so3_from_euler",
     "so3_from_quat",
+    "so3_from_rpy",
     "so3_from_uniforms",
     "so3_gaussian",
     "so3_hat",

@@ -61,3 +61,145 @@ def so3_as_quat(R: ArrayLike, /, *, scalar_first: bool = False, **kwargs: Any) -
     """
     ufunc = _core._so3_as_quat_wxyz if scalar_first else _core._so3_as_quat_xyzw
     return ufunc(R, **kwargs)
+
+
+# The 24 Euler sequences, as scipy: lowercase extrinsic, uppercase intrinsic.
+_EULER_SEQUENCES = tuple(
+    s
+    for base in ("xyz", "xzy", "yxz", "yzx", "zxy", "zyx", "xyx", "xzx", "yxy", "yzy", "zxz", "zyz")
+    for s in (base, base.upper())
+)
+
+
+def _euler_ufunc(kind: str, seq: Any, degrees: Any, name: str) -> np.ufunc:
+    """The private ufunc ``_so3_<kind>_<seq>[_deg]``, or the error naming `name`."""
+    if not isinstance(seq, str):
+        raise TypeError(
+            f"{name}(seq): expected a str of three axes such as 'xyz' or 'ZYX', "
+            f"got {type(seq).__name__}"
+        )
+    if seq not in _EULER_SEQUENCES:
+        raise ValueError(
+            f"{name}(seq): expected three axes of 'xyz', all lowercase (extrinsic) or all "
+            "uppercase (intrinsic), no two consecutive equal, as 'xyz', 'ZYX' or 'zxz'; "
+            f"got {seq!r}"
+        )
+    return getattr(_core, f"_so3_{kind}_{str(seq)}{'_deg' if degrees else ''}")
+
+
+def so3_from_euler(
+    seq: str, angles: ArrayLike, /, degrees: bool = False, **kwargs: Any
+) -> np.ndarray:
+    """Rotation matrices of Euler angles, as scipy's ``Rotation.from_euler``.
+
+    ``seq`` is one of the 12 axis sequences, lowercase for extrinsic (fixed
+    axes) or uppercase for intrinsic (moving axes): extrinsic ``"xyz"`` with
+    angles (a, b, c) is R = Rz(c) Ry(b) Rx(a), intrinsic ``"XYZ"`` is
+    R = Rx(a) Ry(b) Rz(c). Any finite angles; the product of the three
+    elementary rotations, each entry to a few ulps.
+
+    Args:
+        seq: the sequence, e.g. ``"xyz"``, ``"ZYX"``, ``"zxz"`` (not an array:
+            it picks the ufunc).
+        angles: array_like of shape (..., 3): the angles, in the order of
+            ``seq``'s letters.
+        degrees: the angles are in degrees (default radians); converted as
+            numpy's deg2rad, x * (pi / 180), inside the loop.
+        **kwargs: passed to the ufunc (``out=``, ``axes=``, ``dtype=``, ...).
+
+    Returns:
+        numpy.ndarray of shape (..., 3, 3): the rotation matrices.
+
+    Raises:
+        TypeError: seq is not a str.
+        ValueError: seq is not one of the 24 sequences.
+
+    Example:
+        >>> import chasles
+        >>> np.round(chasles.so3_from_euler("xyz", [0.0, 0.0, 90.0], degrees=True), 12) + 0.0
+        array([[ 0., -1.,  0.],
+               [ 1.,  0.,  0.],
+               [ 0.,  0.,  1.]])
+    """
+    return _euler_ufunc("from_euler", seq, degrees, "so3_from_euler")(angles, **kwargs)
+
+
+def so3_as_euler(seq: str, R: ArrayLike, /, degrees: bool = False, **kwargs: Any) -> np.ndarray:
+    """Euler angles of rotation matrices, as scipy's ``Rotation.as_euler``.
+
+    scipy's ranges: the middle angle in [-pi/2, pi/2] for Tait-Bryan
+    sequences (three distinct axes), [0, pi] for proper Euler sequences
+    (first axis = last), the others in [-pi, pi]. At the gimbal lock (the
+    middle angle +-pi/2, or 0 or pi, to working precision) only the sum or
+    difference of the outer angles is defined and the third angle is zero,
+    as scipy (which does not warn here). Robust at and next to the lock:
+    ``so3_from_euler(seq, so3_as_euler(seq, R))`` reproduces R to a few ulps
+    for every rotation (atan2 of well-conditioned pairs of entries).
+
+    Args:
+        seq: the sequence, e.g. ``"xyz"``, ``"ZYX"``, ``"zxz"``.
+        R: array_like of shape (..., 3, 3): rotation matrices.
+        degrees: return degrees (default radians), as numpy's rad2deg.
+        **kwargs: passed to the ufunc (``out=``, ``axes=``, ``dtype=``, ...).
+
+    Returns:
+        numpy.ndarray of shape (..., 3): the angles, in the order of
+        ``seq``'s letters.
+
+    Raises:
+        TypeError: seq is not a str.
+        ValueError: seq is not one of the 24 sequences.
+
+    Example:
+        >>> import chasles
+        >>> R = chasles.so3_from_euler("ZYX", [0.3, -0.2, 0.1])
+        >>> np.round(chasles.so3_as_euler("ZYX", R), 12)
+        array([ 0.3, -0.2,  0.1])
+    """
+    return _euler_ufunc("as_euler", seq, degrees, "so3_as_euler")(R, **kwargs)
+
+
+def so3_from_rpy(rpy: ArrayLike, /, degrees: bool = False, **kwargs: Any) -> np.ndarray:
+    """Rotation matrices of roll, pitch, yaw: URDF's ``rpy``, ROS tf's setRPY.
+
+    About the fixed axes x, y and z in that order, R = Rz(yaw) Ry(pitch)
+    Rx(roll): ``so3_from_euler("xyz", rpy)``.
+
+    Args:
+        rpy: array_like of shape (..., 3): (roll, pitch, yaw).
+        degrees: the angles are in degrees (default radians).
+        **kwargs: passed to the ufunc (``out=``, ``axes=``, ``dtype=``, ...).
+
+    Returns:
+        numpy.ndarray of shape (..., 3, 3): the rotation matrices.
+
+    Example:
+        >>> import chasles
+        >>> rpy = [0.1, 0.2, 0.3]
+        >>> bool((chasles.so3_from_rpy(rpy) == chasles.so3_from_euler("xyz", rpy)).all())
+        True
+    """
+    return (_core._so3_from_rpy_deg if degrees else _core._so3_from_rpy)(rpy, **kwargs)
+
+
+def so3_as_rpy(R: ArrayLike, /, degrees: bool = False, **kwargs: Any) -> np.ndarray:
+    """Roll, pitch, yaw of rotation matrices (URDF, ROS tf's getRPY).
+
+    ``so3_as_euler("xyz", R)``: R = Rz(yaw) Ry(pitch) Rx(roll), pitch in
+    [-pi/2, pi/2], roll and yaw in [-pi, pi]; at the gimbal lock (pitch
+    +-pi/2) yaw is zero.
+
+    Args:
+        R: array_like of shape (..., 3, 3): rotation matrices.
+        degrees: return degrees (default radians).
+        **kwargs: passed to the ufunc (``out=``, ``axes=``, ``dtype=``, ...).
+
+    Returns:
+        numpy.ndarray of shape (..., 3): (roll, pitch, yaw).
+
+    Example:
+        >>> import chasles
+        >>> np.round(chasles.so3_as_rpy(chasles.so3_from_rpy([0.1, 0.2, 0.3])), 12)
+        array([0.1, 0.2, 0.3])
+    """
+    return (_core._so3_as_rpy_deg if degrees else _core._so3_as_rpy)(R, **kwargs)

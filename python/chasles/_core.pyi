@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['Chain', 'SE3', 'SO3', 'Screw', 'Twist', 'Wrench', 'act_jacobians', 'compose_jacobians', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'log_jacobian', 'lplus', 'rminus', 'rplus', 'se3_act', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_distance', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_vee', 'so3_act', 'so3_angle', 'so3_compose', 'so3_distance', 'so3_exp', 'so3_from_uniforms', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee']
+__all__: list[str] = ['Chain', 'SE3', 'SO3', 'Screw', 'Twist', 'Wrench', 'act_jacobians', 'compose_jacobians', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'log_jacobian', 'lplus', 'rminus', 'rplus', 'se3_act', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_vee', 'so3_act', 'so3_compose', 'so3_exp', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee']
 class SO3:
     """
     A rotation of R^3: an element of SO(3), stored as its 3x3 matrix (float64).
@@ -80,6 +80,37 @@ class SO3:
             array([[ 0., -1.,  0.],
                    [ 1.,  0.,  0.],
                    [ 0.,  0.,  1.]])
+        """
+    @staticmethod
+    def from_euler(seq: str, angles: numpy.typing.ArrayLike, degrees: bool = False) -> SO3:
+        """
+        The rotation of Euler angles, as scipy's ``Rotation.from_euler``.
+        
+        ``seq`` is one of the 12 axis sequences, lowercase for extrinsic (fixed
+        axes) or uppercase for intrinsic (moving axes). Extrinsic ``"xyz"`` with
+        angles (a, b, c) is R = Rz(c) Ry(b) Rx(a); intrinsic ``"XYZ"`` is
+        R = Rx(a) Ry(b) Rz(c). Tait-Bryan: xyz, xzy, yxz, yzx, zxy, zyx; proper
+        Euler: xyx, xzx, yxy, yzy, zxz, zyz (and their uppercase forms).
+        
+        Args:
+            seq: the sequence, e.g. ``"xyz"``, ``"ZYX"``, ``"zxz"``.
+            angles: shape (3,), finite, in the order of ``seq``'s letters.
+            degrees: the angles are in degrees (default radians).
+        
+        Returns:
+            SO3: the rotation.
+        
+        Raises:
+            TypeError: seq is not a str.
+            ValueError: seq is not one of the 24 sequences; angles of a wrong shape
+                or not finite.
+        
+        Example:
+            >>> R = SO3.from_euler("xyz", [90.0, 0.0, 0.0], degrees=True)
+            >>> np.round(R.as_matrix(), 12) + 0.0
+            array([[ 1.,  0.,  0.],
+                   [ 0.,  0., -1.],
+                   [ 0.,  1.,  0.]])
         """
     @staticmethod
     def from_matrix(matrix: numpy.typing.ArrayLike, tol: float = 1.4901161193847656e-08) -> SO3:
@@ -161,6 +192,25 @@ class SO3:
             >>> np.round(SO3.from_quat([0.0, 0.0, s, s]).log(), 12) + 0.0
             array([0.        , 0.        , 1.57079633])
             >>> SO3.from_quat([1.0, 0.0, 0.0, 0.0], scalar_first=True).is_approx(SO3())
+            True
+        """
+    @staticmethod
+    def from_rpy(rpy: numpy.typing.ArrayLike, degrees: bool = False) -> SO3:
+        """
+        The rotation of roll, pitch and yaw, URDF's ``rpy`` and ROS tf's setRPY.
+        
+        About the fixed axes x, y and z in that order: R = Rz(yaw) Ry(pitch)
+        Rx(roll), i.e. ``SO3.from_euler("xyz", rpy)`` (scipy's extrinsic "xyz").
+        
+        Args:
+            rpy: shape (3,), (roll, pitch, yaw), finite.
+            degrees: the angles are in degrees (default radians).
+        
+        Returns:
+            SO3: the rotation.
+        
+        Example:
+            >>> SO3.from_rpy([0.1, 0.2, 0.3]) == SO3.from_euler("xyz", [0.1, 0.2, 0.3])
             True
         """
     @staticmethod
@@ -258,25 +308,6 @@ class SO3:
         Raises:
             ValueError: w is not of shape (3,), or not finite.
             TypeError: w is not real.
-        """
-    @staticmethod
-    def random(rng: typing.Any = None) -> SO3:
-        """
-        A uniform random rotation (the Haar measure), as scipy's Rotation.random().
-        
-        Shoemake's method over three uniforms drawn from ``rng``: one element of
-        ``chasles.so3_random``.
-        
-        Args:
-            rng: None (a fresh ``numpy.random.default_rng()``), an int seed or a
-                numpy Generator.
-        
-        Returns:
-            SO3: the rotation.
-        
-        Example:
-            >>> SO3.random(rng=7).is_approx(SO3.random(rng=7), 0.0)
-            True
         """
     @staticmethod
     def right_jacobian(w: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
@@ -467,20 +498,30 @@ class SO3:
         Returns:
             ndarray: shape (3, 3).
         """
-    def angle(self) -> float:
+    def as_euler(self, seq: str, degrees: bool = False) -> numpy.typing.NDArray[numpy.float64]:
         """
-        The rotation angle theta = |log()| in [0, pi], radians.
+        Euler angles of the rotation, as scipy's ``Rotation.as_euler``.
         
-        From the halves of the quaternion, theta = 2 atan2(|q_v|, |q_w|), accurate
-        to a few ulps near 0 and near pi (acos of the trace loses half the digits
-        there). scipy: ``Rotation.magnitude()``.
+        scipy's ranges: the middle angle in [-pi/2, pi/2] for Tait-Bryan sequences
+        (three distinct axes), [0, pi] for proper Euler sequences (first axis =
+        last), the others in [-pi, pi]. At the gimbal lock (middle angle +-pi/2, or
+        0 or pi, to working precision) only the sum or difference of the outer
+        angles is defined, and the third angle is zero, as scipy. Robust there:
+        ``SO3.from_euler(seq, R.as_euler(seq))`` reproduces R to a few ulps for
+        every rotation (atan2 of well-conditioned pairs of entries; scipy declares
+        the lock within 1e-7 of it and loses up to 1e-7 there).
+        
+        Args:
+            seq: the sequence, e.g. ``"xyz"``, ``"ZYX"``, ``"zxz"`` (see from_euler).
+            degrees: return degrees (default radians).
         
         Returns:
-            float: the angle.
+            ndarray: shape (3,), the angles in the order of ``seq``'s letters.
         
         Example:
-            >>> round(SO3.exp([0.0, 0.0, 0.5]).angle(), 12)
-            0.5
+            >>> R = SO3.from_euler("ZYX", [0.3, -0.2, 0.1])
+            >>> np.round(R.as_euler("ZYX"), 12)
+            array([ 0.3, -0.2,  0.1])
         """
     def as_matrix(self) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -508,6 +549,24 @@ class SO3:
             array([0., 0., 0., 1.])
             >>> SO3().as_quat(scalar_first=True)
             array([1., 0., 0., 0.])
+        """
+    def as_rpy(self, degrees: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        Roll, pitch and yaw of the rotation (URDF, ROS tf's getRPY).
+        
+        ``R.as_euler("xyz")``: R = Rz(yaw) Ry(pitch) Rx(roll), pitch in
+        [-pi/2, pi/2], roll and yaw in [-pi, pi]; at the gimbal lock (pitch +-pi/2)
+        yaw is zero.
+        
+        Args:
+            degrees: return degrees (default radians).
+        
+        Returns:
+            ndarray: shape (3,), (roll, pitch, yaw).
+        
+        Example:
+            >>> np.round(SO3.from_rpy([0.1, 0.2, 0.3]).as_rpy(), 12)
+            array([0.1, 0.2, 0.3])
         """
     def inverse(self) -> SO3:
         """
@@ -789,28 +848,6 @@ class SE3:
         Raises:
             ValueError: xi is not of shape (6,), or not finite.
             TypeError: xi is not real.
-        """
-    @staticmethod
-    def random(rng: typing.Any = None, *, low: typing.Any = -1.0, high: typing.Any = 1.0) -> SE3:
-        """
-        A random rigid motion: a uniform rotation and a translation uniform in a box.
-        
-        One element of ``chasles.se3_random``: the rotation as SO3.random, then the
-        translation uniform in [low, high] componentwise.
-        
-        Args:
-            rng: None (a fresh ``numpy.random.default_rng()``), an int seed or a
-                numpy Generator.
-            low: float or array_like of shape (3,): the box's lower corner.
-            high: float or array_like of shape (3,): the box's upper corner.
-        
-        Returns:
-            SE3: the pose.
-        
-        Example:
-            >>> g = SE3.random(rng=1, low=0.0, high=0.5)
-            >>> bool(np.all((0.0 <= g.translation) & (g.translation <= 0.5)))
-            True
         """
     @staticmethod
     def right_jacobian(xi: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
@@ -1986,14 +2023,6 @@ class Chain:
         """
         numpy.ndarray: shape (n, 6), the space screws S_i, one row (v, w) per joint (a copy).
         """
-def _se3_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], geodesic: bool, max_iterations: typing.SupportsInt | typing.SupportsIndex) -> tuple:
-    """
-    The C++ mean behind chasles.se3_mean, on checked (N, 4, 4) float64 poses and (N,) weights: (mean, iterations, converged).
-    """
-def _so3_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], geodesic: bool, max_iterations: typing.SupportsInt | typing.SupportsIndex) -> tuple:
-    """
-    The C++ mean behind chasles.so3_mean, on checked (N, 3, 3) float64 rotations and (N,) weights: (mean, iterations, converged).
-    """
 @typing.overload
 def act_jacobians(g: SO3, p: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     ...
@@ -2253,16 +2282,115 @@ _chain_forward: numpy.ufunc
 _chain_forward_body: numpy.ufunc
 _chain_jacobian_body: numpy.ufunc
 _chain_jacobian_space: numpy.ufunc
+_so3_as_euler_XYX: numpy.ufunc
+_so3_as_euler_XYX_deg: numpy.ufunc
+_so3_as_euler_XYZ: numpy.ufunc
+_so3_as_euler_XYZ_deg: numpy.ufunc
+_so3_as_euler_XZX: numpy.ufunc
+_so3_as_euler_XZX_deg: numpy.ufunc
+_so3_as_euler_XZY: numpy.ufunc
+_so3_as_euler_XZY_deg: numpy.ufunc
+_so3_as_euler_YXY: numpy.ufunc
+_so3_as_euler_YXY_deg: numpy.ufunc
+_so3_as_euler_YXZ: numpy.ufunc
+_so3_as_euler_YXZ_deg: numpy.ufunc
+_so3_as_euler_YZX: numpy.ufunc
+_so3_as_euler_YZX_deg: numpy.ufunc
+_so3_as_euler_YZY: numpy.ufunc
+_so3_as_euler_YZY_deg: numpy.ufunc
+_so3_as_euler_ZXY: numpy.ufunc
+_so3_as_euler_ZXY_deg: numpy.ufunc
+_so3_as_euler_ZXZ: numpy.ufunc
+_so3_as_euler_ZXZ_deg: numpy.ufunc
+_so3_as_euler_ZYX: numpy.ufunc
+_so3_as_euler_ZYX_deg: numpy.ufunc
+_so3_as_euler_ZYZ: numpy.ufunc
+_so3_as_euler_ZYZ_deg: numpy.ufunc
+_so3_as_euler_xyx: numpy.ufunc
+_so3_as_euler_xyx_deg: numpy.ufunc
+_so3_as_euler_xyz: numpy.ufunc
+_so3_as_euler_xyz_deg: numpy.ufunc
+_so3_as_euler_xzx: numpy.ufunc
+_so3_as_euler_xzx_deg: numpy.ufunc
+_so3_as_euler_xzy: numpy.ufunc
+_so3_as_euler_xzy_deg: numpy.ufunc
+_so3_as_euler_yxy: numpy.ufunc
+_so3_as_euler_yxy_deg: numpy.ufunc
+_so3_as_euler_yxz: numpy.ufunc
+_so3_as_euler_yxz_deg: numpy.ufunc
+_so3_as_euler_yzx: numpy.ufunc
+_so3_as_euler_yzx_deg: numpy.ufunc
+_so3_as_euler_yzy: numpy.ufunc
+_so3_as_euler_yzy_deg: numpy.ufunc
+_so3_as_euler_zxy: numpy.ufunc
+_so3_as_euler_zxy_deg: numpy.ufunc
+_so3_as_euler_zxz: numpy.ufunc
+_so3_as_euler_zxz_deg: numpy.ufunc
+_so3_as_euler_zyx: numpy.ufunc
+_so3_as_euler_zyx_deg: numpy.ufunc
+_so3_as_euler_zyz: numpy.ufunc
+_so3_as_euler_zyz_deg: numpy.ufunc
 _so3_as_quat_wxyz: numpy.ufunc
 _so3_as_quat_xyzw: numpy.ufunc
+_so3_as_rpy: numpy.ufunc
+_so3_as_rpy_deg: numpy.ufunc
+_so3_from_euler_XYX: numpy.ufunc
+_so3_from_euler_XYX_deg: numpy.ufunc
+_so3_from_euler_XYZ: numpy.ufunc
+_so3_from_euler_XYZ_deg: numpy.ufunc
+_so3_from_euler_XZX: numpy.ufunc
+_so3_from_euler_XZX_deg: numpy.ufunc
+_so3_from_euler_XZY: numpy.ufunc
+_so3_from_euler_XZY_deg: numpy.ufunc
+_so3_from_euler_YXY: numpy.ufunc
+_so3_from_euler_YXY_deg: numpy.ufunc
+_so3_from_euler_YXZ: numpy.ufunc
+_so3_from_euler_YXZ_deg: numpy.ufunc
+_so3_from_euler_YZX: numpy.ufunc
+_so3_from_euler_YZX_deg: numpy.ufunc
+_so3_from_euler_YZY: numpy.ufunc
+_so3_from_euler_YZY_deg: numpy.ufunc
+_so3_from_euler_ZXY: numpy.ufunc
+_so3_from_euler_ZXY_deg: numpy.ufunc
+_so3_from_euler_ZXZ: numpy.ufunc
+_so3_from_euler_ZXZ_deg: numpy.ufunc
+_so3_from_euler_ZYX: numpy.ufunc
+_so3_from_euler_ZYX_deg: numpy.ufunc
+_so3_from_euler_ZYZ: numpy.ufunc
+_so3_from_euler_ZYZ_deg: numpy.ufunc
+_so3_from_euler_xyx: numpy.ufunc
+_so3_from_euler_xyx_deg: numpy.ufunc
+_so3_from_euler_xyz: numpy.ufunc
+_so3_from_euler_xyz_deg: numpy.ufunc
+_so3_from_euler_xzx: numpy.ufunc
+_so3_from_euler_xzx_deg: numpy.ufunc
+_so3_from_euler_xzy: numpy.ufunc
+_so3_from_euler_xzy_deg: numpy.ufunc
+_so3_from_euler_yxy: numpy.ufunc
+_so3_from_euler_yxy_deg: numpy.ufunc
+_so3_from_euler_yxz: numpy.ufunc
+_so3_from_euler_yxz_deg: numpy.ufunc
+_so3_from_euler_yzx: numpy.ufunc
+_so3_from_euler_yzx_deg: numpy.ufunc
+_so3_from_euler_yzy: numpy.ufunc
+_so3_from_euler_yzy_deg: numpy.ufunc
+_so3_from_euler_zxy: numpy.ufunc
+_so3_from_euler_zxy_deg: numpy.ufunc
+_so3_from_euler_zxz: numpy.ufunc
+_so3_from_euler_zxz_deg: numpy.ufunc
+_so3_from_euler_zyx: numpy.ufunc
+_so3_from_euler_zyx_deg: numpy.ufunc
+_so3_from_euler_zyz: numpy.ufunc
+_so3_from_euler_zyz_deg: numpy.ufunc
 _so3_from_quat_wxyz: numpy.ufunc
 _so3_from_quat_xyzw: numpy.ufunc
+_so3_from_rpy: numpy.ufunc
+_so3_from_rpy_deg: numpy.ufunc
 se3_act: numpy.ufunc
 se3_act_twist: numpy.ufunc
 se3_act_wrench: numpy.ufunc
 se3_adjoint: numpy.ufunc
 se3_compose: numpy.ufunc
-se3_distance: numpy.ufunc
 se3_exp: numpy.ufunc
 se3_hat: numpy.ufunc
 se3_interpolate: numpy.ufunc
@@ -2270,11 +2398,8 @@ se3_inverse: numpy.ufunc
 se3_log: numpy.ufunc
 se3_vee: numpy.ufunc
 so3_act: numpy.ufunc
-so3_angle: numpy.ufunc
 so3_compose: numpy.ufunc
-so3_distance: numpy.ufunc
 so3_exp: numpy.ufunc
-so3_from_uniforms: numpy.ufunc
 so3_hat: numpy.ufunc
 so3_interpolate: numpy.ufunc
 so3_inverse: numpy.ufunc

@@ -433,6 +433,30 @@ class Flag(Arg):
         return None  # pybind11's truth test: any outcome but a crash, checked as is
 
 
+EULER_SEQUENCES = tuple(
+    s
+    for b in ("xyz", "xzy", "yxz", "yzx", "zxy", "zyx", "xyx", "xzx", "yxy", "yzy", "zxz", "zyz")
+    for s in (b, b.upper())
+)
+
+
+@dataclass
+class Sequence(Arg):
+    """An Euler axis sequence: a str (subclasses included), one of scipy's 24
+    (lowercase extrinsic, uppercase intrinsic); another str is a ValueError,
+    anything else a TypeError, both naming the argument."""
+
+    def good(self):
+        return "ZYX"
+
+    def judge(self, value):
+        if not isinstance(value, str):
+            return Refused(TypeError, (self.label, "str"))
+        if value not in EULER_SEQUENCES:
+            return Refused(ValueError, (self.label, "three axes", "got"))
+        return Accepted(str(value))
+
+
 @dataclass
 class Instance(Arg):
     """An object of one of `classes`, initialized (TypeError for anything else)."""
@@ -816,6 +840,28 @@ def _build_spec():
         self_first=True,
         passes_arguments=False,
     )
+    spec["SO3.from_euler"] = Entry(
+        [[Sequence("SO3.from_euler(seq)"), Array("SO3.from_euler(angles)", (3,)), Flag("degrees")]],
+        call=lambda q, a, d: SO3.from_euler(q, a, degrees=d),
+        passes_arguments=False,
+    )
+    spec["SO3.as_euler"] = Entry(
+        [[_self(SO3), Sequence("SO3.as_euler(seq)"), Flag("degrees")]],
+        call=lambda x, q, d: SO3.as_euler(x, q, degrees=d),
+        self_first=True,
+        passes_arguments=False,
+    )
+    spec["SO3.from_rpy"] = Entry(
+        [[Array("SO3.from_rpy(rpy)", (3,)), Flag("degrees")]],
+        call=lambda a, d: SO3.from_rpy(a, degrees=d),
+        passes_arguments=False,
+    )
+    spec["SO3.as_rpy"] = Entry(
+        [[_self(SO3), Flag("degrees")]],
+        call=lambda x, d: SO3.as_rpy(x, degrees=d),
+        self_first=True,
+        passes_arguments=False,
+    )
     spec["SO3.normalized"] = _method(SO3, "normalized")
     spec["SO3.interpolate"] = _static(
         SO3, "interpolate", Instance("a", (SO3,)), Instance("b", (SO3,)), Real("SO3.interpolate(t)")
@@ -1120,6 +1166,23 @@ def _build_spec():
         )
     spec["SO3.random"] = _static(SO3, "random", Rng("so3_random(rng)"))
     spec["SE3.random"] = _static(SE3, "random", Rng("se3_random(rng)"))
+    # Euler angles and RPY: the sequence picks the ufunc
+    for name, core, valid in (("so3_from_euler", (3,), None), ("so3_as_euler", (3, 3), rotation)):
+        operand = "angles" if name == "so3_from_euler" else "R"
+        spec[name] = Entry(
+            [
+                [
+                    Sequence(f"{name}(seq)"),
+                    Operand(f"{name}:{operand}", core, valid),
+                    Flag("degrees"),
+                ]
+            ],
+            call=lambda q, a, d, f=getattr(chasles, name): f(q, a, degrees=d),
+            passes_arguments=False,
+            extra_errors=NUMPY_SCALAR_ERRORS,
+        )
+    spec["so3_from_rpy"] = _array_function("so3_from_rpy", [("rpy",) + v3], kw=("degrees",))
+    spec["so3_as_rpy"] = _array_function("so3_as_rpy", [("R",) + R3], kw=("degrees",))
     return spec
 
 
@@ -1156,10 +1219,11 @@ SPEC = _build_spec()
 
 
 def is_array_function(entry) -> bool:
-    """An array function (so3_*, se3_*): its arguments are operands and flags."""
+    """An array function (so3_*, se3_*): its arguments are operands, flags and
+    an Euler sequence."""
     args = [a for s in entry.signatures for a in s]
     return any(isinstance(a, Operand) for a in args) and all(
-        isinstance(a, (Operand, Flag)) for a in args
+        isinstance(a, (Operand, Flag, Sequence)) for a in args
     )
 
 

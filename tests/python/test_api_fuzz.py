@@ -637,9 +637,21 @@ ANYTHING = [None, 0, 1, 2, 5, -1, 10**30, "f8", np.float32, "float32", "foo", np
             {}, np.array([1, 2]), True, 1.5]  # fmt: skip
 
 
+class StrSubclass(str):
+    pass
+
+
+# Euler sequences: valid ones, near misses, and str subclasses.
+SEQUENCES = ["xyz", "ZYX", "zxz", "XYX", "xxy", "xYz", "XYz", "xy", "xyzx", "", "abc", "x y",
+             "XYZ ", "xyz\0", np.str_("zyz"), np.str_("zzy"), StrSubclass("yxz"), StrSubclass("yy"),
+             b"xyz", ["x", "y", "z"], ("x", "y", "z"), np.array("xyz")]  # fmt: skip
+
+
 def values_for(arg):
     """A hypothesis strategy of inputs for an argument kind."""
     others = st.sampled_from(objects_for(arg) + list(SCALARS))
+    if isinstance(arg, A.Sequence):
+        return st.one_of(st.sampled_from(SEQUENCES), others)
     if isinstance(arg, (A.Real, A.Scalar)):
         return st.one_of(reals(), others)
     if isinstance(arg, A.Flag):

@@ -380,7 +380,8 @@ STORED = {
     Chain: {"screws", "body_screws", "home", "n_joints"},
 }
 COMPUTED = {
-    SO3: {"log", "angle", "inverse", "act", "adjoint", "as_matrix", "as_quat", "normalized", "is_approx", "to_scipy"},
+    SO3: {"log", "angle", "inverse", "act", "adjoint", "as_matrix", "as_quat", "as_euler", "as_rpy",
+          "normalized", "is_approx", "to_scipy"},
     SE3: {"log", "inverse", "act", "act_inv", "adjoint", "as_matrix", "normalized", "is_approx", "to_scipy"},
     Twist: {"to_modern_robotics", "hat", "ad", "bracket", "screw", "pitch", "power", "is_approx"},
     Wrench: {"power", "screw", "pitch", "is_approx"},

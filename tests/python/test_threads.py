@@ -33,7 +33,7 @@ def test_the_array_functions_are_all_here():
     # Python functions over the ufuncs / C++, not array functions themselves
     not_ufuncs = {"so3_random", "se3_random", "so3_gaussian", "se3_gaussian", "so3_mean", "se3_mean"}
     public = sorted(n for n in chasles.__all__ if n.startswith(prefixes) and n not in not_ufuncs)
-    assert ARRAY_FUNCTIONS == public and len(public) == 27
+    assert ARRAY_FUNCTIONS == public and len(public) == 31
 
 
 def operand(arg: A.Operand, shape, rng, dtype):
@@ -61,7 +61,9 @@ def calls(n, rng):
         entry = A.SPEC[name]
         for dtype in (np.float64, np.float32):
             args = [
-                operand(a, (n,), rng, dtype) if isinstance(a, A.Operand) else True
+                operand(a, (n,), rng, dtype)
+                if isinstance(a, A.Operand)
+                else (a.good() if isinstance(a, A.Sequence) else True)
                 for a in entry.signatures[0]
             ]
             out.append((f"{name} {np.dtype(dtype).name}", entry.call, args))

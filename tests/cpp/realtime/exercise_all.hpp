@@ -44,6 +44,12 @@ S exercise_all() noexcept {
   sum += interpolate(R, I, S(0.3)).matrix().sum();
   sum += R.angle() + I.angle() + distance(R, I);
 
+  // Euler angles: one sequence of each kind, the lock branch and RPY
+  sum += as_euler<EulerSequence::xyz>(R).angles.sum() + as_euler<EulerSequence::ZXZ>(R).angles.sum();
+  sum += as_euler<EulerSequence::zyz>(I).angles.sum() + S(as_euler<EulerSequence::XYZ>(I).gimbal_lock ? 1 : 0);
+  sum += from_euler<EulerSequence::yxy>(w).matrix().sum() + from_euler<EulerSequence::ZYX>(w).matrix().sum();
+  sum += from_rpy(w[0], w[1], w[2]).matrix().sum() + as_rpy(R).angles.sum();
+
   // SE3
   const SE3<S> g = SE3<S>::exp(xi), h(R, p), e = SE3<S>::identity();
   sum += g.log().sum() + SE3<S>::exp(Twist<S>(xi)).translation().sum();

@@ -20,6 +20,7 @@
 #include "chasles/detail/nearest_rotation.hpp"
 #include "chasles/detail/series.hpp"
 #include "chasles/distance.hpp"
+#include "chasles/euler.hpp"
 #include "chasles/io.hpp"
 #include "chasles/jacobians.hpp"
 #include "chasles/kinematics.hpp"
