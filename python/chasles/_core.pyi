@@ -4,9 +4,10 @@ chasles C++ kernels (use the chasles package, which re-exports them).
 from __future__ import annotations
 import collections.abc
 import numpy
+import numpy.dtypes
 import numpy.typing
 import typing
-__all__: list[str] = ['Chain', 'SE3', 'SO3', 'Screw', 'Twist', 'Wrench', 'act_jacobians', 'compose_jacobians', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'log_jacobian', 'lplus', 'rminus', 'rplus', 'se3_act', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_vee', 'so3_act', 'so3_compose', 'so3_exp', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee']
+__all__: list[str] = ['Chain', 'SE3', 'SO3', 'Screw', 'Twist', 'Wrench', 'act_jacobians', 'between', 'between_jacobians', 'compose_jacobians', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'lminus_jacobians', 'log_jacobian', 'lplus', 'lplus_jacobians', 'rminus', 'rminus_jacobians', 'rplus', 'rplus_jacobians', 'se3_act', 'se3_act_jacobian', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_distance', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_vee', 'so3_act', 'so3_act_jacobian', 'so3_angle', 'so3_compose', 'so3_distance', 'so3_exp', 'so3_from_uniforms', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee']
 class SO3:
     """
     A rotation of R^3: an element of SO(3), stored as its 3x3 matrix (float64).
@@ -56,6 +57,7 @@ class SO3:
     """
     __array_ufunc__ = None
     __hash__: typing.ClassVar[None] = None
+    dtype: typing.ClassVar[numpy.dtypes.Float64DType]
     @staticmethod
     def exp(w: numpy.typing.ArrayLike) -> SO3:
         """
@@ -214,6 +216,33 @@ class SO3:
             True
         """
     @staticmethod
+    def from_scipy(r: typing.Any) -> SO3:
+        """
+        The rotation of a single scipy.spatial.transform.Rotation.
+        
+        scipy is imported by this call (it is not needed by ``import chasles``).
+        The rotation is read from scipy's unit quaternion, as ``SO3.from_quat``.
+        For a stack of rotations use the array functions on ``r.as_matrix()``
+        (shape (N, 3, 3)), or ``chasles.so3_from_quat(r.as_quat())``.
+        
+        Args:
+            r: a single scipy.spatial.transform.Rotation.
+        
+        Returns:
+            SO3: the same rotation.
+        
+        Raises:
+            TypeError: r is not a Rotation.
+            ValueError: r is a stack of rotations.
+            ImportError: scipy is not installed.
+        
+        Example:
+            >>> from scipy.spatial.transform import Rotation
+            >>> R = SO3.from_scipy(Rotation.from_rotvec([0.0, 0.0, 0.5]))
+            >>> np.round(R.log(), 12) + 0.0
+            array([0. , 0. , 0.5])
+        """
+    @staticmethod
     def hat(w: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
         The skew-symmetric matrix [w] of w, so that [w] @ p = w x p.
@@ -308,6 +337,25 @@ class SO3:
         Raises:
             ValueError: w is not of shape (3,), or not finite.
             TypeError: w is not real.
+        """
+    @staticmethod
+    def random(rng: typing.Any = None) -> SO3:
+        """
+        A uniform random rotation (the Haar measure), as scipy's Rotation.random().
+        
+        Shoemake's method over three uniforms drawn from ``rng``: one element of
+        ``chasles.so3_random``.
+        
+        Args:
+            rng: None (a fresh ``numpy.random.default_rng()``), an int seed or a
+                numpy Generator.
+        
+        Returns:
+            SO3: the rotation.
+        
+        Example:
+            >>> SO3.random(rng=7).is_approx(SO3.random(rng=7), 0.0)
+            True
         """
     @staticmethod
     def right_jacobian(w: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
@@ -498,6 +546,21 @@ class SO3:
         Returns:
             ndarray: shape (3, 3).
         """
+    def angle(self) -> float:
+        """
+        The rotation angle theta = |log()| in [0, pi], radians.
+        
+        From the halves of the quaternion, theta = 2 atan2(|q_v|, |q_w|), accurate
+        to a few ulps near 0 and near pi (acos of the trace loses half the digits
+        there). scipy: ``Rotation.magnitude()``.
+        
+        Returns:
+            float: the angle.
+        
+        Example:
+            >>> round(SO3.exp([0.0, 0.0, 0.5]).angle(), 12)
+            0.5
+        """
     def as_euler(self, seq: str, degrees: bool = False) -> numpy.typing.NDArray[numpy.float64]:
         """
         Euler angles of the rotation, as scipy's ``Rotation.as_euler``.
@@ -616,6 +679,26 @@ class SO3:
         Returns:
             SO3: the projected rotation.
         """
+    def to_scipy(self) -> typing.Any:
+        """
+        This rotation as a scipy.spatial.transform.Rotation.
+        
+        scipy is imported by this call (it is not needed by ``import chasles``).
+        scipy's ``Rotation.from_matrix(R)`` works too (``np.asarray(R)`` is the
+        matrix); for many rotations, ``Rotation.from_matrix`` of an array of shape
+        (N, 3, 3).
+        
+        Returns:
+            scipy.spatial.transform.Rotation: a single rotation, from the unit
+            quaternion of ``as_quat()``.
+        
+        Raises:
+            ImportError: scipy is not installed.
+        
+        Example:
+            >>> SO3.exp([0.0, 0.0, 0.5]).to_scipy().as_rotvec().round(12) + 0.0
+            array([0. , 0. , 0.5])
+        """
 class SE3:
     """
     A rigid motion of R^3: an element of SE(3), stored as a rotation R (an SO3)
@@ -662,6 +745,7 @@ class SE3:
     """
     __array_ufunc__ = None
     __hash__: typing.ClassVar[None] = None
+    dtype: typing.ClassVar[numpy.dtypes.Float64DType]
     @staticmethod
     def exp(xi: numpy.typing.ArrayLike) -> SE3:
         """
@@ -732,6 +816,33 @@ class SE3:
         
         Returns:
             SE3: the motion.
+        """
+    @staticmethod
+    def from_scipy(tf: typing.Any) -> SE3:
+        """
+        The motion of a single scipy.spatial.transform.RigidTransform.
+        
+        scipy (1.16 or later) is imported by this call (it is not needed by
+        ``import chasles``). The motion is read from scipy's 4x4 matrix, checked as
+        by ``SE3.from_matrix``. For a stack of transforms use the array functions on
+        ``tf.as_matrix()`` (shape (N, 4, 4)).
+        
+        Args:
+            tf: a single scipy.spatial.transform.RigidTransform.
+        
+        Returns:
+            SE3: the same motion.
+        
+        Raises:
+            TypeError: tf is not a RigidTransform.
+            ValueError: tf is a stack of transforms, or its matrix is not a rigid
+                motion (a transform built with normalize=False).
+            ImportError: scipy (or RigidTransform, scipy < 1.16) is missing.
+        
+        Example:
+            >>> from scipy.spatial.transform import RigidTransform
+            >>> SE3.from_scipy(RigidTransform.from_translation([1.0, 2.0, 3.0])).translation
+            array([1., 2., 3.])
         """
     @staticmethod
     def from_screw(point: numpy.typing.ArrayLike, direction: numpy.typing.ArrayLike, pitch: float, theta: float) -> SE3:
@@ -848,6 +959,28 @@ class SE3:
         Raises:
             ValueError: xi is not of shape (6,), or not finite.
             TypeError: xi is not real.
+        """
+    @staticmethod
+    def random(rng: typing.Any = None, *, low: typing.Any = -1.0, high: typing.Any = 1.0) -> SE3:
+        """
+        A random rigid motion: a uniform rotation and a translation uniform in a box.
+        
+        One element of ``chasles.se3_random``: the rotation as SO3.random, then the
+        translation uniform in [low, high] componentwise.
+        
+        Args:
+            rng: None (a fresh ``numpy.random.default_rng()``), an int seed or a
+                numpy Generator.
+            low: float or array_like of shape (3,): the box's lower corner.
+            high: float or array_like of shape (3,): the box's upper corner.
+        
+        Returns:
+            SE3: the pose.
+        
+        Example:
+            >>> g = SE3.random(rng=1, low=0.0, high=0.5)
+            >>> bool(np.all((0.0 <= g.translation) & (g.translation <= 0.5)))
+            True
         """
     @staticmethod
     def right_jacobian(xi: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
@@ -1146,6 +1279,26 @@ class SE3:
         Returns:
             SE3: the projected motion.
         """
+    def to_scipy(self) -> typing.Any:
+        """
+        This motion as a scipy.spatial.transform.RigidTransform.
+        
+        scipy (1.16 or later) is imported by this call (it is not needed by
+        ``import chasles``). scipy's ``RigidTransform.from_matrix(g)`` works too
+        (``np.asarray(g)`` is the 4x4 matrix); for many motions,
+        ``RigidTransform.from_matrix`` of an array of shape (N, 4, 4).
+        
+        Returns:
+            scipy.spatial.transform.RigidTransform: a single transform, from the
+            homogeneous matrix of ``as_matrix()``.
+        
+        Raises:
+            ImportError: scipy (or RigidTransform, scipy < 1.16) is missing.
+        
+        Example:
+            >>> SE3(translation=[1.0, 2.0, 3.0]).to_scipy().translation
+            array([1., 2., 3.])
+        """
     @property
     def rotation(self) -> SO3:
         """
@@ -1313,6 +1466,7 @@ class Twist:
     """
     __array_ufunc__ = None
     __hash__: typing.ClassVar[None] = None
+    dtype: typing.ClassVar[numpy.dtypes.Float64DType]
     @staticmethod
     def body(g: SE3, g_dot: numpy.typing.ArrayLike) -> Twist:
         """
@@ -1616,6 +1770,7 @@ class Wrench:
     """
     __array_ufunc__ = None
     __hash__: typing.ClassVar[None] = None
+    dtype: typing.ClassVar[numpy.dtypes.Float64DType]
     @staticmethod
     def from_screw(point: numpy.typing.ArrayLike, direction: numpy.typing.ArrayLike, pitch: float, magnitude: float) -> Wrench:
         """
@@ -2023,6 +2178,14 @@ class Chain:
         """
         numpy.ndarray: shape (n, 6), the space screws S_i, one row (v, w) per joint (a copy).
         """
+def _se3_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], geodesic: bool, max_iterations: typing.SupportsInt | typing.SupportsIndex) -> tuple:
+    """
+    The C++ mean behind chasles.se3_mean, on checked (N, 4, 4) float64 poses and (N,) weights: (mean, iterations, converged).
+    """
+def _so3_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], geodesic: bool, max_iterations: typing.SupportsInt | typing.SupportsIndex) -> tuple:
+    """
+    The C++ mean behind chasles.so3_mean, on checked (N, 3, 3) float64 rotations and (N,) weights: (mean, iterations, converged).
+    """
 @typing.overload
 def act_jacobians(g: SO3, p: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     ...
@@ -2053,6 +2216,59 @@ def act_jacobians(g: SE3, p: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArr
         array([[ 1.,  0.,  0.,  0.,  1.,  0.],
                [ 0.,  1.,  0., -1.,  0.,  0.],
                [ 0.,  0.,  1.,  0.,  0.,  0.]])
+    """
+@typing.overload
+def between(a: SO3, b: SO3) -> SO3:
+    ...
+@typing.overload
+def between(a: SE3, b: SE3) -> SE3:
+    """
+    between(a, b) = a^-1 b: b seen from a (manif's a.between(b)).
+    
+    Args:
+        a: SO3 or SE3.
+        b: of the same group as a.
+    
+    Returns:
+        SO3 or SE3: a^-1 b.
+    
+    Raises:
+        TypeError: a and b are not of the same group.
+    
+    Example:
+        >>> a = chasles.SE3(translation=[1.0, 0.0, 0.0])
+        >>> b = chasles.SE3(translation=[1.0, 2.0, 0.0])
+        >>> chasles.between(a, b).translation
+        array([0., 2., 0.])
+    """
+@typing.overload
+def between_jacobians(a: SO3, b: SO3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
+@typing.overload
+def between_jacobians(a: SE3, b: SE3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    """
+    The Jacobians (J_a, J_b) of (a, b) -> between(a, b) = a^-1 b.
+    
+    Right-local: between(a exp(da), b exp(db)) = between(a, b) exp(J_a da +
+    J_b db + o), with J_a = -Ad_{b^-1 a} and J_b = I (Sola et al. 2018,
+    section IV; manif's between Jacobians).
+    
+    Args:
+        a: SO3 or SE3.
+        b: of the same group as a.
+    
+    Returns:
+        tuple[ndarray, ndarray]: (J_a, J_b), each of shape (3, 3) for SO3,
+        (6, 6) for SE3 (twists (v, w), linear part first), float64.
+    
+    Raises:
+        TypeError: a and b are not of the same group.
+    
+    Example:
+        >>> a = chasles.SO3.exp([0.0, 0.0, np.pi / 2])
+        >>> J_a, J_b = chasles.between_jacobians(a, chasles.SO3())
+        >>> bool(np.allclose(J_a, -a.as_matrix())), bool(np.array_equal(J_b, np.eye(3)))
+        (True, True)
     """
 @typing.overload
 def compose_jacobians(a: SO3, b: SO3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
@@ -2185,6 +2401,36 @@ def lminus(g: SE3, h: SE3) -> numpy.typing.NDArray[numpy.float64]:
         ndarray: shape (3,) for SO3, (6,) for SE3 ((v, w), linear part first).
     """
 @typing.overload
+def lminus_jacobians(g: SO3, h: SO3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
+@typing.overload
+def lminus_jacobians(g: SE3, h: SE3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    """
+    The Jacobians (J_g, J_h) of (g, h) -> lminus(g, h) = log(g h^-1).
+    
+    Right-local in the arguments: lminus(g exp(dg), h exp(dh)) = lminus(g, h) +
+    J_g dg + J_h dh + o, with xi = lminus(g, h), J_g = J_r(xi)^-1 Ad_h and
+    J_h = -J_g (Sola et al. 2018, section IV). Finite up to the angle pi, where
+    log jumps between w and -w.
+    
+    Args:
+        g: SO3 or SE3.
+        h: of the same group as g.
+    
+    Returns:
+        tuple[ndarray, ndarray]: (J_g, J_h), each of shape (3, 3) for SO3,
+        (6, 6) for SE3 (twists (v, w), linear part first), float64.
+    
+    Raises:
+        TypeError: g and h are not of the same group.
+    
+    Example:
+        >>> h = chasles.SO3.exp([0.0, 0.0, np.pi / 2])
+        >>> J_g, J_h = chasles.lminus_jacobians(h, h)
+        >>> bool(np.allclose(J_g, h.as_matrix())), bool(np.array_equal(J_h, -J_g))
+        (True, True)
+    """
+@typing.overload
 def log_jacobian(g: SO3) -> numpy.typing.NDArray[numpy.float64]:
     ...
 @typing.overload
@@ -2230,6 +2476,36 @@ def lplus(xi: numpy.typing.ArrayLike, g: SE3) -> SE3:
         ValueError: xi has the wrong shape for g, or is not finite.
     """
 @typing.overload
+def lplus_jacobians(xi: numpy.typing.ArrayLike, g: SO3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
+@typing.overload
+def lplus_jacobians(xi: numpy.typing.ArrayLike, g: SE3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    """
+    The Jacobians (J_xi, J_g) of (xi, g) -> lplus(xi, g) = exp(xi) g.
+    
+    Right-local in the result and in g: lplus(xi + dxi, g exp(dg)) =
+    lplus(xi, g) exp(J_xi dxi + J_g dg + o), with J_xi = Ad_{g^-1} J_r(xi) and
+    J_g = I (Sola et al. 2018, sections III and IV).
+    
+    Args:
+        xi: tangent vector, shape (3,) for SO3, (6,) for SE3 ((v, w), linear
+            part first), finite.
+        g: SO3 or SE3.
+    
+    Returns:
+        tuple[ndarray, ndarray]: (J_xi, J_g), each of shape (3, 3) for SO3,
+        (6, 6) for SE3, float64.
+    
+    Raises:
+        ValueError: xi has the wrong shape for g, or is not finite.
+    
+    Example:
+        >>> g = chasles.SO3.exp([0.0, 0.0, np.pi / 2])
+        >>> J_xi, J_g = chasles.lplus_jacobians([0.0, 0.0, 0.0], g)
+        >>> bool(np.allclose(J_xi, g.inverse().as_matrix())), bool(np.array_equal(J_g, np.eye(3)))
+        (True, True)
+    """
+@typing.overload
 def rminus(g: SO3, h: SO3) -> numpy.typing.NDArray[numpy.float64]:
     ...
 @typing.overload
@@ -2254,6 +2530,35 @@ def rminus(g: SE3, h: SE3) -> numpy.typing.NDArray[numpy.float64]:
         array([0.3, 0. , 0. ])
     """
 @typing.overload
+def rminus_jacobians(g: SO3, h: SO3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
+@typing.overload
+def rminus_jacobians(g: SE3, h: SE3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    """
+    The Jacobians (J_g, J_h) of (g, h) -> rminus(g, h) = log(h^-1 g).
+    
+    Right-local: rminus(g exp(dg), h exp(dh)) = rminus(g, h) + J_g dg + J_h dh
+    + o, with xi = rminus(g, h), J_g = J_r(xi)^-1 and J_h = -J_l(xi)^-1 (Sola et
+    al. 2018, section IV; manif's rminus Jacobians). They are those of the branch
+    log returns: finite up to the angle pi, where log jumps between w and -w.
+    
+    Args:
+        g: SO3 or SE3.
+        h: of the same group as g.
+    
+    Returns:
+        tuple[ndarray, ndarray]: (J_g, J_h), each of shape (3, 3) for SO3,
+        (6, 6) for SE3 (twists (v, w), linear part first), float64.
+    
+    Raises:
+        TypeError: g and h are not of the same group.
+    
+    Example:
+        >>> J_g, J_h = chasles.rminus_jacobians(chasles.SE3(), chasles.SE3())
+        >>> bool(np.array_equal(J_g, np.eye(6))), bool(np.array_equal(J_h, -np.eye(6)))
+        (True, True)
+    """
+@typing.overload
 def rplus(g: SO3, xi: numpy.typing.ArrayLike) -> SO3:
     ...
 @typing.overload
@@ -2276,6 +2581,35 @@ def rplus(g: SE3, xi: numpy.typing.ArrayLike) -> SE3:
         >>> g = chasles.SE3(translation=[1.0, 0.0, 0.0])
         >>> chasles.rplus(g, [0.0, 2.0, 0.0, 0.0, 0.0, 0.0]).translation
         array([1., 2., 0.])
+    """
+@typing.overload
+def rplus_jacobians(g: SO3, xi: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
+@typing.overload
+def rplus_jacobians(g: SE3, xi: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    """
+    The Jacobians (J_g, J_xi) of (g, xi) -> rplus(g, xi) = g exp(xi).
+    
+    Right-local: rplus(g exp(dg), xi + dxi) = rplus(g, xi) exp(J_g dg + J_xi dxi
+    + o), with J_g = Ad_{exp(xi)}^-1 = Ad_{exp(-xi)} and J_xi = J_r(xi) (Sola et
+    al. 2018, section IV; manif's rplus Jacobians).
+    
+    Args:
+        g: SO3 or SE3.
+        xi: tangent vector, shape (3,) for SO3, (6,) for SE3 ((v, w), linear
+            part first), finite.
+    
+    Returns:
+        tuple[ndarray, ndarray]: (J_g, J_xi), each of shape (3, 3) for SO3,
+        (6, 6) for SE3, float64.
+    
+    Raises:
+        ValueError: xi has the wrong shape for g, or is not finite.
+    
+    Example:
+        >>> J_g, J_xi = chasles.rplus_jacobians(chasles.SO3(), [0.0, 0.0, 0.0])
+        >>> bool(np.array_equal(J_g, np.eye(3))), bool(np.array_equal(J_xi, np.eye(3)))
+        (True, True)
     """
 __version__: str = '0.1.0'
 _chain_forward: numpy.ufunc
@@ -2387,10 +2721,12 @@ _so3_from_quat_xyzw: numpy.ufunc
 _so3_from_rpy: numpy.ufunc
 _so3_from_rpy_deg: numpy.ufunc
 se3_act: numpy.ufunc
+se3_act_jacobian: numpy.ufunc
 se3_act_twist: numpy.ufunc
 se3_act_wrench: numpy.ufunc
 se3_adjoint: numpy.ufunc
 se3_compose: numpy.ufunc
+se3_distance: numpy.ufunc
 se3_exp: numpy.ufunc
 se3_hat: numpy.ufunc
 se3_interpolate: numpy.ufunc
@@ -2398,8 +2734,12 @@ se3_inverse: numpy.ufunc
 se3_log: numpy.ufunc
 se3_vee: numpy.ufunc
 so3_act: numpy.ufunc
+so3_act_jacobian: numpy.ufunc
+so3_angle: numpy.ufunc
 so3_compose: numpy.ufunc
+so3_distance: numpy.ufunc
 so3_exp: numpy.ufunc
+so3_from_uniforms: numpy.ufunc
 so3_hat: numpy.ufunc
 so3_interpolate: numpy.ufunc
 so3_inverse: numpy.ufunc
