@@ -23,26 +23,14 @@ namespace chasles_py {
 namespace {
 
 using ufunc::Core;
+using ufunc::array_doc;
 using ufunc::def_ufunc;
-
-/// The real type of a kernel argument (Eigen::Matrix<T, ...>).
-template <typename V>
-using ScalarOf = typename std::decay_t<V>::Scalar;
+using ufunc::ScalarOf;
 
 template <typename T>
 using SO3 = chasles::SO3<T>;
 template <typename T>
 using SE3 = chasles::SE3<T>;
-
-/// The paragraph every array function's docstring ends with.
-std::string doc(const char* body) {
-  return std::string(body) + R"(
-
-A numpy generalized ufunc: numpy's rules for broadcasting, dtypes
-(float32 and float64 kernels), out= and axes= apply (``help(chasles)``).
-Matrices are taken as given, like the C++ unchecked constructors, and a NaN
-gives NaN in its own element only.)";
-}
 
 /// so3_from_quat's kernel for one quaternion order: q as given (any nonzero
 /// norm, normalized by the C++ API); a zero or non-finite quaternion has no
@@ -102,7 +90,7 @@ Returns:
 // ---- SO(3) ------------------------------------------------------------------
 
 void bind_so3_batch(py::module_& m) {
-  def_ufunc<Core<3, 3>(Core<3>)>(m, "so3_exp", "w", doc(R"(Rotation matrices of rotation vectors: R = exp([w]).
+  def_ufunc<Core<3, 3>(Core<3>)>(m, "so3_exp", "w", array_doc(R"(Rotation matrices of rotation vectors: R = exp([w]).
 
 Rodrigues' formula, R = I + (sin t / t) [w] + ((1 - cos t) / t^2) [w]^2 with
 t = |w|, exact to a few ulps for every w (Taylor series near 0).
@@ -115,7 +103,7 @@ Returns:
     numpy.ndarray of shape (..., 3, 3): the rotation matrices.)"),
       [](const auto& w) { return SO3<ScalarOf<decltype(w)>>::exp(w).matrix(); });
 
-  def_ufunc<Core<3>(Core<3, 3>)>(m, "so3_log", "R", doc(R"(Rotation vectors of rotation matrices: w = log(R)^vee.
+  def_ufunc<Core<3>(Core<3, 3>)>(m, "so3_log", "R", array_doc(R"(Rotation vectors of rotation matrices: w = log(R)^vee.
 
 The angle |w| is in [0, pi]; at exactly pi either axis sign is returned,
 never NaN. Robust near 0 and near pi, and as accurate for a matrix slightly
@@ -128,7 +116,7 @@ Returns:
     numpy.ndarray of shape (..., 3): the rotation vectors (axis times angle).)"),
       [](const auto& R) { return SO3<ScalarOf<decltype(R)>>::from_matrix_unchecked(R).log(); });
 
-  def_ufunc<Core<3, 3>(Core<3, 3>, Core<3, 3>)>(m, "so3_compose", "a, b", doc(R"(Composition of rotations: a @ b (R_ac = R_ab R_bc).
+  def_ufunc<Core<3, 3>(Core<3, 3>, Core<3, 3>)>(m, "so3_compose", "a, b", array_doc(R"(Composition of rotations: a @ b (R_ac = R_ab R_bc).
 
 Args:
     a: array_like of shape (..., 3, 3): rotation matrices.
@@ -142,7 +130,7 @@ Returns:
         return (SO3<T>::from_matrix_unchecked(a) * SO3<T>::from_matrix_unchecked(b)).matrix();
       });
 
-  def_ufunc<Core<3, 3>(Core<3, 3>)>(m, "so3_inverse", "R", doc(R"(Inverse rotations: R^-1 = R^T.
+  def_ufunc<Core<3, 3>(Core<3, 3>)>(m, "so3_inverse", "R", array_doc(R"(Inverse rotations: R^-1 = R^T.
 
 Args:
     R: array_like of shape (..., 3, 3): rotation matrices.
@@ -151,7 +139,7 @@ Returns:
     numpy.ndarray of shape (..., 3, 3): the inverses.)"),
       [](const auto& R) { return SO3<ScalarOf<decltype(R)>>::from_matrix_unchecked(R).inverse().matrix(); });
 
-  def_ufunc<Core<3>(Core<3, 3>, Core<3>)>(m, "so3_act", "R, points", doc(R"(Rotated points or vectors: p_a = R_ab p_b.
+  def_ufunc<Core<3>(Core<3, 3>, Core<3>)>(m, "so3_act", "R, points", array_doc(R"(Rotated points or vectors: p_a = R_ab p_b.
 
 Broadcasts: one rotation of shape (3, 3) with points of shape (N, 3), N
 rotations with N points, (N, 1, 3, 3) with (M, 3) for every pair, ...
@@ -166,7 +154,7 @@ Returns:
         return SO3<ScalarOf<decltype(R)>>::from_matrix_unchecked(R).act(p);
       });
 
-  def_ufunc<Core<3, 3>(Core<3>)>(m, "so3_hat", "w", doc(R"(Skew-symmetric matrices: [w] = [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]].
+  def_ufunc<Core<3, 3>(Core<3>)>(m, "so3_hat", "w", array_doc(R"(Skew-symmetric matrices: [w] = [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]].
 
 So that [w] p = w x p.
 
@@ -177,7 +165,7 @@ Returns:
     numpy.ndarray of shape (..., 3, 3): the matrices [w].)"),
       [](const auto& w) { return SO3<ScalarOf<decltype(w)>>::hat(w); });
 
-  def_ufunc<Core<3>(Core<3, 3>)>(m, "so3_vee", "matrix", doc(R"(The vectors of skew-symmetric matrices: vee([w]) = w.
+  def_ufunc<Core<3>(Core<3, 3>)>(m, "so3_vee", "matrix", array_doc(R"(The vectors of skew-symmetric matrices: vee([w]) = w.
 
 Reads the antisymmetric part (W - W^T) / 2, so a matrix that is not exactly
 skew gives the w of its nearest skew matrix.
@@ -189,7 +177,7 @@ Returns:
     numpy.ndarray of shape (..., 3): the vectors w.)"),
       [](const auto& W) { return SO3<ScalarOf<decltype(W)>>::vee(W); });
 
-  def_ufunc<Core<3, 3>(Core<3, 3>, Core<3, 3>, Core<>)>(m, "so3_interpolate", "a, b, t", doc(R"(Geodesic interpolation of rotations: a exp(t log(a^-1 b)).
+  def_ufunc<Core<3, 3>(Core<3, 3>, Core<3, 3>, Core<>)>(m, "so3_interpolate", "a, b, t", array_doc(R"(Geodesic interpolation of rotations: a exp(t log(a^-1 b)).
 
 t = 0 gives a, t = 1 gives b, constant angular velocity in between.
 
@@ -206,16 +194,16 @@ Returns:
         return chasles::interpolate(SO3<T>::from_matrix_unchecked(a), SO3<T>::from_matrix_unchecked(b), t)
             .matrix();
       });
-  def_ufunc<Core<3, 3>(Core<4>)>(m, "_so3_from_quat_xyzw", "quat", doc(kFromQuatDoc), from_quat_kernel<false>());
-  def_ufunc<Core<3, 3>(Core<4>)>(m, "_so3_from_quat_wxyz", "quat", doc(kFromQuatDoc), from_quat_kernel<true>());
-  def_ufunc<Core<4>(Core<3, 3>)>(m, "_so3_as_quat_xyzw", "R", doc(kAsQuatDoc), as_quat_kernel<false>());
-  def_ufunc<Core<4>(Core<3, 3>)>(m, "_so3_as_quat_wxyz", "R", doc(kAsQuatDoc), as_quat_kernel<true>());
+  def_ufunc<Core<3, 3>(Core<4>)>(m, "_so3_from_quat_xyzw", "quat", array_doc(kFromQuatDoc), from_quat_kernel<false>());
+  def_ufunc<Core<3, 3>(Core<4>)>(m, "_so3_from_quat_wxyz", "quat", array_doc(kFromQuatDoc), from_quat_kernel<true>());
+  def_ufunc<Core<4>(Core<3, 3>)>(m, "_so3_as_quat_xyzw", "R", array_doc(kAsQuatDoc), as_quat_kernel<false>());
+  def_ufunc<Core<4>(Core<3, 3>)>(m, "_so3_as_quat_wxyz", "R", array_doc(kAsQuatDoc), as_quat_kernel<true>());
 }
 
 // ---- SE(3) and twists -------------------------------------------------------
 
 void bind_se3_batch(py::module_& m) {
-  def_ufunc<Core<4, 4>(Core<6>)>(m, "se3_exp", "xi", doc(R"(Rigid motions of twists: g = exp([xi]) (4x4).
+  def_ufunc<Core<4, 4>(Core<6>)>(m, "se3_exp", "xi", array_doc(R"(Rigid motions of twists: g = exp([xi]) (4x4).
 
 Twist order xi = (v, w), linear part first (Murray, Li and Sastry). In
 closed form: R = exp([w]), p = V v with V = I + B [w] + C [w]^2; w = 0 is a
@@ -229,7 +217,7 @@ Returns:
     [[R, p], [0, 1]].)"),
       [](const auto& xi) { return SE3<ScalarOf<decltype(xi)>>::exp(xi); });
 
-  def_ufunc<Core<6>(Core<4, 4>)>(m, "se3_log", "g", doc(R"(Twists of rigid motions: xi = log(g)^vee, xi = (v, w).
+  def_ufunc<Core<6>(Core<4, 4>)>(m, "se3_log", "g", array_doc(R"(Twists of rigid motions: xi = log(g)^vee, xi = (v, w).
 
 Rotation angle |w| in [0, pi] (at exactly pi, either axis sign); v = V^-1 p.
 
@@ -240,7 +228,7 @@ Returns:
     numpy.ndarray of shape (..., 6): the twists (v, w), linear part first.)"),
       [](const auto& g) { return SE3<ScalarOf<decltype(g)>>::from_matrix_unchecked(g).log(); });
 
-  def_ufunc<Core<4, 4>(Core<4, 4>, Core<4, 4>)>(m, "se3_compose", "a, b", doc(R"(Composition of rigid motions: a @ b (g_ac = g_ab g_bc).
+  def_ufunc<Core<4, 4>(Core<4, 4>, Core<4, 4>)>(m, "se3_compose", "a, b", array_doc(R"(Composition of rigid motions: a @ b (g_ac = g_ab g_bc).
 
 Args:
     a: array_like of shape (..., 4, 4): homogeneous matrices.
@@ -254,7 +242,7 @@ Returns:
         return SE3<T>::from_matrix_unchecked(a) * SE3<T>::from_matrix_unchecked(b);
       });
 
-  def_ufunc<Core<4, 4>(Core<4, 4>)>(m, "se3_inverse", "g", doc(R"(Inverse rigid motions: g^-1 = [[R^T, -R^T p], [0, 1]].
+  def_ufunc<Core<4, 4>(Core<4, 4>)>(m, "se3_inverse", "g", array_doc(R"(Inverse rigid motions: g^-1 = [[R^T, -R^T p], [0, 1]].
 
 Args:
     g: array_like of shape (..., 4, 4): homogeneous matrices.
@@ -263,7 +251,7 @@ Returns:
     numpy.ndarray of shape (..., 4, 4): the inverses.)"),
       [](const auto& g) { return SE3<ScalarOf<decltype(g)>>::from_matrix_unchecked(g).inverse(); });
 
-  def_ufunc<Core<3>(Core<4, 4>, Core<3>)>(m, "se3_act", "g, points", doc(R"(Transformed points: q_a = R_ab q_b + p_ab.
+  def_ufunc<Core<3>(Core<4, 4>, Core<3>)>(m, "se3_act", "g, points", array_doc(R"(Transformed points: q_a = R_ab q_b + p_ab.
 
 Broadcasts: one pose of shape (4, 4) with points of shape (N, 3), N poses
 with N points, (N, 1, 4, 4) with (M, 3) for every pair, ...
@@ -278,7 +266,7 @@ Returns:
         return SE3<ScalarOf<decltype(g)>>::from_matrix_unchecked(g).act(p);
       });
 
-  def_ufunc<Core<6, 6>(Core<4, 4>)>(m, "se3_adjoint", "g", doc(R"(Adjoint matrices: Ad_g = [[R, [p] R], [0, R]] (6x6).
+  def_ufunc<Core<6, 6>(Core<4, 4>)>(m, "se3_adjoint", "g", array_doc(R"(Adjoint matrices: Ad_g = [[R, [p] R], [0, R]] (6x6).
 
 Twist order (v, w), linear part first: twists change frame by
 xi_a = Ad_g xi_b, wrenches by F_b = Ad_g^T F_a.
@@ -290,7 +278,7 @@ Returns:
     numpy.ndarray of shape (..., 6, 6): the adjoint matrices.)"),
       [](const auto& g) { return SE3<ScalarOf<decltype(g)>>::from_matrix_unchecked(g).adjoint(); });
 
-  def_ufunc<Core<6>(Core<4, 4>, Core<6>)>(m, "se3_act_twist", "g, xi", doc(R"(Twists changed from frame b to frame a: xi_a = Ad_g xi_b.
+  def_ufunc<Core<6>(Core<4, 4>, Core<6>)>(m, "se3_act_twist", "g, xi", array_doc(R"(Twists changed from frame b to frame a: xi_a = Ad_g xi_b.
 
 xi_a = (R v + p x R w, R w) for xi_b = (v, w), linear part first.
 
@@ -305,7 +293,7 @@ Returns:
         return SE3<T>::from_matrix_unchecked(g).act(chasles::Twist<T>(xi)).vector();
       });
 
-  def_ufunc<Core<6>(Core<4, 4>, Core<6>)>(m, "se3_act_wrench", "g, F", doc(R"(Wrenches changed from frame b to frame a: F_a = Ad_g^-T F_b.
+  def_ufunc<Core<6>(Core<4, 4>, Core<6>)>(m, "se3_act_wrench", "g, F", array_doc(R"(Wrenches changed from frame b to frame a: F_a = Ad_g^-T F_b.
 
 F_a = (R f, p x R f + R tau) for F_b = (f, tau), force first, so that the
 power xi . F is the same in both frames.
@@ -321,7 +309,7 @@ Returns:
         return SE3<T>::from_matrix_unchecked(g).act(chasles::Wrench<T>(F)).vector();
       });
 
-  def_ufunc<Core<4, 4>(Core<4, 4>, Core<4, 4>, Core<>)>(m, "se3_interpolate", "a, b, t", doc(R"(Screw interpolation of rigid motions: a exp(t log(a^-1 b)).
+  def_ufunc<Core<4, 4>(Core<4, 4>, Core<4, 4>, Core<>)>(m, "se3_interpolate", "a, b, t", array_doc(R"(Screw interpolation of rigid motions: a exp(t log(a^-1 b)).
 
 t = 0 gives a, t = 1 gives b, one screw motion in between.
 
@@ -338,7 +326,7 @@ Returns:
         return chasles::interpolate(SE3<T>::from_matrix_unchecked(a), SE3<T>::from_matrix_unchecked(b), t);
       });
 
-  def_ufunc<Core<4, 4>(Core<6>)>(m, "se3_hat", "xi", doc(R"(Matrices of twists: [xi] = [[ [w], v ], [0, 0]] (4x4).
+  def_ufunc<Core<4, 4>(Core<6>)>(m, "se3_hat", "xi", array_doc(R"(Matrices of twists: [xi] = [[ [w], v ], [0, 0]] (4x4).
 
 Args:
     xi: array_like of shape (..., 6): twists (v, w), linear part first.
@@ -347,7 +335,7 @@ Returns:
     numpy.ndarray of shape (..., 4, 4): the matrices [xi].)"),
       [](const auto& xi) { return chasles::Twist<ScalarOf<decltype(xi)>>(xi).hat(); });
 
-  def_ufunc<Core<6>(Core<4, 4>)>(m, "se3_vee", "matrix", doc(R"(Twists of 4x4 matrices: [xi]^vee = (v, w), linear part first.
+  def_ufunc<Core<6>(Core<4, 4>)>(m, "se3_vee", "matrix", array_doc(R"(Twists of 4x4 matrices: [xi]^vee = (v, w), linear part first.
 
 v is the last column's top three entries, w the vee of the antisymmetric
 part of the top-left 3x3 block; the bottom row is not read.

@@ -613,7 +613,7 @@ Example:
   using ufunc::Core;
   using ufunc::def_ufunc;
   def_ufunc<Core<3, 3>(Core<3, 3>, Core<3>)>(m, "so3_act_jacobian", "R, points",
-                                              R"(Jacobians d(R p)/dR = -R [p] of rotated points, right-local in R.
+                                              ufunc::array_doc(R"(Jacobians d(R p)/dR = -R [p] of rotated points, right-local in R.
 
 (R exp(dw)) p = R p - R [p] dw + o(dw) (Sola et al. 2018, appendix B), as
 act_jacobians(R, p)[0] for one rotation. The Jacobian with respect to the
@@ -628,12 +628,7 @@ Args:
 
 Returns:
     numpy.ndarray of shape (..., 3, 3): the Jacobians (columns: the rotation
-    vector dw).
-
-A numpy generalized ufunc: numpy's rules for broadcasting, dtypes
-(float32 and float64 kernels), out= and axes= apply (``help(chasles)``).
-Matrices are taken as given, like the C++ unchecked constructors, and a NaN
-gives NaN in its own element only.)",
+    vector dw).)"),
                                               [](const auto& R, const auto& p) {
                                                 using T = typename std::decay_t<decltype(R)>::Scalar;
                                                 return chasles::act_jacobians<T>(
@@ -642,7 +637,7 @@ gives NaN in its own element only.)",
                                                     .group;
                                               });
   def_ufunc<Core<3, 6>(Core<4, 4>, Core<3>)>(m, "se3_act_jacobian", "g, points",
-                                              R"(Jacobians d(g p)/dg = [R, -R [p]] of transformed points, right-local in g.
+                                              ufunc::array_doc(R"(Jacobians d(g p)/dg = [R, -R [p]] of transformed points, right-local in g.
 
 (g exp(dxi)) p = g p + [R, -R [p]] dxi + o(dxi), dxi = (v, w) linear part
 first (Sola et al. 2018, appendix D), as act_jacobians(g, p)[0] for one
@@ -658,12 +653,7 @@ Args:
 
 Returns:
     numpy.ndarray of shape (..., 3, 6): the Jacobians (columns: the twist
-    (v, w)).
-
-A numpy generalized ufunc: numpy's rules for broadcasting, dtypes
-(float32 and float64 kernels), out= and axes= apply (``help(chasles)``).
-Matrices are taken as given, like the C++ unchecked constructors, and a NaN
-gives NaN in its own element only.)",
+    (v, w)).)"),
                                               [](const auto& g, const auto& p) {
                                                 using T = typename std::decay_t<decltype(g)>::Scalar;
                                                 return chasles::act_jacobians<T>(

@@ -252,6 +252,21 @@ void loop(char** args, const ssize* dims, const ssize* steps, void* data) noexce
 
 // ---- registration -----------------------------------------------------------
 
+/// The real type of a kernel argument (an Eigen matrix or a map of one).
+template <typename V>
+using ScalarOf = typename std::decay_t<V>::Scalar;
+
+/// An array function's docstring: `body`, then the paragraph every one ends
+/// with (the rules themselves are stated once, in the module's docstring).
+inline std::string array_doc(const char* body) {
+  return std::string(body) + R"(
+
+A numpy generalized ufunc: numpy's rules for broadcasting, dtypes
+(float32 and float64 kernels), out= and axes= apply (``help(chasles)``).
+Matrices are taken as given, like the C++ unchecked constructors, and a NaN
+gives NaN in its own element only.)";
+}
+
 template <typename Signature>
 struct Parts;
 

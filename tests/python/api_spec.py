@@ -313,6 +313,21 @@ def beyond_numpy_scalars(value) -> bool:
     return False
 
 
+def sample_operand(arg: Operand, shape, rng, dtype=np.float64):
+    """Valid values of an operand with a batch of `shape`: rotations and
+    poses where a 3x3 or 4x4 core is read as one, random numbers otherwise."""
+    n = int(np.prod(shape))
+    if arg.core == (3, 3):
+        x = chasles.so3_exp(rng.normal(size=(n, 3)))
+    elif arg.core == (4, 4):
+        x = chasles.se3_exp(rng.normal(size=(n, 6)))
+    elif arg.core == ():
+        x = rng.uniform(-0.5, 1.5, size=n)
+    else:
+        x = rng.normal(size=(n,) + arg.core)
+    return x.reshape(tuple(shape) + arg.core).astype(dtype)
+
+
 def castable_to_float64(dtype) -> bool:
     """Whether numpy casts the dtype safely to float64 (the ufuncs' wider loop)."""
     return np.can_cast(dtype, np.float64, casting="safe")

@@ -37,19 +37,9 @@ def test_the_array_functions_are_all_here():
 
 
 def operand(arg: A.Operand, shape, rng, dtype):
-    """Operands of `shape` batch: rotations and poses where a 3x3 or 4x4
-    core is read as one, random numbers otherwise."""
-    n = int(np.prod(shape))
-    if arg.core == (3, 3):
-        x = chasles.so3_exp(rng.normal(size=(n, 3)))
-    elif arg.core == (4, 4):
-        x = chasles.se3_exp(rng.normal(size=(n, 6)))
-    elif arg.core == ():
-        x = rng.uniform(-0.5, 1.5, size=n)
-    else:
-        x = rng.normal(size=(n,) + arg.core)
-    x = x.reshape(tuple(shape) + arg.core).astype(dtype)
-    x.flags.writeable = False  # shared and read-only
+    """A.sample_operand, shared and read-only."""
+    x = A.sample_operand(arg, shape, rng, dtype)
+    x.flags.writeable = False
     return x
 
 

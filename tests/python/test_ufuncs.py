@@ -37,21 +37,11 @@ SIGNATURES = {
 
 def operands(name, batch, rng, dtype=np.float64):
     """Valid operands of the array function `name` with a batch shape."""
-    out = []
-    for arg in A.SPEC[name].signatures[0]:
-        if not isinstance(arg, A.Operand):
-            continue
-        n = int(np.prod(batch))
-        if arg.core == (3, 3):
-            x = chasles.so3_exp(rng.normal(size=(n, 3)))
-        elif arg.core == (4, 4):
-            x = chasles.se3_exp(rng.normal(size=(n, 6)))
-        elif arg.core == ():
-            x = rng.uniform(-0.5, 1.5, size=n)
-        else:
-            x = rng.normal(size=(n,) + arg.core)
-        out.append(x.reshape(tuple(batch) + arg.core).astype(dtype))
-    return out
+    return [
+        A.sample_operand(arg, batch, rng, dtype)
+        for arg in A.SPEC[name].signatures[0]
+        if isinstance(arg, A.Operand)
+    ]
 
 
 @pytest.mark.parametrize("name", sorted(SIGNATURES))
