@@ -11,6 +11,7 @@
 #include "chasles/constants.hpp"
 #include "chasles/distance.hpp"
 #include "chasles/euler.hpp"
+#include "chasles/inverse_kinematics.hpp"
 #include "chasles/io.hpp"
 #include "chasles/jacobians.hpp"
 #include "chasles/kinematics.hpp"

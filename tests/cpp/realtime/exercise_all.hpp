@@ -169,6 +169,18 @@ S exercise_all() noexcept {
   sum += cd.forward(thd).translation().sum() + cd.forward_body(thd).translation().sum();
   sum += cd.jacobian_space(thd).sum() + cd.jacobian_body(thd).sum();
   sum += S(RealOf<S>(cd.joints())) + cd.space_screws().sum() + cd.body_screws().sum() + cd.home().translation().sum();
+
+  // Inverse kinematics (inverse_kinematics.hpp): with and without limits.
+  const SE3<S> target = c6.forward(typename C6::JointVector(th6 * S(1.1)));
+  const auto ik6 = inverse_kinematics(c6, target, th6);
+  typename CD::JointVector lo(7), hi(7);
+  lo.setConstant(S(-2));
+  hi.setConstant(S(2));
+  IKOptions<S> ik_options;
+  ik_options.max_iterations = 5;
+  const auto ikd = inverse_kinematics(cd, cd.forward(typename CD::JointVector(thd * S(0.9))), thd, lo, hi, ik_options);
+  sum += ik6.q.sum() + ik6.error.sum() + S(ik6.iterations) + S(ikd.converged ? 1 : 0) + ikd.q.sum();
+  sum += pose_error(c6, target, th6).sum() + pose_error_jacobian(cd, target, thd).sum();
   return sum;
 }
 

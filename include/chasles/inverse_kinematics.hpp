@@ -1,0 +1,179 @@
+// chasles: inverse kinematics of serial chains by damped least squares
+// (Levenberg-Marquardt) on the body error twist.
+//
+// The error of a configuration q against a target pose T is the body error
+//   e(q) = rminus(T, g(q)) = log(g(q)^-1 T)   (6, (v, w); zero at a solution),
+// the twist that carries the tool frame g(q) onto T, in the tool frame. Its
+// exact Jacobian (not only the manipulator Jacobian): moving the joints by
+// dq moves the tool by g exp(J_b dq), so g^-1 T becomes
+// exp(-J_b dq) exp(e) = exp(e - J_l(e)^-1 J_b dq + o(dq)) (the left Jacobian
+// of SE(3), jacobians.hpp), and
+//   de/dq = -J_l(e)^-1 J_b(q).
+// Each iteration tries the damped Gauss-Newton (Levenberg-Marquardt) step
+//   (J^T J + mu I) dq = -J^T e,
+// projected onto the joint limits (q + dq clamped to [lower, upper]), and
+// keeps it if the cost |e|^2 / 2 decreased. The damping mu follows Nielsen's
+// rule (Madsen, Nielsen and Tingleff, "Methods for non-linear least squares
+// problems", 2004, sec. 3.2): it starts at tau max(diag J^T J), shrinks
+// after a step by max(1/3, 1 - (2 rho - 1)^3), rho the ratio of the actual
+// decrease of the cost to the linear model's, and after a rejected step
+// grows by nu = 2, 4, 8, ...: a short gradient-like step far from a
+// solution or near a singular configuration, Gauss-Newton (quadratic
+// convergence) close to a regular one; mu > 0 keeps the system positive
+// definite at a singular configuration. Iteration stops with
+// converged = false when the step is below rounding (a local minimum of
+// the cost, where a restart from another seed is the remedy).
+//
+// Converged when |e_v| <= position_tolerance and |e_w| <= orientation_tolerance
+// (e_v, e_w the linear and angular parts of e: for a small error, the
+// position error in the tool frame, in the chain's length unit, and the
+// rotation angle in radians). The cost is bounded: at most max_iterations
+// iterations, each one n x n Cholesky factorization (Eigen's LLT on the
+// chain's fixed-capacity matrices: no allocation), one forward kinematics
+// and, after an accepted step, one body Jacobian.
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+#include "chasles/constants.hpp"
+#include "chasles/jacobians.hpp"
+#include "chasles/kinematics.hpp"
+#include "chasles/se3.hpp"
+
+namespace chasles {
+
+/// Tolerances and bounds of inverse_kinematics. The defaults per scalar
+/// type come from constants.hpp (ik_tolerance, ik_max_iterations).
+template <typename Scalar>
+struct IKOptions {
+  /// |e_v| at a solution (the chain's length unit).
+  Scalar position_tolerance = Scalar(ThresholdsOf<Scalar>::ik_tolerance);
+  /// |e_w| at a solution (radians).
+  Scalar orientation_tolerance = Scalar(ThresholdsOf<Scalar>::ik_tolerance);
+  /// The bound on iterations (each one forward kinematics and one Jacobian).
+  int max_iterations = ThresholdsOf<Scalar>::ik_max_iterations;
+  /// The damping at the start, relative to the largest diagonal entry of
+  /// J^T J (Madsen, Nielsen and Tingleff's tau).
+  Scalar initial_damping = Scalar(1e-3);
+};
+
+/// The outcome of inverse_kinematics.
+template <typename ChainT>
+struct IKResult {
+  typename ChainT::JointVector q;  ///< the last configuration (within the limits)
+  bool converged;                  ///< |e_v| and |e_w| within their tolerances
+  int iterations;                  ///< iterations taken (0: q0, clamped, already converged)
+  Eigen::Matrix<typename ChainT::Scalar, 6, 1> error;  ///< e(q) = log(g(q)^-1 T), (v, w)
+};
+
+namespace detail {
+
+template <typename Scalar>
+inline bool ik_converged(const Eigen::Matrix<Scalar, 6, 1>& e, const IKOptions<Scalar>& o) noexcept {
+  return e.template head<3>().squaredNorm() <= o.position_tolerance * o.position_tolerance &&
+         e.template tail<3>().squaredNorm() <= o.orientation_tolerance * o.orientation_tolerance;
+}
+
+}  // namespace detail
+
+/// The body error e(q) = rminus(T, g(q)) = log(g(q)^-1 T), (v, w): the
+/// twist that carries the tool frame at q onto the target T, in the tool
+/// frame; zero at a solution.
+template <typename ChainT, typename Derived>
+inline Eigen::Matrix<typename ChainT::Scalar, 6, 1> pose_error(const ChainT& chain,
+                                                               const SE3<typename ChainT::Scalar>& target,
+                                                               const Eigen::MatrixBase<Derived>& q) noexcept {
+  return rminus(target, chain.forward(q));
+}
+
+/// de/dq = -J_l(e)^-1 J_b(q) (6 x n), the exact Jacobian of pose_error.
+template <typename ChainT, typename Derived>
+inline typename ChainT::Jacobian pose_error_jacobian(const ChainT& chain, const SE3<typename ChainT::Scalar>& target,
+                                                     const Eigen::MatrixBase<Derived>& q) noexcept {
+  return -(se3_left_jacobian_inverse(pose_error(chain, target, q)) * chain.jacobian_body(q));
+}
+
+/// Inverse kinematics of `chain` for the tool pose `target`, from the
+/// configuration q0, within the joint limits [lower, upper] (entries may be
+/// -inf / +inf for unlimited joints; q0 is first clamped into them). See
+/// the top of this header for the method. noexcept, allocation-free; at
+/// most options.max_iterations iterations.
+template <typename ChainT, typename Derived>
+inline IKResult<ChainT> inverse_kinematics(const ChainT& chain, const SE3<typename ChainT::Scalar>& target,
+                                           const Eigen::MatrixBase<Derived>& q0,
+                                           const typename ChainT::JointVector& lower,
+                                           const typename ChainT::JointVector& upper,
+                                           const IKOptions<typename ChainT::Scalar>& options = {}) noexcept {
+  using Scalar = typename ChainT::Scalar;
+  using JointVector = typename ChainT::JointVector;
+  using Vector6 = Eigen::Matrix<Scalar, 6, 1>;
+  constexpr int N = ChainT::JointsAtCompileTime, MaxN = ChainT::MaxJointsAtCompileTime;
+  using Normal = Eigen::Matrix<Scalar, N, N, Eigen::ColMajor, MaxN, MaxN>;
+  const Eigen::Index n = chain.joints();
+  CHASLES_ASSERT(q0.size() == n && lower.size() == n && upper.size() == n);
+
+  const auto half_squared = [](const Vector6& e) -> Scalar { return e.squaredNorm() / Scalar(2); };
+
+  JointVector q = q0.template cast<Scalar>().cwiseMax(lower).cwiseMin(upper);
+  Vector6 e = pose_error(chain, target, q);
+  Scalar cost = half_squared(e);
+  Normal JtJ(n, n);
+  JointVector gradient(n);  // J^T e, the gradient of cost = |e|^2 / 2
+  const auto linearize = [&] {
+    // J = de/dq = -J_l(e)^-1 J_b(q) (pose_error_jacobian, with e known).
+    const typename ChainT::Jacobian J = -(se3_left_jacobian_inverse(e) * chain.jacobian_body(q));
+    JtJ.noalias() = J.transpose() * J;
+    gradient.noalias() = J.transpose() * e;
+  };
+  linearize();
+  Scalar mu = options.initial_damping * JtJ.diagonal().maxCoeff();
+  Scalar nu(2);
+  Eigen::LLT<Normal> llt(n);
+  const Scalar eps(ThresholdsOf<Scalar>::epsilon);
+  for (int k = 1; k <= options.max_iterations; ++k) {
+    if (detail::ik_converged(e, options)) return {q, true, k - 1, e};
+    // The damped Gauss-Newton step (J^T J + mu I) dq = -J^T e, projected onto the limits.
+    llt.compute(JtJ + mu * Normal::Identity(n, n));
+    const JointVector trial = (q - llt.solve(gradient)).cwiseMax(lower).cwiseMin(upper);
+    const JointVector step = trial - q;
+    if (!(step.squaredNorm() > eps * eps * (q.squaredNorm() + eps))) return {q, false, k, e};  // stalled
+    const Vector6 e_trial = pose_error(chain, target, trial);
+    const Scalar cost_trial = half_squared(e_trial);
+    // Gain ratio: the actual decrease of the cost over the linear model's.
+    const Scalar predicted = -(step.dot(gradient) + step.dot(JtJ * step) / Scalar(2));
+    const Scalar rho = (cost - cost_trial) / predicted;
+    if (predicted > Scalar(0) && rho > Scalar(0)) {  // false for NaN: a non-finite trial is rejected
+      q = trial;
+      e = e_trial;
+      cost = cost_trial;
+      linearize();
+      const Scalar r = Scalar(2) * rho - Scalar(1);
+      const Scalar shrink = Scalar(1) - r * r * r;
+      mu *= shrink > Scalar(1) / Scalar(3) ? shrink : Scalar(1) / Scalar(3);
+      nu = Scalar(2);
+    } else {
+      mu *= nu;
+      nu *= Scalar(2);
+    }
+  }
+  return {q, detail::ik_converged(e, options), options.max_iterations, e};
+}
+
+/// inverse_kinematics with no joint limits.
+template <typename ChainT, typename Derived>
+inline IKResult<ChainT> inverse_kinematics(const ChainT& chain, const SE3<typename ChainT::Scalar>& target,
+                                           const Eigen::MatrixBase<Derived>& q0,
+                                           const IKOptions<typename ChainT::Scalar>& options = {}) noexcept {
+  using JointVector = typename ChainT::JointVector;
+  using Scalar = typename ChainT::Scalar;
+  const Eigen::Index n = chain.joints();
+  const Scalar inf = std::numeric_limits<RealOf<Scalar>>::infinity();
+  return inverse_kinematics(chain, target, q0, JointVector(JointVector::Constant(n, -inf)),
+                            JointVector(JointVector::Constant(n, inf)), options);
+}
+
+}  // namespace chasles

@@ -1,0 +1,216 @@
+// Inverse kinematics (inverse_kinematics.hpp), typed over float and double,
+// on a fixed-size UR5 (Modern Robotics, example 4.5) and on the same arm on
+// a linear rail as a dynamic chain of 7 joints with a bound of 8:
+// - pose_error_jacobian against central differences of pose_error;
+// - targets forward(q*) of random q* within limits, from seeds 0.3 rad away:
+//   every one converges, and the solution is checked by an independent
+//   oracle, the long double product of 4x4 matrix exponentials
+//   (support/reference.hpp): |log(g_ref(q)^-1 T)| within the tolerance;
+// - the returned error is pose_error at the returned q; iterations within
+//   the bound; 0 iterations when q0 is a solution;
+// - joint limits: q0 and every result within them, and a target reachable
+//   only outside them is reported as not converged;
+// - an unreachable target: not converged, finite, within the bound.
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <chasles/inverse_kinematics.hpp>
+
+#include "support/group_traits.hpp"
+#include "support/reference.hpp"
+
+namespace {
+
+using namespace chasles_test;
+using chasles::Chain;
+using chasles::IKOptions;
+using chasles::SE3;
+
+template <typename C>
+C ur5(int n) {
+  using S = typename C::Scalar;
+  const S W1 = S(0.109), W2 = S(0.082), L1 = S(0.425), L2 = S(0.392), H1 = S(0.089), H2 = S(0.095);
+  typename C::Screws screws(6, n);
+  const int o = n - 6;  // a prismatic rail along (1, 2, 0) / sqrt(5) first when n == 7
+  if (o == 1) screws.col(0) << S(1 / std::sqrt(5.0)), S(2 / std::sqrt(5.0)), 0, 0, 0, 0;
+  screws.col(o + 0) << 0, 0, 0, 0, 0, 1;
+  screws.col(o + 1) << -H1, 0, 0, 0, 1, 0;
+  screws.col(o + 2) << -H1, 0, L1, 0, 1, 0;
+  screws.col(o + 3) << -H1, 0, L1 + L2, 0, 1, 0;
+  screws.col(o + 4) << -W1, L1 + L2, 0, 0, 0, -1;
+  screws.col(o + 5) << H2 - H1, 0, L1 + L2, 0, 1, 0;
+  Eigen::Matrix<S, 4, 4> M;
+  M << -1, 0, 0, L1 + L2, 0, 0, 1, W1 + W2, 0, 1, 0, H1 - H2, 0, 0, 0, 1;
+  return C(screws, SE3<S>::from_matrix_unchecked(M));
+}
+
+/// |log(g^-1 T)| parts by the long double reference forward kinematics.
+template <typename C>
+std::pair<LD, LD> reference_error(const C& chain, const SE3<typename C::Scalar>& target,
+                                  const typename C::JointVector& q) {
+  using M4L = Eigen::Matrix<LD, 4, 4>;
+  using V6L = Eigen::Matrix<LD, 6, 1>;
+  M4L g = M4L::Identity();
+  for (Eigen::Index i = 0; i < chain.joints(); ++i)
+    g = g * chasles_ref::exp6(V6L(chain.space_screws().col(i).template cast<LD>() * LD(q(i))));
+  g = g * chain.home().matrix().template cast<LD>();
+  const M4L T = target.matrix().template cast<LD>();
+  const SE3<LD> d = SE3<LD>::from_matrix_unchecked(M4L(g.inverse() * T));
+  const V6L e = d.log();
+  return {e.template head<3>().norm(), e.template tail<3>().norm()};
+}
+
+template <typename C>
+class InverseKinematics : public ::testing::Test {};
+
+template <typename S_, int N, int MaxN>
+struct Case {
+  using Chain = chasles::Chain<S_, N, MaxN>;
+  static constexpr int joints = MaxN == N ? N : 7;
+};
+using Cases = ::testing::Types<Case<float, 6, 6>, Case<double, 6, 6>, Case<float, Eigen::Dynamic, 8>,
+                               Case<double, Eigen::Dynamic, 8>>;
+TYPED_TEST_SUITE(InverseKinematics, Cases);
+
+constexpr double kPi = 3.14159265358979323846;
+
+TYPED_TEST(InverseKinematics, ErrorJacobianMatchesCentralDifferences) {
+  using C = typename TypeParam::Chain;
+  using S = typename C::Scalar;
+  using JV = typename C::JointVector;
+  const int n = TypeParam::joints;
+  const C chain = ur5<C>(n);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-2.5, 2.5);
+  for (int trial = 0; trial < 20; ++trial) {
+    JV q(n), qt(n);
+    for (int i = 0; i < n; ++i) q(i) = S(u(rng)), qt(i) = q(i) + S(0.4 * u(rng));  // error up to ~1 rad
+    const SE3<S> T = chain.forward(qt);
+    const typename C::Jacobian J = chasles::pose_error_jacobian(chain, T, q);
+    // Central differences in double whatever S (the Jacobian's formula is what is
+    // checked, not the rounding of S): step 1e-5, truncation h^2/6 |e'''| < 1e-10.
+    using CD = Chain<double, C::JointsAtCompileTime, C::MaxJointsAtCompileTime>;
+    const CD chain_d(chain.space_screws().template cast<double>(), chain.home().template cast<double>());
+    const SE3<double> Td = T.template cast<double>();
+    const typename CD::JointVector qd = q.template cast<double>();
+    for (int i = 0; i < n; ++i) {
+      const double h = 1e-5;
+      typename CD::JointVector qp = qd, qm = qd;
+      qp(i) += h;
+      qm(i) -= h;
+      const Eigen::Matrix<double, 6, 1> fd =
+          (chasles::pose_error(chain_d, Td, qp) - chasles::pose_error(chain_d, Td, qm)) / (2 * h);
+      // float: the Jacobian's own rounding, ~100 eps_f relative to its scale (<= 2).
+      const double tol = std::is_same_v<S, float> ? 200 * 1.2e-7 : 1e-8;
+      EXPECT_LE(max_abs_diff(J.col(i), fd), tol) << "column " << i << ", trial " << trial;
+    }
+  }
+}
+
+TYPED_TEST(InverseKinematics, SolvesReachableTargetsFromNearbySeeds) {
+  using C = typename TypeParam::Chain;
+  using S = typename C::Scalar;
+  using JV = typename C::JointVector;
+  const int n = TypeParam::joints;
+  const C chain = ur5<C>(n);
+  JV lower(n), upper(n);
+  for (int i = 0; i < n; ++i) lower(i) = S(-2 * kPi), upper(i) = S(2 * kPi);
+  if (n == 7) lower(0) = S(-1), upper(0) = S(1);  // the rail
+  const IKOptions<S> options;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-kPi, kPi), jitter(-0.3, 0.3);
+  std::vector<int> iterations;
+  for (int trial = 0; trial < 200; ++trial) {
+    JV qt(n), q0(n);
+    for (int i = 0; i < n; ++i) {
+      qt(i) = S(i == 0 && n == 7 ? 0.9 * u(rng) / kPi : u(rng));
+      q0(i) = qt(i) + S(jitter(rng));
+    }
+    const SE3<S> T = chain.forward(qt);
+    const auto r = chasles::inverse_kinematics(chain, T, q0, lower, upper, options);
+    ASSERT_TRUE(r.converged) << "trial " << trial << ": " << r.iterations << " iterations, error "
+                             << r.error.transpose();
+    iterations.push_back(r.iterations);
+    EXPECT_LE(r.iterations, options.max_iterations);
+    EXPECT_TRUE((r.q.array() >= lower.array()).all() && (r.q.array() <= upper.array()).all());
+    EXPECT_EQ(r.error, chasles::pose_error(chain, T, r.q));
+    EXPECT_LE(r.error.template head<3>().norm(), options.position_tolerance);
+    EXPECT_LE(r.error.template tail<3>().norm(), options.orientation_tolerance);
+    // The independent oracle: the long double forward kinematics at r.q reaches T
+    // to the tolerance plus the rounding of the library's forward kinematics
+    // (float: 2 n kExp eps as test_kinematics.cpp, over the arm's reach of ~1 m).
+    const auto [dp, dw] = reference_error(chain, T, r.q);
+    const LD slack = std::is_same_v<S, float> ? LD(2 * n * 16) * eps<S>() : LD(1e-13);
+    EXPECT_LE(dp, LD(options.position_tolerance) + slack) << "trial " << trial;
+    EXPECT_LE(dw, LD(options.orientation_tolerance) + slack) << "trial " << trial;
+  }
+  // From 0.3 rad away, damped Gauss-Newton needs few iterations (quadratic
+  // convergence; 5 to 7 at the median here).
+  std::nth_element(iterations.begin(), iterations.begin() + 100, iterations.end());
+  EXPECT_LE(iterations[100], 10);
+}
+
+TYPED_TEST(InverseKinematics, ZeroIterationsAtASolution) {
+  using C = typename TypeParam::Chain;
+  using S = typename C::Scalar;
+  const int n = TypeParam::joints;
+  const C chain = ur5<C>(n);
+  typename C::JointVector q(n);
+  for (int i = 0; i < n; ++i) q(i) = S(0.1) * S(i + 1);
+  const auto r = chasles::inverse_kinematics(chain, chain.forward(q), q);
+  EXPECT_TRUE(r.converged);
+  EXPECT_EQ(r.iterations, 0);
+  EXPECT_EQ(r.q, q);
+}
+
+TYPED_TEST(InverseKinematics, RespectsJointLimits) {
+  using C = typename TypeParam::Chain;
+  using S = typename C::Scalar;
+  using JV = typename C::JointVector;
+  const int n = TypeParam::joints;
+  const C chain = ur5<C>(n);
+  JV lower(n), upper(n), qt(n), q0(n);
+  for (int i = 0; i < n; ++i) {
+    lower(i) = S(-0.5), upper(i) = S(0.5);
+    qt(i) = S(0.3) * S(i % 2 ? 1 : -1);
+    q0(i) = S(2);  // outside: clamped to 0.5 first
+  }
+  const auto r = chasles::inverse_kinematics(chain, chain.forward(qt), q0, lower, upper);
+  EXPECT_TRUE(r.converged);
+  EXPECT_TRUE((r.q.array() >= lower.array()).all() && (r.q.array() <= upper.array()).all());
+
+  // The target forward(qt) with joint 1 (the shoulder) at 1.2: a solution
+  // outside [-0.5, 0.5]. Within the limits the error stays large and it is
+  // reported as not converged, q still within the limits.
+  JV qfar = qt;
+  qfar(n - 5) = S(1.2);
+  const auto rf = chasles::inverse_kinematics(chain, chain.forward(qfar), JV(JV::Zero(n)), lower, upper);
+  EXPECT_FALSE(rf.converged);
+  EXPECT_TRUE((rf.q.array() >= lower.array()).all() && (rf.q.array() <= upper.array()).all());
+  EXPECT_GT(rf.error.norm(), S(1e-3));
+}
+
+TYPED_TEST(InverseKinematics, UnreachableTargetIsReportedWithinTheBound) {
+  using C = typename TypeParam::Chain;
+  using S = typename C::Scalar;
+  using JV = typename C::JointVector;
+  const int n = TypeParam::joints;
+  const C chain = ur5<C>(n);
+  const SE3<S> far(chain.home().rotation(),
+                   chain.home().translation() + Eigen::Matrix<S, 3, 1>(S(5), S(5), S(5)));  // ~9 m from a 1 m arm
+  JV lower(n), upper(n);
+  for (int i = 0; i < n; ++i) lower(i) = S(-kPi), upper(i) = S(kPi);
+  IKOptions<S> options;
+  options.max_iterations = 25;
+  const auto r = chasles::inverse_kinematics(chain, far, JV(JV::Zero(n)), lower, upper, options);
+  EXPECT_FALSE(r.converged);
+  EXPECT_LE(r.iterations, 25);
+  EXPECT_TRUE(r.q.allFinite() && r.error.allFinite());
+  EXPECT_GT(r.error.template head<3>().norm(), S(3));
+}
+
+}  // namespace
