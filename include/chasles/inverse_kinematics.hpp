@@ -35,6 +35,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
@@ -161,6 +162,40 @@ inline IKResult<ChainT> inverse_kinematics(const ChainT& chain, const SE3<typena
     }
   }
   return {q, detail::ik_converged(e, options), options.max_iterations, e};
+}
+
+/// inverse_kinematics from q0, then, while not converged, from up to
+/// `restarts` random seeds drawn from gen, each uniform within the limits
+/// ([-pi, pi] for a joint whose limit is infinite on either side). Returns
+/// the first converged solution, or the attempt with the smallest error;
+/// `iterations` counts the iterations of every attempt. noexcept,
+/// allocation-free; at most (restarts + 1) options.max_iterations iterations.
+template <typename ChainT, typename Derived, typename Generator>
+inline IKResult<ChainT> inverse_kinematics(const ChainT& chain, const SE3<typename ChainT::Scalar>& target,
+                                           const Eigen::MatrixBase<Derived>& q0,
+                                           const typename ChainT::JointVector& lower,
+                                           const typename ChainT::JointVector& upper,
+                                           const IKOptions<typename ChainT::Scalar>& options, Generator& gen,
+                                           int restarts) noexcept {
+  using Scalar = typename ChainT::Scalar;
+  using Real = RealOf<Scalar>;
+  IKResult<ChainT> best = inverse_kinematics(chain, target, q0, lower, upper, options);
+  int total = best.iterations;
+  typename ChainT::JointVector seed(chain.joints());
+  std::uniform_real_distribution<Real> uniform(Real(0), Real(1));
+  const Scalar pi(3.14159265358979323846), inf(std::numeric_limits<Real>::infinity());
+  for (int r = 0; r < restarts && !best.converged; ++r) {
+    for (Eigen::Index i = 0; i < seed.size(); ++i) {
+      const bool bounded = lower(i) > -inf && upper(i) < inf;
+      const Scalar a = bounded ? lower(i) : -pi, b = bounded ? upper(i) : pi;
+      seed(i) = a + (b - a) * Scalar(uniform(gen));
+    }
+    const IKResult<ChainT> attempt = inverse_kinematics(chain, target, seed, lower, upper, options);
+    total += attempt.iterations;
+    if (attempt.converged || attempt.error.squaredNorm() < best.error.squaredNorm()) best = attempt;
+  }
+  best.iterations = total;
+  return best;
 }
 
 /// inverse_kinematics with no joint limits.

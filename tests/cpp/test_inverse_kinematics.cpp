@@ -154,6 +154,49 @@ TYPED_TEST(InverseKinematics, SolvesReachableTargetsFromNearbySeeds) {
   EXPECT_LE(iterations[100], 10);
 }
 
+TYPED_TEST(InverseKinematics, RandomSeedsWithRestarts) {
+  using C = typename TypeParam::Chain;
+  using S = typename C::Scalar;
+  using JV = typename C::JointVector;
+  const int n = TypeParam::joints;
+  const C chain = ur5<C>(n);
+  JV lower(n), upper(n);
+  for (int i = 0; i < n; ++i) lower(i) = S(-2 * kPi), upper(i) = S(2 * kPi);
+  if (n == 7) lower(0) = S(-1), upper(0) = S(1);
+  std::mt19937 rng(17), gen(19);
+  std::uniform_real_distribution<double> u(0, 1);
+  const auto uniform_within = [&] {
+    JV q(n);
+    for (int i = 0; i < n; ++i) q(i) = lower(i) + (upper(i) - lower(i)) * S(u(rng));
+    return q;
+  };
+  int converged = 0, converged_first = 0;
+  const IKOptions<S> options;
+  for (int trial = 0; trial < 100; ++trial) {
+    const SE3<S> T = chain.forward(uniform_within());
+    const JV q0 = uniform_within();
+    const auto r = chasles::inverse_kinematics(chain, T, q0, lower, upper, options, gen, 10);
+    const auto r1 = chasles::inverse_kinematics(chain, T, q0, lower, upper, options);
+    converged += r.converged;
+    converged_first += r1.converged;
+    EXPECT_LE(r.iterations, 11 * options.max_iterations);
+    EXPECT_GE(r.iterations, r1.iterations);
+    EXPECT_TRUE((r.q.array() >= lower.array()).all() && (r.q.array() <= upper.array()).all());
+    EXPECT_EQ(r.error, chasles::pose_error(chain, T, r.q));
+    if (r1.converged) {
+      EXPECT_EQ(r.q, r1.q) << "a converged first attempt is kept";
+    }
+    if (r.converged) {
+      EXPECT_LE(r.error.template head<3>().norm(), options.position_tolerance);
+    }
+  }
+  // From one random seed about half converge (a local minimum of |e| or the
+  // iteration bound otherwise); with 10 restarts at least 97 of 100 (99.3% of
+  // 1000 measured on the UR5 in double).
+  EXPECT_GE(converged, 97);
+  EXPECT_GT(converged, converged_first);
+}
+
 TYPED_TEST(InverseKinematics, ZeroIterationsAtASolution) {
   using C = typename TypeParam::Chain;
   using S = typename C::Scalar;

@@ -179,7 +179,9 @@ S exercise_all() noexcept {
   IKOptions<S> ik_options;
   ik_options.max_iterations = 5;
   const auto ikd = inverse_kinematics(cd, cd.forward(typename CD::JointVector(thd * S(0.9))), thd, lo, hi, ik_options);
-  sum += ik6.q.sum() + ik6.error.sum() + S(ik6.iterations) + S(ikd.converged ? 1 : 0) + ikd.q.sum();
+  std::minstd_rand ik_gen(3);
+  const auto ikr = inverse_kinematics(cd, target, thd, lo, hi, ik_options, ik_gen, 2);
+  sum += ik6.q.sum() + ik6.error.sum() + S(ik6.iterations) + S(ikd.converged ? 1 : 0) + ikd.q.sum() + ikr.q.sum();
   sum += pose_error(c6, target, th6).sum() + pose_error_jacobian(cd, target, thd).sum();
   return sum;
 }
