@@ -183,7 +183,7 @@ inline IKResult<ChainT> inverse_kinematics(const ChainT& chain, const SE3<typena
   int total = best.iterations;
   typename ChainT::JointVector seed(chain.joints());
   std::uniform_real_distribution<Real> uniform(Real(0), Real(1));
-  const Scalar pi(3.14159265358979323846), inf(std::numeric_limits<Real>::infinity());
+  const Scalar pi(static_cast<Real>(3.14159265358979323846)), inf(std::numeric_limits<Real>::infinity());
   for (int r = 0; r < restarts && !best.converged; ++r) {
     for (Eigen::Index i = 0; i < seed.size(); ++i) {
       const bool bounded = lower(i) > -inf && upper(i) < inf;
