@@ -70,6 +70,9 @@ struct Thresholds<float> {
   static constexpr float mean_step_tolerance = 3.4526698e-04f;  // eps^(1/2)
   static constexpr int mean_max_iterations = 20;
   static constexpr float euler_lock2 = 1.4210855e-14f;  // eps^2
+  static constexpr float spline_series_theta2 = 4.0f;
+  static constexpr float spline_step_tolerance = 6.4e-06f;  // eps^(3/4)
+  static constexpr int spline_max_iterations = 30;
 };
 
 template <>
@@ -82,6 +85,9 @@ struct Thresholds<double> {
   static constexpr double mean_step_tolerance = 1.4901161193847656e-08;  // eps^(1/2)
   static constexpr int mean_max_iterations = 20;
   static constexpr double euler_lock2 = 4.930380657631324e-32;  // eps^2
+  static constexpr double spline_series_theta2 = 4.0;
+  static constexpr double spline_step_tolerance = 1.8189894035458565e-12;  // eps^(3/4)
+  static constexpr int spline_max_iterations = 30;
 };
 
 template <>
@@ -96,6 +102,9 @@ struct Thresholds<long double> {
   static constexpr long double mean_step_tolerance = 3.2927225399135962334e-10L;  // eps^(1/2)
   static constexpr int mean_max_iterations = 20;
   static constexpr long double euler_lock2 = 1.1754943508222875079687e-38L;  // eps^2
+  static constexpr long double spline_series_theta2 = 4.0L;
+  static constexpr long double spline_step_tolerance = 5.9749283938523554e-15L;  // eps^(3/4)
+  static constexpr int spline_max_iterations = 30;
 };
 
 // mean_step_tolerance: the geodesic (Karcher) mean (mean.hpp) stops after
@@ -113,6 +122,32 @@ struct Thresholds<long double> {
 //   13 of them at a 1 rad spread); Newton takes 2 (float) or 3 (double)
 //   there, so the bound is only reached by spreads near pi, where the mean
 //   is not unique.
+//
+// spline_series_theta2: below this theta^2 (s) the coefficients of the
+//   right Jacobian and their first and second derivatives in s (spline.hpp,
+//   detail::jacobian_coefficients) use their Taylor series, kept to s^12:
+//   the first omitted term of the worst of them (b'' = d^2/ds^2 of
+//   (theta - sin theta)/theta^3) is 156 s^11 / 29! <= 7e-23 at s = 4,
+//   relative 2e-19, below every type's eps. Above it the closed forms'
+//   cancellation (b'' has the worst: numerator terms of size ~40 for a
+//   value ~0.17 at theta = 2) costs at most ~250 ulps, and less as theta
+//   grows; a cutoff at the usual eps^(1/3) would cost up to 1e13 ulps there
+//   (the closed form of b'' loses eps / theta^6). The series has no 0/0, so
+//   autodiff derivatives are exact at 0.
+//
+// spline_step_tolerance: the spline fit's fixed point (spline.hpp) stops
+//   after a step with |dw_j| <= tol (1 + |w_j|) for every rate component
+//   (scipy's RotationSpline test, which uses 1e-9). eps^(3/4): the
+//   iteration converges linearly, so the error left after such a step is
+//   that step times q / (1 - q), q the contraction factor (about 0.1 to
+//   0.3 for key steps under pi/2); a tolerance near eps could be missed
+//   forever by the rounding of the block solve (a few eps times the
+//   condition number of the block-tridiagonal matrix).
+//
+// spline_max_iterations: the bound on those iterations, 30 (scipy stops
+//   silently after 10). Keys on a screw motion take 1, random keys with
+//   steps near 1 rad take 8 to 15 in double; the bound is reached only with
+//   steps near pi (the fit then reports not_converged).
 //
 /// The thresholds that apply to a Scalar (autodiff scalars use their real type's).
 template <typename Scalar>
