@@ -161,11 +161,13 @@ def test_se3_spline_of_pure_rotations_is_the_so3_spline(ends):
 
 
 # scipy's RotationSpline fixes the end rates to the chord rates (ends="chord") and stops its fixed-point
-# iteration after a step below 1e-9 (1 + |w|) (at most 10 iterations); its rates are then within about that
-# (times the contraction factor q / (1 - q) < 1) of the exact solution, and chasles' (stopped at 1.8e-12) within
-# ~1e-12: rates and accelerations agree to 1e-8 (relative to 1 + the norm), rotations to 1e-8 rad. Its angular
-# rate and acceleration are in the body frame (X_i exp(r), Jr(r) r'), as chasles' body_velocity.
-SCIPY_TOL = 1e-8
+# iteration after a step below 1e-9 (1 + |w|), or silently after 10 iterations. Measured over 400 random key
+# sets per band (steps exp(z), z ~ N(0, sigma^2 I), 0.3 to 1 s apart; worst relative difference of rotations,
+# rates, accelerations): sigma <= 0.2: 1e-12, 5e-12, 2e-11; 0.2 to 0.4: 1e-11, 3e-11, 9e-11; 0.4 to 0.6: 1e-8,
+# 1e-8, 6e-8; 0.6 to 0.8: 1e-7, 1e-7, 1e-6 (there scipy stops at its 10 iterations unconverged, while chasles
+# iterates to 1.8e-12). Hence the bound 1e-9 for steps up to sigma = 0.4. Its angular rate and acceleration are
+# in the body frame (X_i exp(r), Jr(r) r'), as chasles' body_velocity.
+SCIPY_TOL = 1e-9
 
 
 def check_against_scipy(times, R, t):
@@ -198,7 +200,7 @@ def test_scipys_example():
 @given(
     seed=st.integers(0, 2**32 - 1),
     n=st.integers(2, 12),
-    step=st.floats(0.01, 0.6),
+    step=st.floats(0.01, 0.4),
 )
 def test_random_keys_hypothesis(seed, n, step):
     rng = np.random.default_rng(seed)
