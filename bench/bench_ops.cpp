@@ -9,6 +9,7 @@
 //
 // Names: <group>/<op>/<input>/<scalar>, e.g. SO3/log/near_pi/double.
 #include <cmath>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -109,6 +110,50 @@ void register_chain(const std::string& input, const std::string& sn, int n) {
   add("Chain/forward_body" + tail, th, [chain](const JV& t) { return chain.forward_body(t); });
   add("Chain/jacobian_space" + tail, th, [chain](const JV& t) { return chain.jacobian_space(t); });
   add("Chain/jacobian_body" + tail, th, [chain](const JV& t) { return chain.jacobian_body(t); });
+}
+
+/// Spline/<group>/fit_100_keys and Spline/<group>/evaluate (element, body velocity and acceleration at times
+/// cycled through the range) over 100 keys: steps exp(z), z ~ N(0, 0.35^2 I) per component, 0.3 to 1 s apart.
+template <typename Group>
+void register_spline(const std::string& group, const std::string& sn) {
+  using S = typename Group::Scalar;
+  using Tangent = Eigen::Matrix<S, Group::DoF, 1>;
+  struct Storage {
+    std::vector<S> times;
+    std::vector<Group> keys;
+    std::vector<chasles::SplineSegment<Group>> segments;
+    std::vector<chasles::SplineWork<Group>> work;
+  };
+  const auto st = std::make_shared<Storage>();
+  std::mt19937_64 rng(17);
+  std::normal_distribution<double> normal(0, 0.35);
+  std::uniform_real_distribution<double> step(0.3, 1.0);
+  double t = 0;
+  Group X = Group::identity();
+  for (int i = 0; i < 100; ++i) {
+    Tangent z;
+    for (int j = 0; j < Group::DoF; ++j) z[j] = S(normal(rng));
+    X = X * Group::exp(z);
+    st->keys.push_back(X);
+    st->times.push_back(S(t));
+    t += step(rng);
+  }
+  st->segments.resize(99);
+  st->work.resize(100);
+  chasles::fit_spline(100, st->times.data(), st->keys.data(), st->segments.data(), st->work.data());
+  benchmark::RegisterBenchmark(("Spline/" + group + "/fit_100_keys/" + sn).c_str(), [st](benchmark::State& state) {
+    for (auto _ : state) {
+      auto r = chasles::fit_spline(100, st->times.data(), st->keys.data(), st->segments.data(), st->work.data());
+      benchmark::DoNotOptimize(r);
+      benchmark::ClobberMemory();
+    }
+  });
+  std::uniform_real_distribution<double> u(0, static_cast<double>(st->times.back()));
+  std::vector<S> ts;
+  for (std::size_t i = 0; i < kN; ++i) ts.push_back(S(u(rng)));
+  const chasles::Spline<Group> spline(100, st->times.data(), st->keys.data(), st->segments.data());
+  add("Spline/" + group + "/evaluate/100_keys/" + sn, ts, [spline, st](S time) { return spline(time); });
+  add("Spline/" + group + "/element/100_keys/" + sn, ts, [spline, st](S time) { return spline.element(time); });
 }
 
 template <typename S>
@@ -239,6 +284,8 @@ void register_all(const std::string& sn) {
   register_chain<S, Chain<S, 7>>("7dof", sn, 7);
   register_chain<S, Chain<S, Eigen::Dynamic, 8>>("6dof_dynamic_max8", sn, 6);
   register_chain<S, Chain<S, Eigen::Dynamic, 8>>("7dof_dynamic_max8", sn, 7);
+  register_spline<SO3<S>>("SO3", sn);
+  register_spline<SE3<S>>("SE3", sn);
 
   // ---- floors
   std::vector<S> angles;

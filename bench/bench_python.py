@@ -239,6 +239,7 @@ def main() -> int:
     scipy_rot = optional("scipy.spatial.transform")
     Rotation = getattr(scipy_rot, "Rotation", None)
     RigidTransform = getattr(scipy_rot, "RigidTransform", None)  # scipy >= 1.16
+    RotationSpline = getattr(scipy_rot, "RotationSpline", None)
     pin = optional("pinocchio")
     pt3r = optional("pytransform3d.rotations")
     pt3t = optional("pytransform3d.transformations")
@@ -346,6 +347,14 @@ def main() -> int:
         sts = RigidTransform.from_matrix(Gs) if RigidTransform else None
         sts2 = RigidTransform.from_matrix(Gs2) if RigidTransform else None
         st1 = RigidTransform.from_matrix(gm) if RigidTransform else None
+        # splines through 100 keys (steps ~0.6 rad, 0.3 to 1 s apart), evaluated at n times inside their range
+        key_t = np.cumsum(rng.uniform(0.3, 1.0, 100))
+        key_R = chasles.so3_compose(chasles.so3_exp(rng.normal(size=3)),
+                                    chasles.so3_exp(np.cumsum(rng.normal(scale=0.35, size=(100, 3)), axis=0)))
+        key_G = chasles.se3_exp(np.cumsum(rng.normal(scale=0.35, size=(100, 6)), axis=0))
+        spline_so3, spline_se3 = chasles.SO3Spline(key_t, key_R), chasles.SE3Spline(key_t, key_G)
+        spline_scipy = RotationSpline(key_t, Rotation.from_matrix(key_R)) if RotationSpline else None
+        ts = rng.uniform(key_t[0], key_t[-1], n)
         ops: dict[str, tuple[Callable[[], object], dict[str, Callable[[], object] | None]]] = {
             "SO3 exp": (lambda: chasles.so3_exp(W), {
                 "scipy": (lambda: Rotation.from_rotvec(W).as_matrix()) if Rotation else None,
@@ -391,6 +400,17 @@ def main() -> int:
                 "pytransform3d": None}),
             "SO3 mean (geodesic)": (lambda: chasles.so3_mean(Rc), {
                 "scipy": None, "numpy": None, "pytransform3d": None}),
+            "SO3 spline at N times (100 keys)": (lambda: spline_so3(ts), {
+                "scipy": (lambda: spline_scipy(ts).as_matrix()) if spline_scipy else None,
+                "numpy": None, "pytransform3d": None}),
+            "SO3 spline body velocity": (lambda: spline_so3.body_velocity(ts), {
+                "scipy": (lambda: spline_scipy(ts, 1)) if spline_scipy else None,
+                "numpy": None, "pytransform3d": None}),
+            "SO3 spline body acceleration": (lambda: spline_so3.body_acceleration(ts), {
+                "scipy": (lambda: spline_scipy(ts, 2)) if spline_scipy else None,
+                "numpy": None, "pytransform3d": None}),
+            "SE3 spline at N times (100 keys)": (lambda: spline_se3(ts), {
+                "scipy": None, "numpy": None, "pytransform3d": None}),
             "SE3 act (1 pose, N points)": (lambda: chasles.se3_act(gm, P), {
                 "scipy": (lambda: st1.apply(P)) if RigidTransform else None,
                 "numpy": lambda: P @ gm[:3, :3].T + gm[:3, 3],
@@ -409,6 +429,24 @@ def main() -> int:
             print(row(op, ours and ours / n, {k: (t / n if t else None) for k, t in peers.items()}, 1e9,
                       ARRAY_TARGET_NS.get(op) if n == 100_000 or op.startswith("SE3 act") else None))
         print()
+
+    # ---- spline fits ---------------------------------------------------------
+    rng = np.random.default_rng(5)
+    key_t = np.cumsum(rng.uniform(0.3, 1.0, 100))
+    key_R = chasles.so3_exp(np.cumsum(rng.normal(scale=0.35, size=(100, 3)), axis=0))
+    key_G = chasles.se3_exp(np.cumsum(rng.normal(scale=0.35, size=(100, 6)), axis=0))
+    print(f"### Spline fits through 100 keys (us, median of {rep})\n")
+    print("| op | chasles | scipy | ratio |")
+    print("| --- | ---: | ---: | ---: |")
+    for op, ours_fn, peer_fn in (
+        ("SO3Spline / RotationSpline", lambda: chasles.SO3Spline(key_t, key_R),
+         (lambda: RotationSpline(key_t, Rotation.from_matrix(key_R))) if RotationSpline else None),
+        ("SE3Spline", lambda: chasles.SE3Spline(key_t, key_G), None),
+    ):
+        ours, peer = measure(ours_fn, rep), measure(peer_fn, rep)
+        ratio = f"{ours / peer:.2f}" if ours and peer else ""
+        print(f"| {op} | {fig(ours * 1e6)} | {fig(peer * 1e6) if peer else ''} | {ratio} |")
+    print()
 
     # ---- kinematics ---------------------------------------------------------
     kinematics_table(rep)

@@ -16,5 +16,6 @@ void bind_kinematics(py::module_& m);    // bind_kinematics.cpp: class Chain
 void bind_scipy(py::module_& m);         // bind_scipy.cpp: SO3/SE3 from_scipy, to_scipy
 void bind_statistics(py::module_& m);    // bind_statistics.cpp: angles, distances (array functions)
 void bind_euler(py::module_& m);         // bind_euler.cpp: SO3 Euler angles and RPY, their private ufuncs
+void bind_spline(py::module_& m);        // bind_spline.cpp: the cores of SO3Spline, SE3Spline
 
 }  // namespace chasles_py

@@ -20,5 +20,6 @@
 #include "chasles/screw.hpp"
 #include "chasles/se3.hpp"
 #include "chasles/so3.hpp"
+#include "chasles/spline.hpp"
 #include "chasles/twist.hpp"
 #include "chasles/wrench.hpp"

@@ -116,6 +116,7 @@ from chasles._core import (
 from chasles._arrays import so3_as_quat, so3_from_quat
 from chasles._mean import se3_mean, so3_mean
 from chasles._random import se3_gaussian, se3_random, so3_gaussian, so3_random
+from chasles._spline import SE3Spline, SO3Spline
 from chasles._arrays import (
     so3_as_euler,
     so3_as_quat,
@@ -128,7 +129,9 @@ from chasles._arrays import (
 __all__ = [
     "Chain",
     "SE3",
+    "SE3Spline",
     "SO3",
+    "SO3Spline",
     "Screw",
     "Twist",
     "Wrench",

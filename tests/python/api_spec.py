@@ -1198,7 +1198,91 @@ def _build_spec():
         )
     spec["so3_from_rpy"] = _array_function("so3_from_rpy", [("rpy",) + v3], kw=("degrees",))
     spec["so3_as_rpy"] = _array_function("so3_as_rpy", [("R",) + R3], kw=("degrees",))
+    # Splines: the constructor (checked through an evaluation of what it built) and the evaluations
+    for cls, what, k, keys in (
+        (chasles.SO3Spline, "rotations", 3, lambda: np.stack([np.eye(3), rotation()])),
+        (chasles.SE3Spline, "poses", 4, lambda: np.stack([np.eye(4), pose()])),
+    ):
+        name = cls.__name__
+        spec[f"{name}.__init__"] = Entry(
+            [[KeyTimes(f"{name}(times)"), SplineKeys(f"{name}({what})", (2, k, k), keys)]],
+            call=lambda t, x, c=cls: c(t, x)(0.7),
+            passes_arguments=False,
+        )
+        spline = cls([0.0, 1.5], keys())
+        for method in ("__call__", "body_velocity", "body_acceleration"):
+            spec[f"{name}.{method}"] = Entry(
+                [[EvalTimes(f"{name}(t)")]],
+                call=lambda t, f=getattr(spline, method): f(t),
+                passes_arguments=False,
+            )
+        spec[f"{name}.{what}"] = Entry([[]], call=lambda s=spline, w=what: getattr(s, w), passes_arguments=False)
     return spec
+
+
+@dataclass
+class KeyTimes(Arg):
+    """The key times of a spline of two keys: shape (2,), finite, increasing."""
+
+    def good(self):
+        return np.array([0.0, 1.5])
+
+    def judge(self, value):
+        a = real_array(value, self.label)
+        if isinstance(a, Refused):
+            return a
+        if a.ndim != 1 or a.shape[0] < 2:
+            return Refused(ValueError, (self.label, "expected shape", f"got {shape_text(a.shape)}"))
+        c = finite_or_refused(a, self.label)
+        if isinstance(c, Refused):
+            return c
+        if not np.all(np.diff(c.value) > 0):
+            return Refused(ValueError, (self.label, "strictly increasing"))
+        if a.shape != (2,):
+            # the times are checked first; then the keys must have one element per time
+            return Refused(ValueError, ("expected shape", "one per time"))
+        return c
+
+
+@dataclass
+class SplineKeys(Arg):
+    """Two key rotations / poses: an array-like (or sequence of objects) of shape (2, k, k)."""
+
+    shape: tuple = (2, 3, 3)
+    valid: Callable[[], Any] | None = None
+
+    def good(self):
+        return self.valid()
+
+    def judge(self, value):
+        a = real_array(value, self.label)
+        if isinstance(a, Refused):
+            return a
+        if a.shape != self.shape:
+            return Refused(ValueError, (self.label, "expected shape", f"got {shape_text(a.shape)}"))
+        c = finite_or_refused(a, self.label)
+        if isinstance(c, Refused):
+            return c
+        k = self.shape[1]
+        for m in c.value:
+            defect = chasles.SO3.rotation_defect(m[:3, :3]) if k == 3 else chasles.SE3.transform_defect(m)
+            if not defect <= 1.4901161193847656e-08:
+                return Refused(ValueError, (self.label, "not a"))
+        return c
+
+
+@dataclass
+class EvalTimes(Arg):
+    """Times to evaluate a spline at: a real array-like of any shape, finite."""
+
+    def good(self):
+        return np.array([[0.25, 1.0]])
+
+    def judge(self, value):
+        a = real_array(value, self.label)
+        if isinstance(a, Refused):
+            return a
+        return finite_or_refused(a, self.label)
 
 
 @dataclass

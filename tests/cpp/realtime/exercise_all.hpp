@@ -183,6 +183,27 @@ S exercise_all() noexcept {
   const auto ikr = inverse_kinematics(cd, target, thd, lo, hi, ik_options, ik_gen, 2);
   sum += ik6.q.sum() + ik6.error.sum() + S(ik6.iterations) + S(ikd.converged ? 1 : 0) + ikd.q.sum() + ikr.q.sum();
   sum += pose_error(c6, target, th6).sum() + pose_error_jacobian(cd, target, thd).sum();
+
+  // Splines (spline.hpp) over caller storage, both groups and both end conditions.
+  {
+    const std::array<S, 3> ts{S(0), S(0.5), S(1.25)};
+    const std::array<SO3<S>, 3> Rs{R, I, SO3<S>::exp(p * S(0.1))};
+    const std::array<SE3<S>, 3> gs{g, h, e};
+    std::array<SplineSegment<SO3<S>>, 2> sr;
+    std::array<SplineSegment<SE3<S>>, 2> sg;
+    std::array<SplineWork<SO3<S>>, 3> wr;
+    std::array<SplineWork<SE3<S>>, 3> wg;
+    const SplineFit fr = fit_spline(3, ts.data(), Rs.data(), sr.data(), wr.data());
+    const SplineFit fg = fit_spline(3, ts.data(), gs.data(), sg.data(), wg.data(), SplineEnds::chord);
+    sum += S(fr.iterations + fg.iterations) + S(fr.status == SplineStatus::ok ? 1 : 0);
+    const SO3Spline<S> spr(3, ts.data(), Rs.data(), sr.data());
+    const SE3Spline<S> spg(3, ts.data(), gs.data(), sg.data());
+    const SplineSample<SO3<S>> a = spr(S(0.7));
+    const SplineSample<SE3<S>> b = spg(S(-0.1));
+    sum += a.element.matrix().sum() + a.velocity.sum() + a.acceleration.sum() + S(spr.size() + spr.segment(S(0.6)));
+    sum += spr.element(S(0.3)).matrix().sum() + spg.element(S(2)).translation().sum();
+    sum += b.element.translation().sum() + b.velocity.sum() + b.acceleration.sum() + spg.sample(1, S(0.75)).velocity.sum();
+  }
   return sum;
 }
 

@@ -28,6 +28,7 @@
 #include "chasles/random.hpp"
 #include "chasles/screw.hpp"
 #include "chasles/se3.hpp"
+#include "chasles/spline.hpp"
 #include "chasles/so3.hpp"
 #include "chasles/twist.hpp"
 #include "chasles/wrench.hpp"

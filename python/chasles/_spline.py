@@ -1,0 +1,253 @@
+"""Interpolating C2 splines through key rotations and key poses.
+
+The fit and the evaluation are C++ (include/chasles/spline.hpp, through the
+private cores of bindings/bind_spline.cpp): these classes check the
+arguments, hold the fitted core and give the results numpy's shapes. An
+array of times is evaluated in one C++ loop without the GIL.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from chasles import _core
+from chasles._random import _asarray
+
+ENDS = ("natural", "chord")
+
+_MATH = """
+    On segment i (t_i <= t <= t_{i+1}, tau = t - t_i) the spline is
+    X(t) = X_i exp(r(tau)) with r a cubic in tau, r(0) = 0 and
+    r(t_{i+1} - t_i) = log(X_i^-1 X_{i+1}): it passes through every key. The
+    body velocity V = (X^-1 dX/dt)^vee = Jr(r) r' and the body acceleration
+    dV/dt = Jr(r) r'' + (d/dt Jr(r)) r' (Jr the right Jacobian) are continuous
+    at every key (C2); they are computed analytically. The rates at the keys
+    solve the block-tridiagonal continuity equations, iterated to convergence
+    (at most 30 iterations) because of the term quadratic in r'. With
+    ``ends="natural"`` (the default) the acceleration is zero at the first and
+    the last key; with ``ends="chord"`` the velocity there is the rate of the
+    first / last segment's geodesic, log(X_0^-1 X_1) / (t_1 - t_0), as in
+    scipy's ``RotationSpline``, which this spline then equals. Two keys give
+    the geodesic at constant velocity; keys on one screw motion exp(t xi)
+    give that motion. Outside [t_0, t_{N-1}] the first / last segment's cubic
+    continues (as scipy's). Everything is computed in float64.
+"""
+
+
+def _times(times: ArrayLike, name: str) -> np.ndarray:
+    t = _asarray(times, f"{name}(times)")
+    if t.ndim != 1 or t.shape[0] < 2:
+        raise ValueError(f"{name}(times): expected shape (N,) with N >= 2, got {t.shape}")
+    t = np.ascontiguousarray(t, dtype=np.float64)
+    if not np.all(np.isfinite(t)):
+        raise ValueError(f"{name}(times): expected finite times, got {t!r}")
+    steps = np.diff(t)
+    if not np.all(steps > 0):
+        i = int(np.argmax(~(steps > 0)))
+        raise ValueError(f"{name}(times): expected strictly increasing times, got times[{i}] = {float(t[i])!r} "
+                         f"and times[{i + 1}] = {float(t[i + 1])!r}")
+    return t
+
+
+def _keys(keys: ArrayLike, n: int, core: int, name: str, what: str) -> np.ndarray:
+    k = _asarray(keys, f"{name}({what})")
+    if k.shape != (n, core, core):
+        raise ValueError(f"{name}({what}): expected shape ({n}, {core}, {core}) (one per time), got {k.shape}")
+    k = np.ascontiguousarray(k, dtype=np.float64)
+    if not np.all(np.isfinite(k)):
+        raise ValueError(f"{name}({what}): expected finite numbers")
+    return k
+
+
+class _Spline:
+    _name = ""
+    _what = ""
+    _matrix = 0
+
+    def _fit(self, core_class: Any, times: ArrayLike, keys: ArrayLike, ends: str) -> None:
+        name = self._name
+        if not isinstance(ends, str) or ends not in ENDS:
+            raise ValueError(f"{name}(ends): expected 'natural' or 'chord', got {ends!r}")
+        t = _times(times, name)
+        k = _keys(keys, t.shape[0], self._matrix, name, self._what)
+        self._core = core_class(t, k, ends == "natural")
+        self._t = t
+        self._t.flags.writeable = False
+        self._ends = ends
+
+    def _evaluate(self, t: ArrayLike, order: int) -> np.ndarray:
+        a = _asarray(t, f"{self._name}(t)")
+        a = np.asarray(a, dtype=np.float64, order="C")  # (ascontiguousarray would make a 0-d array 1-d)
+        if not np.all(np.isfinite(a)):
+            raise ValueError(f"{self._name}(t): expected finite times, got {a!r}")
+        return self._core.evaluate(a, order)
+
+    @property
+    def times(self) -> np.ndarray:
+        """The key times t_0 < ... < t_{N-1}, shape (N,) (read-only)."""
+        return self._t
+
+    @property
+    def ends(self) -> str:
+        """The end conditions: ``"natural"`` or ``"chord"``."""
+        return self._ends
+
+    def __len__(self) -> int:
+        return int(self._t.shape[0])
+
+    def __call__(self, t: ArrayLike) -> np.ndarray:
+        return self._evaluate(t, 0)
+
+    def body_velocity(self, t: ArrayLike) -> np.ndarray:
+        return self._evaluate(t, 1)
+
+    def body_acceleration(self, t: ArrayLike) -> np.ndarray:
+        return self._evaluate(t, 2)
+
+    def __repr__(self) -> str:
+        return (f"{self._name}(N={len(self)}, times=[{float(self._t[0])!r}, ..., {float(self._t[-1])!r}], "
+                f"ends={self._ends!r})")
+
+
+class SO3Spline(_Spline):
+    __doc__ = """Interpolating C2 spline through key rotations (scipy's ``RotationSpline``).
+
+    Args:
+        times: (N,) strictly increasing finite key times, N >= 2.
+        rotations: (N, 3, 3) rotation matrices, or a sequence of N ``SO3``.
+        ends: ``"natural"`` (zero angular acceleration at both ends, the
+            default) or ``"chord"`` (scipy's end rates).
+""" + _MATH + """
+    Calling the spline at t (a float or an array of any shape) gives the
+    rotation matrices (..., 3, 3); ``body_velocity(t)`` the angular rate in
+    the body frame, w = (R^T dR/dt)^vee, shape (..., 3);
+    ``body_acceleration(t)`` its derivative dw/dt, shape (..., 3). (scipy's
+    ``RotationSpline(t, 1)`` and ``(t, 2)`` are these same body-frame
+    vectors.)
+
+    Example:
+        >>> times = [0.0, 1.0, 3.0]
+        >>> keys = [SO3.exp([0.0, 0.0, 0.0]), SO3.exp([0.0, 0.0, 1.0]), SO3.exp([0.5, 0.0, 1.0])]
+        >>> spline = SO3Spline(times, keys)
+        >>> bool(np.allclose(spline(1.0), keys[1].as_matrix()))
+        True
+        >>> spline(np.linspace(0.0, 3.0, 7)).shape, spline.body_velocity([[0.5, 2.0]]).shape
+        ((7, 3, 3), (1, 2, 3))
+    """
+    _name = "SO3Spline"
+    _what = "rotations"
+    _matrix = 3
+
+    def __init__(self, times: ArrayLike, rotations: ArrayLike, *, ends: str = "natural") -> None:
+        self._fit(_core._SO3SplineCore, times, rotations, ends)
+
+    @property
+    def rotations(self) -> np.ndarray:
+        """The key rotations, shape (N, 3, 3)."""
+        return self._core.keys()
+
+    def __call__(self, t: ArrayLike) -> np.ndarray:
+        """Rotation matrices at the times t.
+
+        Args:
+            t: a float or an array of times of any shape (...).
+
+        Returns:
+            (..., 3, 3) rotation matrices, float64.
+        """
+        return self._evaluate(t, 0)
+
+    def body_velocity(self, t: ArrayLike) -> np.ndarray:
+        """Body angular velocity w = (R^T dR/dt)^vee = Jr(r) r' at the times t.
+
+        Args:
+            t: a float or an array of times of any shape (...).
+
+        Returns:
+            (..., 3) angular rates in the body frame, float64.
+        """
+        return self._evaluate(t, 1)
+
+    def body_acceleration(self, t: ArrayLike) -> np.ndarray:
+        """Body angular acceleration dw/dt = Jr(r) r'' + (d/dt Jr(r)) r' at the times t.
+
+        Args:
+            t: a float or an array of times of any shape (...).
+
+        Returns:
+            (..., 3) angular accelerations in the body frame, float64.
+        """
+        return self._evaluate(t, 2)
+
+
+class SE3Spline(_Spline):
+    __doc__ = """Interpolating C2 spline through key poses.
+
+    Args:
+        times: (N,) strictly increasing finite key times, N >= 2.
+        poses: (N, 4, 4) rigid motions [[R, p], [0, 0, 0, 1]], or a sequence
+            of N ``SE3``.
+        ends: ``"natural"`` (zero body acceleration at both ends, the
+            default) or ``"chord"``.
+""" + _MATH + """
+    Calling the spline at t (a float or an array of any shape) gives the
+    poses (..., 4, 4); ``body_velocity(t)`` the body twist
+    V = (g^-1 dg/dt)^vee = (v, w), linear part first, shape (..., 6);
+    ``body_acceleration(t)`` its derivative, shape (..., 6). The spline of
+    poses with zero translation is the ``SO3Spline`` of their rotations.
+
+    Example:
+        >>> times = [0.0, 1.0, 2.0]
+        >>> keys = [SE3.exp([0.0, 0.0, 0.0, 0.0, 0.0, 0.0]), SE3.exp([1.0, 0.0, 0.0, 0.0, 0.0, 0.5]),
+        ...         SE3.exp([2.0, 0.0, 0.0, 0.0, 0.0, 1.0])]
+        >>> spline = SE3Spline(times, keys)
+        >>> np.round(spline.body_velocity(0.5), 12) + 0.0
+        array([1. , 0. , 0. , 0. , 0. , 0.5])
+    """
+    _name = "SE3Spline"
+    _what = "poses"
+    _matrix = 4
+
+    def __init__(self, times: ArrayLike, poses: ArrayLike, *, ends: str = "natural") -> None:
+        self._fit(_core._SE3SplineCore, times, poses, ends)
+
+    @property
+    def poses(self) -> np.ndarray:
+        """The key poses, shape (N, 4, 4)."""
+        return self._core.keys()
+
+    def __call__(self, t: ArrayLike) -> np.ndarray:
+        """Poses at the times t.
+
+        Args:
+            t: a float or an array of times of any shape (...).
+
+        Returns:
+            (..., 4, 4) rigid motions, float64.
+        """
+        return self._evaluate(t, 0)
+
+    def body_velocity(self, t: ArrayLike) -> np.ndarray:
+        """Body twist V = (g^-1 dg/dt)^vee = (v, w) = Jr(r) r' at the times t.
+
+        Args:
+            t: a float or an array of times of any shape (...).
+
+        Returns:
+            (..., 6) body twists (v, w), linear part first, float64.
+        """
+        return self._evaluate(t, 1)
+
+    def body_acceleration(self, t: ArrayLike) -> np.ndarray:
+        """Derivative of the body twist, Jr(r) r'' + (d/dt Jr(r)) r', at the times t.
+
+        Args:
+            t: a float or an array of times of any shape (...).
+
+        Returns:
+            (..., 6) body accelerations (linear, angular), float64.
+        """
+        return self._evaluate(t, 2)

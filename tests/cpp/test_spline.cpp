@@ -1,0 +1,365 @@
+// spline.hpp: the interpolating C2 spline passes through its keys; its body
+// velocity and acceleration match central differences of the evaluated
+// elements; velocity and acceleration are continuous at the interior keys;
+// natural ends have zero acceleration; two keys give the geodesic; keys on a
+// screw motion give that screw motion; the SE3 spline of pure rotations is the
+// SO3 spline; the Jacobian coefficients agree on both sides of their series
+// cutoff and with long double; autodiff through the evaluation gives the
+// velocity; bad inputs are reported.
+#include <array>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include <Eigen/Core>
+#include <gtest/gtest.h>
+#include <unsupported/Eigen/AutoDiff>
+
+#include <chasles/spline.hpp>
+
+namespace {
+
+using chasles::fit_spline;
+using chasles::SE3;
+using chasles::SO3;
+using chasles::Spline;
+using chasles::SplineEnds;
+using chasles::SplineFit;
+using chasles::SplineSample;
+using chasles::SplineSegment;
+using chasles::SplineStatus;
+using chasles::SplineWork;
+
+template <typename T>
+class SplineTest : public ::testing::Test {};
+struct ScalarName {
+  template <typename S>
+  static std::string GetName(int) {
+    return std::is_same<S, float>::value ? "float" : "double";
+  }
+};
+using ScalarTypes = ::testing::Types<float, double>;
+TYPED_TEST_SUITE(SplineTest, ScalarTypes, ScalarName);
+
+/// A fitted spline that owns its storage (the test's convenience; the library only views).
+template <typename Group>
+struct Fitted {
+  using S = typename Group::Scalar;
+  std::vector<S> times;
+  std::vector<Group> keys;
+  std::vector<SplineSegment<Group>> segments;
+  std::vector<SplineWork<Group>> work;
+  SplineFit fit{SplineStatus::ok, 0};
+  Fitted(std::vector<S> t, std::vector<Group> k, SplineEnds ends = SplineEnds::natural)
+      : times(std::move(t)), keys(std::move(k)), segments(keys.size() > 1 ? keys.size() - 1 : 1), work(keys.size()) {
+    fit = fit_spline(static_cast<int>(keys.size()), times.data(), keys.data(), segments.data(), work.data(), ends);
+  }
+  Spline<Group> spline() const { return Spline<Group>(static_cast<int>(keys.size()), times.data(), keys.data(), segments.data()); }
+};
+
+template <typename S>
+Eigen::Matrix<S, 3, 1> normal3(std::mt19937_64& gen, double scale) {
+  std::normal_distribution<double> normal(0, scale);
+  return Eigen::Vector3d(normal(gen), normal(gen), normal(gen)).cast<S>();
+}
+
+/// Irregular increasing times: steps uniform in [0.3, 1.0].
+template <typename S>
+std::vector<S> random_times(std::mt19937_64& gen, int n) {
+  std::uniform_real_distribution<double> step(0.3, 1.0);
+  std::vector<S> t;
+  double now = -0.7;
+  for (int i = 0; i < n; ++i) {
+    t.push_back(S(now));
+    now += step(gen);
+  }
+  return t;
+}
+
+/// Keys that walk: each step a random rotation of about 0.6 rad (and 0.5 m).
+template <typename Group>
+std::vector<Group> random_walk(std::mt19937_64& gen, int n);
+template <>
+std::vector<SO3<double>> random_walk(std::mt19937_64& gen, int n) {
+  std::vector<SO3<double>> out{SO3<double>::exp(normal3<double>(gen, 1.0))};
+  for (int i = 1; i < n; ++i) out.push_back(out.back() * SO3<double>::exp(normal3<double>(gen, 0.35)));
+  return out;
+}
+template <>
+std::vector<SE3<double>> random_walk(std::mt19937_64& gen, int n) {
+  std::vector<SE3<double>> out{SE3<double>(SO3<double>::exp(normal3<double>(gen, 1.0)), normal3<double>(gen, 1.0))};
+  for (int i = 1; i < n; ++i) {
+    Eigen::Matrix<double, 6, 1> xi;
+    xi << normal3<double>(gen, 0.3), normal3<double>(gen, 0.35);
+    out.push_back(out.back() * SE3<double>::exp(xi));
+  }
+  return out;
+}
+template <typename S>
+std::vector<SO3<S>> cast_all(const std::vector<SO3<double>>& in) {
+  std::vector<SO3<S>> out;
+  for (const auto& x : in) out.push_back(x.template cast<S>());
+  return out;
+}
+template <typename S>
+std::vector<SE3<S>> cast_all(const std::vector<SE3<double>>& in) {
+  std::vector<SE3<S>> out;
+  for (const auto& x : in) out.push_back(x.template cast<S>());
+  return out;
+}
+
+template <typename Group>
+double distance(const Group& a, const Group& b) {
+  return static_cast<double>((a.inverse() * b).log().norm());
+}
+
+template <typename S, template <typename> class G>
+void check_keys_and_differences() {
+  using Group = G<S>;
+  using Tangent = Eigen::Matrix<S, Group::DoF, 1>;
+  const bool is_float = std::is_same<S, float>::value;
+  const double eps = std::numeric_limits<S>::epsilon();
+  std::mt19937_64 gen(20261124);
+  for (int trial = 0; trial < 5; ++trial) {
+    const int n = 2 + trial * 3;
+    const Fitted<Group> f(random_times<S>(gen, n), cast_all<S>(random_walk<G<double>>(gen, n)));
+    ASSERT_EQ(f.fit.status, SplineStatus::ok) << "n = " << n;
+    const Spline<Group> sp = f.spline();
+    // Through the keys, to the rounding of log/exp over one segment.
+    for (int i = 0; i < n; ++i) EXPECT_LT(distance(sp(f.times[i]).element, f.keys[i]), 64 * eps) << "key " << i;
+    // Central differences of the evaluated elements: y(d) = log(X(t)^-1 X(t + d)) = V d + V' d^2 / 2 + O(d^3), so
+    // V ~ (y(d) - y(-d)) / (2 d) and V' ~ (y(d) + y(-d)) / d^2, both with error O(d^2) |derivatives| (of order 10
+    // here: rates ~ 1 rad/s over steps ~ 0.6 s) plus rounding eps / d (velocity) and eps / d^2 (acceleration).
+    // d balances the two: double d = 1e-4 (velocity error ~ 1e-7, acceleration ~ 1e-7 + 2e-8), float d = 3e-2 for
+    // the velocity (~ 1e-2 + 4e-6) and 6e-2 for the acceleration (~ 4e-2 + 3e-5); the bounds are a few times those.
+    const double dv = is_float ? 3e-2 : 1e-4, da = is_float ? 6e-2 : 1e-4;
+    const double tol_v = is_float ? 5e-2 : 1e-6, tol_a = is_float ? 2e-1 : 1e-5;
+    std::uniform_real_distribution<double> u(static_cast<double>(f.times.front()), static_cast<double>(f.times.back()));
+    for (int k = 0; k < 20; ++k) {
+      const double t = u(gen);
+      const SplineSample<Group> x = sp(S(t));
+      EXPECT_TRUE(sp.element(S(t)).matrix() == x.element.matrix()) << "element() is sample's element, t = " << t;
+      const auto y = [&](double d) -> Eigen::Matrix<double, Group::DoF, 1> {
+        return (x.element.inverse() * sp(S(t + d)).element).log().template cast<double>();
+      };
+      const Eigen::Matrix<double, Group::DoF, 1> v_fd = (y(dv) - y(-dv)) / (2 * dv);
+      const Eigen::Matrix<double, Group::DoF, 1> a_fd = (y(da) + y(-da)) / (da * da);
+      const double scale_v = 1 + x.velocity.template cast<double>().norm();
+      const double scale_a = 1 + x.acceleration.template cast<double>().norm();
+      EXPECT_LT((x.velocity.template cast<double>() - v_fd).norm(), tol_v * scale_v) << "t = " << t;
+      EXPECT_LT((x.acceleration.template cast<double>() - a_fd).norm(), tol_a * scale_a) << "t = " << t;
+    }
+    // C2 at the interior keys: the left limit (segment k - 1 at its end) equals the right limit (segment k at 0).
+    // The fit stops with a step <= spline_step_tolerance (1 + |w|): the rates are within ~ that of the exact
+    // solution, and the acceleration mismatch is ~ 6/h times it: bounds 1e-9 (double) and 1e-3 (float).
+    const double tol_c2 = is_float ? 1e-3 : 1e-9;
+    for (int k = 1; k + 1 < n; ++k) {
+      const SplineSample<Group> left = sp.sample(k - 1, f.times[k] - f.times[k - 1]);
+      const SplineSample<Group> right = sp.sample(k, S(0));
+      const double scale = 1 + right.velocity.template cast<double>().norm() + right.acceleration.template cast<double>().norm();
+      EXPECT_LT(distance(left.element, f.keys[k]), 64 * eps) << "key " << k;
+      EXPECT_LT((left.velocity - right.velocity).template cast<double>().norm(), 64 * eps * scale) << "key " << k;
+      EXPECT_LT((left.acceleration - right.acceleration).template cast<double>().norm(), tol_c2 * scale) << "key " << k;
+    }
+    // Natural ends: no acceleration at the first and the last key.
+    const Tangent a0 = sp.sample(0, S(0)).acceleration;
+    const Tangent an = sp.sample(n - 2, f.times[n - 1] - f.times[n - 2]).acceleration;
+    EXPECT_LT(a0.template cast<double>().norm(), 1e3 * eps);
+    EXPECT_LT(an.template cast<double>().norm(), tol_c2 * (1 + sp.sample(n - 2, S(0)).velocity.template cast<double>().norm()));
+  }
+}
+
+TYPED_TEST(SplineTest, SO3ThroughKeysDifferencesC2) { check_keys_and_differences<TypeParam, SO3>(); }
+TYPED_TEST(SplineTest, SE3ThroughKeysDifferencesC2) { check_keys_and_differences<TypeParam, SE3>(); }
+
+TYPED_TEST(SplineTest, ChordEndsHaveTheFirstAndLastSegmentsRates) {
+  using S = TypeParam;
+  std::mt19937_64 gen(7);
+  const int n = 6;
+  const Fitted<SE3<S>> f(random_times<S>(gen, n), cast_all<S>(random_walk<SE3<double>>(gen, n)), SplineEnds::chord);
+  ASSERT_EQ(f.fit.status, SplineStatus::ok);
+  const double eps = std::numeric_limits<S>::epsilon();
+  const Spline<SE3<S>> sp = f.spline();
+  const auto w0 = ((f.keys[0].inverse() * f.keys[1]).log() / (f.times[1] - f.times[0])).eval();
+  const auto wn = ((f.keys[n - 2].inverse() * f.keys[n - 1]).log() / (f.times[n - 1] - f.times[n - 2])).eval();
+  EXPECT_LT((sp(f.times[0]).velocity - w0).template cast<double>().norm(), 64 * eps * (1 + w0.template cast<double>().norm()));
+  EXPECT_LT((sp(f.times[n - 1]).velocity - wn).template cast<double>().norm(), 64 * eps * (1 + wn.template cast<double>().norm()));
+}
+
+template <typename S, template <typename> class G>
+void check_geodesic() {
+  using Group = G<S>;
+  using Tangent = Eigen::Matrix<S, Group::DoF, 1>;
+  const double eps = std::numeric_limits<S>::epsilon();
+  std::mt19937_64 gen(11);
+  for (int trial = 0; trial < 10; ++trial) {
+    const std::vector<Group> keys = cast_all<S>(random_walk<G<double>>(gen, 2));
+    for (SplineEnds ends : {SplineEnds::natural, SplineEnds::chord}) {
+      const Fitted<Group> f({S(0.25), S(1.75)}, keys, ends);
+      ASSERT_EQ(f.fit.status, SplineStatus::ok);
+      const Tangent D = (keys[0].inverse() * keys[1]).log();
+      const Tangent V = D / S(1.5);
+      const double scale = 1 + V.template cast<double>().norm();
+      for (double t : {-0.5, 0.25, 0.6, 1.0, 1.75, 2.5}) {
+        const SplineSample<Group> x = f.spline()(S(t));
+        const Group geodesic = keys[0] * Group::exp(Tangent(S((t - 0.25) / 1.5) * D));
+        EXPECT_LT(distance(x.element, geodesic), 64 * eps * scale) << t;
+        EXPECT_LT((x.velocity - V).template cast<double>().norm(), 64 * eps * scale) << t;
+        EXPECT_LT(x.acceleration.template cast<double>().norm(), 64 * eps * scale) << t;
+      }
+    }
+  }
+}
+TYPED_TEST(SplineTest, TwoKeysGiveTheGeodesic) {
+  check_geodesic<TypeParam, SO3>();
+  check_geodesic<TypeParam, SE3>();
+}
+
+template <typename S, template <typename> class G>
+void check_screw() {
+  using Group = G<S>;
+  using Tangent = Eigen::Matrix<S, Group::DoF, 1>;
+  const double eps = std::numeric_limits<S>::epsilon();
+  std::mt19937_64 gen(3);
+  for (int trial = 0; trial < 5; ++trial) {
+    const Group start = cast_all<S>(random_walk<G<double>>(gen, 1))[0];
+    Eigen::Matrix<double, Group::DoF, 1> xd;
+    for (int j = 0; j < Group::DoF; ++j) xd[j] = std::normal_distribution<double>(0, 1.0)(gen);
+    const Tangent xi = xd.template cast<S>();  // |w| ~ 1.6 rad/s, steps <= 1 s: each step's angle < pi
+    const int n = 3 + 2 * trial;
+    const std::vector<S> times = random_times<S>(gen, n);
+    std::vector<Group> keys;
+    for (S t : times) keys.push_back(start * Group::exp(Tangent(t * xi)));
+    const Fitted<Group> f(times, keys);
+    ASSERT_EQ(f.fit.status, SplineStatus::ok);
+    EXPECT_LE(f.fit.iterations, 2);
+    const double scale = 1 + xd.norm() * (1 + std::abs(static_cast<double>(times.back())));
+    std::uniform_real_distribution<double> u(static_cast<double>(times.front()), static_cast<double>(times.back()));
+    for (int k = 0; k < 20; ++k) {
+      const double t = u(gen);
+      const SplineSample<Group> x = f.spline()(S(t));
+      EXPECT_LT(distance(x.element, Group(start * Group::exp(Tangent(S(t) * xi)))), 256 * eps * scale) << t;
+      EXPECT_LT((x.velocity - xi).template cast<double>().norm(), 256 * eps * scale) << t;
+      EXPECT_LT(x.acceleration.template cast<double>().norm(), 256 * eps * scale) << t;
+    }
+  }
+}
+TYPED_TEST(SplineTest, KeysOnAScrewMotionGiveThatScrewMotion) {
+  check_screw<TypeParam, SO3>();
+  check_screw<TypeParam, SE3>();
+}
+
+TYPED_TEST(SplineTest, SE3OfPureRotationsIsTheSO3Spline) {
+  using S = TypeParam;
+  const double eps = std::numeric_limits<S>::epsilon();
+  std::mt19937_64 gen(5);
+  const int n = 7;
+  const std::vector<S> times = random_times<S>(gen, n);
+  const std::vector<SO3<S>> rs = cast_all<S>(random_walk<SO3<double>>(gen, n));
+  std::vector<SE3<S>> gs;
+  for (const auto& r : rs) gs.push_back(SE3<S>(r, Eigen::Matrix<S, 3, 1>::Zero()));
+  for (SplineEnds ends : {SplineEnds::natural, SplineEnds::chord}) {
+    const Fitted<SO3<S>> fr(times, rs, ends);
+    const Fitted<SE3<S>> fg(times, gs, ends);
+    ASSERT_EQ(fr.fit.status, SplineStatus::ok);
+    ASSERT_EQ(fg.fit.status, SplineStatus::ok);
+    for (double t = -0.5; t < static_cast<double>(times.back()) + 0.5; t += 0.37) {
+      const SplineSample<SO3<S>> a = fr.spline()(S(t));
+      const SplineSample<SE3<S>> b = fg.spline()(S(t));
+      const double scale = 1 + a.velocity.template cast<double>().norm() + a.acceleration.template cast<double>().norm();
+      EXPECT_LT(distance(a.element, b.element.rotation()), 64 * eps * scale) << t;
+      EXPECT_EQ(b.element.translation().template cast<double>().norm(), 0.0) << t;
+      EXPECT_LT((a.velocity - b.velocity.template tail<3>()).template cast<double>().norm(), 64 * eps * scale) << t;
+      EXPECT_LT((a.acceleration - b.acceleration.template tail<3>()).template cast<double>().norm(), 256 * eps * scale) << t;
+      EXPECT_EQ(b.velocity.template head<3>().template cast<double>().norm(), 0.0) << t;
+      EXPECT_EQ(b.acceleration.template head<3>().template cast<double>().norm(), 0.0) << t;
+    }
+  }
+}
+
+TYPED_TEST(SplineTest, BadInputsAreReported) {
+  using S = TypeParam;
+  const std::vector<SO3<S>> keys(3);
+  std::vector<SplineSegment<SO3<S>>> seg(2);
+  std::vector<SplineWork<SO3<S>>> work(3);
+  const S nan = std::numeric_limits<S>::quiet_NaN(), inf = std::numeric_limits<S>::infinity();
+  EXPECT_EQ(fit_spline(1, std::vector<S>{S(0)}.data(), keys.data(), seg.data(), work.data()).status, SplineStatus::too_few_keys);
+  for (const std::vector<S>& t : {std::vector<S>{0, 1, 1}, std::vector<S>{0, 2, 1}, std::vector<S>{0, nan, 2},
+                                  std::vector<S>{0, 1, inf}, std::vector<S>{-inf, 1, 2}}) {
+    EXPECT_EQ(fit_spline(3, t.data(), keys.data(), seg.data(), work.data()).status, SplineStatus::times_not_increasing);
+  }
+}
+
+// The Jacobian coefficients a, b and their s-derivatives: series below spline_series_theta2, closed forms above.
+// Both sides of the cutoff against long double (series to s^12 in long double, exact there to ~1e-19) and the
+// derivatives against long double central differences of a and b.
+template <typename T>
+std::array<T, 6> coeffs(T s) {
+  const auto k = chasles::detail::jacobian_coefficients<T>(s);
+  return {k.a, k.b, k.a1, k.b1, k.a2, k.b2};
+}
+TEST(SplineCoefficients, BothSidesOfTheSeriesCutoffAgreeWithLongDouble) {
+  const double cut = chasles::Thresholds<double>::spline_series_theta2;
+  for (double s : {0.0, 1e-12, 1e-4, 0.5, std::nextafter(cut, 0.0), cut, std::nextafter(cut, 10.0), 5.0, 9.0, 30.0, 100.0}) {
+    const std::array<double, 6> d = coeffs<double>(s);
+    const std::array<long double, 6> l = coeffs<long double>(s);
+    for (int j = 0; j < 6; ++j) {
+      const double rel = std::abs(static_cast<double>((static_cast<long double>(d[j]) - l[j]) / l[j]));
+      EXPECT_LT(rel, 400 * std::numeric_limits<double>::epsilon()) << "s = " << s << " coefficient " << j;
+    }
+    const float sf = static_cast<float>(s);
+    const std::array<float, 6> f = coeffs<float>(sf);
+    const std::array<long double, 6> lf = coeffs<long double>(static_cast<long double>(sf));
+    for (int j = 0; j < 6; ++j) {
+      const double rel = std::abs(static_cast<double>((static_cast<long double>(f[j]) - lf[j]) / lf[j]));
+      EXPECT_LT(rel, 400 * std::numeric_limits<float>::epsilon()) << "s = " << s << " coefficient " << j;
+    }
+  }
+  // The derivatives are those of a and b (long double central differences, step 1e-5: error ~1e-10).
+  for (long double s : {0.3L, 2.0L, 4.0L, 7.0L, 40.0L}) {
+    const long double d = 1e-5L;
+    const auto p = coeffs<long double>(s + d), m = coeffs<long double>(s - d), c = coeffs<long double>(s);
+    EXPECT_NEAR(static_cast<double>((p[0] - m[0]) / (2 * d)), static_cast<double>(c[2]), 1e-9) << s;
+    EXPECT_NEAR(static_cast<double>((p[1] - m[1]) / (2 * d)), static_cast<double>(c[3]), 1e-9) << s;
+    EXPECT_NEAR(static_cast<double>((p[2] - m[2]) / (2 * d)), static_cast<double>(c[4]), 1e-9) << s;
+    EXPECT_NEAR(static_cast<double>((p[3] - m[3]) / (2 * d)), static_cast<double>(c[5]), 1e-9) << s;
+  }
+}
+
+// Autodiff through the fit and the evaluation: dX/dt = X [V] with V the analytic body velocity.
+TEST(SplineAutodiff, TimeDerivativeOfTheElementIsTheBodyVelocity) {
+  using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, 1, 1>>;
+  std::mt19937_64 gen(9);
+  const int n = 5;
+  const std::vector<double> td = random_times<double>(gen, n);
+  const std::vector<SE3<double>> kd = random_walk<SE3<double>>(gen, n);
+  std::vector<AD> times;
+  std::vector<SE3<AD>> keys;
+  for (int i = 0; i < n; ++i) {
+    times.push_back(AD(td[i]));
+    keys.push_back(kd[i].cast<AD>());
+  }
+  const Fitted<SE3<AD>> f(times, keys);
+  ASSERT_EQ(f.fit.status, SplineStatus::ok);
+  const Fitted<SE3<double>> fd(td, kd);
+  for (double t : {-0.5, 0.1, 0.9, 1.7}) {
+    const SplineSample<SE3<AD>> x = f.spline()(AD(t, Eigen::Matrix<double, 1, 1>(1.0)));
+    Eigen::Matrix4d M, dM;
+    const Eigen::Matrix<AD, 4, 4> Ma = x.element.matrix();
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) {
+        M(r, c) = Ma(r, c).value();
+        dM(r, c) = Ma(r, c).derivatives()(0);
+      }
+    const SplineSample<SE3<double>> y = fd.spline()(t);
+    const Eigen::Matrix4d Vhat = M.inverse() * dM;
+    Eigen::Matrix<double, 6, 1> v;
+    v << Vhat(0, 3), Vhat(1, 3), Vhat(2, 3), Vhat(2, 1), Vhat(0, 2), Vhat(1, 0);
+    EXPECT_LT((v - y.velocity).norm(), 1e-12 * (1 + y.velocity.norm())) << t;
+  }
+}
+
+}  // namespace
