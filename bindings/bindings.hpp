@@ -15,6 +15,7 @@ void bind_jacobians(py::module_& m);     // bind_jacobians.cpp: SO3/SE3 Jacobian
 void bind_kinematics(py::module_& m);    // bind_kinematics.cpp: class Chain
 void bind_scipy(py::module_& m);         // bind_scipy.cpp: SO3/SE3 from_scipy, to_scipy
 void bind_statistics(py::module_& m);    // bind_statistics.cpp: angles, distances (array functions)
-void bind_euler(py::module_& m);         // bind_euler.cpp: SO3 Euler angles and RPY, their private ufuncs
+void bind_euler(py::module_& m);
+void bind_bspline(py::module_& m);       // bind_bspline.cpp: classes SO3BSpline, SE3BSpline         // bind_euler.cpp: SO3 Euler angles and RPY, their private ufuncs
 
 }  // namespace chasles_py
