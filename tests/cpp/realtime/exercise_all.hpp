@@ -182,7 +182,7 @@ S exercise_all() noexcept {
     sum += pg.value.translation().sum() + pg.velocity.sum() + pg.acceleration.sum();
     const SO3BSplineView<S> rs(Rs.data(), 5, S(1), S(0.5));
     const SE3BSplineView<S> ss(gs.data(), 5, S(1), S(0.5));
-    for (const S t : {S(1.2), S(1.7), S(0), S(9)}) {
+    for (const S& t : {S(1.2), S(1.7), S(0), S(9)}) {
       const BSplinePoint<SO3<S>> pr = rs.evaluate(t);
       sum += rs(t).matrix().sum() + pr.value.matrix().sum() + pr.velocity.sum() + pr.acceleration.sum();
       sum += ss(t).translation().sum() + ss.evaluate(t).acceleration.sum() + rs.locate(t).u;
