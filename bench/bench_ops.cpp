@@ -9,6 +9,7 @@
 //
 // Names: <group>/<op>/<input>/<scalar>, e.g. SO3/log/near_pi/double.
 #include <cmath>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@
 
 #include <Eigen/Geometry>
 
+#include "chasles/bspline.hpp"
 #include "chasles/chasles.hpp"
 #include "chasles/kinematics.hpp"
 
@@ -109,6 +111,34 @@ void register_chain(const std::string& input, const std::string& sn, int n) {
   add("Chain/forward_body" + tail, th, [chain](const JV& t) { return chain.forward_body(t); });
   add("Chain/jacobian_space" + tail, th, [chain](const JV& t) { return chain.jacobian_space(t); });
   add("Chain/jacobian_body" + tail, th, [chain](const JV& t) { return chain.jacobian_body(t); });
+}
+
+/// BSpline/<op>/<group>/<scalar>: a 64-element spline (random steps of up
+/// to 0.5 per tangent coordinate) at times uniform over its 61 segments:
+/// the element alone, and with body velocity and acceleration.
+template <typename G>
+void register_bspline_of(const std::string& group, const std::string& sn, std::uint32_t seed) {
+  using S = typename G::Scalar;
+  using T = Eigen::Matrix<S, G::DoF, 1>;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> step(-0.5, 0.5), time(0.0, 61.0);
+  auto control = std::make_shared<std::vector<G>>(1, G());
+  for (int k = 1; k < 64; ++k) {
+    T x;
+    for (int j = 0; j < G::DoF; ++j) x[j] = S(step(rng));
+    control->push_back(control->back() * G::exp(x));
+  }
+  std::vector<S> times;
+  for (std::size_t i = 0; i < kN; ++i) times.push_back(S(time(rng)));
+  const auto view = [control] { return chasles::CubicBSplineView<G>(control->data(), 64, S(0), S(1)); };
+  add("BSpline/value/" + group + "/" + sn, times, [view](S t) { return view()(t); });
+  add("BSpline/value_velocity_acceleration/" + group + "/" + sn, times, [view](S t) { return view().evaluate(t); });
+}
+
+template <typename S>
+void register_bspline(const std::string& sn) {
+  register_bspline_of<chasles::SO3<S>>("SO3", sn, 31);
+  register_bspline_of<chasles::SE3<S>>("SE3", sn, 37);
 }
 
 template <typename S>
@@ -239,6 +269,7 @@ void register_all(const std::string& sn) {
   register_chain<S, Chain<S, 7>>("7dof", sn, 7);
   register_chain<S, Chain<S, Eigen::Dynamic, 8>>("6dof_dynamic_max8", sn, 6);
   register_chain<S, Chain<S, Eigen::Dynamic, 8>>("7dof_dynamic_max8", sn, 7);
+  register_bspline<S>(sn);
 
   // ---- floors
   std::vector<S> angles;
