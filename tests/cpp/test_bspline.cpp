@@ -253,9 +253,11 @@ TYPED_TEST(BSpline, RatesMatchCentralDifferencesOfTheElements) {
   const CubicBSplineView<G> spline(X.data(), 8, t0, dt);
   // Body velocity: (log(X(t)^-1 X(t+h)) - log(X(t)^-1 X(t-h))) / 2h, and
   // the acceleration as the central difference of the analytic velocity.
-  // Errors: truncation h^2 |omega''| / 6 and rounding eps / h. Here
-  // |omega''| <= |d| / dt^3 ~ 30 (steps |d| <= 2, dt = 0.5), so h = 1e-4
-  // (double) leaves 5e-8 and 2e-12; h = 1e-2 (float) leaves 5e-4 and 1e-5.
+  // Errors: truncation h^2 |f'''| / 6 (f''' is omega'' for the velocity,
+  // omega''' for the acceleration) and rounding eps |f| / h. Here
+  // |omega''| <~ |d| / dt^3 ~ 16 and |omega'''| <~ |d| / dt^4 ~ 32 (steps
+  // |d| <= 2, dt = 0.5), so h = 1e-4 (double) leaves 5e-8 and 2e-11;
+  // h = 1e-2 (float) leaves 5e-4 and 1e-4 (times the operation count).
   // The tolerances are 4x and 20x above those bounds: a missing term of the
   // recursion (a bracket, an adjoint) is O(1). The times keep 0.05 dt > h
   // away from the knots, where the third derivative jumps (the curve is C2,
