@@ -18,6 +18,7 @@
 
 #include <Eigen/Geometry>
 
+#include "chasles/bspline.hpp"
 #include "chasles/chasles.hpp"
 #include "chasles/kinematics.hpp"
 
@@ -156,6 +157,34 @@ void register_spline(const std::string& group, const std::string& sn) {
   add("Spline/" + group + "/element/100_keys/" + sn, ts, [spline, st](S time) { return spline.element(time); });
 }
 
+/// BSpline/<op>/<group>/<scalar>: a 64-element spline (random steps of up
+/// to 0.5 per tangent coordinate) at times uniform over its 61 segments:
+/// the element alone, and with body velocity and acceleration.
+template <typename G>
+void register_bspline_of(const std::string& group, const std::string& sn, std::uint32_t seed) {
+  using S = typename G::Scalar;
+  using T = Eigen::Matrix<S, G::DoF, 1>;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> step(-0.5, 0.5), time(0.0, 61.0);
+  auto control = std::make_shared<std::vector<G>>(1, G());
+  for (int k = 1; k < 64; ++k) {
+    T x;
+    for (int j = 0; j < G::DoF; ++j) x[j] = S(step(rng));
+    control->push_back(control->back() * G::exp(x));
+  }
+  std::vector<S> times;
+  for (std::size_t i = 0; i < kN; ++i) times.push_back(S(time(rng)));
+  const auto view = [control] { return chasles::CubicBSplineView<G>(control->data(), 64, S(0), S(1)); };
+  add("BSpline/value/" + group + "/" + sn, times, [view](S t) { return view()(t); });
+  add("BSpline/value_velocity_acceleration/" + group + "/" + sn, times, [view](S t) { return view().evaluate(t); });
+}
+
+template <typename S>
+void register_bspline(const std::string& sn) {
+  register_bspline_of<chasles::SO3<S>>("SO3", sn, 31);
+  register_bspline_of<chasles::SE3<S>>("SE3", sn, 37);
+}
+
 template <typename S>
 void register_all(const std::string& sn) {
   using namespace chasles;
@@ -286,6 +315,7 @@ void register_all(const std::string& sn) {
   register_chain<S, Chain<S, Eigen::Dynamic, 8>>("7dof_dynamic_max8", sn, 7);
   register_spline<SO3<S>>("SO3", sn);
   register_spline<SE3<S>>("SE3", sn);
+  register_bspline<S>(sn);
 
   // ---- floors
   std::vector<S> angles;

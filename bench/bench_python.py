@@ -306,7 +306,17 @@ def main() -> int:
                                     "pin": (lambda: pin.rpy.rpyToMatrix(eul)) if pin else None, "pytransform3d": None}
     peers_call["SO3 as_euler"] = {"scipy": (lambda: sr.as_euler("xyz")) if Rotation else None,
                                   "pin": (lambda: pin.rpy.matrixToRpy(pR)) if pin else None, "pytransform3d": None}
+    # B-splines: 64 control elements (random steps), one time per call
+    bs_rng = np.random.default_rng(5)
+    bs_so3 = chasles.SO3BSpline(0.0, 1.0, chasles.so3_exp(np.cumsum(0.3 * bs_rng.normal(size=(64, 3)), axis=0)))
+    bs_se3 = chasles.SE3BSpline(0.0, 1.0, chasles.se3_exp(np.cumsum(0.3 * bs_rng.normal(size=(64, 6)), axis=0)))
+    for op in ("SO3 B-spline value", "SO3 B-spline velocity", "SE3 B-spline value", "SE3 B-spline acceleration"):
+        peers_call[op] = {"scipy": None, "pin": None, "pytransform3d": None}
     ours_call: dict[str, Callable[[], object]] = {
+        "SO3 B-spline value": lambda: bs_so3(30.3),
+        "SO3 B-spline velocity": lambda: bs_so3.body_velocity(30.3),
+        "SE3 B-spline value": lambda: bs_se3(30.3),
+        "SE3 B-spline acceleration": lambda: bs_se3.body_acceleration(30.3),
         "SO3 exp": lambda: chasles.SO3.exp(w),
         "SO3 log": lambda: R.log(),
         "SO3 compose": lambda: R @ R2,
@@ -343,6 +353,7 @@ def main() -> int:
         S6s = np.concatenate([W, XI[:, :3]], axis=1)
         srs = Rotation.from_matrix(Rs) if Rotation else None
         Rc = chasles.so3_exp(0.5 * rng.normal(size=(n, 3)))  # a cloud for the means (0.87 rad rms)
+        TB = rng.uniform(0.0, 61.0, size=n)  # times on the 64-element B-splines
         E = chasles.so3_as_euler("xyz", Rs)
         sts = RigidTransform.from_matrix(Gs) if RigidTransform else None
         sts2 = RigidTransform.from_matrix(Gs2) if RigidTransform else None
@@ -417,6 +428,10 @@ def main() -> int:
                 "pytransform3d": None}),
             "SE3 act Jacobian (1 pose, N points)": (lambda: chasles.se3_act_jacobian(gm, P), {
                 "scipy": None, "numpy": lambda: np_act_jacobian(gm, P), "pytransform3d": None}),
+            "SO3 B-spline value (N times)": (lambda: bs_so3(TB), {}),
+            "SO3 B-spline velocity (N times)": (lambda: bs_so3.body_velocity(TB), {}),
+            "SE3 B-spline value (N times)": (lambda: bs_se3(TB), {}),
+            "SE3 B-spline acceleration (N times)": (lambda: bs_se3.body_acceleration(TB), {}),
         }
         names = ["scipy", "numpy", "pytransform3d"]
         print(f"### Python array functions, N = {n:.0e}, per element (ns, median of {rep})\n")

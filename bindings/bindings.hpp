@@ -17,5 +17,6 @@ void bind_scipy(py::module_& m);         // bind_scipy.cpp: SO3/SE3 from_scipy, 
 void bind_statistics(py::module_& m);    // bind_statistics.cpp: angles, distances (array functions)
 void bind_euler(py::module_& m);         // bind_euler.cpp: SO3 Euler angles and RPY, their private ufuncs
 void bind_spline(py::module_& m);        // bind_spline.cpp: the cores of SO3Spline, SE3Spline
+void bind_bspline(py::module_& m);       // bind_bspline.cpp: classes SO3BSpline, SE3BSpline
 
 }  // namespace chasles_py

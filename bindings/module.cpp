@@ -19,5 +19,6 @@ PYBIND11_MODULE(_core, m) {
   chasles_py::bind_statistics(m);
   chasles_py::bind_euler(m);  // after SO3: adds its Euler methods
   chasles_py::bind_spline(m);
+  chasles_py::bind_bspline(m);
   chasles_py::finish_functions(m);  // last: signatures for help() and inspect (signatures.hpp)
 }

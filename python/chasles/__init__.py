@@ -66,7 +66,9 @@ checked and drawn into a PNG.
 from chasles._core import (
     Chain,
     SE3,
+    SE3BSpline,
     SO3,
+    SO3BSpline,
     Screw,
     Twist,
     Wrench,
@@ -129,8 +131,10 @@ from chasles._arrays import (
 __all__ = [
     "Chain",
     "SE3",
+    "SE3BSpline",
     "SE3Spline",
     "SO3",
+    "SO3BSpline",
     "SO3Spline",
     "Screw",
     "Twist",

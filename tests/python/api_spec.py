@@ -408,6 +408,10 @@ def _rule(x, label, rule):
         return Refused(ValueError, (label, "tolerance >= 0"))
     if rule == "pitch" and (math.isnan(x) or x == -math.inf):
         return Refused(ValueError, (label, "pitch"))
+    if rule == "positive" and not math.isfinite(x):
+        return Refused(ValueError, (label, "finite"))
+    if rule == "positive" and not x > 0.0:
+        return Refused(ValueError, (label, "> 0"))
     return Accepted(x)
 
 
@@ -633,6 +637,91 @@ class Rng(Arg):
         return None  # None (fresh entropy), generators (advanced): no model
 
 
+@dataclass
+class Control(Arg):
+    """The control elements of SO3BSpline / SE3BSpline (`group` SO3 or SE3):
+    a list or tuple of initialized objects of the group (TypeError for
+    anything else in it), or an array-like of shape (N, k, k) whose
+    matrices each pass the group's checked ``from_matrix`` (with float32's
+    tolerance for a float32 or float16 ndarray); N >= 4."""
+
+    group: type = chasles.SO3
+
+    def good(self):
+        return spline_control(self.group)
+
+    def judge(self, value):
+        k = 3 if self.group is chasles.SO3 else 4
+        splines = (chasles.SO3BSpline, chasles.SE3BSpline)
+        if isinstance(value, (list, tuple)) and value and isinstance(value[0], BOUND + splines):
+            for x in value:  # in order: the first one refused is named
+                if not isinstance(x, self.group):
+                    return Refused(TypeError, (self.label, "element"))
+                if not is_initialized(x):
+                    return Refused(TypeError, ("not initialized",))
+            n = len(value)
+        else:
+            a = real_array(value, self.label)
+            if isinstance(a, Refused):
+                return a
+            if a.ndim != 3 or a.shape[1:] != (k, k):
+                return Refused(ValueError, (self.label, "expected shape", f"got {shape_text(a.shape)}"))
+            # float32 (and float16) arrays: checked with float32's tolerance
+            single = isinstance(value, np.ndarray) and value.dtype.kind == "f" and value.dtype.itemsize <= 4
+            tol = 3.4526698e-04 if single else 1.4901161193847656e-08
+            for m in plain(a, np.float64):
+                try:
+                    self.group.from_matrix(m, tol)
+                except ValueError:
+                    return Refused(ValueError, (self.label, "element", "is not a"))
+            n = a.shape[0]
+        if n < 4:
+            return Refused(ValueError, (self.label, "N >= 4"))
+        return Accepted(value)
+
+
+@dataclass
+class Times(Arg):
+    """The times of a B-spline's evaluation: real numbers of any shape, each
+    in [lo, hi] (the good spline's start and end times) or NaN."""
+
+    lo: float = 0.0
+    hi: float = 1.0
+
+    def good(self):
+        return np.array([0.2, 0.9])
+
+    def judge(self, value):
+        a = real_array(value, self.label)
+        if isinstance(a, Refused):
+            return a
+        c = plain(a, np.float64)
+        if np.any((c < self.lo) | (c > self.hi)):
+            return Refused(ValueError, (self.label, "[start_time, end_time]", "got"))
+        return Accepted(c)
+
+
+@dataclass
+class SplineSelf(Instance):
+    """The self of a B-spline's method: an initialized instance (the
+    splines do not pickle, so it is taken as it is)."""
+
+    def judge(self, value):
+        if isinstance(value, self.classes):
+            if is_initialized(value) or self.uninitialized_ok:
+                return Accepted(value)
+            return Refused(TypeError, (("not initialized", "incompatible function arguments"),))
+        return Refused(TypeError, ())
+
+
+def spline_control(group):
+    """Five control elements for the B-spline entries: (5, 3, 3) or (5, 4, 4)."""
+    k = np.arange(5.0)[:, None]
+    if group is chasles.SO3:
+        return chasles.so3_exp(np.hstack([0.1 * k, -0.05 * k, 0.2 + 0 * k]))
+    return chasles.se3_exp(np.hstack([0.3 * k, 0 * k, -k, 0.1 * k, -0.05 * k, 0.2 + 0 * k]))
+
+
 # ---- valid values ---------------------------------------------------------------------
 
 R0 = chasles.SO3.exp([0.1, 0.2, 0.3])
@@ -648,6 +737,8 @@ GOOD = {  # a fresh valid object of each class
     chasles.Wrench: lambda: chasles.Wrench(f=[0.0, 1.0, 1.0], tau=[0.5, 0.0, 0.0]),
     chasles.Screw: lambda: chasles.Screw([0.0, 1.0, 0.0], [0.0, 0.0, 1.0], 0.5, 1.0),
     chasles.Chain: lambda: chasles.Chain(CHAIN_SCREWS, CHAIN_HOME),
+    chasles.SO3BSpline: lambda: chasles.SO3BSpline(0.0, 0.5, spline_control(chasles.SO3)),
+    chasles.SE3BSpline: lambda: chasles.SE3BSpline(0.0, 0.5, spline_control(chasles.SE3)),
 }
 
 
@@ -1071,6 +1162,35 @@ def _build_spec():
     for p in ("screws", "body_screws", "home", "n_joints"):
         spec[f"Chain.{p}"] = _prop(Chain, p)
     spec.update(_protocols(Chain, [6 * n + 12 for n in range(1, 33)]))
+
+    # B-splines (start time 0, spacing 0.5, five control elements: times in [0, 1])
+    for cls, group in ((chasles.SO3BSpline, SO3), (chasles.SE3BSpline, SE3)):
+        n = cls.__name__
+        me = SplineSelf("self", (cls,))
+        spec[f"{n}.__init__"] = Entry(
+            [[Real(f"{n}(start_time)"), Real(f"{n}(spacing)", "positive"), Control(f"{n}(control)", group)]],
+            call=cls,
+        )
+        for m, what in (("__call__", f"{n}(t)"), ("body_velocity", None), ("body_acceleration", None)):
+            spec[f"{n}.{m}"] = Entry(
+                [[me, Times(what or f"{n}.{m}(t)", 0.0, 1.0)]],
+                call=lambda x, t, m=m, cls=cls: getattr(cls, m)(x, t),
+                self_first=True,
+            )
+        for p in ("start_time", "spacing", "end_time", "control"):
+            spec[f"{n}.{p}"] = Entry(
+                [[me]],
+                call=lambda x, p=p, cls=cls: getattr(cls, p).fget(x),
+                self_first=True,
+                passes_arguments=False,
+            )
+        spec[f"{n}.__repr__"] = Entry(
+            [[SplineSelf("self", (cls,), uninitialized_ok=True)]],
+            call=repr,
+            self_first=True,
+            passes_arguments=False,
+            direct=_direct(cls, "__repr__"),
+        )
 
     # module functions on objects, overloaded for SO3 and SE3
     E = _element

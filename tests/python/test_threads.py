@@ -81,6 +81,13 @@ def calls(n, rng):
     thetas.flags.writeable = False
     for method in ("forward", "forward_body", "jacobian_space", "jacobian_body"):
         out.append((f"Chain.{method}", getattr(chasles.Chain, method), [arm, thetas]))
+    # The B-splines' evaluation at n times (one C++ loop without the GIL).
+    times = rng.uniform(0.0, 1.0, size=n)
+    times.flags.writeable = False
+    for cls in (chasles.SO3BSpline, chasles.SE3BSpline):
+        spline = A.GOOD[cls]()
+        for method in ("__call__", "body_velocity", "body_acceleration"):
+            out.append((f"{cls.__name__}.{method}", getattr(cls, method), [spline, times]))
     return out
 
 

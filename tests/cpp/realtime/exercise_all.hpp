@@ -203,6 +203,25 @@ S exercise_all() noexcept {
     sum += a.element.matrix().sum() + a.velocity.sum() + a.acceleration.sum() + S(spr.size() + spr.segment(S(0.6)));
     sum += spr.element(S(0.3)).matrix().sum() + spg.element(S(2)).translation().sum();
     sum += b.element.translation().sum() + b.velocity.sum() + b.acceleration.sum() + spg.sample(1, S(0.75)).velocity.sum();
+  // Cubic B-splines (bspline.hpp): the segment evaluators, the view, and a
+  // time inside, before the start, after the end.
+  {
+    const std::array<SO3<S>, 5> Rs{R, I, SO3<S>::exp(p * S(0.1)), R.inverse(), R};
+    const std::array<SE3<S>, 5> gs{g, h, e, g.inverse(), h};
+    const auto bb = cubic_bspline_basis(S(0.3));
+    sum += bb.value.sum() + bb.first.sum() + bb.second.sum();
+    sum += cubic_bspline_segment(Rs.begin(), S(0.4)).matrix().sum() + cubic_bspline_segment(gs.data(), S(0.4)).translation().sum();
+    const BSplinePoint<SE3<S>> pg = cubic_bspline_segment_derivatives(gs.begin() + 1, S(0.6), S(0.5));
+    sum += pg.value.translation().sum() + pg.velocity.sum() + pg.acceleration.sum();
+    const SO3BSplineView<S> rs(Rs.data(), 5, S(1), S(0.5));
+    const SE3BSplineView<S> ss(gs.data(), 5, S(1), S(0.5));
+    for (const S& t : {S(1.2), S(1.7), S(0), S(9)}) {
+      const BSplinePoint<SO3<S>> pr = rs.evaluate(t);
+      sum += rs(t).matrix().sum() + pr.value.matrix().sum() + pr.velocity.sum() + pr.acceleration.sum();
+      sum += ss(t).translation().sum() + ss.evaluate(t).acceleration.sum() + rs.locate(t).u;
+    }
+    sum += rs.start_time() + rs.spacing() + rs.end_time() + S(RealOf<S>(rs.size() + rs.segments()));
+    sum += ss.control()->translation().sum();
   }
   return sum;
 }

@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
+#include "chasles/bspline.hpp"
 #include "chasles/chasles.hpp"
 #include "chasles/constants.hpp"
 #include "chasles/detail/approx.hpp"

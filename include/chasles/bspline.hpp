@@ -1,0 +1,247 @@
+// chasles: the uniform cumulative cubic B-spline on SO(3) and SE(3), with its
+// body velocity and body acceleration.
+#pragma once
+
+#include <cstddef>
+#include <iterator>
+#include <type_traits>
+
+#include <Eigen/Core>
+
+#include "chasles/constants.hpp"
+#include "chasles/detail/assert.hpp"
+#include "chasles/se3.hpp"
+#include "chasles/so3.hpp"
+#include "chasles/twist.hpp"
+
+namespace chasles {
+
+// The curve (Kim, Kim and Shin 1995; Lovegrove, Patron-Perez and Sibley
+// 2013, eq. 4): on segment i, for u in [0, 1],
+//
+//   X(u) = X_i * A_1 * A_2 * A_3,   A_j = exp(Bt_j(u) d_j),
+//   d_j = log(X_{i+j-1}^-1 X_{i+j}),
+//
+// with the cumulative basis of the uniform cubic B-spline (Bt_0 = 1):
+//
+//   Bt_1 = (5 + 3u - 3u^2 + u^3) / 6,  Bt_2 = (1 + 3u + 3u^2 - 2u^3) / 6,
+//   Bt_3 = u^3 / 6,                     Bt_1 + Bt_2 + Bt_3 = 1 + u.
+//
+// The curve is C2, does not pass through the control elements (at u = 0 it
+// is X_i exp(5/6 d_1) exp(1/6 d_2)), and reduces to the ordinary cubic
+// B-spline on R^n when the group is a vector space.
+//
+// Its body velocity omega = (X^-1 X')^vee and body acceleration omega' come
+// from the recursion of Sommer, Usenko, Schubert, Demmel and Cremers (2020,
+// "Efficient derivative computation for cumulative B-splines on Lie
+// groups", eqs. 38-39), over the partial products Y_j = A_1 ... A_j:
+//
+//   omega_j  = Ad_{A_j^-1} omega_{j-1}  + Bt_j' d_j,
+//   omega_j' = Ad_{A_j^-1} omega_{j-1}' + Bt_j'' d_j + [omega_j, Bt_j' d_j],
+//
+// from omega_0 = omega_0' = 0 (A_j^-1 A_j' = Bt_j' d_j since d_j commutes
+// with its own exponential; the bracket is the derivative of Ad_{A_j^-1}),
+// with time derivatives Bt' = (dBt/du) / dt, Bt'' = (d^2Bt/du^2) / dt^2.
+// No difference quotient, no extra exp or log: three log, three exp.
+
+/// The cumulative basis of the uniform cubic B-spline at u, and its first
+/// and second derivatives with respect to u: entries j = 0, 1, 2 are
+/// Bt_{j+1}, Bt_{j+1}', Bt_{j+1}'' (Bt_0 = 1 is left out).
+template <typename Scalar>
+struct CubicBSplineBasis {
+  Eigen::Matrix<Scalar, 3, 1> value;
+  Eigen::Matrix<Scalar, 3, 1> first;
+  Eigen::Matrix<Scalar, 3, 1> second;
+};
+
+/// The basis at u (meaningful on [0, 1]; a polynomial, so any u evaluates).
+template <typename Scalar>
+inline CubicBSplineBasis<Scalar> cubic_bspline_basis(const Scalar& u) noexcept {
+  const Scalar one(1), two(2), three(3), six(6);
+  const Scalar u2 = u * u, u3 = u2 * u;
+  CubicBSplineBasis<Scalar> b;
+  // Bt = C (1, u, u^2, u^3), C = [[5, 3, -3, 1], [1, 3, 3, -2], [0, 0, 0, 1]] / 6
+  b.value << (Scalar(5) + three * u - three * u2 + u3) / six, (one + three * u + three * u2 - two * u3) / six, u3 / six;
+  const Scalar v = one - u;
+  b.first << v * v / two, (one + two * u - two * u2) / two, u2 / two;
+  b.second << u - one, one - two * u, u;
+  return b;
+}
+
+/// A point of a B-spline: the element X, its body velocity (X^-1 X')^vee and
+/// body acceleration (the time derivative of the body velocity), in the
+/// tangent coordinates of the group (w for SO3; (v, w), linear part first,
+/// for SE3), per unit of time.
+template <typename Group>
+struct BSplinePoint {
+  using Tangent = Eigen::Matrix<typename Group::Scalar, Group::DoF, 1>;
+  Group value;
+  Tangent velocity;
+  Tangent acceleration;
+};
+
+namespace detail {
+
+/// Ad_{A^-1} x for a rotation: R^T w.
+template <typename S>
+inline Eigen::Matrix<S, 3, 1> adjoint_inverse_times(const SO3<S>& A, const Eigen::Matrix<S, 3, 1>& x) noexcept {
+  return A.matrix().transpose() * x;
+}
+/// Ad_{A^-1} x for a rigid motion: (R^T (v - p x w), R^T w).
+template <typename S>
+inline Eigen::Matrix<S, 6, 1> adjoint_inverse_times(const SE3<S>& A, const Eigen::Matrix<S, 6, 1>& x) noexcept {
+  return A.act_inv(Twist<S>(x)).vector();
+}
+/// The Lie bracket of so(3): a x b.
+template <typename S>
+inline Eigen::Matrix<S, 3, 1> lie_bracket(const Eigen::Matrix<S, 3, 1>& a, const Eigen::Matrix<S, 3, 1>& b) noexcept {
+  return a.cross(b);
+}
+/// The Lie bracket of se(3): ad_a b = (w_a x v_b + v_a x w_b, w_a x w_b).
+template <typename S>
+inline Eigen::Matrix<S, 6, 1> lie_bracket(const Eigen::Matrix<S, 6, 1>& a, const Eigen::Matrix<S, 6, 1>& b) noexcept {
+  return Twist<S>(a).bracket(Twist<S>(b)).vector();
+}
+
+/// The real value of a scalar (the value of an autodiff scalar), to pick a
+/// segment: a comparison and an integer, never differentiated.
+template <typename Scalar>
+inline RealOf<Scalar> real_value(const Scalar& x) noexcept {
+  if constexpr (std::is_arithmetic<Scalar>::value)
+    return x;
+  else
+    return x.value();
+}
+
+}  // namespace detail
+
+/// The cubic B-spline segment over the four control elements first[0..3]
+/// at u in [0, 1]: X(u) = X_0 exp(Bt_1 d_1) exp(Bt_2 d_2) exp(Bt_3 d_3),
+/// d_j = log(X_{j-1}^-1 X_j). `first` is any random-access iterator (a
+/// pointer, a std::vector or std::array iterator) to SO3 or SE3 elements.
+template <typename Iterator>
+inline auto cubic_bspline_segment(Iterator first,
+                                  const typename std::iterator_traits<Iterator>::value_type::Scalar& u) noexcept {
+  using Group = typename std::iterator_traits<Iterator>::value_type;
+  const CubicBSplineBasis<typename Group::Scalar> b = cubic_bspline_basis(u);
+  Group X = first[0];
+  for (int j = 0; j < 3; ++j) {
+    const auto d = (first[j].inverse() * first[j + 1]).log();
+    X *= Group::exp(b.value[j] * d);
+  }
+  return X;
+}
+
+/// The same segment with its body velocity and body acceleration per unit
+/// of time, for knots `spacing` apart (u = (t - t_i) / spacing): the
+/// recursion of Sommer et al. (2020) written at the top of this file.
+template <typename Iterator>
+inline auto cubic_bspline_segment_derivatives(
+    Iterator first, const typename std::iterator_traits<Iterator>::value_type::Scalar& u,
+    const typename std::iterator_traits<Iterator>::value_type::Scalar& spacing) noexcept {
+  using Group = typename std::iterator_traits<Iterator>::value_type;
+  using Scalar = typename Group::Scalar;
+  using Tangent = typename BSplinePoint<Group>::Tangent;
+  const CubicBSplineBasis<Scalar> b = cubic_bspline_basis(u);
+  const Scalar rate = Scalar(1) / spacing, rate2 = rate * rate;
+  BSplinePoint<Group> out{first[0], Tangent::Zero(), Tangent::Zero()};
+  for (int j = 0; j < 3; ++j) {
+    const Tangent d = (first[j].inverse() * first[j + 1]).log();
+    const Group A = Group::exp(Tangent(b.value[j] * d));
+    const Tangent dv = (b.first[j] * rate) * d;  // Bt_j' d_j
+    out.value *= A;
+    // omega_j = Ad_{A^-1} omega_{j-1} + Bt_j' d_j
+    out.velocity = detail::adjoint_inverse_times(A, out.velocity) + dv;
+    // omega_j' = Ad_{A^-1} omega_{j-1}' + Bt_j'' d_j + [omega_j, Bt_j' d_j]
+    out.acceleration = detail::adjoint_inverse_times(A, out.acceleration) + (b.second[j] * rate2) * d +
+                       detail::lie_bracket(out.velocity, dv);
+  }
+  return out;
+}
+
+/// Where a time falls on a uniform B-spline: the segment (control elements
+/// segment .. segment + 3) and u in [0, 1].
+template <typename Scalar>
+struct BSplineTime {
+  std::ptrdiff_t segment;
+  Scalar u;
+};
+
+/// A uniform cumulative cubic B-spline over the caller's control elements,
+/// a view: it stores a pointer to them, their count and the two times, and
+/// neither copies nor allocates (the elements must outlive it).
+///
+/// Time convention: N >= 4 control elements X_0 .. X_{N-1}, start time t0
+/// and knot spacing dt > 0. Segment i in [0, N - 4] covers the times
+/// [t0 + i dt, t0 + (i + 1) dt] with u = (t - t0) / dt - i and uses X_i ..
+/// X_{i+3}; the spline is defined on [t0, t0 + (N - 3) dt] (end_time()).
+/// A knot time belongs to the segment that starts there (the last one to
+/// the last segment, u = 1); the curve, velocity and acceleration are
+/// continuous across knots, so the choice matters only to rounding.
+///
+/// Outside [t0, end_time()] the time is clamped: the element, velocity and
+/// acceleration at the nearest end (the spline is not extrapolated). A NaN
+/// time gives NaN numbers. Preconditions (the caller's, asserted with
+/// eigen_assert): N >= 4 and dt > 0 finite.
+template <typename Group>
+class CubicBSplineView {
+ public:
+  using Scalar = typename Group::Scalar;
+  using Real = RealOf<Scalar>;
+  using Tangent = typename BSplinePoint<Group>::Tangent;
+
+  CubicBSplineView(const Group* control, std::ptrdiff_t count, const Scalar& start_time,
+                   const Scalar& spacing) noexcept
+      : control_(control), count_(count), t0_(start_time), dt_(spacing) {
+    CHASLES_ASSERT(control != nullptr && count >= 4);
+    CHASLES_ASSERT(detail::real_value(spacing) > Real(0) &&
+                   detail::real_value(spacing) <= Eigen::NumTraits<Real>::highest());
+  }
+
+  /// The element at time t: X(t).
+  Group operator()(const Scalar& t) const noexcept {
+    const BSplineTime<Scalar> at = locate(t);
+    return cubic_bspline_segment(control_ + at.segment, at.u);
+  }
+  /// The element, body velocity and body acceleration at time t.
+  BSplinePoint<Group> evaluate(const Scalar& t) const noexcept {
+    const BSplineTime<Scalar> at = locate(t);
+    return cubic_bspline_segment_derivatives(control_ + at.segment, at.u, dt_);
+  }
+
+  /// The segment and u of time t, clamped to [start_time(), end_time()].
+  BSplineTime<Scalar> locate(const Scalar& t) const noexcept {
+    const std::ptrdiff_t last = count_ - 4;
+    const Scalar s = (t - t0_) / dt_;  // knot units from the start
+    const Real r = detail::real_value(s), n = Real(last + 1);
+    if (r > Real(0) && r < n) {
+      std::ptrdiff_t i = static_cast<std::ptrdiff_t>(r);  // floor, r > 0
+      if (i > last) i = last;
+      return {i, s - Scalar(Real(i))};
+    }
+    if (r >= n) return {last, Scalar(1)};
+    if (r <= Real(0)) return {0, Scalar(0)};
+    return {0, s};  // NaN
+  }
+
+  const Group* control() const noexcept { return control_; }
+  std::ptrdiff_t size() const noexcept { return count_; }
+  std::ptrdiff_t segments() const noexcept { return count_ - 3; }
+  const Scalar& start_time() const noexcept { return t0_; }
+  const Scalar& spacing() const noexcept { return dt_; }
+  /// t0 + (N - 3) dt, the last valid time.
+  Scalar end_time() const noexcept { return t0_ + Scalar(Real(count_ - 3)) * dt_; }
+
+ private:
+  const Group* control_;
+  std::ptrdiff_t count_;
+  Scalar t0_;
+  Scalar dt_;
+};
+
+template <typename Scalar>
+using SO3BSplineView = CubicBSplineView<SO3<Scalar>>;
+template <typename Scalar>
+using SE3BSplineView = CubicBSplineView<SE3<Scalar>>;
+
+}  // namespace chasles
