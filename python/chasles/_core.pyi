@@ -2178,6 +2178,44 @@ class Chain:
         """
         numpy.ndarray: shape (n, 6), the space screws S_i, one row (v, w) per joint (a copy).
         """
+class _SO3SplineCore:
+    """
+    The fitted C++ spline behind chasles.SO3Spline: checked (N,) float64 times and (N, 3, 3) rotations.
+    """
+    def __init__(self, times: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], keys: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], natural: bool) -> None:
+        ...
+    def evaluate(self, t: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], order: typing.SupportsInt | typing.SupportsIndex) -> numpy.ndarray:
+        """
+        Elements (order 0), body velocities (1) or body accelerations (2) at a float64 array of times.
+        """
+    def keys(self) -> numpy.ndarray:
+        """
+        The key elements as an (N, D, D) array.
+        """
+    @property
+    def iterations(self) -> int:
+        """
+        Fixed-point iterations the fit took.
+        """
+class _SE3SplineCore:
+    """
+    The fitted C++ spline behind chasles.SE3Spline: checked (N,) float64 times and (N, 4, 4) poses.
+    """
+    def __init__(self, times: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], keys: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], natural: bool) -> None:
+        ...
+    def evaluate(self, t: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], order: typing.SupportsInt | typing.SupportsIndex) -> numpy.ndarray:
+        """
+        Elements (order 0), body velocities (1) or body accelerations (2) at a float64 array of times.
+        """
+    def keys(self) -> numpy.ndarray:
+        """
+        The key elements as an (N, D, D) array.
+        """
+    @property
+    def iterations(self) -> int:
+        """
+        Fixed-point iterations the fit took.
+        """
 class SO3BSpline:
     """
     The uniform cumulative cubic B-spline on SO(3) (Kim, Kim and Shin 1995;
