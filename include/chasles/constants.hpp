@@ -70,6 +70,7 @@ struct Thresholds<float> {
   static constexpr float mean_step_tolerance = 3.4526698e-04f;  // eps^(1/2)
   static constexpr int mean_max_iterations = 20;
   static constexpr float euler_lock2 = 1.4210855e-14f;  // eps^2
+  static constexpr float screw_tolerance = 3.4526698e-04f;  // eps^(1/2)
 };
 
 template <>
@@ -82,6 +83,7 @@ struct Thresholds<double> {
   static constexpr double mean_step_tolerance = 1.4901161193847656e-08;  // eps^(1/2)
   static constexpr int mean_max_iterations = 20;
   static constexpr double euler_lock2 = 4.930380657631324e-32;  // eps^2
+  static constexpr double screw_tolerance = 1.4901161193847656e-08;  // eps^(1/2)
 };
 
 template <>
@@ -96,6 +98,7 @@ struct Thresholds<long double> {
   static constexpr long double mean_step_tolerance = 3.2927225399135962334e-10L;  // eps^(1/2)
   static constexpr int mean_max_iterations = 20;
   static constexpr long double euler_lock2 = 1.1754943508222875079687e-38L;  // eps^2
+  static constexpr long double screw_tolerance = 3.2927225399135962334e-10L;  // eps^(1/2)
 };
 
 // mean_step_tolerance: the geodesic (Karcher) mean (mean.hpp) stops after
@@ -113,6 +116,16 @@ struct Thresholds<long double> {
 //   13 of them at a 1 rad spread); Newton takes 2 (float) or 3 (double)
 //   there, so the bound is only reached by spreads near pi, where the mean
 //   is not unique.
+//
+// screw_tolerance: Chain::validate() (kinematics.hpp) accepts a revolute
+//   joint's angular part w with | |w| - 1 | <= tol and |w . v| <= tol (1 + |v|)
+//   (zero pitch), a prismatic joint's linear part v with | |v| - 1 | <= tol
+//   and |w| <= tol. sqrt(eps), as rotation_tolerance: an axis written with
+//   half the digits of the type passes (0.70710678 twice has | |w| - 1 | ~ 1e-9);
+//   a screw table in Modern Robotics' (w, v) order does not, read as (v, w):
+//   its "angular part" is then v = -w x q, of norm the distance of the axis
+//   from the origin (0.089 to 0.8 m for a UR5), far from 1 at any tolerance
+//   a unit vector could need.
 //
 /// The thresholds that apply to a Scalar (autodiff scalars use their real type's).
 template <typename Scalar>

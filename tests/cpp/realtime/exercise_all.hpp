@@ -169,6 +169,19 @@ S exercise_all() noexcept {
   sum += cd.forward(thd).translation().sum() + cd.forward_body(thd).translation().sum();
   sum += cd.jacobian_space(thd).sum() + cd.jacobian_body(thd).sum();
   sum += S(RealOf<S>(cd.joints())) + cd.space_screws().sum() + cd.body_screws().sum() + cd.home().translation().sum();
+  // The robot model: types, limits, base, tool, gravity, validate().
+  typename CD::JointTypes types{};
+  types.fill(chasles::JointType::revolute);
+  types[2] = chasles::JointType::prismatic;
+  types[5] = chasles::JointType::continuous;
+  typename CD::JointVector lo = CD::JointVector::Constant(7, S(-2)), hi = CD::JointVector::Constant(7, S(2));
+  const CD model(SD, h, types, lo, hi, CD::JointVector::Constant(7, S(3)), CD::JointVector::Constant(7, S(50)), g, h,
+                 CD::default_gravity());
+  const chasles::ChainCheck check = model.validate();
+  sum += S(RealOf<S>(int(check.status) + int(check.joint))) + S(RealOf<S>(int(model.joint_type(2))));
+  sum += model.lower().sum() + model.upper().sum() + model.velocity_limits().sum() + model.effort_limits().sum();
+  sum += model.base().translation().sum() + model.tool().translation().sum() + model.gravity().sum();
+  sum += model.forward(thd).translation().sum() + model.jacobian_body(thd).sum();
   return sum;
 }
 
