@@ -176,6 +176,17 @@ class Chain {
     compute_body_screws();
   }
 
+  /// The same with the home pose taken as it is, not projected: for a home
+  /// pose that is already one (another chain's home(), which this
+  /// reproduces bit for bit).
+  struct HomeAsGiven {};
+  template <typename Derived>
+  Chain(const Eigen::MatrixBase<Derived>& space_screws, const Group& home, HomeAsGiven) noexcept
+      : Chain(space_screws, home) {
+    M_ = home;
+    compute_body_screws();
+  }
+
   /// The full model, from arrays: the screws S0 (6 x n, in the base frame)
   /// and home pose M0 of the chain without its base and tool, each joint's
   /// type, position limits (lower, upper: +-inf where there are none, and

@@ -1980,6 +1980,41 @@ class Chain:
     __array_ufunc__ = None
     __hash__: typing.ClassVar[None] = None
     @staticmethod
+    def from_urdf(source: typing.Any, tip_link: typing.Any, base_link: typing.Any = None) -> Chain:
+        """
+        The chain from base_link to tip_link of a URDF robot description.
+        
+        Revolute, continuous and prismatic joints become the chain's joints (their
+        names, types, limits); fixed joints are folded into the next joint's screw
+        or into the home pose; each moving joint's child link's ``<inertial>``
+        (with the links fixed to it) goes to ``link_inertias``. The home pose is
+        tip_link's frame at zero joint positions. Parsed with the standard
+        library's xml.etree (chasles/_urdf.py): URDF's kinematic and inertial
+        elements only, no meshes.
+        
+        Args:
+            source: a path (str or os.PathLike) to a .urdf file, or the XML text.
+            tip_link: the name of the last link (the tool).
+            base_link: the name of the base link; None: the root of the tree.
+        
+        Returns:
+            Chain.
+        
+        Raises:
+            ValueError: a malformed description; a floating or planar joint, or a
+                mimic joint, between base and tip; a joint naming a missing link; a
+                loop; an unknown tip or base link, or a tip not below the base.
+        
+        Example:
+            >>> urdf = \"\"\"<robot name="r"><link name="a"/><link name="b"/>
+            ...   <joint name="j" type="revolute"><parent link="a"/><child link="b"/>
+            ...     <origin xyz="0 0 0.5"/><axis xyz="0 0 1"/>
+            ...     <limit lower="-1" upper="1" effort="10" velocity="2"/></joint></robot>\"\"\"
+            >>> arm = Chain.from_urdf(urdf, "b")
+            >>> arm.names, arm.joint_types, arm.upper
+            (('j',), ('revolute',), array([1.]))
+        """
+    @staticmethod
     def prismatic_screw(direction: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
         The screw of a prismatic joint: (v, 0), v = direction / |direction|.
@@ -2032,23 +2067,57 @@ class Chain:
         """
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, screws: numpy.typing.ArrayLike, home: typing.Any) -> None:
+    def __init__(self, screws: numpy.typing.ArrayLike, home: typing.Any, *, joint_types: typing.Any = None, names: typing.Any = None, lower: typing.Any = None, upper: typing.Any = None, velocity_limits: typing.Any = None, effort_limits: typing.Any = None, base: typing.Any = None, tool: typing.Any = None, gravity: typing.Any = None, link_inertias: typing.Any = None) -> None:
         """
-        A serial chain from its space screws and its home pose.
+        A serial chain from its space screws and its home pose, with its robot model.
+        
+        The base and tool frames are folded in: the chain's ``screws`` are
+        Ad_base S_i and its ``home`` is base M tool (projected onto SE(3)), so that
+        forward kinematics and the Jacobians are in the world frame and end at the
+        tool; ``base`` and ``tool`` stay available.
+        
+        Each screw is checked against its joint's type: a revolute or continuous
+        joint's angular part w must be a unit vector and its pitch w . v zero, a
+        prismatic joint's w zero and its linear part v a unit vector (to 1.5e-8).
+        A table in Modern Robotics' (w, v) order, or transposed (one column per
+        joint, as MR's Slist), is refused with the conversion in the message.
         
         Args:
             screws: shape (n, 6), 1 <= n <= 32: row i is the space screw S_i = (v, w)
                 of joint i at the home configuration, in the base frame, finite.
-            home: SE3 or shape (4, 4), M = g(0), the tool frame at home.
+            home: SE3 or shape (4, 4), M = g(0), the tool frame at home (before
+                ``tool``), in the base frame.
+            joint_types: n of "revolute", "continuous", "prismatic"; None infers
+                them (prismatic where w = 0, revolute elsewhere).
+            names: n joint names (str), or None.
+            lower: shape (n,), lower position limits (radians or metres); None: -inf.
+            upper: shape (n,), upper position limits; None: inf. A continuous joint
+                has -inf and inf.
+            velocity_limits: shape (n,), >= 0; None: inf.
+            effort_limits: shape (n,), >= 0 (N m or N); None: inf.
+            base: SE3 or shape (4, 4), the base frame in the world frame; None: identity.
+            tool: SE3 or shape (4, 4), the tool frame after M; None: identity.
+            gravity: shape (3,), in the world frame, m/s^2; None: (0, 0, -9.81).
+            link_inertias: shape (n, 10), per joint the inertia of the link it moves
+                (mass, center of mass (3), ixx, ixy, ixz, iyy, iyz, izz about the
+                center of mass), in the base frame at home (``Chain.from_urdf``
+                fills it); or None.
         
         Raises:
             ValueError: a shape other than (n, 6), more than 32 joints, a non-finite
-                entry, or a home matrix that is not a rigid motion.
+                entry, a home, base or tool matrix that is not a rigid motion, a
+                screw that does not match its joint type, lower > upper, a negative
+                velocity or effort limit, a negative mass.
+            TypeError: joint types or names that are not strings.
         
         Example:
             >>> arm = Chain([[0, 0, 0, 0, 0, 1]], np.eye(4))
             >>> arm.n_joints
             1
+            >>> arm = Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), joint_types=["revolute"],
+            ...             names=["shoulder"], lower=[-1.5], upper=[1.5])
+            >>> arm
+            Chain(n_joints=1, names=('shoulder',))
         """
     def __ne__(self, other: typing.Any) -> bool:
         """
@@ -2159,9 +2228,24 @@ class Chain:
             array([0., 0., 0., 0., 0., 1.])
         """
     @property
+    def base(self) -> SE3:
+        """
+        SE3: the base frame in the world frame (already folded into screws and home).
+        """
+    @property
     def body_screws(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: shape (n, 6), the body screws B_i = Ad_{M^-1} S_i (a copy).
+        """
+    @property
+    def effort_limits(self) -> numpy.ndarray:
+        """
+        numpy.ndarray: shape (n,), the effort limits, N m or N (inf where none; a copy).
+        """
+    @property
+    def gravity(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray: shape (3,), gravity in the world frame, m/s^2 (a copy).
         """
     @property
     def home(self) -> SE3:
@@ -2169,14 +2253,52 @@ class Chain:
         SE3: the home pose M = g(0).
         """
     @property
+    def joint_types(self) -> tuple:
+        """
+        tuple[str, ...]: each joint's type: "revolute", "continuous" or "prismatic".
+        """
+    @property
+    def link_inertias(self) -> typing.Any:
+        """
+        numpy.ndarray | None: shape (n, 10), per joint the inertia of the link it moves
+        (with the links fixed to it): mass, center of mass (3), then ixx, ixy, ixz,
+        iyy, iyz, izz of the rotational inertia about the center of mass, both in
+        the base frame at home; None when not given (a copy).
+        """
+    @property
+    def lower(self) -> numpy.ndarray:
+        """
+        numpy.ndarray: shape (n,), the lower position limits (-inf where none; a copy).
+        """
+    @property
     def n_joints(self) -> int:
         """
         int: n, the number of joints.
         """
     @property
+    def names(self) -> typing.Any:
+        """
+        tuple[str, ...] | None: the joint names, or None when none were given.
+        """
+    @property
     def screws(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: shape (n, 6), the space screws S_i, one row (v, w) per joint (a copy).
+        """
+    @property
+    def tool(self) -> SE3:
+        """
+        SE3: the tool frame after the last link (already folded into home).
+        """
+    @property
+    def upper(self) -> numpy.ndarray:
+        """
+        numpy.ndarray: shape (n,), the upper position limits (inf where none; a copy).
+        """
+    @property
+    def velocity_limits(self) -> numpy.ndarray:
+        """
+        numpy.ndarray: shape (n,), the velocity limits (inf where none; a copy).
         """
 def _se3_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], geodesic: bool, max_iterations: typing.SupportsInt | typing.SupportsIndex) -> tuple:
     """

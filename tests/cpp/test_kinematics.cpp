@@ -428,6 +428,10 @@ TYPED_TEST(Kinematics, HomeProjectionKeepsExactRotations) {
   const Chain<S, 6> off(typename Chain<S, 6>::Screws(arm.S.template cast<S>()), SE3<S>::from_matrix_unchecked(M));
   EXPECT_GT(SE3<S>::transform_defect(M), 10 * eps<S>());
   EXPECT_LE(SE3<S>::transform_defect(off.home().matrix()), 2 * eps<S>());
+  // Another chain's home taken as it is: the same chain, bit for bit.
+  const Chain<S, 6> again(off.space_screws(), off.home(), typename Chain<S, 6>::HomeAsGiven());
+  EXPECT_TRUE(again.home().matrix() == off.home().matrix());
+  EXPECT_TRUE(again.body_screws() == off.body_screws());
 }
 
 TYPED_TEST(Kinematics, ModelFoldsBaseAndTool) {

@@ -182,6 +182,8 @@ S exercise_all() noexcept {
   sum += model.lower().sum() + model.upper().sum() + model.velocity_limits().sum() + model.effort_limits().sum();
   sum += model.base().translation().sum() + model.tool().translation().sum() + model.gravity().sum();
   sum += model.forward(thd).translation().sum() + model.jacobian_body(thd).sum();
+  const CD again(model.space_screws(), model.home(), typename CD::HomeAsGiven());
+  sum += again.body_screws().sum();
   return sum;
 }
 
