@@ -5,8 +5,10 @@
 
 #include <limits>
 #include <optional>
+#include <cmath>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "bindings.hpp"
 #include "conventions.hpp"
@@ -23,6 +25,26 @@ using ChainD = chasles::Chain<double, Eigen::Dynamic, kMaxJoints>;
 using chasles::SE3d;
 using Vector3 = Eigen::Vector3d;
 using Matrix4 = Eigen::Matrix4d;
+using Inertias = Eigen::Matrix<double, Eigen::Dynamic, 10, Eigen::RowMajor, kMaxJoints, 10>;
+
+/// The Python Chain: the C++ chain (the model every computation uses), and
+/// what only Python needs, kept beside it: the screws and home pose as given
+/// (before base and tool: pickling rebuilds the chain from them, bit for
+/// bit), the joint names (strings allocate: the real-time C++ chain has no
+/// use for them) and the URDF's link inertias (plain numbers until the
+/// dynamics consume them).
+struct PyChain : ChainD {
+  ChainD::Screws given_screws;
+  SE3d given_home, given_base, given_tool;
+  std::vector<std::string> names;  // empty: none given
+  bool has_inertias = false;
+  Inertias inertias;  // n x 10: mass, com (3), ixx, ixy, ixz, iyy, iyz, izz
+
+  PyChain(const ChainD& c, const ChainD::Screws& S0, const SE3d& M0, const SE3d& base, const SE3d& tool)
+      : ChainD(c), given_screws(S0), given_home(M0), given_base(base), given_tool(tool) {}
+};
+
+const char* const kJointTypeNames[3] = {"revolute", "continuous", "prismatic"};
 
 const char* const kClassDoc = R"doc(Forward kinematics and Jacobians of a serial chain by the product of exponentials
 (Murray, Li and Sastry, ch. 3; Lynch and Park, Modern Robotics, ch. 4-5).
@@ -51,13 +73,13 @@ std::string class_doc() { return std::string(kClassDoc) + kConventions; }
 
 /// The home pose: an SE3 (TypeError for one not initialized), or a (4, 4)
 /// array-like rigid motion.
-SE3d home_pose(py::handle h) {
+SE3d home_pose(py::handle h, const char* what = "Chain(home)") {
   py::detail::make_caster<Obj<SE3d>> caster;
   if (caster.load(h, false)) return *static_cast<Obj<SE3d>&>(caster);
-  const Matrix4 M = to_finite_eigen<4, 4>(h, "Chain(home)");
+  const Matrix4 M = to_finite_eigen<4, 4>(h, what);
   const auto g = SE3d::from_matrix(M);
   if (!g) {
-    raise_value_error("Chain(home): not a rigid motion (transform defect " +
+    raise_value_error(std::string(what) + ": not a rigid motion (transform defect " +
                       short_float(SE3d::transform_defect(M)) +
                       "); pass an SE3 or a 4x4 matrix [[R, p], [0, 0, 0, 1]] with R a rotation");
   }
@@ -72,8 +94,13 @@ std::string array_shape(const py::array& a) {
 ChainD::Screws screws_of(py::handle h) {
   const py::array a = as_float64_array(h, "Chain(screws)");
   if (a.ndim() != 2 || a.shape(1) != 6 || a.shape(0) < 1) {
+    const bool columns = a.ndim() == 2 && a.shape(0) == 6 && a.shape(1) >= 1;
     raise_value_error("Chain(screws): expected shape (n, 6) with n >= 1 (one row (v, w) per joint), got " +
-                      array_shape(a));
+                      array_shape(a) +
+                      (columns ? "; a table of one column per joint is transposed: pass screws.T (Modern Robotics' "
+                                 "Slist, 6 x n in the (w, v) order: [Twist.from_modern_robotics(s).vector for s in "
+                                 "Slist.T])"
+                               : ""));
   }
   if (a.shape(0) > kMaxJoints) {
     raise_value_error("Chain(screws): at most " + std::to_string(kMaxJoints) + " joints, got " +
@@ -128,7 +155,7 @@ void chain_loop(char** args, const npy_intp* dims, const npy_intp* steps, void* 
     Matrix4 home;
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j) home(i, j) = at(M, i, core[2], j, core[3]);
-    return ChainD(screws, SE3d::from_matrix_unchecked(home));
+    return ChainD(screws, SE3d::from_matrix_unchecked(home), ChainD::HomeAsGiven());
   };
   const auto write = [&](char* out, int r, npy_intp c, double x) {
     *reinterpret_cast<double*>(out + r * core[5] + c * core[6]) = x;
@@ -217,6 +244,197 @@ Vector3 nonzero_vector(py::handle h, const char* what) {
   return v;
 }
 
+/// An optional (n,) array-like of limits: `fill` when None; NaN refused.
+ChainD::JointVector limits_of(py::handle h, py::ssize_t n, double fill, const char* what) {
+  ChainD::JointVector out = ChainD::JointVector::Constant(n, fill);
+  if (h.is_none()) return out;
+  const py::array a = as_float64_array(h, what);
+  if (a.ndim() != 1 || a.shape(0) != n)
+    raise_value_error(std::string(what) + ": expected shape (" + std::to_string(n) + ",) (one per joint), got " +
+                      array_shape(a));
+  const char* data = static_cast<const char*>(a.data());
+  for (py::ssize_t i = 0; i < n; ++i) out(i) = *reinterpret_cast<const double*>(data + i * a.strides(0));
+  if (out.array().isNaN().any()) raise_value_error(std::string(what) + ": expected numbers, got NaN");
+  return out;
+}
+
+/// The types as given (sequence of n of "revolute", "continuous",
+/// "prismatic"), or inferred from the screws when None.
+ChainD::JointTypes types_of(py::handle h, const ChainD::Screws& S) {
+  ChainD::JointTypes types{};
+  const py::ssize_t n = S.cols();
+  if (h.is_none()) {
+    for (py::ssize_t i = 0; i < n; ++i)
+      types[static_cast<std::size_t>(i)] =
+          S.col(i).tail<3>().squaredNorm() > 0 ? chasles::JointType::revolute : chasles::JointType::prismatic;
+    return types;
+  }
+  if (py::isinstance<py::str>(h) || !PySequence_Check(h.ptr()))
+    raise_type_error("Chain(joint_types): expected a sequence of " + std::to_string(n) +
+                     " of 'revolute', 'continuous', 'prismatic', got " + type_name(h));
+  const py::sequence seq = py::reinterpret_borrow<py::sequence>(h);
+  if (static_cast<py::ssize_t>(py::len(seq)) != n)
+    raise_value_error("Chain(joint_types): expected " + std::to_string(n) + " types (one per joint), got " +
+                      std::to_string(py::len(seq)));
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const py::object item = seq[static_cast<size_t>(i)];
+    if (!py::isinstance<py::str>(item))
+      raise_type_error("Chain(joint_types): expected strings, got " + type_name(item) + " for joint " +
+                       std::to_string(i));
+    const std::string t = item.cast<std::string>();
+    int k = 0;
+    while (k < 3 && t != kJointTypeNames[k]) ++k;
+    if (k == 3)
+      raise_value_error("Chain(joint_types): expected 'revolute', 'continuous' or 'prismatic', got '" + t +
+                        "' for joint " + std::to_string(i));
+    types[static_cast<std::size_t>(i)] = static_cast<chasles::JointType>(k);
+  }
+  return types;
+}
+
+/// The screws with each row's halves swapped ((w, v) read as (v, w)).
+ChainD::Screws swapped(const ChainD::Screws& S) {
+  ChainD::Screws out(6, S.cols());
+  out.topRows<3>() = S.bottomRows<3>();
+  out.bottomRows<3>() = S.topRows<3>();
+  return out;
+}
+
+/// Whether screws S with these types (inferred when `inferred`) are valid.
+bool screws_valid(const ChainD::Screws& S, const ChainD::JointTypes& given, bool inferred) {
+  const ChainD::JointTypes types = inferred ? types_of(py::none(), S) : given;
+  const py::ssize_t n = S.cols();
+  const ChainD c(S, SE3d(), types, ChainD::JointVector::Constant(n, -INFINITY), ChainD::JointVector::Constant(n, INFINITY),
+                 ChainD::JointVector::Constant(n, INFINITY), ChainD::JointVector::Constant(n, INFINITY));
+  return static_cast<bool>(c.validate());
+}
+
+/// ValueError for a chain whose validate() fails, naming the joint, the
+/// rule, and the conversion when the screws read as Modern Robotics' (w, v)
+/// order or as a transposed 6 x 6 table would be valid.
+[[noreturn]] void raise_invalid(const ChainD& c, const chasles::ChainCheck& check, const ChainD::Screws& S0,
+                                const ChainD::JointTypes& types, bool inferred) {
+  using chasles::ChainStatus;
+  const std::string joint = "joint " + std::to_string(check.joint);
+  std::string message;
+  switch (check.status) {
+    case ChainStatus::revolute_axis_not_unit:
+      message = "Chain(screws): " + joint + " is revolute but its angular part w is not a unit vector (|w| = " +
+                short_float(std::sqrt(S0.col(check.joint).tail<3>().squaredNorm())) + ")";
+      break;
+    case ChainStatus::revolute_pitch_not_zero:
+      message = "Chain(screws): " + joint + " is revolute but its screw has a pitch: w . v = " +
+                short_float(S0.col(check.joint).tail<3>().dot(S0.col(check.joint).head<3>())) +
+                " (a revolute screw is (-w x q, w))";
+      break;
+    case ChainStatus::prismatic_rotates:
+      message = "Chain(screws): " + joint + " is prismatic but its angular part w is not zero";
+      break;
+    case ChainStatus::prismatic_axis_not_unit:
+      message = "Chain(screws): " + joint + " is prismatic but its linear part v is not a unit vector (|v| = " +
+                short_float(std::sqrt(S0.col(check.joint).head<3>().squaredNorm())) + ")";
+      break;
+    case ChainStatus::position_limits_invalid:
+      raise_value_error("Chain(lower, upper): " + joint + ": expected lower <= upper (-inf and inf for a " +
+                        "continuous joint), got " + float_repr(c.lower()(check.joint)) + " and " +
+                        float_repr(c.upper()(check.joint)));
+    case ChainStatus::velocity_or_effort_limit_invalid:
+      raise_value_error("Chain(velocity_limits, effort_limits): " + joint + ": expected limits >= 0, got " +
+                        float_repr(c.velocity_limits()(check.joint)) + " and " +
+                        float_repr(c.effort_limits()(check.joint)));
+    default:
+      raise_value_error("Chain(gravity): expected finite numbers");
+  }
+  message += " (tolerance " + short_float(chasles::Thresholds<double>::screw_tolerance) + ")";
+  if (screws_valid(swapped(S0), types, inferred)) {
+    message += "; these rows read as Modern Robotics' (w, v) order: convert each with "
+               "Twist.from_modern_robotics(row).vector";
+  } else if (S0.cols() == 6) {
+    const ChainD::Screws T = S0.transpose();
+    if (screws_valid(T, types, inferred))
+      message += "; the table reads as transposed (one column per joint): pass screws.T";
+    else if (screws_valid(swapped(T), types, inferred))
+      message += "; the table reads as Modern Robotics' Slist (6 x n, one column (w, v) per joint): pass "
+                 "[Twist.from_modern_robotics(s).vector for s in Slist.T]";
+  }
+  raise_value_error(message);
+}
+
+/// The chain from the constructor's arguments (validated).
+PyChain make_chain(py::handle screws, py::handle home, py::handle joint_types, py::handle names, py::handle lower,
+                   py::handle upper, py::handle velocity_limits, py::handle effort_limits, py::handle base,
+                   py::handle tool, py::handle gravity, py::handle link_inertias) {
+  const ChainD::Screws S0 = screws_of(screws);
+  const SE3d M0 = home_pose(home);
+  const py::ssize_t n = S0.cols();
+  const bool inferred = joint_types.is_none();
+  const ChainD::JointTypes types = types_of(joint_types, S0);
+  const ChainD::JointVector lo = limits_of(lower, n, -INFINITY, "Chain(lower)");
+  const ChainD::JointVector hi = limits_of(upper, n, INFINITY, "Chain(upper)");
+  const ChainD::JointVector vel = limits_of(velocity_limits, n, INFINITY, "Chain(velocity_limits)");
+  const ChainD::JointVector eff = limits_of(effort_limits, n, INFINITY, "Chain(effort_limits)");
+  const SE3d b = base.is_none() ? SE3d() : home_pose(base, "Chain(base)");
+  const SE3d t = tool.is_none() ? SE3d() : home_pose(tool, "Chain(tool)");
+  const Vector3 g = gravity.is_none() ? ChainD::default_gravity() : to_finite_eigen<3>(gravity, "Chain(gravity)");
+  PyChain c(ChainD(S0, M0, types, lo, hi, vel, eff, b, t, g), S0, M0, b, t);
+  if (const chasles::ChainCheck check = c.validate(); !check) raise_invalid(c, check, S0, types, inferred);
+  if (!names.is_none()) {
+    if (py::isinstance<py::str>(names) || !PySequence_Check(names.ptr()))
+      raise_type_error("Chain(names): expected a sequence of " + std::to_string(n) + " strings, got " + type_name(names));
+    const py::sequence seq = py::reinterpret_borrow<py::sequence>(names);
+    if (static_cast<py::ssize_t>(py::len(seq)) != n)
+      raise_value_error("Chain(names): expected " + std::to_string(n) + " names (one per joint), got " +
+                        std::to_string(py::len(seq)));
+    for (py::ssize_t i = 0; i < n; ++i) {
+      const py::object item = seq[static_cast<size_t>(i)];
+      if (!py::isinstance<py::str>(item))
+        raise_type_error("Chain(names): expected strings, got " + type_name(item) + " for joint " + std::to_string(i));
+      c.names.push_back(item.cast<std::string>());
+    }
+  }
+  if (!link_inertias.is_none()) {
+    const py::array a = as_float64_array(link_inertias, "Chain(link_inertias)");
+    if (a.ndim() != 2 || a.shape(0) != n || a.shape(1) != 10)
+      raise_value_error("Chain(link_inertias): expected shape (" + std::to_string(n) +
+                        ", 10) (mass, com (3), ixx, ixy, ixz, iyy, iyz, izz per joint), got " + array_shape(a));
+    c.inertias.resize(n, 10);
+    const char* data = static_cast<const char*>(a.data());
+    for (py::ssize_t i = 0; i < n; ++i)
+      for (py::ssize_t k = 0; k < 10; ++k)
+        c.inertias(i, k) = *reinterpret_cast<const double*>(data + i * a.strides(0) + k * a.strides(1));
+    require_finite(c.inertias, "Chain(link_inertias)");
+    if ((c.inertias.col(0).array() < 0).any())
+      raise_value_error("Chain(link_inertias): expected masses >= 0 (column 0)");
+    c.has_inertias = true;
+  }
+  return c;
+}
+
+py::array vector_out(const ChainD::JointVector& v) {
+  const Py_intptr_t dims[1] = {v.size()};
+  py::array_t<double> out = new_array(1, dims);
+  for (Eigen::Index i = 0; i < v.size(); ++i) array_data(out)[i] = v(i);
+  return std::move(out);
+}
+
+/// Whether c has no model beyond its screws and home (see the state below).
+bool is_plain(const PyChain& c) {
+  const auto identity = [](const SE3d& g) {
+    return g.rotation().matrix() == Eigen::Matrix3d::Identity() && g.translation() == Vector3::Zero();
+  };
+  if (!c.names.empty() || c.has_inertias || !identity(c.given_base) || !identity(c.given_tool) ||
+      c.gravity() != ChainD::default_gravity())
+    return false;
+  for (Eigen::Index i = 0; i < c.joints(); ++i) {
+    const bool prismatic = !(c.space_screws().col(i).tail<3>().squaredNorm() > 0);
+    if (c.joint_type(i) != (prismatic ? chasles::JointType::prismatic : chasles::JointType::revolute)) return false;
+    if (!(c.lower()(i) == -INFINITY && c.upper()(i) == INFINITY && c.velocity_limits()(i) == INFINITY &&
+          c.effort_limits()(i) == INFINITY))
+      return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 void bind_kinematics(py::module_& m) {
@@ -229,26 +447,69 @@ void bind_kinematics(py::module_& m) {
       chain_ufunc<ChainOp::jacobian_body>(m, "_chain_jacobian_body", "(n,6),(4,4),(n)->(6,n)");
 
   const std::string doc = class_doc();
-  py::class_<ChainD> cls(m, "Chain", doc.c_str());
+  py::class_<PyChain> cls(m, "Chain", doc.c_str());
   cls.attr("__array_ufunc__") = py::none();  // numpy defers operators (np.float64(1.0) == c) to us
 
-  cls.def(py::init([](ArrayLike screws, py::object home) { return ChainD(screws_of(screws.obj), home_pose(home)); }),
-          py::arg("screws"), py::arg("home"),
-          R"doc(A serial chain from its space screws and its home pose.
+  cls.def(py::init([](ArrayLike screws, py::object home, py::object joint_types, py::object names, py::object lower,
+                       py::object upper, py::object velocity_limits, py::object effort_limits, py::object base,
+                       py::object tool, py::object gravity, py::object link_inertias) {
+            return make_chain(screws.obj, home, joint_types, names, lower, upper, velocity_limits, effort_limits, base,
+                              tool, gravity, link_inertias);
+          }),
+          py::arg("screws"), py::arg("home"), py::kw_only(), py::arg("joint_types") = py::none(),
+          py::arg("names") = py::none(), py::arg("lower") = py::none(), py::arg("upper") = py::none(),
+          py::arg("velocity_limits") = py::none(), py::arg("effort_limits") = py::none(),
+          py::arg("base") = py::none(), py::arg("tool") = py::none(), py::arg("gravity") = py::none(),
+          py::arg("link_inertias") = py::none(),
+          R"doc(A serial chain from its space screws and its home pose, with its robot model.
+
+The base and tool frames are folded in: the chain's ``screws`` are
+Ad_base S_i and its ``home`` is base M tool (projected onto SE(3)), so that
+forward kinematics and the Jacobians are in the world frame and end at the
+tool; ``base`` and ``tool`` stay available.
+
+Each screw is checked against its joint's type: a revolute or continuous
+joint's angular part w must be a unit vector and its pitch w . v zero, a
+prismatic joint's w zero and its linear part v a unit vector (to 1.5e-8).
+A table in Modern Robotics' (w, v) order, or transposed (one column per
+joint, as MR's Slist), is refused with the conversion in the message.
 
 Args:
     screws: shape (n, 6), 1 <= n <= 32: row i is the space screw S_i = (v, w)
         of joint i at the home configuration, in the base frame, finite.
-    home: SE3 or shape (4, 4), M = g(0), the tool frame at home.
+    home: SE3 or shape (4, 4), M = g(0), the tool frame at home (before
+        ``tool``), in the base frame.
+    joint_types: n of "revolute", "continuous", "prismatic"; None infers
+        them (prismatic where w = 0, revolute elsewhere).
+    names: n joint names (str), or None.
+    lower: shape (n,), lower position limits (radians or metres); None: -inf.
+    upper: shape (n,), upper position limits; None: inf. A continuous joint
+        has -inf and inf.
+    velocity_limits: shape (n,), >= 0; None: inf.
+    effort_limits: shape (n,), >= 0 (N m or N); None: inf.
+    base: SE3 or shape (4, 4), the base frame in the world frame; None: identity.
+    tool: SE3 or shape (4, 4), the tool frame after M; None: identity.
+    gravity: shape (3,), in the world frame, m/s^2; None: (0, 0, -9.81).
+    link_inertias: shape (n, 10), per joint the inertia of the link it moves
+        (mass, center of mass (3), ixx, ixy, ixz, iyy, iyz, izz about the
+        center of mass), in the base frame at home (``Chain.from_urdf``
+        fills it); or None.
 
 Raises:
     ValueError: a shape other than (n, 6), more than 32 joints, a non-finite
-        entry, or a home matrix that is not a rigid motion.
+        entry, a home, base or tool matrix that is not a rigid motion, a
+        screw that does not match its joint type, lower > upper, a negative
+        velocity or effort limit, a negative mass.
+    TypeError: joint types or names that are not strings.
 
 Example:
     >>> arm = Chain([[0, 0, 0, 0, 0, 1]], np.eye(4))
     >>> arm.n_joints
     1
+    >>> arm = Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), joint_types=["revolute"],
+    ...             names=["shoulder"], lower=[-1.5], upper=[1.5])
+    >>> arm
+    Chain(n_joints=1, names=('shoulder',))
 )doc");
 
   cls.def_static(
@@ -296,7 +557,7 @@ Example:
 
   cls.def(
       "forward",
-      [u_forward](Obj<ChainD> c, ArrayLike theta) {
+      [u_forward](Obj<PyChain> c, ArrayLike theta) {
         return call_chain_ufunc<ChainOp::forward>(u_forward.ptr(), *c, theta.obj, "Chain.forward(theta)");
       },
       py::arg("theta"),
@@ -323,7 +584,7 @@ Example:
 
   cls.def(
       "forward_body",
-      [u_forward_body](Obj<ChainD> c, ArrayLike theta) {
+      [u_forward_body](Obj<PyChain> c, ArrayLike theta) {
         return call_chain_ufunc<ChainOp::forward_body>(u_forward_body.ptr(), *c, theta.obj, "Chain.forward_body(theta)");
       },
       py::arg("theta"),
@@ -349,7 +610,7 @@ Example:
 
   cls.def(
       "jacobian_space",
-      [u_jacobian_space](Obj<ChainD> c, ArrayLike theta) {
+      [u_jacobian_space](Obj<PyChain> c, ArrayLike theta) {
         return call_chain_ufunc<ChainOp::jacobian_space>(u_jacobian_space.ptr(), *c, theta.obj, "Chain.jacobian_space(theta)");
       },
       py::arg("theta"),
@@ -376,7 +637,7 @@ Example:
 
   cls.def(
       "jacobian_body",
-      [u_jacobian_body](Obj<ChainD> c, ArrayLike theta) {
+      [u_jacobian_body](Obj<PyChain> c, ArrayLike theta) {
         return call_chain_ufunc<ChainOp::jacobian_body>(u_jacobian_body.ptr(), *c, theta.obj, "Chain.jacobian_body(theta)");
       },
       py::arg("theta"),
@@ -402,7 +663,7 @@ Example:
 
   cls.def_property_readonly(
       "screws",
-      [](Obj<ChainD> c_) {
+      [](Obj<PyChain> c_) {
         const ChainD& c = *c_;
         const Py_intptr_t dims[2] = {c.joints(), 6};
         py::array_t<double> out = new_array(2, dims);
@@ -413,7 +674,7 @@ Example:
       R"doc(numpy.ndarray: shape (n, 6), the space screws S_i, one row (v, w) per joint (a copy).)doc");
   cls.def_property_readonly(
       "body_screws",
-      [](Obj<ChainD> c_) {
+      [](Obj<PyChain> c_) {
         const ChainD& c = *c_;
         const Py_intptr_t dims[2] = {c.joints(), 6};
         py::array_t<double> out = new_array(2, dims);
@@ -423,50 +684,254 @@ Example:
       },
       R"doc(numpy.ndarray: shape (n, 6), the body screws B_i = Ad_{M^-1} S_i (a copy).)doc");
   cls.def_property_readonly(
-      "home", [](Obj<ChainD> c) { return c->home(); }, R"doc(SE3: the home pose M = g(0).)doc");
+      "home", [](Obj<PyChain> c) { return c->home(); }, R"doc(SE3: the home pose M = g(0).)doc");
   cls.def_property_readonly(
-      "n_joints", [](Obj<ChainD> c) { return static_cast<int>(c->joints()); }, R"doc(int: n, the number of joints.)doc");
-  // The stored numbers: the space screws and the home pose (the body screws
-  // are computed from them).
-  def_equality(cls, [](const ChainD& a, const ChainD& b) {
-    return a.joints() == b.joints() && a.space_screws() == b.space_screws() &&
-           a.home().rotation().matrix() == b.home().rotation().matrix() &&
-           a.home().translation() == b.home().translation();
-  });
-  def_repr(cls, [](const ChainD& c) { return "Chain(n_joints=" + std::to_string(c.joints()) + ")"; });
-  cls.def("__copy__", [](Obj<ChainD> c) { return *c; });
-  cls.def("__deepcopy__", [](Obj<ChainD> c, const py::object&) { return *c; }, py::arg("memo"));
-  // The state: the space screws row by row (6 n floats), then the home
-  // pose's rotation row by row and translation (12 floats); the body screws
-  // are recomputed from them, by the same arithmetic, so bit for bit.
-  cls.def(py::pickle(
-      [](Obj<ChainD> c_) {
-        const ChainD& c = *c_;
-        const py::ssize_t n = c.joints();
-        py::tuple t(6 * n + 12);
-        for (py::ssize_t i = 0; i < n; ++i)
-          for (int k = 0; k < 6; ++k) t[6 * i + k] = py::float_(c.space_screws()(k, i));
-        const Eigen::Matrix3d& R = c.home().rotation().matrix();
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) t[6 * n + 3 * i + j] = py::float_(R(i, j));
-        for (int i = 0; i < 3; ++i) t[6 * n + 9 + i] = py::float_(c.home().translation()[i]);
+      "n_joints", [](Obj<PyChain> c) { return static_cast<int>(c->joints()); }, R"doc(int: n, the number of joints.)doc");
+  cls.def_property_readonly(
+      "joint_types",
+      [](Obj<PyChain> c) {
+        py::tuple t(c->joints());
+        for (Eigen::Index i = 0; i < c->joints(); ++i)
+          t[static_cast<size_t>(i)] = py::str(kJointTypeNames[static_cast<int>(c->joint_type(i))]);
         return t;
       },
-      [](const py::object& state) {
-        const py::ssize_t size = PyTuple_Check(state.ptr()) ? PyTuple_GET_SIZE(state.ptr()) : -1;
-        const py::ssize_t n = (size - 12) / 6;
-        if (size < 0 || (size - 12) % 6 != 0 || n < 1 || n > kMaxJoints) {
-          raise_value_error("Chain.__setstate__: expected a tuple of 6 n + 12 floats, 1 <= n <= " +
-                            std::to_string(kMaxJoints));
+      R"doc(tuple[str, ...]: each joint's type: "revolute", "continuous" or "prismatic".)doc");
+  cls.def_property_readonly(
+      "names",
+      [](Obj<PyChain> c) -> py::object {
+        if (c->names.empty()) return py::none();
+        py::tuple t(c->names.size());
+        for (size_t i = 0; i < c->names.size(); ++i) t[i] = py::str(c->names[i]);
+        return std::move(t);
+      },
+      R"doc(tuple[str, ...] | None: the joint names, or None when none were given.)doc");
+  cls.def_property_readonly(
+      "lower", [](Obj<PyChain> c) { return vector_out(c->lower()); },
+      R"doc(numpy.ndarray: shape (n,), the lower position limits (-inf where none; a copy).)doc");
+  cls.def_property_readonly(
+      "upper", [](Obj<PyChain> c) { return vector_out(c->upper()); },
+      R"doc(numpy.ndarray: shape (n,), the upper position limits (inf where none; a copy).)doc");
+  cls.def_property_readonly(
+      "velocity_limits", [](Obj<PyChain> c) { return vector_out(c->velocity_limits()); },
+      R"doc(numpy.ndarray: shape (n,), the velocity limits (inf where none; a copy).)doc");
+  cls.def_property_readonly(
+      "effort_limits", [](Obj<PyChain> c) { return vector_out(c->effort_limits()); },
+      R"doc(numpy.ndarray: shape (n,), the effort limits, N m or N (inf where none; a copy).)doc");
+  cls.def_property_readonly(
+      "base", [](Obj<PyChain> c) { return c->base(); },
+      R"doc(SE3: the base frame in the world frame (already folded into screws and home).)doc");
+  cls.def_property_readonly(
+      "tool", [](Obj<PyChain> c) { return c->tool(); },
+      R"doc(SE3: the tool frame after the last link (already folded into home).)doc");
+  cls.def_property_readonly(
+      "gravity", [](Obj<PyChain> c) { return vec_out<3>(c->gravity()); },
+      R"doc(numpy.ndarray: shape (3,), gravity in the world frame, m/s^2 (a copy).)doc");
+  cls.def_property_readonly(
+      "link_inertias",
+      [](Obj<PyChain> c) -> py::object {
+        if (!c->has_inertias) return py::none();
+        const Py_intptr_t dims[2] = {c->joints(), 10};
+        py::array_t<double> out = new_array(2, dims);
+        Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 10, Eigen::RowMajor>>(array_data(out), c->joints(), 10) =
+            c->inertias;
+        return std::move(out);
+      },
+      R"doc(numpy.ndarray | None: shape (n, 10), per joint the inertia of the link it moves
+(with the links fixed to it): mass, center of mass (3), then ixx, ixy, ixz,
+iyy, iyz, izz of the rotational inertia about the center of mass, both in
+the base frame at home; None when not given (a copy).)doc");
+
+  cls.def_static(
+      "from_urdf",
+      [](py::object source, py::object tip_link, py::object base_link) -> Returns<PyChain> {
+        return {py::module_::import("chasles._urdf").attr("chain_from_urdf")(source, tip_link, base_link)};
+      },
+      py::arg("source"), py::arg("tip_link"), py::arg("base_link") = py::none(),
+      R"doc(The chain from base_link to tip_link of a URDF robot description.
+
+Revolute, continuous and prismatic joints become the chain's joints (their
+names, types, limits); fixed joints are folded into the next joint's screw
+or into the home pose; each moving joint's child link's ``<inertial>``
+(with the links fixed to it) goes to ``link_inertias``. The home pose is
+tip_link's frame at zero joint positions. Parsed with the standard
+library's xml.etree (chasles/_urdf.py): URDF's kinematic and inertial
+elements only, no meshes.
+
+Args:
+    source: a path (str or os.PathLike) to a .urdf file, or the XML text.
+    tip_link: the name of the last link (the tool).
+    base_link: the name of the base link; None: the root of the tree.
+
+Returns:
+    Chain.
+
+Raises:
+    ValueError: a malformed description; a floating or planar joint, or a
+        mimic joint, between base and tip; a joint naming a missing link; a
+        loop; an unknown tip or base link, or a tip not below the base.
+
+Example:
+    >>> urdf = """<robot name="r"><link name="a"/><link name="b"/>
+    ...   <joint name="j" type="revolute"><parent link="a"/><child link="b"/>
+    ...     <origin xyz="0 0 0.5"/><axis xyz="0 0 1"/>
+    ...     <limit lower="-1" upper="1" effort="10" velocity="2"/></joint></robot>"""
+    >>> arm = Chain.from_urdf(urdf, "b")
+    >>> arm.names, arm.joint_types, arm.upper
+    (('j',), ('revolute',), array([1.]))
+)doc");
+
+  // The stored numbers: the space screws, the home pose and the model (the
+  // body screws are computed from them).
+  def_equality(cls, [](const PyChain& a, const PyChain& b) {
+    const auto same_pose = [](const SE3d& x, const SE3d& y) {
+      return x.rotation().matrix() == y.rotation().matrix() && x.translation() == y.translation();
+    };
+    if (a.joints() != b.joints()) return false;
+    for (Eigen::Index i = 0; i < a.joints(); ++i)
+      if (a.joint_type(i) != b.joint_type(i)) return false;
+    return a.space_screws() == b.space_screws() && same_pose(a.home(), b.home()) && a.lower() == b.lower() &&
+           a.upper() == b.upper() && a.velocity_limits() == b.velocity_limits() &&
+           a.effort_limits() == b.effort_limits() && same_pose(a.base(), b.base()) && same_pose(a.tool(), b.tool()) &&
+           a.gravity() == b.gravity() && a.names == b.names && a.has_inertias == b.has_inertias &&
+           (!a.has_inertias || a.inertias == b.inertias);
+  });
+  def_repr(cls, [](const PyChain& c) {
+    std::string r = "Chain(n_joints=" + std::to_string(c.joints());
+    if (!c.names.empty()) {
+      r += ", names=(";
+      for (size_t i = 0; i < c.names.size(); ++i)
+        r += (i ? ", " : "") + std::string(py::str(py::repr(py::str(c.names[i]))));
+      r += c.names.size() == 1 ? ",)" : ")";
+    }
+    return r + ")";
+  });
+  cls.def("__copy__", [](Obj<PyChain> c) { return *c; });
+  cls.def("__deepcopy__", [](Obj<PyChain> c, const py::object&) { return *c; }, py::arg("memo"));
+  // The state of a chain without a model (the types inferred, no limits,
+  // names or inertias, identity base and tool, default gravity): its stored
+  // numbers, 6 n + 12 floats, the space screws row by row, then the home
+  // pose's rotation row by row and translation; rebuilt with the home taken
+  // as it is (already projected), so bit for bit. The state of any other
+  // chain: (numbers, names, inertias). numbers: the screws as given row by
+  // row (6 n floats), the home pose as given (rotation row by row, then
+  // translation: 12), the joint types (n: 0 revolute, 1 continuous, 2
+  // prismatic), lower, upper, velocity and effort limits (4 n), base and
+  // tool as given (12 each, as home), gravity (3): 11 n + 39 floats. names:
+  // None or a tuple of n str. inertias: None or a tuple of 10 n floats. The
+  // chain is rebuilt from them by the same arithmetic (and checked again),
+  // so bit for bit.
+  cls.def(py::pickle(
+      [](Obj<PyChain> c_) -> py::tuple {
+        const PyChain& c = *c_;
+        const py::ssize_t n = c.joints();
+        if (is_plain(c)) {
+          py::tuple t(6 * n + 12);
+          for (py::ssize_t i = 0; i < n; ++i)
+            for (int k = 0; k < 6; ++k) t[static_cast<size_t>(6 * i + k)] = py::float_(c.space_screws()(k, i));
+          const Eigen::Matrix3d& R = c.home().rotation().matrix();
+          for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) t[static_cast<size_t>(6 * n + 3 * i + j)] = py::float_(R(i, j));
+          for (int i = 0; i < 3; ++i) t[static_cast<size_t>(6 * n + 9 + i)] = py::float_(c.home().translation()[i]);
+          return t;
         }
-        const py::tuple t = py::reinterpret_borrow<py::tuple>(state);
-        ChainD::Screws S(6, n);
-        for (py::ssize_t i = 0; i < n; ++i) read_state(t, 6 * i, 6, S.col(i).data(), "Chain");
-        Eigen::Matrix<double, 3, 3, Eigen::RowMajor> R;
-        Vector3 p;
-        read_state(t, 6 * n, 9, R.data(), "Chain");
-        read_state(t, 6 * n + 9, 3, p.data(), "Chain");
-        return ChainD(S, SE3d(chasles::SO3d::from_matrix_unchecked(R), p));
+        py::tuple t(11 * n + 39);
+        size_t k = 0;
+        const auto put = [&](double x) { t[k++] = py::float_(x); };
+        const auto put_pose = [&](const SE3d& g) {
+          for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) put(g.rotation().matrix()(i, j));
+          for (int i = 0; i < 3; ++i) put(g.translation()[i]);
+        };
+        for (py::ssize_t i = 0; i < n; ++i)
+          for (int r = 0; r < 6; ++r) put(c.given_screws(r, i));
+        put_pose(c.given_home);
+        for (py::ssize_t i = 0; i < n; ++i) put(double(static_cast<int>(c.joint_type(i))));
+        for (const ChainD::JointVector* v : {&c.lower(), &c.upper(), &c.velocity_limits(), &c.effort_limits()})
+          for (py::ssize_t i = 0; i < n; ++i) put((*v)(i));
+        put_pose(c.given_base);
+        put_pose(c.given_tool);
+        for (int i = 0; i < 3; ++i) put(c.gravity()[i]);
+        py::object names = py::none(), inertias = py::none();
+        if (!c.names.empty()) {
+          py::tuple nt(c.names.size());
+          for (size_t i = 0; i < c.names.size(); ++i) nt[i] = py::str(c.names[i]);
+          names = std::move(nt);
+        }
+        if (c.has_inertias) {
+          py::tuple it(static_cast<size_t>(10 * n));
+          for (py::ssize_t i = 0; i < n; ++i)
+            for (int j = 0; j < 10; ++j) it[static_cast<size_t>(10 * i + j)] = py::float_(c.inertias(i, j));
+          inertias = std::move(it);
+        }
+        return py::make_tuple(t, names, inertias);
+      },
+      [](const py::object& state) {
+        const auto bad = []() {
+          raise_value_error("Chain.__setstate__: expected a tuple of 6 n + 12 floats, 1 <= n <= " +
+                            std::to_string(kMaxJoints) +
+                            ", or (numbers, names, inertias): a tuple of 11 n + 39 floats, None or n str, None or "
+                            "10 n floats");
+        };
+        const bool model = PyTuple_Check(state.ptr()) && PyTuple_GET_SIZE(state.ptr()) == 3 &&
+                           PyTuple_Check(PyTuple_GET_ITEM(state.ptr(), 0));
+        if (!model) {
+          const py::ssize_t size = PyTuple_Check(state.ptr()) ? PyTuple_GET_SIZE(state.ptr()) : -1;
+          const py::ssize_t n = (size - 12) / 6;
+          if (size < 0 || (size - 12) % 6 != 0 || n < 1 || n > kMaxJoints) bad();
+          const py::tuple t = py::reinterpret_borrow<py::tuple>(state);
+          ChainD::Screws S(6, n);
+          for (py::ssize_t i = 0; i < n; ++i) read_state(t, 6 * i, 6, S.col(i).data(), "Chain");
+          Eigen::Matrix<double, 3, 3, Eigen::RowMajor> R;
+          Vector3 p;
+          read_state(t, 6 * n, 9, R.data(), "Chain");
+          read_state(t, 6 * n + 9, 3, p.data(), "Chain");
+          const SE3d M(chasles::SO3d::from_matrix_unchecked(R), p);
+          return PyChain(ChainD(S, M, ChainD::HomeAsGiven()), S, M, SE3d(), SE3d());
+        }
+        const py::tuple outer = py::reinterpret_borrow<py::tuple>(state);
+        const py::object numbers = outer[0], names = outer[1], inertias = outer[2];
+        const py::ssize_t size = PyTuple_Check(numbers.ptr()) ? PyTuple_GET_SIZE(numbers.ptr()) : -1;
+        const py::ssize_t n = (size - 39) / 11;
+        if (size < 0 || (size - 39) % 11 != 0 || n < 1 || n > kMaxJoints) bad();
+        Eigen::Matrix<double, Eigen::Dynamic, 1> x(size);
+        read_state(py::reinterpret_borrow<py::tuple>(numbers), 0, size, x.data(), "Chain");
+        Eigen::Index k = 0;
+        const Py_intptr_t sdims[2] = {n, 6};
+        py::array_t<double> S = new_array(2, sdims);
+        for (py::ssize_t i = 0; i < 6 * n; ++i) array_data(S)[i] = x(k++);
+        const auto pose = [&]() {
+          Eigen::Matrix4d M = Eigen::Matrix4d::Identity();
+          for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) M(i, j) = x(k++);
+          for (int i = 0; i < 3; ++i) M(i, 3) = x(k++);
+          return mat_out<4, 4>(M);
+        };
+        const py::array home = pose();
+        py::list types;
+        for (py::ssize_t i = 0; i < n; ++i) {
+          const double code = x(k++);
+          if (!(code >= 0 && code <= 2 && code == std::floor(code))) bad();
+          types.append(kJointTypeNames[static_cast<int>(code)]);
+        }
+        py::array lims[4];
+        for (auto& l : lims) {
+          ChainD::JointVector v(n);
+          for (py::ssize_t i = 0; i < n; ++i) v(i) = x(k++);
+          l = vector_out(v);
+        }
+        const py::array base = pose();
+        const py::array tool = pose();
+        const Vector3 g(x(k), x(k + 1), x(k + 2));
+        py::object inertia_array = py::none();
+        if (!inertias.is_none()) {
+          if (!PyTuple_Check(inertias.ptr()) || PyTuple_GET_SIZE(inertias.ptr()) != 10 * n) bad();
+          const Py_intptr_t dims[2] = {n, 10};
+          py::array_t<double> a = new_array(2, dims);
+          read_state(py::reinterpret_borrow<py::tuple>(inertias), 0, 10 * n, array_data(a), "Chain");
+          inertia_array = std::move(a);
+        }
+        return make_chain(S, home, types, names, lims[0], lims[1], lims[2], lims[3], base, tool, vec_out<3>(g),
+                          inertia_array);
       }));
   add_reduce(cls);
 }

@@ -75,6 +75,7 @@ struct Thresholds<float> {
   static constexpr float spline_series_theta2 = 4.0f;
   static constexpr float spline_step_tolerance = 6.4e-06f;  // eps^(3/4)
   static constexpr int spline_max_iterations = 30;
+  static constexpr float screw_tolerance = 3.4526698e-04f;  // eps^(1/2)
 };
 
 template <>
@@ -92,6 +93,7 @@ struct Thresholds<double> {
   static constexpr double spline_series_theta2 = 4.0;
   static constexpr double spline_step_tolerance = 1.8189894035458565e-12;  // eps^(3/4)
   static constexpr int spline_max_iterations = 30;
+  static constexpr double screw_tolerance = 1.4901161193847656e-08;  // eps^(1/2)
 };
 
 template <>
@@ -111,6 +113,7 @@ struct Thresholds<long double> {
   static constexpr long double spline_series_theta2 = 4.0L;
   static constexpr long double spline_step_tolerance = 5.9749283938523554e-15L;  // eps^(3/4)
   static constexpr int spline_max_iterations = 30;
+  static constexpr long double screw_tolerance = 3.2927225399135962334e-10L;  // eps^(1/2)
 };
 
 // mean_step_tolerance: the geodesic (Karcher) mean (mean.hpp) stops after
@@ -173,6 +176,16 @@ struct Thresholds<long double> {
 //   sigma 0.5 to 0.8 at most 23, and one natural-end fit with steps of
 //   2.7 rad at 7 rad/s did not converge in 30 (reported not_converged;
 //   the Python classes raise). Keys on one screw motion take 1 or 2.
+//
+// screw_tolerance: Chain::validate() (kinematics.hpp) accepts a revolute
+//   joint's angular part w with | |w| - 1 | <= tol and |w . v| <= tol (1 + |v|)
+//   (zero pitch), a prismatic joint's linear part v with | |v| - 1 | <= tol
+//   and |w| <= tol. sqrt(eps), as rotation_tolerance: an axis written with
+//   half the digits of the type passes (0.70710678 twice has | |w| - 1 | ~ 1e-9);
+//   a screw table in Modern Robotics' (w, v) order does not, read as (v, w):
+//   its "angular part" is then v = -w x q, of norm the distance of the axis
+//   from the origin (0.089 to 0.8 m for a UR5), far from 1 at any tolerance
+//   a unit vector could need.
 //
 /// The thresholds that apply to a Scalar (autodiff scalars use their real type's).
 template <typename Scalar>

@@ -3,9 +3,14 @@
 // Robotic Manipulation", ch. 3; Lynch and Park, "Modern Robotics", ch. 4-5).
 #pragma once
 
+#include <array>
 #include <cmath>
+#include <cstddef>
+#include <limits>
 
 #include <Eigen/Core>
+
+#include "chasles/constants.hpp"
 
 #include "chasles/detail/assert.hpp"
 #include "chasles/se3.hpp"
@@ -35,7 +40,65 @@ struct JointVectorSize<Joints, MaxJoints, Size, true> {
   static constexpr bool ok = true;
 };
 
+/// The nearest rotation to R, a rotation up to rounding (defect d <= sqrt(eps),
+/// as SE3::from_matrix accepts): two steps of Bjorck and Bowie's iteration
+/// for the orthogonal polar factor, R <- R + R (I - R^T R) / 2 (Bjorck and
+/// Bowie, "An iterative algorithm for computing the best estimate of an
+/// orthogonal matrix", SIAM J. Numer. Anal. 8(2), 1971; the defect goes from
+/// d to about 3 d^2 / 4 per step). An R with R^T R == I in floating point
+/// (a permutation, the identity) is returned unchanged, bit for bit.
+template <typename Scalar>
+Eigen::Matrix<Scalar, 3, 3> orthonormalized(Eigen::Matrix<Scalar, 3, 3> R) noexcept {
+  using Matrix3 = Eigen::Matrix<Scalar, 3, 3>;
+  for (int step = 0; step < 2; ++step) {
+    const Matrix3 E = Matrix3::Identity() - R.transpose() * R;
+    R += R * (E * Scalar(0.5));
+  }
+  return R;
+}
+
+/// g with its rotation orthonormalized.
+template <typename Scalar>
+SE3<Scalar> projected(const SE3<Scalar>& g) noexcept {
+  return SE3<Scalar>(SO3<Scalar>::from_matrix_unchecked(orthonormalized<Scalar>(g.rotation().matrix())),
+                     g.translation());
+}
+
 }  // namespace detail
+
+/// The type of a joint of a Chain: a revolute joint turns about its axis
+/// between position limits, a continuous one turns without limits (its
+/// limits are -inf and +inf), a prismatic one slides along its axis (URDF's
+/// "revolute", "continuous" and "prismatic").
+enum class JointType : unsigned char { revolute, continuous, prismatic };
+
+/// What Chain::validate() finds: the first problem, in this order, of the
+/// first joint that has one.
+enum class ChainStatus : unsigned char {
+  ok,
+  /// a revolute or continuous joint whose angular part w is not a unit
+  /// vector (| |w| - 1 | > screw_tolerance)
+  revolute_axis_not_unit,
+  /// a revolute or continuous joint of nonzero pitch: |w . v| > screw_tolerance (1 + |v|)
+  revolute_pitch_not_zero,
+  /// a prismatic joint with a nonzero angular part (|w| > screw_tolerance)
+  prismatic_rotates,
+  /// a prismatic joint whose linear part is not a unit vector
+  prismatic_axis_not_unit,
+  /// lower > upper, a NaN limit, or a continuous joint with a finite limit
+  position_limits_invalid,
+  /// a negative or NaN velocity or effort limit
+  velocity_or_effort_limit_invalid,
+  /// a NaN or infinite gravity vector
+  gravity_not_finite,
+};
+
+/// ChainStatus and the joint it is about (-1 for ok and gravity_not_finite).
+struct ChainCheck {
+  ChainStatus status;
+  Eigen::Index joint;
+  explicit operator bool() const noexcept { return status == ChainStatus::ok; }
+};
 
 /// A serial chain of n one-degree-of-freedom joints (revolute, prismatic or
 /// any screw joint), given by its space screws S_i (the joint twists at the
@@ -50,6 +113,28 @@ struct JointVectorSize<Joints, MaxJoints, Size, true> {
 /// must have n entries: a fixed-size one is checked at compile time (its
 /// size equals a fixed n, or is at most MaxJoints), any other by
 /// eigen_assert.
+///
+/// The robot model around the kinematics: each joint's type (JointType),
+/// position limits (lower, upper), velocity and effort limits, a base frame
+/// (the pose of the chain's base in the world frame), a tool frame (the pose
+/// of the tool in the last link's frame at home, i.e. appended to M) and
+/// gravity (a 3-vector in the world frame, default (0, 0, -9.81) m/s^2, the
+/// value of URDF tools and Pinocchio). Base and tool are folded into the
+/// screws and the home pose on construction:
+///   S_i = Ad_base S0_i,  M = base M0 tool,
+/// so that every algorithm (forward kinematics, Jacobians, and later inverse
+/// kinematics and dynamics) works on (S, M) alone, in the world frame; base()
+/// and tool() stay available. The home pose is projected onto SE(3) on
+/// construction (detail::orthonormalized: a pose composed of URDF transforms
+/// is a rigid motion only up to a defect of a few eps).
+///
+/// Joint names are not stored: strings allocate, and a real-time chain has
+/// no use for them. The Python Chain keeps them (and the URDF's link
+/// inertias) beside its C++ chain.
+///
+/// Validation: the constructors cannot throw, so they check nothing;
+/// validate() says whether the model is consistent (unit joint axes, zero
+/// pitch for revolute joints, ordered limits; ChainStatus).
 ///
 /// Every operation is noexcept, allocation-free and of cost O(n).
 template <typename Scalar_, int Joints, int MaxJoints = Joints>
@@ -69,16 +154,63 @@ class Chain {
   using Jacobian = Screws;
   /// n x 1: joint positions theta.
   using JointVector = Eigen::Matrix<Scalar, Joints, 1, Eigen::ColMajor, MaxJoints, 1>;
+  /// One JointType per joint (the first n are used).
+  using JointTypes = std::array<JointType, static_cast<std::size_t>(MaxJoints)>;
   static constexpr int JointsAtCompileTime = Joints;
   static constexpr int MaxJointsAtCompileTime = MaxJoints;
 
-  /// From the space screws S (6 x n, columns (v, w)) and the home pose M.
+  /// From the space screws S (6 x n, columns (v, w)) and the home pose M:
+  /// joint types inferred (prismatic where w = 0, revolute elsewhere), no
+  /// limits (+-inf), identity base and tool, default gravity.
   template <typename Derived>
   Chain(const Eigen::MatrixBase<Derived>& space_screws, const Group& home) noexcept
-      : S_(space_screws), B_(6, space_screws.cols()), M_(home) {
-    const Group M_inv = home.inverse();
-    for (Eigen::Index i = 0; i < S_.cols(); ++i) B_.col(i) = M_inv.act(Twist<Scalar>(Vector6(S_.col(i)))).vector();
+      : S_(space_screws), B_(6, space_screws.cols()), M_(detail::projected(home)),
+        lower_(JointVector::Constant(space_screws.cols(), -infinity())),
+        upper_(JointVector::Constant(space_screws.cols(), infinity())),
+        velocity_(JointVector::Constant(space_screws.cols(), infinity())),
+        effort_(JointVector::Constant(space_screws.cols(), infinity())),
+        gravity_(default_gravity()) {
+    types_.fill(JointType::revolute);
+    for (Eigen::Index i = 0; i < S_.cols(); ++i)
+      if (!(S_.col(i).template tail<3>().squaredNorm() > Scalar(0))) types_[static_cast<std::size_t>(i)] = JointType::prismatic;
+    compute_body_screws();
   }
+
+  /// The same with the home pose taken as it is, not projected: for a home
+  /// pose that is already one (another chain's home(), which this
+  /// reproduces bit for bit).
+  struct HomeAsGiven {};
+  template <typename Derived>
+  Chain(const Eigen::MatrixBase<Derived>& space_screws, const Group& home, HomeAsGiven) noexcept
+      : Chain(space_screws, home) {
+    M_ = home;
+    compute_body_screws();
+  }
+
+  /// The full model, from arrays: the screws S0 (6 x n, in the base frame)
+  /// and home pose M0 of the chain without its base and tool, each joint's
+  /// type, position limits (lower, upper: +-inf where there are none, and
+  /// always for continuous joints), velocity and effort limits (+inf where
+  /// there are none), the base frame (in the world frame), the tool frame
+  /// (after M0) and gravity (in the world frame). Stores S = Ad_base S0,
+  /// M = base M0 tool (projected onto SE(3)). Checks nothing: validate().
+  template <typename Derived>
+  Chain(const Eigen::MatrixBase<Derived>& space_screws, const Group& home, const JointTypes& types,
+        const JointVector& lower, const JointVector& upper, const JointVector& velocity_limits,
+        const JointVector& effort_limits, const Group& base = Group(), const Group& tool = Group(),
+        const Vector3& gravity = default_gravity()) noexcept
+      : S_(space_screws), B_(6, space_screws.cols()), types_(types), lower_(lower), upper_(upper),
+        velocity_(velocity_limits), effort_(effort_limits), base_(detail::projected(base)),
+        tool_(detail::projected(tool)), gravity_(gravity) {
+    CHASLES_ASSERT(lower.size() == S_.cols() && upper.size() == S_.cols() && velocity_limits.size() == S_.cols() &&
+                   effort_limits.size() == S_.cols());
+    for (Eigen::Index i = 0; i < S_.cols(); ++i) S_.col(i) = base_.act(Twist<Scalar>(Vector6(S_.col(i)))).vector();
+    M_ = detail::projected(Group(base_ * detail::projected(home) * tool_));
+    compute_body_screws();
+  }
+
+  /// (0, 0, -9.81): gravity in m/s^2 along -z, as URDF tools and Pinocchio.
+  static Vector3 default_gravity() noexcept { return Vector3(Scalar(0), Scalar(0), Scalar(-9.81)); }
 
   /// The screw of a revolute joint about the axis through `point` (q)
   /// along `direction` (w, normalized here; w != 0): (-w x q, w). The point
@@ -150,8 +282,59 @@ class Chain {
   const Screws& space_screws() const noexcept { return S_; }
   /// B = Ad_{M^-1} S (6 x n): the joint screws at home, in the tool frame.
   const Screws& body_screws() const noexcept { return B_; }
-  /// M = g(0), the tool frame at home.
+  /// M = g(0), the tool frame at home (base and tool included).
   const Group& home() const noexcept { return M_; }
+  /// The type of joint i.
+  JointType joint_type(Eigen::Index i) const noexcept {
+    CHASLES_ASSERT(i >= 0 && i < joints());
+    return types_[static_cast<std::size_t>(i)];
+  }
+  /// The types (the first n are used).
+  const JointTypes& joint_types() const noexcept { return types_; }
+  /// Lower position limits (-inf where none).
+  const JointVector& lower() const noexcept { return lower_; }
+  /// Upper position limits (+inf where none).
+  const JointVector& upper() const noexcept { return upper_; }
+  /// Velocity limits, >= 0 (+inf where none).
+  const JointVector& velocity_limits() const noexcept { return velocity_; }
+  /// Effort limits (torque or force), >= 0 (+inf where none).
+  const JointVector& effort_limits() const noexcept { return effort_; }
+  /// The base frame, in the world frame (already folded into S and M).
+  const Group& base() const noexcept { return base_; }
+  /// The tool frame, after the last link at home (already folded into M).
+  const Group& tool() const noexcept { return tool_; }
+  /// Gravity, in the world frame.
+  const Vector3& gravity() const noexcept { return gravity_; }
+
+  /// Whether each joint is what its type says (unit axes, zero pitch for
+  /// revolute joints: see ChainStatus), its limits are ordered and
+  /// nonnegative, and gravity is finite; the first problem found.
+  /// Tolerance: Thresholds::screw_tolerance (constants.hpp).
+  ChainCheck validate() const noexcept {
+    using std::abs;
+    using std::sqrt;
+    const Scalar tol(ThresholdsOf<Scalar>::screw_tolerance);
+    for (Eigen::Index i = 0; i < joints(); ++i) {
+      const Vector3 v = S_.col(i).template head<3>(), w = S_.col(i).template tail<3>();
+      const JointType type = types_[static_cast<std::size_t>(i)];
+      if (type == JointType::prismatic) {
+        if (!(sqrt(w.squaredNorm()) <= tol)) return {ChainStatus::prismatic_rotates, i};
+        if (!(abs(sqrt(v.squaredNorm()) - Scalar(1)) <= tol)) return {ChainStatus::prismatic_axis_not_unit, i};
+      } else {
+        if (!(abs(sqrt(w.squaredNorm()) - Scalar(1)) <= tol)) return {ChainStatus::revolute_axis_not_unit, i};
+        // w . v is the pitch of a screw with |w| = 1 (Lynch and Park, 3.3.2.2)
+        if (!(abs(w.dot(v)) <= tol * (Scalar(1) + sqrt(v.squaredNorm()))))
+          return {ChainStatus::revolute_pitch_not_zero, i};
+      }
+      const Scalar lo = lower_(i), hi = upper_(i);
+      if (!(lo <= hi) || (type == JointType::continuous && (lo > -infinity() || hi < infinity())))
+        return {ChainStatus::position_limits_invalid, i};
+      if (!(velocity_(i) >= Scalar(0)) || !(effort_(i) >= Scalar(0)))
+        return {ChainStatus::velocity_or_effort_limit_invalid, i};
+    }
+    if (!(abs(gravity_(0)) + abs(gravity_(1)) + abs(gravity_(2)) < infinity())) return {ChainStatus::gravity_not_finite, -1};
+    return {ChainStatus::ok, -1};
+  }
 
  private:
   /// theta has n entries: checked at compile time when its size is fixed
@@ -164,9 +347,40 @@ class Chain {
     CHASLES_ASSERT(theta.size() == joints());
   }
 
+  static Scalar infinity() noexcept { return Scalar(std::numeric_limits<RealOf<Scalar>>::infinity()); }
+
+  /// B_i = Ad_{M^-1} S_i, then with the two invariants of S_i under Ad
+  /// restored: |w|, and w . v (|v| when w = 0). Rounding in Ad moves them by
+  /// a few eps, and exp([B_i] th_i) multiplies that by th_i (an angle error
+  /// eps |th| from |w|, a slide along the axis eps |q| |th| from the pitch):
+  /// restored, forward_body agrees with forward at large angles as at small
+  /// ones (tests/cpp/test_kinematics.cpp, LargeAngles).
+  void compute_body_screws() noexcept {
+    using std::sqrt;
+    const Group M_inv = M_.inverse();
+    for (Eigen::Index i = 0; i < S_.cols(); ++i) {
+      const Vector6 b = M_inv.act(Twist<Scalar>(Vector6(S_.col(i)))).vector();
+      const Vector3 vs = S_.col(i).template head<3>(), ws = S_.col(i).template tail<3>();
+      Vector3 vb = b.template head<3>(), wb = b.template tail<3>();
+      const Scalar ws2 = ws.squaredNorm(), wb2 = wb.squaredNorm();
+      if (ws2 > Scalar(0) && wb2 > Scalar(0)) {
+        wb *= sqrt(ws2 / wb2);                                         // |w_b| = |w_s|
+        vb += ((ws.dot(vs) - wb.dot(vb)) / wb.squaredNorm()) * wb;  // w_b . v_b = w_s . v_s
+      } else if (!(ws2 > Scalar(0))) {
+        const Scalar vb2 = vb.squaredNorm();
+        if (vb2 > Scalar(0)) vb *= sqrt(vs.squaredNorm() / vb2);  // |v_b| = |v_s|
+      }
+      for (int k = 0; k < 3; ++k) B_(k, i) = vb(k), B_(k + 3, i) = wb(k);
+    }
+  }
+
   Screws S_;
   Screws B_;
   Group M_;
+  JointTypes types_{};
+  JointVector lower_, upper_, velocity_, effort_;
+  Group base_, tool_;
+  Vector3 gravity_;
 };
 
 }  // namespace chasles

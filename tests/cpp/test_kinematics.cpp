@@ -17,7 +17,9 @@
 // The reference inputs are the library's inputs (screws, M, theta) after
 // rounding to the scalar under test, cast to long double: the error measured
 // is the library's, not the rounding of the data.
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <string>
 #include <type_traits>
@@ -35,6 +37,7 @@ namespace {
 using namespace chasles_test;
 using chasles::Chain;
 using chasles::SE3;
+using chasles::ChainCheck;
 
 using V3L = Eigen::Matrix<LD, 3, 1>;
 using V6L = Eigen::Matrix<LD, 6, 1>;
@@ -327,6 +330,214 @@ TYPED_TEST(Kinematics, DynamicLengths) {
   const typename C::JointVector th = joint_vector<C>((VecL(2) << 0.3L, -1.1L).finished());
   EXPECT_EQ(c2.jacobian_space(th).cols(), 2);
   EXPECT_TRUE(c2.forward(th).is_approx(c2.forward_body(th), static_cast<S>(k_chain(2) * eps<S>())));
+}
+
+// ---- a chain composed of URDF-style joint transforms: large angles -------------
+
+/// A Panda-like arm as a URDF gives it: joint i's frame is the product of the
+/// joint origins (xyz, then rotations from rpy) up to it, its axis z in that
+/// frame; the tool 0.107 m along the last z. Composed in S, the axes are unit
+/// and the home rotation orthogonal only up to a few eps (defect ~7e-16 in
+/// double), as for every real URDF.
+template <typename S>
+Arm urdf_style_arm() {
+  struct Origin {
+    LD x, y, z, roll, pitch, yaw;
+  };
+  const LD h = chasles_ref::kPi / 2;
+  const Origin o[7] = {{0, 0, 0.333L, 0, 0, 0},          {0, 0, 0, -h, 0, 0},
+                       {0, -0.316L, 0, h, 0, 0},         {0.0825L, 0, 0, h, 0, 0},
+                       {-0.0825L, 0.384L, 0, -h, 0, 0},  {0, 0, 0, h, 0, 0},
+                       {0.088L, 0, 0, h, 0.3L, 0.7L}};
+  using M4 = Eigen::Matrix<S, 4, 4>;
+  using M3 = Eigen::Matrix<S, 3, 3>;
+  using V3 = Eigen::Matrix<S, 3, 1>;
+  auto rot = [](int axis, S a) {  // exact-in-S rotation matrices about x, y, z
+    M3 R = M3::Identity();
+    const S c = std::cos(a), s = std::sin(a);
+    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+    R(i, i) = c, R(i, j) = -s, R(j, i) = s, R(j, j) = c;
+    return R;
+  };
+  M4 T = M4::Identity();
+  Arm a{ScrewsL(6, 7), M4L::Identity()};
+  for (int i = 0; i < 7; ++i) {
+    M4 O = M4::Identity();
+    O.template topLeftCorner<3, 3>() = rot(2, S(o[i].yaw)) * rot(1, S(o[i].pitch)) * rot(0, S(o[i].roll));
+    O.template topRightCorner<3, 1>() << S(o[i].x), S(o[i].y), S(o[i].z);
+    T = M4(T * O);
+    const V3 w = T.template topLeftCorner<3, 3>().col(2), q = T.template topRightCorner<3, 1>();
+    a.S.col(i) << (-w.cross(q)).template cast<LD>(), w.template cast<LD>();
+  }
+  M4 F = M4::Identity();
+  F(2, 3) = S(0.107L);
+  a.M = M4(T * F).template cast<LD>();
+  return a;
+}
+
+/// The long double reference for large angles: exp of each S_i th_i formed
+/// in long double, with the cos and sin of long double (the angles are
+/// exact in S).
+TYPED_TEST(Kinematics, LargeAnglesBodyAgreesWithSpace) {
+  using S = TypeParam;
+  using C = Chain<S, 7>;
+  Arm arm = urdf_style_arm<S>();
+  const Eigen::Matrix<S, 4, 4> M = arm.M.template cast<S>();
+  // the home pose's defect, as composed: a few eps, not zero
+  EXPECT_GT(SE3<S>::transform_defect(M), S(0));
+  const C chain(typename C::Screws(arm.S.template cast<S>()), SE3<S>::from_matrix_unchecked(M));
+  // projected on construction: orthogonal to rounding
+  EXPECT_LE(SE3<S>::transform_defect(chain.home().matrix()), 2 * eps<S>());
+  std::mt19937 rng(20261124u);
+  for (const LD range : {3.3L, 50.0L, 1000.0L}) {
+    std::uniform_real_distribution<double> u(-double(range), double(range));
+    LD worst_space = 0, worst_body = 0;
+    for (int k = 0; k < 400; ++k) {
+      typename C::JointVector th;
+      VecL t(7);
+      for (int i = 0; i < 7; ++i) th(i) = S(u(rng)), t(i) = LD(th(i));
+      const M4L ref = fk_ref(arm.S, chain.home().matrix().template cast<LD>(), t);
+      worst_space = std::max(worst_space, (chain.forward(th).matrix().template cast<LD>() - ref).cwiseAbs().maxCoeff());
+      worst_body = std::max(worst_body, (chain.forward_body(th).matrix().template cast<LD>() - ref).cwiseAbs().maxCoeff());
+    }
+    // The floor of both forms is the rounding of S_i th_i, an angle error
+    // of eps |th| per joint, over a few eps of composition at small angles.
+    // Measured here, in units of eps (1 + range) for ranges 3.3, 50, 1000:
+    // double space 1.1, 0.7, 0.6, body 1.6, 1.2, 0.9; float space 1.6,
+    // 0.6, 0.5, body 2.0, 1.3, 1.1. Before the body screws' invariants were
+    // restored and the home projected, the body form was 3.8 to 5.2 eps
+    // (1 + range) on a 6-joint arm of this kind, 4.6 to 5.2 times the space
+    // form at ranges 50 and 1000.
+    const LD bound = LD(eps<S>()) * (16 + 2 * range);
+    EXPECT_LE(worst_space, bound) << "space, |theta| <= " << double(range);
+    EXPECT_LE(worst_body, bound) << "body, |theta| <= " << double(range);
+    EXPECT_LE(worst_body, 3 * std::max(worst_space, LD(8 * eps<S>()))) << "body against space, |theta| <= " << double(range);
+  }
+}
+
+// ---- the robot model: types, limits, base, tool, gravity, validation ----------
+
+TYPED_TEST(Kinematics, HomeProjectionKeepsExactRotations) {
+  using S = TypeParam;
+  Arm arm = ur5();
+  const Chain<S, 6> chain = make_chain<Chain<S, 6>>(arm);
+  EXPECT_TRUE(chain.home().matrix() == arm.M.template cast<S>()) << "an exact rotation is kept bit for bit";
+  // A home rotation off by 1e-9 (inside from_matrix's tolerance): projected.
+  Eigen::Matrix<S, 4, 4> M = arm.M.template cast<S>();
+  M(0, 0) *= S(1) + S(std::sqrt(double(eps<S>())) / 4);
+  const Chain<S, 6> off(typename Chain<S, 6>::Screws(arm.S.template cast<S>()), SE3<S>::from_matrix_unchecked(M));
+  EXPECT_GT(SE3<S>::transform_defect(M), 10 * eps<S>());
+  EXPECT_LE(SE3<S>::transform_defect(off.home().matrix()), 2 * eps<S>());
+  // Another chain's home taken as it is: the same chain, bit for bit.
+  const Chain<S, 6> again(off.space_screws(), off.home(), typename Chain<S, 6>::HomeAsGiven());
+  EXPECT_TRUE(again.home().matrix() == off.home().matrix());
+  EXPECT_TRUE(again.body_screws() == off.body_screws());
+}
+
+TYPED_TEST(Kinematics, ModelFoldsBaseAndTool) {
+  using S = TypeParam;
+  using C = Chain<S, Eigen::Dynamic, 8>;
+  using V3 = typename C::Vector3;
+  Arm arm = ur5_on_rail();
+  const C plain = make_chain<C>(arm);
+  EXPECT_EQ(plain.joint_type(0), chasles::JointType::prismatic);
+  for (int i = 1; i < 7; ++i) EXPECT_EQ(plain.joint_type(i), chasles::JointType::revolute);
+  EXPECT_TRUE(plain.lower().array().isInf().all() && plain.upper().array().isInf().all());
+  EXPECT_TRUE((plain.lower().array() < 0).all() && (plain.upper().array() > 0).all());
+  EXPECT_TRUE(plain.gravity() == V3(0, 0, S(-9.81)));
+  EXPECT_TRUE(static_cast<bool>(plain.validate()));
+
+  typename C::JointTypes types{};
+  types.fill(chasles::JointType::revolute);
+  types[0] = chasles::JointType::prismatic;
+  types[6] = chasles::JointType::continuous;
+  typename C::JointVector lo(7), hi(7), vel(7), eff(7);
+  const S inf = std::numeric_limits<S>::infinity();
+  for (int i = 0; i < 7; ++i) lo(i) = S(-1 - i), hi(i) = S(1 + i), vel(i) = S(2), eff(i) = S(100 + i);
+  lo(6) = -inf, hi(6) = inf;
+  const SE3<S> base = SE3<S>::exp(Eigen::Matrix<S, 6, 1>(S(0.5), S(-0.2), S(1), S(0.3), S(-0.1), S(0.7)));
+  const SE3<S> tool = SE3<S>::exp(Eigen::Matrix<S, 6, 1>(S(0), S(0), S(0.1), S(0), S(0.4), S(0)));
+  const V3 gravity(S(0.1), S(0), S(-9.8));
+  const C model(plain.space_screws(), plain.home(), types, lo, hi, vel, eff, base, tool, gravity);
+  EXPECT_TRUE(static_cast<bool>(model.validate()));
+  EXPECT_EQ(model.joint_type(6), chasles::JointType::continuous);
+  EXPECT_TRUE(model.lower() == lo && model.upper() == hi && model.velocity_limits() == vel && model.effort_limits() == eff);
+  EXPECT_TRUE(model.gravity() == gravity);
+  EXPECT_TRUE(model.base().is_approx(base, 4 * eps<S>()));
+  EXPECT_TRUE(model.tool().is_approx(tool, 4 * eps<S>()));
+  // forward(theta) = base forward0(theta) tool, Jacobians likewise
+  for (const VecL& t : thetas<S>(7)) {
+    const typename C::JointVector th = joint_vector<C>(t);
+    const SE3<S> expected = base * plain.forward(th) * tool;
+    const LD k = k_chain(7) + 3 * kExp;
+    EXPECT_TRUE(near<S>(model.forward(th).matrix(), expected.matrix().template cast<LD>(), k));
+    EXPECT_TRUE(near<S>(model.forward_body(th).matrix(), expected.matrix().template cast<LD>(), k));
+    const Eigen::Matrix<S, 6, 6> Ad = base.adjoint();
+    EXPECT_TRUE(near<S>(model.jacobian_space(th), typename C::Jacobian(Ad * plain.jacobian_space(th)), k));
+    const Eigen::Matrix<S, 6, 6> Ad_tool_inv = tool.inverse().adjoint();
+    EXPECT_TRUE(near<S>(model.jacobian_body(th), typename C::Jacobian(Ad_tool_inv * plain.jacobian_body(th)), k));
+  }
+}
+
+TYPED_TEST(Kinematics, ValidateBothSidesOfTheTolerance) {
+  using S = TypeParam;
+  using C = Chain<S, 2>;
+  using chasles::ChainStatus;
+  using chasles::JointType;
+  const S tol = S(chasles::ThresholdsOf<S>::screw_tolerance);
+  const S inf = std::numeric_limits<S>::infinity();
+  auto check = [&](const typename C::Vector6& s0, JointType type, S lo = -1, S hi = 1, S vel = 1, S eff = 1,
+                   typename C::Vector3 gravity = C::default_gravity()) {
+    typename C::Screws screws;
+    screws.col(0) = s0;
+    screws.col(1) = C::revolute_screw(typename C::Vector3(1, 0, 0), typename C::Vector3(0, 0, 1));
+    typename C::JointTypes types{type, JointType::revolute};
+    const typename C::JointVector lower(lo, -1), upper(hi, 1), v(vel, 1), e(eff, 1);
+    return C(screws, SE3<S>(), types, lower, upper, v, e, SE3<S>(), SE3<S>(), gravity).validate();
+  };
+  using V6 = typename C::Vector6;
+  const ChainCheck ok = check(V6(0, 0, 0, 0, 0, 1), JointType::revolute);
+  EXPECT_EQ(ok.status, ChainStatus::ok);
+  EXPECT_EQ(ok.joint, -1);
+  // |w| = 1 +- 0.5 tol passes, 1 +- 2 tol fails
+  for (const S f : {S(0.5), S(-0.5)}) EXPECT_EQ(check(V6(0, 0, 0, 0, 0, 1 + f * tol), JointType::revolute).status, ChainStatus::ok);
+  for (const S f : {S(2), S(-2)}) {
+    const ChainCheck c = check(V6(0, 0, 0, 0, 0, 1 + f * tol), JointType::continuous, -inf, inf);
+    EXPECT_EQ(c.status, ChainStatus::revolute_axis_not_unit);
+    EXPECT_EQ(c.joint, 0);
+  }
+  // pitch: w . v = 0.5 tol (1 + |v|) passes, 2 tol (1 + |v|) fails
+  EXPECT_EQ(check(V6(1, 0, S(0.5) * tol * S(1 + 1), 0, 0, 1), JointType::revolute).status, ChainStatus::ok);
+  EXPECT_EQ(check(V6(1, 0, 4 * tol, 0, 0, 1), JointType::revolute).status, ChainStatus::revolute_pitch_not_zero);
+  // prismatic: |v| = 1 and w = 0
+  EXPECT_EQ(check(V6(0, S(0.6), S(0.8), 0, 0, 0), JointType::prismatic).status, ChainStatus::ok);
+  EXPECT_EQ(check(V6(0, S(0.6), S(0.8), 0, S(0.5) * tol, 0), JointType::prismatic).status, ChainStatus::ok);
+  EXPECT_EQ(check(V6(0, S(0.6), S(0.8), 0, 2 * tol, 0), JointType::prismatic).status, ChainStatus::prismatic_rotates);
+  EXPECT_EQ(check(V6(0, 0, 1 + 2 * tol, 0, 0, 0), JointType::prismatic).status, ChainStatus::prismatic_axis_not_unit);
+  EXPECT_EQ(check(V6(0, 0, 0, 0, 0, 1), JointType::prismatic).status, ChainStatus::prismatic_rotates);
+  EXPECT_EQ(check(V6(0, 0, 1, 0, 0, 0), JointType::revolute).status, ChainStatus::revolute_axis_not_unit);
+  // limits
+  const V6 z(0, 0, 0, 0, 0, 1);
+  EXPECT_EQ(check(z, JointType::revolute, 1, 1).status, ChainStatus::ok);
+  EXPECT_EQ(check(z, JointType::revolute, 1, S(0.5)).status, ChainStatus::position_limits_invalid);
+  EXPECT_EQ(check(z, JointType::revolute, std::numeric_limits<S>::quiet_NaN(), 1).status,
+            ChainStatus::position_limits_invalid);
+  EXPECT_EQ(check(z, JointType::continuous, -inf, inf).status, ChainStatus::ok);
+  EXPECT_EQ(check(z, JointType::continuous, -1, 1).status, ChainStatus::position_limits_invalid);
+  EXPECT_EQ(check(z, JointType::revolute, -1, 1, 0, 0).status, ChainStatus::ok);
+  EXPECT_EQ(check(z, JointType::revolute, -1, 1, inf, inf).status, ChainStatus::ok);
+  EXPECT_EQ(check(z, JointType::revolute, -1, 1, -1, 1).status, ChainStatus::velocity_or_effort_limit_invalid);
+  EXPECT_EQ(check(z, JointType::revolute, -1, 1, 1, -1).status, ChainStatus::velocity_or_effort_limit_invalid);
+  const ChainCheck g = check(z, JointType::revolute, -1, 1, 1, 1, typename C::Vector3(0, 0, inf));
+  EXPECT_EQ(g.status, ChainStatus::gravity_not_finite);
+  EXPECT_EQ(g.joint, -1);
+  // the second joint is checked too, and named
+  typename C::Screws screws;
+  screws.col(0) << 0, 0, 0, 0, 0, 1;
+  screws.col(1) << 0, 0, 0, 0, 0, 2;
+  const ChainCheck second = C(screws, SE3<S>()).validate();
+  EXPECT_EQ(second.status, ChainStatus::revolute_axis_not_unit);
+  EXPECT_EQ(second.joint, 1);
 }
 
 }  // namespace

@@ -255,7 +255,25 @@ class ScrewRows(Arg):
             return Refused(ValueError, (self.label, "(n, 6)", f"got {shape_text(a.shape)}"))
         if a.shape[0] > 32:
             return Refused(ValueError, (self.label, "at most 32 joints"))
-        return finite_or_refused(a, self.label)
+        judged = finite_or_refused(a, self.label)
+        if isinstance(judged, Refused):
+            return judged
+        # the joint types inferred (prismatic where w = 0, revolute elsewhere),
+        # each screw checked against its type (Chain::validate, tolerance
+        # sqrt(eps) = 1.4901161193847656e-08)
+        tol = 1.4901161193847656e-08
+        for v, w in zip(judged.value[:, :3], judged.value[:, 3:]):
+            # as the C++ computes them: norms as sqrt of the sum of squares
+            # (a subnormal w squares to 0: a prismatic joint; a huge one to inf)
+            with np.errstate(over="ignore", invalid="ignore"):
+                ww, vv, wv = float(w @ w), float(v @ v), float(w @ v)
+            if ww > 0:
+                ok = abs(math.sqrt(ww) - 1) <= tol and abs(wv) <= tol * (1 + math.sqrt(vv))
+            else:
+                ok = abs(math.sqrt(vv) - 1) <= tol
+            if not ok:
+                return Refused(ValueError, (self.label, "joint"))
+        return judged
 
 
 @dataclass
@@ -729,6 +747,11 @@ G0 = chasles.SE3(R0, [1.0, 2.0, 3.0])
 XI0 = chasles.Twist(v=[1.0, 0.0, 0.5], w=[0.0, 0.2, 1.0])
 CHAIN_SCREWS = np.array([[0.0, 0.0, 0.0, 0.0, 0.0, 1.0], [0.0, -1.0, 0.0, 0.0, 0.0, 1.0]])
 CHAIN_HOME = chasles.SE3(translation=[2.0, 0.0, 0.0])
+URDF_TEXT = (
+    '<robot name="r"><link name="a"/><link name="b"/><joint name="j" type="revolute">'
+    '<parent link="a"/><child link="b"/><axis xyz="0 0 1"/>'
+    '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint></robot>'
+)
 
 GOOD = {  # a fresh valid object of each class
     chasles.SO3: lambda: chasles.SO3.exp([0.1, 0.2, 0.3]),
@@ -1159,8 +1182,14 @@ def _build_spec():
     )
     for m in ("forward", "forward_body", "jacobian_space", "jacobian_body"):
         spec[f"Chain.{m}"] = _method(Chain, m, JointArray(f"Chain.{m}(theta)", 2))
-    for p in ("screws", "body_screws", "home", "n_joints"):
+    for p in ("screws", "body_screws", "home", "n_joints", "joint_types", "names", "lower", "upper",
+              "velocity_limits", "effort_limits", "base", "tool", "gravity", "link_inertias"):
         spec[f"Chain.{p}"] = _prop(Chain, p)
+    spec["Chain.from_urdf"] = Entry(
+        [[Anything("source", URDF_TEXT), Anything("tip_link", "b"), Anything("base_link", None)]],
+        call=Chain.from_urdf,
+        extra_errors=(OSError,),
+    )
     spec.update(_protocols(Chain, [6 * n + 12 for n in range(1, 33)]))
 
     # B-splines (start time 0, spacing 0.5, five control elements: times in [0, 1])

@@ -16,6 +16,7 @@ EXPECTED = {
     "arm_kinematics.py": "10000 configurations: the tool stays between 0.100 and 0.700 m",
     "poses_and_frames.py": "as a twist xi = (v, w):",
     "twist_from_trajectory.py": "worst error over the trajectory:",
+    "urdf_arm.py": "1000 configurations: forward kinematics within",
     "wrench_transformation.py": "line of action through",
 }
 

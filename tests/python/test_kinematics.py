@@ -170,7 +170,9 @@ def test_screws_and_properties():
     for s, b in zip(UR5_SCREWS, arm.body_screws):
         np.testing.assert_allclose(b, vee6(M_inv @ hat6(s) @ UR5_HOME), rtol=0, atol=4 * EPS)
     assert repr(arm) == "Chain(n_joints=6)"
-    assert Chain(np.zeros((32, 6)), np.eye(4)).n_joints == 32
+    # 32 joints (a zero screw, accepted before the screws were checked
+    # against their joint types, is refused now: test_model_validation)
+    assert Chain(np.tile(UR5_SCREWS, (6, 1))[:32], np.eye(4)).n_joints == 32
 
 
 def test_methods_are_array_functions():
@@ -257,3 +259,100 @@ def test_docstring_examples_run(name, doc):
     out = []
     runner.run(test, out=out.append)
     assert runner.failures == 0, "".join(out)
+
+
+# ---- the robot model ------------------------------------------------------------
+
+
+def test_model_keywords_properties_and_folding():
+    arm = Chain(UR5_SCREWS, UR5_HOME)
+    assert arm.joint_types == ("revolute",) * 6 and arm.names is None and arm.link_inertias is None
+    assert np.isinf(arm.lower).all() and (arm.lower < 0).all() and (arm.upper > 0).all()
+    np.testing.assert_array_equal(arm.gravity, [0, 0, -9.81])
+    base = SE3.exp([0.5, -0.2, 1.0, 0.3, -0.1, 0.7])
+    tool = SE3(translation=[0, 0, 0.1])
+    names = [f"j{i}" for i in range(7)]
+    lo, hi = -np.arange(1.0, 8.0), np.arange(1.0, 8.0)
+    lo[6], hi[6] = -np.inf, np.inf
+    types = ["prismatic"] + ["revolute"] * 5 + ["continuous"]
+    model = Chain(RAIL_SCREWS, UR5_HOME, joint_types=types, names=names, lower=lo, upper=hi,
+                  velocity_limits=np.full(7, 2.0), effort_limits=np.arange(7.0), base=base, tool=tool,
+                  gravity=[0, 0.1, -9.8], link_inertias=np.ones((7, 10)))
+    assert model.joint_types == tuple(types) and model.names == tuple(names)
+    np.testing.assert_array_equal(model.lower, lo)
+    np.testing.assert_array_equal(model.upper, hi)
+    np.testing.assert_array_equal(model.velocity_limits, np.full(7, 2.0))
+    np.testing.assert_array_equal(model.effort_limits, np.arange(7.0))
+    np.testing.assert_array_equal(model.gravity, [0, 0.1, -9.8])
+    np.testing.assert_array_equal(model.link_inertias, np.ones((7, 10)))
+    assert model.base.is_approx(base, 1e-15) and model.tool.is_approx(tool, 1e-15)
+    assert repr(model) == "Chain(n_joints=7, names=('j0', 'j1', 'j2', 'j3', 'j4', 'j5', 'j6'))"
+    plain = Chain(RAIL_SCREWS, UR5_HOME)
+    rng = np.random.default_rng(8)
+    for q in rng.uniform(-3, 3, (10, 7)):
+        expected = base.as_matrix() @ plain.forward(q) @ tool.as_matrix()
+        np.testing.assert_allclose(model.forward(q), expected, rtol=0, atol=1e-14)
+        np.testing.assert_allclose(model.forward_body(q), expected, rtol=0, atol=1e-14)
+        np.testing.assert_allclose(model.jacobian_space(q), chasles.se3_adjoint(base.as_matrix())
+                                   @ plain.jacobian_space(q), rtol=0, atol=1e-14)
+    import copy
+    import pickle
+
+    for other in (pickle.loads(pickle.dumps(model)), copy.deepcopy(model)):
+        assert other == model and other.names == model.names
+        np.testing.assert_array_equal(other.link_inertias, model.link_inertias)
+    assert pickle.loads(pickle.dumps(arm)) == arm
+    assert model != plain
+
+
+def test_model_validation():
+    with pytest.raises(ValueError, match=r"joint 0 is prismatic but its linear part v is not a unit"):
+        Chain(np.zeros((1, 6)), np.eye(4))
+    s = UR5_SCREWS.copy()
+    s[2, 4] = 1 + 3e-8
+    with pytest.raises(ValueError, match=r"joint 2 is revolute but its angular part w is not a unit vector"):
+        Chain(s, UR5_HOME)
+    s[2, 4] = 1 + 1e-8  # within the tolerance, 1.5e-8
+    Chain(s, UR5_HOME)
+    with pytest.raises(ValueError, match=r"joint 0 is revolute but its screw has a pitch"):
+        Chain([[0, 0, 0.5, 0, 0, 1]], np.eye(4))
+    with pytest.raises(ValueError, match=r"joint 0 is prismatic but its angular part w is not zero"):
+        Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), joint_types=["prismatic"])
+    with pytest.raises(ValueError, match=r"Chain\(lower, upper\): joint 0"):
+        Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), lower=[1], upper=[0])
+    with pytest.raises(ValueError, match=r"Chain\(lower, upper\): joint 0.*continuous"):
+        Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), joint_types=["continuous"], lower=[-1])
+    with pytest.raises(ValueError, match=r"Chain\(velocity_limits, effort_limits\): joint 0"):
+        Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), velocity_limits=[-1])
+    with pytest.raises(ValueError, match=r"Chain\(joint_types\): expected 'revolute'"):
+        Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), joint_types=["hinge"])
+    with pytest.raises(ValueError, match=r"Chain\(names\): expected 1 names"):
+        Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), names=["a", "b"])
+    with pytest.raises(TypeError, match=r"Chain\(names\): expected strings"):
+        Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), names=[1])
+    with pytest.raises(ValueError, match=r"Chain\(gravity\): expected finite"):
+        Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), gravity=[0, 0, np.nan])
+    with pytest.raises(ValueError, match=r"Chain\(link_inertias\): expected shape \(1, 10\)"):
+        Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), link_inertias=np.ones((1, 9)))
+    with pytest.raises(ValueError, match=r"masses >= 0"):
+        Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), link_inertias=-np.ones((1, 10)))
+    with pytest.raises(ValueError, match=r"Chain\(base\): not a rigid motion"):
+        Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), base=2 * np.eye(4))
+
+
+def test_home_is_projected_and_body_agrees_with_space_at_large_angles():
+    # a home pose off a rotation by 1e-9 (accepted, inside sqrt(eps)) is projected
+    M = UR5_HOME.copy()
+    M[0, 0] *= 1 + 1e-9
+    arm = Chain(UR5_SCREWS, M)
+    R = arm.home.rotation.as_matrix()
+    assert np.abs(R.T @ R - np.eye(3)).max() <= 2 * EPS
+    # an exact one is kept bit for bit
+    np.testing.assert_array_equal(Chain(UR5_SCREWS, UR5_HOME).home.as_matrix(), UR5_HOME)
+    # body against space, |theta| up to 1000, on the UR5 with a tilted base (axes not exact)
+    tilted = Chain(RAIL_SCREWS, UR5_HOME, base=SE3.exp([0, 0, 0, 0.3, -0.2, 0.1]))
+    rng = np.random.default_rng(34)
+    for scale in (3.3, 50.0, 1000.0):
+        q = rng.uniform(-scale, scale, (300, 7))
+        diff = np.abs(tilted.forward_body(q) - tilted.forward(q)).max()
+        assert diff <= 4 * EPS * (16 + scale), (scale, diff)

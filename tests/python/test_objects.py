@@ -377,7 +377,8 @@ STORED = {
     Twist: {"vector", "linear", "angular"},
     Wrench: {"vector", "force", "torque"},
     Screw: {"point", "direction", "pitch", "magnitude"},
-    Chain: {"screws", "body_screws", "home", "n_joints"},
+    Chain: {"screws", "body_screws", "home", "n_joints", "joint_types", "names", "lower", "upper",
+            "velocity_limits", "effort_limits", "base", "tool", "gravity", "link_inertias"},
 }
 COMPUTED = {
     SO3: {"log", "angle", "inverse", "act", "adjoint", "as_matrix", "as_quat", "as_euler", "as_rpy",

@@ -193,7 +193,12 @@ def test_help_of_the_package_shows_every_signature():
         (Twist.__init__, "(self, v=(0.0, 0.0, 0.0), w=(0.0, 0.0, 0.0))"),
         (SE3.rotation.fget, "(self, /)"),
         (SO3.__eq__, "(self, other)"),
-        (Chain.__init__, "(self, screws, home)"),
+        (
+            Chain.__init__,
+            "(self, screws, home, *, joint_types=None, names=None, lower=None, upper=None, "
+            "velocity_limits=None, effort_limits=None, base=None, tool=None, gravity=None, "
+            "link_inertias=None)",
+        ),
         (chasles.rplus, "(g, xi)"),
         (chasles.interpolate, "(a, b, t)"),
     ],

@@ -173,14 +173,14 @@ S exercise_all() noexcept {
   // Inverse kinematics (inverse_kinematics.hpp): with and without limits.
   const SE3<S> target = c6.forward(typename C6::JointVector(th6 * S(1.1)));
   const auto ik6 = inverse_kinematics(c6, target, th6);
-  typename CD::JointVector lo(7), hi(7);
-  lo.setConstant(S(-2));
-  hi.setConstant(S(2));
+  typename CD::JointVector ik_lo(7), ik_hi(7);
+  ik_lo.setConstant(S(-2));
+  ik_hi.setConstant(S(2));
   IKOptions<S> ik_options;
   ik_options.max_iterations = 5;
-  const auto ikd = inverse_kinematics(cd, cd.forward(typename CD::JointVector(thd * S(0.9))), thd, lo, hi, ik_options);
+  const auto ikd = inverse_kinematics(cd, cd.forward(typename CD::JointVector(thd * S(0.9))), thd, ik_lo, ik_hi, ik_options);
   std::minstd_rand ik_gen(3);
-  const auto ikr = inverse_kinematics(cd, target, thd, lo, hi, ik_options, ik_gen, 2);
+  const auto ikr = inverse_kinematics(cd, target, thd, ik_lo, ik_hi, ik_options, ik_gen, 2);
   sum += ik6.q.sum() + ik6.error.sum() + S(ik6.iterations) + S(ikd.converged ? 1 : 0) + ikd.q.sum() + ikr.q.sum();
   sum += pose_error(c6, target, th6).sum() + pose_error_jacobian(cd, target, thd).sum();
 
@@ -203,6 +203,8 @@ S exercise_all() noexcept {
     sum += a.element.matrix().sum() + a.velocity.sum() + a.acceleration.sum() + S(spr.size() + spr.segment(S(0.6)));
     sum += spr.element(S(0.3)).matrix().sum() + spg.element(S(2)).translation().sum();
     sum += b.element.translation().sum() + b.velocity.sum() + b.acceleration.sum() + spg.sample(1, S(0.75)).velocity.sum();
+  }
+
   // Cubic B-splines (bspline.hpp): the segment evaluators, the view, and a
   // time inside, before the start, after the end.
   {
@@ -223,6 +225,22 @@ S exercise_all() noexcept {
     sum += rs.start_time() + rs.spacing() + rs.end_time() + S(RealOf<S>(rs.size() + rs.segments()));
     sum += ss.control()->translation().sum();
   }
+
+  // The robot model: types, limits, base, tool, gravity, validate().
+  typename CD::JointTypes types{};
+  types.fill(chasles::JointType::revolute);
+  types[2] = chasles::JointType::prismatic;
+  types[5] = chasles::JointType::continuous;
+  typename CD::JointVector lo = CD::JointVector::Constant(7, S(-2)), hi = CD::JointVector::Constant(7, S(2));
+  const CD model(SD, h, types, lo, hi, CD::JointVector::Constant(7, S(3)), CD::JointVector::Constant(7, S(50)), g, h,
+                 CD::default_gravity());
+  const chasles::ChainCheck check = model.validate();
+  sum += S(RealOf<S>(int(check.status) + int(check.joint))) + S(RealOf<S>(int(model.joint_type(2))));
+  sum += model.lower().sum() + model.upper().sum() + model.velocity_limits().sum() + model.effort_limits().sum();
+  sum += model.base().translation().sum() + model.tool().translation().sum() + model.gravity().sum();
+  sum += model.forward(thd).translation().sum() + model.jacobian_body(thd).sum();
+  const CD again(model.space_screws(), model.home(), typename CD::HomeAsGiven());
+  sum += again.body_screws().sum();
   return sum;
 }
 

@@ -1,0 +1,278 @@
+"""Chain.from_urdf on the real arms of the example-robot-data package: forward
+kinematics against an independent composition of each URDF's joint
+transforms (written here with numpy: origin, then the rotation about the axis
+by Rodrigues' formula or the translation along it), joint counts, names and
+limits as in the file, the inertias of the links; and the errors for the
+descriptions a serial chain cannot be made of (small URDF strings here)."""
+
+import importlib.metadata
+import math
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pytest
+
+from chasles import Chain
+
+# (file name under robots/, tip link, base link or None)
+ARMS = {
+    "ur3": ("ur_description/urdf/ur3_robot.urdf", "tool0", None),
+    "ur5": ("ur_description/urdf/ur5_robot.urdf", "tool0", None),
+    "ur10": ("ur_description/urdf/ur10_robot.urdf", "tool0", None),
+    "panda": ("panda_description/urdf/panda.urdf", "panda_hand", None),
+    "xarm7": ("xarm_description/urdf/xarm7.urdf", "link7", None),
+    "z1": ("z1_description/urdf/z1.urdf", "link06", None),
+    "kinova": ("kinova_description/robots/kinova.urdf", "j2s6s200_end_effector", None),
+    "talos_left_arm": ("talos_data/robots/talos_left_arm.urdf", "gripper_left_base_link", None),
+}
+
+
+def robots_dir():
+    try:
+        files = importlib.metadata.files("example-robot-data") or []
+    except importlib.metadata.PackageNotFoundError:
+        return None
+    for f in files:
+        if str(f).endswith("ur_description/urdf/ur5_robot.urdf"):
+            return f.locate().parents[2]
+    return None
+
+
+ROBOTS = robots_dir()
+needs_data = pytest.mark.skipif(ROBOTS is None, reason="example-robot-data is not installed")
+
+
+# ---- the independent reference: numpy over the parsed XML -------------------
+
+
+def rpy_matrix(r, p, y):
+    cr, sr, cp, sp, cy, sy = math.cos(r), math.sin(r), math.cos(p), math.sin(p), math.cos(y), math.sin(y)
+    Rx = np.array([[1, 0, 0], [0, cr, -sr], [0, sr, cr]])
+    Ry = np.array([[cp, 0, sp], [0, 1, 0], [-sp, 0, cp]])
+    Rz = np.array([[cy, -sy, 0], [sy, cy, 0], [0, 0, 1]])
+    return Rz @ Ry @ Rx
+
+
+def origin(joint):
+    T = np.eye(4)
+    o = joint.find("origin")
+    if o is not None:
+        T[:3, 3] = [float(x) for x in o.get("xyz", "0 0 0").split()]
+        T[:3, :3] = rpy_matrix(*[float(x) for x in o.get("rpy", "0 0 0").split()])
+    return T
+
+
+def axis_motion(kind, axis, q):
+    """exp of the joint in its own frame: Rodrigues' rotation about the unit
+    axis by q, or the translation q axis."""
+    T = np.eye(4)
+    if kind == "prismatic":
+        T[:3, 3] = q * axis
+    else:
+        K = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
+        T[:3, :3] = np.eye(3) + math.sin(q) * K + (1 - math.cos(q)) * K @ K
+    return T
+
+
+def joint_path(root, tip, base):
+    joints = {j.find("child").get("link"): j for j in root.findall("joint")}
+    path, link = [], tip
+    while link in joints and link != base:
+        path.append(joints[link])
+        link = joints[link].find("parent").get("link")
+    return path[::-1]
+
+
+def reference_fk(path, q):
+    T, k = np.eye(4), 0
+    for j in path:
+        T = T @ origin(j)
+        if j.get("type") != "fixed":
+            a = j.find("axis")
+            axis = np.array([float(x) for x in (a.get("xyz") if a is not None else "1 0 0").split()])
+            T = T @ axis_motion(j.get("type"), axis / np.linalg.norm(axis), q[k])
+            k += 1
+    return T
+
+
+@pytest.fixture(scope="module")
+def arms():
+    """Each arm parsed once per module: (chain, moving joints of the XML, path)."""
+    out = {}
+    for key, (rel, tip, base) in ARMS.items():
+        path = ROBOTS / rel
+        if not path.exists():
+            continue
+        root = ET.parse(path).getroot()
+        jp = joint_path(root, tip, base)
+        out[key] = (Chain.from_urdf(path, tip, base), [j for j in jp if j.get("type") != "fixed"], jp)
+    return out
+
+
+@needs_data
+@pytest.mark.parametrize("key", list(ARMS))
+def test_forward_matches_composition_of_urdf_transforms(arms, key):
+    if key not in arms:
+        pytest.skip(f"{ARMS[key][0]} is not in this version of example-robot-data")
+    chain, moving, path = arms[key]
+    rng = np.random.default_rng(13)
+    assert chain.n_joints == len(moving)
+    for _ in range(20):
+        q = rng.uniform(-np.pi, np.pi, chain.n_joints)
+        expected = reference_fk(path, q)
+        np.testing.assert_allclose(chain.forward(q), expected, rtol=0, atol=1e-12)
+        np.testing.assert_allclose(chain.forward_body(q), expected, rtol=0, atol=1e-12)
+
+
+@needs_data
+@pytest.mark.parametrize("key", list(ARMS))
+def test_names_types_and_limits_as_in_the_file(arms, key):
+    if key not in arms:
+        pytest.skip(f"{ARMS[key][0]} is not in this version of example-robot-data")
+    chain, moving, _ = arms[key]
+    assert chain.names == tuple(j.get("name") for j in moving)
+    assert chain.joint_types == tuple(j.get("type") for j in moving)
+    for i, j in enumerate(moving):
+        limit = j.find("limit")
+        if j.get("type") == "continuous":
+            assert chain.lower[i] == -np.inf and chain.upper[i] == np.inf
+        else:
+            assert chain.lower[i] == float(limit.get("lower", 0))
+            assert chain.upper[i] == float(limit.get("upper", 0))
+        if limit is not None:
+            assert chain.velocity_limits[i] == float(limit.get("velocity", "inf"))
+            assert chain.effort_limits[i] == float(limit.get("effort", "inf"))
+
+
+@needs_data
+def test_ur5_values_and_link_inertias(arms):
+    chain = arms["ur5"][0]
+    assert chain.n_joints == 6
+    assert chain.names[0] == "shoulder_pan_joint"
+    np.testing.assert_array_equal(chain.upper[:2], [6.28318530718, 6.28318530718])
+    np.testing.assert_array_equal(chain.effort_limits, [150, 150, 150, 28, 28, 28])
+    inertias = chain.link_inertias
+    assert inertias.shape == (6, 10)
+    # shoulder_link: mass 3.7 at its frame origin, 0.089159 above the base
+    np.testing.assert_allclose(inertias[0, :4], [3.7, 0, 0, 0.089159], rtol=0, atol=1e-15)
+    np.testing.assert_allclose(inertias[0, 4:], [0.010267495893, 0, 0, 0.010267495893, 0, 0.00666], atol=1e-15)
+    # upper_arm_link: 8.393 kg, com 0.28 along its z, which is the base x at home
+    # (rpy 0 pi/2 0), with ixx and izz exchanged
+    np.testing.assert_allclose(inertias[1, :4], [8.393, 0.28, 0.13585, 0.089159], rtol=0, atol=1e-11)
+    np.testing.assert_allclose(inertias[1, [4, 7, 9]], [0.0151074, 0.22689067591, 0.22689067591], atol=1e-11)
+    # the wrist_3 link and tool0 (fixed, no inertial): one body
+    assert inertias[5, 0] == pytest.approx(0.1879)
+
+
+@needs_data
+def test_panda_folds_the_fixed_hand_and_keeps_the_tool(arms):
+    chain, moving, path = arms["panda"]
+    assert chain.n_joints == 7 and len(path) > 7  # joint8 and the hand joint are fixed
+    # the tool is the hand: 0.107 + 0.1034 m beyond joint 7's origin along its z at home
+    np.testing.assert_allclose(chain.forward(np.zeros(7)), reference_fk(path, np.zeros(7)), atol=1e-15)
+
+
+@needs_data
+def test_body_against_space_at_large_angles(arms):
+    rng = np.random.default_rng(21)
+    eps = np.finfo(float).eps
+    for key, (chain, _, _) in arms.items():
+        for scale in (3.3, 50.0, 1000.0):
+            q = rng.uniform(-scale, scale, (200, chain.n_joints))
+            diff = np.abs(chain.forward_body(q) - chain.forward(q)).max()
+            # both within 2 eps (1 + |theta|) of the exact pose (the C++ suite's
+            # LargeAnglesBodyAgreesWithSpace): at most twice that apart
+            assert diff <= 4 * eps * (16 + scale), (key, scale, diff)
+
+
+def test_modern_robotics_table_is_converted_and_the_raw_one_refused():
+    mr = pytest.importorskip("modern_robotics")
+    W1, W2, L1, L2, H1, H2 = 0.109, 0.082, 0.425, 0.392, 0.089, 0.095
+    # Modern Robotics, example 4.5: Slist 6 x n, columns (w, v)
+    Slist = np.array(
+        [
+            [0, 0, 1, 0, 0, 0],
+            [0, 1, 0, -H1, 0, 0],
+            [0, 1, 0, -H1, 0, L1],
+            [0, 1, 0, -H1, 0, L1 + L2],
+            [0, 0, -1, -W1, L1 + L2, 0],
+            [0, 1, 0, H2 - H1, 0, L1 + L2],
+        ]
+    ).T
+    M = np.array([[-1, 0, 0, L1 + L2], [0, 0, 1, W1 + W2], [0, 1, 0, H1 - H2], [0, 0, 0, 1]])
+    from chasles import Twist
+
+    screws = np.array([Twist.from_modern_robotics(s).vector for s in Slist.T])
+    arm = Chain(screws, M)
+    rng = np.random.default_rng(3)
+    for _ in range(10):
+        q = rng.uniform(-np.pi, np.pi, 6)
+        np.testing.assert_allclose(arm.forward(q), mr.FKinSpace(M, Slist, q), rtol=0, atol=1e-13)
+    with pytest.raises(ValueError, match=r"Slist.*Twist\.from_modern_robotics\(s\)\.vector for s in Slist\.T"):
+        Chain(Slist, M)
+    with pytest.raises(ValueError, match=r"\(w, v\) order.*Twist\.from_modern_robotics\(row\)\.vector"):
+        Chain(Slist.T, M)
+    with pytest.raises(ValueError, match=r"transposed.*screws\.T"):
+        Chain(screws.T, M)
+    with pytest.raises(ValueError, match=r"got \(6, 5\).*transposed.*Slist"):
+        Chain(Slist[:, :5], M)
+
+
+# ---- the bad descriptions ------------------------------------------------------
+
+
+def urdf(joints, links=("a", "b", "c")):
+    body = "".join(f'<link name="{n}"/>' for n in links)
+    return f'<robot name="r">{body}{joints}</robot>'
+
+
+def joint(name, kind, parent, child, extra='<axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/>'):
+    return f'<joint name="{name}" type="{kind}"><parent link="{parent}"/><child link="{child}"/>{extra}</joint>'
+
+
+GOOD = joint("j1", "revolute", "a", "b") + joint("j2", "continuous", "b", "c", '<axis xyz="0 2 0"/>')
+
+
+def test_small_description_parses():
+    arm = Chain.from_urdf(urdf(GOOD), "c")
+    assert arm.names == ("j1", "j2") and arm.joint_types == ("revolute", "continuous")
+    np.testing.assert_array_equal(arm.screws[1], [0, 0, 0, 0, 1, 0])  # the axis normalized
+    np.testing.assert_array_equal(arm.lower, [-1, -np.inf])
+    assert arm.link_inertias.shape == (2, 10)
+    assert Chain.from_urdf(urdf(GOOD), "c", "b").names == ("j2",)
+
+
+@pytest.mark.parametrize(
+    "text,tip,base,error",
+    [
+        (urdf(GOOD + joint("j3", "floating", "c", "d", ""), ("a", "b", "c", "d")), "d", None, "joint 'j3' is floating"),
+        (urdf(GOOD + joint("j3", "planar", "c", "d", ""), ("a", "b", "c", "d")), "d", None, "joint 'j3' is planar"),
+        (
+            urdf(GOOD + joint("j3", "revolute", "c", "d", '<mimic joint="j2"/><limit lower="0" upper="1" effort="1" velocity="1"/>'), ("a", "b", "c", "d")),
+            "d", None, "joint 'j3': <mimic>",
+        ),
+        (urdf(joint("j1", "revolute", "a", "x")), "b", None, "joint 'j1' names a missing link 'x'"),
+        (urdf(GOOD + joint("j3", "fixed", "c", "b", "")), "c", None, "link 'b' is the child of joints"),
+        (urdf(GOOD), "nowhere", None, r"tip_link\): no link named 'nowhere'"),
+        (urdf(GOOD), "c", "nowhere", r"base_link\): no link named 'nowhere'"),
+        (urdf(GOOD), "b", "c", "tip_link 'b' is not below base_link 'c'"),
+        (urdf(joint("j1", "revolute", "a", "b", '<axis xyz="0 0 1"/>'), ("a", "b")), "b", None, "joint 'j1': a revolute joint needs a <limit>"),
+        (urdf(joint("j1", "revolute", "a", "b", '<axis xyz="0 0 0"/><limit effort="1" velocity="1"/>'), ("a", "b")), "b", None, "<axis xyz> is zero"),
+        (urdf(joint("j1", "fixed", "a", "b", ""), ("a", "b")), "b", None, "no revolute, continuous or prismatic joint"),
+        (urdf(joint("j1", "screwy", "a", "b", ""), ("a", "b")), "b", None, "unknown joint type 'screwy'"),
+        ("<robot><link name='a'/>", "a", None, "not well-formed XML"),
+        ("<model/>", "a", None, "expected a <robot> element"),
+        (urdf(GOOD + joint("j3", "fixed", "a", "d", ""), ("a", "b", "c", "d", "e")), "c", None, "several root links"),
+    ],
+)
+def test_bad_descriptions_name_the_element(text, tip, base, error):
+    with pytest.raises(ValueError, match=error):
+        Chain.from_urdf(text, tip, base)
+
+
+def test_source_may_be_a_path(tmp_path):
+    p = tmp_path / "arm.urdf"
+    p.write_text(urdf(GOOD))
+    assert Chain.from_urdf(p, "c") == Chain.from_urdf(str(p), "c") == Chain.from_urdf(urdf(GOOD), "c")
+    with pytest.raises(TypeError, match="expected a path or the XML text"):
+        Chain.from_urdf(3.0, "c")
