@@ -10,6 +10,7 @@
 
 #include "chasles/constants.hpp"
 #include "chasles/distance.hpp"
+#include "chasles/dynamics.hpp"
 #include "chasles/euler.hpp"
 #include "chasles/io.hpp"
 #include "chasles/jacobians.hpp"
@@ -19,5 +20,6 @@
 #include "chasles/screw.hpp"
 #include "chasles/se3.hpp"
 #include "chasles/so3.hpp"
+#include "chasles/spatial_inertia.hpp"
 #include "chasles/twist.hpp"
 #include "chasles/wrench.hpp"

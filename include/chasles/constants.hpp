@@ -70,6 +70,7 @@ struct Thresholds<float> {
   static constexpr float mean_step_tolerance = 3.4526698e-04f;  // eps^(1/2)
   static constexpr int mean_max_iterations = 20;
   static constexpr float euler_lock2 = 1.4210855e-14f;  // eps^2
+  static constexpr float inertia_tolerance = 3.4526698e-04f;  // eps^(1/2)
 };
 
 template <>
@@ -82,6 +83,7 @@ struct Thresholds<double> {
   static constexpr double mean_step_tolerance = 1.4901161193847656e-08;  // eps^(1/2)
   static constexpr int mean_max_iterations = 20;
   static constexpr double euler_lock2 = 4.930380657631324e-32;  // eps^2
+  static constexpr double inertia_tolerance = 1.4901161193847656e-08;  // eps^(1/2)
 };
 
 template <>
@@ -96,6 +98,7 @@ struct Thresholds<long double> {
   static constexpr long double mean_step_tolerance = 3.2927225399135962334e-10L;  // eps^(1/2)
   static constexpr int mean_max_iterations = 20;
   static constexpr long double euler_lock2 = 1.1754943508222875079687e-38L;  // eps^2
+  static constexpr long double inertia_tolerance = 3.2927225399135962334e-10L;  // eps^(1/2)
 };
 
 // mean_step_tolerance: the geodesic (Karcher) mean (mean.hpp) stops after
@@ -113,6 +116,14 @@ struct Thresholds<long double> {
 //   13 of them at a 1 rad spread); Newton takes 2 (float) or 3 (double)
 //   there, so the bound is only reached by spreads near pi, where the mean
 //   is not unique.
+//
+// inertia_tolerance: SpatialInertia::is_physical accepts a rotational
+//   inertia whose asymmetry is at most this times its largest entry, and
+//   principal moments that break the triangle inequality I_1 + I_2 >= I_3
+//   by at most this times the trace. sqrt(eps), as rotation_tolerance: a
+//   thin plate (I_3 = I_1 + I_2 exactly) written with half the digits of the
+//   type passes; anything further off is not a body. tests/cpp/
+//   test_spatial_inertia.cpp checks both sides.
 //
 /// The thresholds that apply to a Scalar (autodiff scalars use their real type's).
 template <typename Scalar>
