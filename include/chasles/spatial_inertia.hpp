@@ -158,8 +158,13 @@ class SpatialInertia {
         if (!isfinite(I(i, j))) return false;
       }
     }
+    // Every condition is invariant under scaling: I / max |I_ij| has entries
+    // of magnitude <= 1, so no sum below overflows (I near the largest
+    // finite value) and none underflows to 0 before the comparisons.
     const RealOf<Scalar> scale = I.cwiseAbs().maxCoeff();
-    if (!((I - I.transpose()).cwiseAbs().maxCoeff() <= tolerance * scale)) return false;
+    if (!(scale > 0)) return false;
+    I /= scale;
+    if (!((I - I.transpose()).cwiseAbs().maxCoeff() <= tolerance)) return false;
     const Eigen::Matrix<RealOf<Scalar>, 3, 3> Is = (I + I.transpose()) / RealOf<Scalar>(2);
     if (Eigen::LLT<Eigen::Matrix<RealOf<Scalar>, 3, 3>>(Is).info() != Eigen::Success) return false;
     const RealOf<Scalar> trace = Is.trace();

@@ -250,6 +250,14 @@ TYPED_TEST(SpatialInertiaTest, IsPhysicalOnBothSidesOfEachCondition) {
   EXPECT_FALSE(
       SpatialInertia<S>(S(1), c, M3(Eigen::Vector3<S>(S(1), S(1), S(2 + 16 * tol)).asDiagonal())).is_physical());
   EXPECT_FALSE(SpatialInertia<S>(S(1), c, M3(Eigen::Vector3<S>(S(1), S(1), S(3)).asDiagonal())).is_physical());
+  // Scale-invariant, without overflow or underflow: a thin plate of moments
+  // near the largest finite value passes, moments (0.1, 0.2, max) do not.
+  const S big = std::numeric_limits<S>::max();
+  EXPECT_TRUE(SpatialInertia<S>(S(1), c, M3(Eigen::Vector3<S>(big / 2, big / 2, big).asDiagonal())).is_physical());
+  EXPECT_FALSE(SpatialInertia<S>(S(1), c, M3(Eigen::Vector3<S>(S(0.1), S(0.2), big).asDiagonal())).is_physical());
+  const S tiny = std::numeric_limits<S>::denorm_min() * S(64);
+  EXPECT_TRUE(SpatialInertia<S>(S(1), c, M3(box * tiny)).is_physical());
+  EXPECT_FALSE(SpatialInertia<S>(S(1), c, M3::Zero()).is_physical());
   // The same, rotated (the check is not only on diagonal matrices).
   const M3 R = chasles::SO3<S>::exp(V3(S(0.4), S(-0.3), S(1.1))).matrix();
   EXPECT_TRUE(SpatialInertia<S>(S(1), c, M3(R * box * R.transpose())).is_physical());
