@@ -16,5 +16,6 @@ void bind_kinematics(py::module_& m);    // bind_kinematics.cpp: class Chain
 void bind_scipy(py::module_& m);         // bind_scipy.cpp: SO3/SE3 from_scipy, to_scipy
 void bind_statistics(py::module_& m);    // bind_statistics.cpp: angles, distances (array functions)
 void bind_euler(py::module_& m);         // bind_euler.cpp: SO3 Euler angles and RPY, their private ufuncs
+void bind_dynamics(py::module_& m);      // bind_dynamics.cpp: class SpatialInertia, the dynamics ufuncs
 
 }  // namespace chasles_py

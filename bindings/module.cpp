@@ -18,5 +18,6 @@ PYBIND11_MODULE(_core, m) {
   chasles_py::bind_scipy(m);  // after SO3 and SE3: adds their methods
   chasles_py::bind_statistics(m);
   chasles_py::bind_euler(m);  // after SO3: adds its Euler methods
+  chasles_py::bind_dynamics(m);
   chasles_py::finish_functions(m);  // last: signatures for help() and inspect (signatures.hpp)
 }
