@@ -20,6 +20,7 @@
 
 #include "chasles/bspline.hpp"
 #include "chasles/chasles.hpp"
+#include "chasles/dynamics.hpp"
 #include "chasles/kinematics.hpp"
 
 namespace {
@@ -185,6 +186,45 @@ void register_bspline(const std::string& sn) {
   register_bspline_of<chasles::SE3<S>>("SE3", sn, 37);
 }
 
+/// Dynamics/<op>/<input>/<scalar>: the same arms, each link a box of
+/// 1 to 4 kg placed along the arm (inertias in the base frame at home), over
+/// states (q, qd, qdd) uniform in [-pi, pi] x [-2, 2] x [-2, 2].
+template <typename S, typename D>
+void register_dynamics(const std::string& input, const std::string& sn, int n) {
+  using JV = typename D::JointVector;
+  using C = chasles::Chain<S, D::Screws::ColsAtCompileTime, D::Screws::MaxColsAtCompileTime>;
+  const C chain = ur5_chain<S, C>(n);
+  typename D::Inertias inertias;
+  std::mt19937_64 rng(17 + std::uint32_t(n));
+  std::uniform_real_distribution<double> u(-kPi, kPi), r(-2, 2), m(1, 4), side(0.05, 0.3);
+  for (int i = 0; i < n; ++i) {
+    const double mass = m(rng), x = side(rng), y = side(rng), z = side(rng);
+    const Eigen::Matrix<S, 3, 1> moments(S(mass * (y * y + z * z) / 12), S(mass * (x * x + z * z) / 12),
+                                         S(mass * (x * x + y * y) / 12));
+    const Eigen::Matrix<S, 3, 1> com(S(0.1 * i), S(0.05 * i), S(0.1));
+    inertias[std::size_t(i)] = chasles::SpatialInertia<S>(S(mass), com, moments.asDiagonal());
+  }
+  const D dyn(chain.space_screws(), chain.home(), inertias, Eigen::Matrix<S, 3, 1>(S(0), S(0), S(-9.81)));
+  struct State {
+    JV q, qd, qdd;
+  };
+  std::vector<State> states;
+  for (std::size_t k = 0; k < kN; ++k) {
+    State st{JV(n), JV(n), JV(n)};
+    for (int j = 0; j < n; ++j) {
+      st.q(j) = S(u(rng));
+      st.qd(j) = S(r(rng));
+      st.qdd(j) = S(r(rng));
+    }
+    states.push_back(st);
+  }
+  const std::string tail = "/" + input + "/" + sn;
+  add("Dynamics/inverse_dynamics" + tail, states, [dyn](const State& x) { return dyn.inverse_dynamics(x.q, x.qd, x.qdd); });
+  add("Dynamics/mass_matrix" + tail, states, [dyn](const State& x) { return dyn.mass_matrix(x.q); });
+  add("Dynamics/gravity_torques" + tail, states, [dyn](const State& x) { return dyn.gravity_torques(x.q); });
+  add("Dynamics/forward_dynamics" + tail, states, [dyn](const State& x) { return dyn.forward_dynamics(x.q, x.qd, x.qdd); });
+}
+
 template <typename S>
 void register_all(const std::string& sn) {
   using namespace chasles;
@@ -316,6 +356,9 @@ void register_all(const std::string& sn) {
   register_spline<SO3<S>>("SO3", sn);
   register_spline<SE3<S>>("SE3", sn);
   register_bspline<S>(sn);
+  register_dynamics<S, Dynamics<S, 6>>("6dof", sn, 6);
+  register_dynamics<S, Dynamics<S, 7>>("7dof", sn, 7);
+  register_dynamics<S, Dynamics<S, Eigen::Dynamic, 8>>("7dof_dynamic_max8", sn, 7);
 
   // ---- floors
   std::vector<S> angles;

@@ -18,5 +18,6 @@ void bind_statistics(py::module_& m);    // bind_statistics.cpp: angles, distanc
 void bind_euler(py::module_& m);         // bind_euler.cpp: SO3 Euler angles and RPY, their private ufuncs
 void bind_spline(py::module_& m);        // bind_spline.cpp: the cores of SO3Spline, SE3Spline
 void bind_bspline(py::module_& m);       // bind_bspline.cpp: classes SO3BSpline, SE3BSpline
+void bind_dynamics(py::module_& m);      // bind_dynamics.cpp: class SpatialInertia, the dynamics ufuncs
 
 }  // namespace chasles_py

@@ -76,6 +76,7 @@ struct Thresholds<float> {
   static constexpr float spline_step_tolerance = 6.4e-06f;  // eps^(3/4)
   static constexpr int spline_max_iterations = 30;
   static constexpr float screw_tolerance = 3.4526698e-04f;  // eps^(1/2)
+  static constexpr float inertia_tolerance = 3.4526698e-04f;  // eps^(1/2)
 };
 
 template <>
@@ -94,6 +95,7 @@ struct Thresholds<double> {
   static constexpr double spline_step_tolerance = 1.8189894035458565e-12;  // eps^(3/4)
   static constexpr int spline_max_iterations = 30;
   static constexpr double screw_tolerance = 1.4901161193847656e-08;  // eps^(1/2)
+  static constexpr double inertia_tolerance = 1.4901161193847656e-08;  // eps^(1/2)
 };
 
 template <>
@@ -114,6 +116,7 @@ struct Thresholds<long double> {
   static constexpr long double spline_step_tolerance = 5.9749283938523554e-15L;  // eps^(3/4)
   static constexpr int spline_max_iterations = 30;
   static constexpr long double screw_tolerance = 3.2927225399135962334e-10L;  // eps^(1/2)
+  static constexpr long double inertia_tolerance = 3.2927225399135962334e-10L;  // eps^(1/2)
 };
 
 // mean_step_tolerance: the geodesic (Karcher) mean (mean.hpp) stops after
@@ -186,6 +189,13 @@ struct Thresholds<long double> {
 //   its "angular part" is then v = -w x q, of norm the distance of the axis
 //   from the origin (0.089 to 0.8 m for a UR5), far from 1 at any tolerance
 //   a unit vector could need.
+// inertia_tolerance: SpatialInertia::is_physical accepts a rotational
+//   inertia whose asymmetry is at most this times its largest entry, and
+//   principal moments that break the triangle inequality I_1 + I_2 >= I_3
+//   by at most this times the trace. sqrt(eps), as rotation_tolerance: a
+//   thin plate (I_3 = I_1 + I_2 exactly) written with half the digits of the
+//   type passes; anything further off is not a body. tests/cpp/
+//   test_spatial_inertia.cpp checks both sides.
 //
 /// The thresholds that apply to a Scalar (autodiff scalars use their real type's).
 template <typename Scalar>

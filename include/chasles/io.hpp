@@ -27,6 +27,7 @@
 #include "chasles/screw.hpp"
 #include "chasles/se3.hpp"
 #include "chasles/so3.hpp"
+#include "chasles/spatial_inertia.hpp"
 #include "chasles/twist.hpp"
 #include "chasles/wrench.hpp"
 
@@ -102,6 +103,14 @@ std::ostream& operator<<(std::ostream& os, const Chain<Scalar, Joints, MaxJoints
     detail::print_numbers(os, chain.space_screws().col(i));
   }
   return os << "], home=" << chain.home() << ')';
+}
+
+/// SpatialInertia(mass=m, com=[...], inertia=[[...], [...], [...]]).
+template <typename Scalar>
+std::ostream& operator<<(std::ostream& os, const SpatialInertia<Scalar>& I) {
+  os << "SpatialInertia(mass=" << I.mass() << ", com=";
+  detail::print_numbers(os, I.com()) << ", inertia=";
+  return detail::print_numbers(os, I.inertia()) << ')';
 }
 
 /// ComposeJacobians(lhs=[[...]], rhs=[[...]]).

@@ -3,8 +3,9 @@ wrenches and screws, over the C++ headers of the same name.
 
 Two layers over the same C++ kernels:
 
-- objects for one element: ``SO3``, ``SE3``, ``Twist``, ``Wrench`` and
-  ``Screw``, with ``@`` for composition and action (``g @ h``, ``g @ p``);
+- objects for one element: ``SO3``, ``SE3``, ``Twist``, ``Wrench``,
+  ``Screw`` and ``SpatialInertia`` (a rigid body's inertia), with ``@``
+  for composition and action (``g @ h``, ``g @ p``);
 - array functions for batches: ``so3_exp``, ``se3_log``, ``se3_compose``,
   ... (and the methods of ``Chain``).
 
@@ -70,6 +71,7 @@ from chasles._core import (
     SO3,
     SO3BSpline,
     Screw,
+    SpatialInertia,
     Twist,
     Wrench,
     __version__,
@@ -137,6 +139,7 @@ __all__ = [
     "SO3BSpline",
     "SO3Spline",
     "Screw",
+    "SpatialInertia",
     "Twist",
     "Wrench",
     "__version__",

@@ -84,7 +84,15 @@ class Gives:
     value: Any
 
 
-BOUND = (chasles.SO3, chasles.SE3, chasles.Twist, chasles.Wrench, chasles.Screw, chasles.Chain)
+BOUND = (
+    chasles.SO3,
+    chasles.SE3,
+    chasles.Twist,
+    chasles.Wrench,
+    chasles.Screw,
+    chasles.Chain,
+    chasles.SpatialInertia,
+)
 
 
 def is_initialized(x) -> bool:
@@ -420,6 +428,10 @@ def _real(value, label):
 
 
 def _rule(x, label, rule):
+    if rule == "positive" and math.isfinite(x) and not x > 0.0:
+        return Refused(ValueError, (label, "positive"))
+    if rule == "positive" and not math.isfinite(x):
+        return Refused(ValueError, (label, "finite"))
     if rule == "finite" and not math.isfinite(x):
         return Refused(ValueError, (label, "finite"))
     if rule == "tolerance" and not x >= 0.0:
@@ -547,6 +559,35 @@ class Home(Arg):
         if isinstance(value, chasles.SE3):
             return Instance(self.label, (chasles.SE3,)).judge(value)
         return judge_fixed_array(value, self.label, ((4, 4),), True)
+
+
+@dataclass
+class RotationalInertia(Arg):
+    """SpatialInertia's I_c: shape (3, 3), finite, and the inertia of a
+    rigid body (symmetric to 1.49e-8 of its largest entry, positive definite,
+    principal moments satisfying the triangle inequality to 1.49e-8 of the
+    trace): otherwise ValueError naming the argument."""
+
+    def good(self):
+        return np.array([[0.1, 0.01, 0.0], [0.01, 0.2, 0.0], [0.0, 0.0, 0.25]])
+
+    def judge(self, value):
+        verdict = judge_fixed_array(value, self.label, ((3, 3),), True)
+        if not isinstance(verdict, Accepted):
+            return verdict
+        scale = np.max(np.abs(verdict.value))
+        if not scale > 0:
+            return Refused(ValueError, (self.label, "positive definite"))
+        inertia = verdict.value / scale  # the conditions are scale-invariant; no overflow
+        tol = 1.4901161193847656e-08
+        if not np.max(np.abs(inertia - inertia.T)) <= tol:
+            return Refused(ValueError, (self.label, "not symmetric"))
+        moments = np.linalg.eigvalsh((inertia + inertia.T) / 2)
+        if not moments.min() > 0:
+            return Refused(ValueError, (self.label, "positive definite"))
+        if not 2 * moments.max() <= moments.sum() * (1 + 2 * tol):
+            return Refused(ValueError, (self.label, "triangle inequality"))
+        return verdict
 
 
 @dataclass
@@ -762,6 +803,9 @@ GOOD = {  # a fresh valid object of each class
     chasles.Chain: lambda: chasles.Chain(CHAIN_SCREWS, CHAIN_HOME),
     chasles.SO3BSpline: lambda: chasles.SO3BSpline(0.0, 0.5, spline_control(chasles.SO3)),
     chasles.SE3BSpline: lambda: chasles.SE3BSpline(0.0, 0.5, spline_control(chasles.SE3)),
+    chasles.SpatialInertia: lambda: chasles.SpatialInertia(
+        2.0, [0.1, 0.2, 0.3], [[0.1, 0.01, 0.0], [0.01, 0.2, 0.0], [0.0, 0.0, 0.25]]
+    ),
 }
 
 
@@ -926,7 +970,7 @@ def _element(label, group):
 
 
 def _build_spec():
-    SO3, SE3, Twist, Wrench, Screw, Chain = BOUND
+    SO3, SE3, Twist, Wrench, Screw, Chain, _ = BOUND
     spec: dict[str, Entry] = {}
 
     # SO3
@@ -1220,6 +1264,31 @@ def _build_spec():
             passes_arguments=False,
             direct=_direct(cls, "__repr__"),
         )
+    # SpatialInertia
+    Inertia = chasles.SpatialInertia
+    spec["SpatialInertia.__init__"] = Entry(
+        [
+            [
+                Real("SpatialInertia(mass)", "positive", 2.0),
+                Array("SpatialInertia(com)", (3,)),
+                RotationalInertia("SpatialInertia(inertia)"),
+            ]
+        ],
+        call=Inertia,
+    )
+    for p in ("mass", "com", "inertia", "matrix"):
+        spec[f"SpatialInertia.{p}"] = _prop(Inertia, p)
+    spec["SpatialInertia.transform"] = _method(Inertia, "transform", Instance("g", (SE3,)))
+    for m in ("momentum", "kinetic_energy"):
+        spec[f"SpatialInertia.{m}"] = _method(Inertia, m, TwistOr(f"SpatialInertia.{m}(twist)", (6,)))
+    spec["SpatialInertia.__add__"] = _binop(Inertia, operator.add, Instance("other", (Inertia,)), "__add__")
+    spec["SpatialInertia.is_approx"] = _method(
+        Inertia,
+        "is_approx",
+        Instance("other", (Inertia,)),
+        Real("SpatialInertia.is_approx(tol)", "tolerance", 1e-6),
+    )
+    spec.update(_protocols(Inertia, [13]))
 
     # module functions on objects, overloaded for SO3 and SE3
     E = _element

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <random>
 #include <type_traits>
 
@@ -241,6 +242,43 @@ S exercise_all() noexcept {
   sum += model.forward(thd).translation().sum() + model.jacobian_body(thd).sum();
   const CD again(model.space_screws(), model.home(), typename CD::HomeAsGiven());
   sum += again.body_screws().sum();
+
+  // SpatialInertia (spatial_inertia.hpp).
+  M3 Ic;
+  Ic << S(2), S(0.1), S(0), S(0.1), S(3), S(0.2), S(0), S(0.2), S(4);
+  const SpatialInertia<S> si(S(1.5), p, Ic), si0;
+  sum += si.mass() + si.com().sum() + si.inertia().sum() + si.matrix().sum() + si0.mass();
+  sum += SpatialInertia<S>::from_matrix_unchecked(si.matrix()).inertia().sum();
+  sum += si.momentum(tw).vector().sum() + si.kinetic_energy(tw) + si.symmetry_defect();
+  sum += si.transform(g).com().sum() + si.transform_inv(g).com().sum() + (si + si.transform(g)).inertia().sum();
+  sum += S(si.is_physical() ? 1 : 0) + S(si.is_physical(RealOf<S>(0)) ? 1 : 0) + si.template cast<S>().mass();
+  sum += S(si.is_approx(si0, RealOf<S>(1e-3)) ? 1 : 0);
+
+  // Dynamics (dynamics.hpp): fixed size, and dynamic with a compile-time bound.
+  using D6 = Dynamics<S, 6>;
+  using DD = Dynamics<S, Eigen::Dynamic, 8>;
+  typename D6::Inertias I6;
+  typename DD::Inertias ID;
+  for (std::size_t i = 0; i < 8; ++i) {
+    if (i < 6) I6[i] = si.transform(SE3<S>::exp(V6(xi * S(RealOf<S>(i) * RealOf<S>(0.1)))));
+    ID[i] = si.transform(SE3<S>::exp(V6(xi * S(RealOf<S>(i) * RealOf<S>(-0.1)))));
+  }
+  const V3 gravity(S(0), S(0), S(-9.81));
+  const Wrench<S> tip(p, w);
+  D6 d6(S6, g, I6, gravity);
+  const typename D6::JointVector qd6 = th6 * S(2), qdd6 = th6 * S(-3);
+  sum += d6.inverse_dynamics(th6, qd6, qdd6).sum() + d6.inverse_dynamics(th6, qd6, qdd6, tip).sum();
+  sum += d6.mass_matrix(th6).sum() + d6.gravity_torques(th6).sum() + d6.coriolis(th6, qd6).sum();
+  sum += d6.bias(th6, qd6).sum() + d6.forward_dynamics(th6, qd6, qdd6).sum() + d6.forward_dynamics(th6, qd6, qdd6, tip).sum();
+  sum += d6.kinetic_energy(th6, qd6) + d6.potential_energy(th6);
+  d6.set_gravity(V3(gravity * S(2)));
+  sum += S(RealOf<S>(d6.joints())) + d6.space_screws().sum() + d6.home().translation().sum() +
+         d6.inertias()[0].mass() + d6.gravity().sum();
+  const DD dd(SD, h, ID, gravity);
+  const typename DD::JointVector qdd = thd * S(2), qddd = thd * S(-3);
+  sum += dd.inverse_dynamics(thd, qdd, qddd, tip).sum() + dd.mass_matrix(thd).sum() + dd.gravity_torques(thd).sum();
+  sum += dd.coriolis(thd, qdd).sum() + dd.bias(thd, qdd).sum() + dd.forward_dynamics(thd, qdd, qddd, tip).sum();
+  sum += dd.kinetic_energy(thd, qdd) + dd.potential_energy(thd);
   return sum;
 }
 

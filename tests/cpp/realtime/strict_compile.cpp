@@ -21,6 +21,7 @@
 #include "chasles/detail/nearest_rotation.hpp"
 #include "chasles/detail/series.hpp"
 #include "chasles/distance.hpp"
+#include "chasles/dynamics.hpp"
 #include "chasles/euler.hpp"
 #include "chasles/io.hpp"
 #include "chasles/jacobians.hpp"
@@ -31,6 +32,7 @@
 #include "chasles/se3.hpp"
 #include "chasles/spline.hpp"
 #include "chasles/so3.hpp"
+#include "chasles/spatial_inertia.hpp"
 #include "chasles/twist.hpp"
 #include "chasles/wrench.hpp"
 #include "realtime/exercise_all.hpp"
@@ -53,7 +55,8 @@ std::size_t print_all() {
   dynamic_screws.col(0) = screws.col(0);
   std::ostringstream os;
   os << R << g << xi << Wrench<S>(p, w) << xi.screw() << Chain<S, 2>(screws, g)
-     << Chain<S, Eigen::Dynamic, 4>(dynamic_screws, g) << compose_jacobians(g, g) << act_jacobians(R, p);
+     << Chain<S, Eigen::Dynamic, 4>(dynamic_screws, g) << compose_jacobians(g, g) << act_jacobians(R, p)
+     << SpatialInertia<S>(S(1), p, Eigen::Matrix<S, 3, 3>::Identity());
   return os.str().size();
 }
 

@@ -1,0 +1,376 @@
+// chasles::Dynamics (inverse dynamics, mass matrix, forward dynamics of a
+// serial chain), on random arms of revolute and prismatic joints with random
+// physical inertias, against independent oracles:
+// - M(q) positive definite (Cholesky) and its columns equal to
+//   inverse_dynamics(q, 0, e_i) - inverse_dynamics(q, 0, 0);
+// - 1/2 qd^T M qd equal to the links' kinetic energy sum_i 1/2 V_i.G_i V_i;
+// - the gravity torques equal to the gradient of the potential energy
+//   (central differences);
+// - the power balance qd . (tau - g(q)) = dT/dt along a trajectory (dT/dt by
+//   central differences of T = 1/2 qd^T M qd);
+// - the Coriolis terms equal to the Christoffel form M' qd - 1/2 d/dq
+//   (qd^T M qd), dM/dq by automatic differentiation (itself checked against
+//   central differences);
+// - the tip wrench's torques equal to J_b(q)^T F_tip (Chain::jacobian_body);
+// - forward_dynamics inverting inverse_dynamics;
+// - energy conserved by an RK4 simulation with no torque;
+// - float and double against the same algorithm in long double (rounding).
+// The modern_robotics package (and Pinocchio, bench/) check the values
+// themselves from Python (tests/python/test_dynamics.py).
+#include <cmath>
+#include <random>
+#include <string>
+#include <type_traits>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <gtest/gtest.h>
+#include <unsupported/Eigen/AutoDiff>
+
+#include <chasles/dynamics.hpp>
+#include <chasles/kinematics.hpp>
+
+#include "support/group_traits.hpp"
+
+namespace {
+
+using namespace chasles_test;
+using chasles::Chain;
+using chasles::Dynamics;
+using chasles::RealOf;
+using chasles::SE3;
+using chasles::SpatialInertia;
+using chasles::Wrench;
+
+constexpr int kMax = 8;
+template <typename S>
+using Dyn = Dynamics<S, Eigen::Dynamic, kMax>;
+
+/// A random arm in double: n joints (revolute with probability 3/4, else
+/// prismatic) with axes through points within 1 m of the base, a random home
+/// pose, and for each link a box of mass 0.5 to 3 kg and sides 0.05 to 0.5 m
+/// (principal moments of a box: physical), turned and placed near its joint.
+struct Arm {
+  Dyn<double>::Screws S;
+  SE3<double> M;
+  Dyn<double>::Inertias I;
+  Eigen::Vector3d gravity;
+};
+
+Arm random_arm(std::mt19937& rng, int n) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0), side(0.05, 0.5), mass(0.5, 3.0), coin(0.0, 1.0);
+  auto vec = [&] { return Eigen::Vector3d(u(rng), u(rng), u(rng)); };
+  Arm a;
+  a.S.resize(6, n);
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector3d point = vec(), direction = vec();
+    a.S.col(i) = coin(rng) < 0.75 ? Chain<double, Eigen::Dynamic, kMax>::revolute_screw(point, direction)
+                                  : Chain<double, Eigen::Dynamic, kMax>::prismatic_screw(direction);
+    const double m = mass(rng), x = side(rng), y = side(rng), z = side(rng);
+    const Eigen::Vector3d moments(m * (y * y + z * z) / 12, m * (x * x + z * z) / 12, m * (x * x + y * y) / 12);
+    const Eigen::Matrix3d R = chasles::SO3<double>::exp(vec()).matrix();
+    a.I[static_cast<std::size_t>(i)] =
+        SpatialInertia<double>(m, Eigen::Vector3d(point + 0.3 * vec()), R * moments.asDiagonal() * R.transpose());
+  }
+  Eigen::Matrix<double, 6, 1> xi;
+  xi << vec(), vec();
+  a.M = SE3<double>::exp(xi);
+  a.gravity = Eigen::Vector3d(0, 0, -9.81);
+  return a;
+}
+
+template <typename S>
+Dyn<S> dynamics_of(const Arm& a) {
+  typename Dyn<S>::Inertias I;
+  for (std::size_t i = 0; i < kMax; ++i) I[i] = a.I[i].template cast<S>();
+  return Dyn<S>(a.S.template cast<S>(), a.M.template cast<S>(), I, a.gravity.template cast<S>());
+}
+
+template <typename S>
+typename Dyn<S>::JointVector random_joints(std::mt19937& rng, int n, double scale) {
+  std::uniform_real_distribution<double> u(-scale, scale);
+  typename Dyn<S>::JointVector q(n);
+  for (int i = 0; i < n; ++i) q(i) = S(u(rng));
+  return q;
+}
+
+template <typename S>
+class DynamicsTest : public ::testing::Test {};
+struct ScalarName {
+  template <typename S>
+  static std::string GetName(int) {
+    return std::is_same<S, float>::value ? "float" : "double";
+  }
+};
+using ScalarTypes = ::testing::Types<float, double>;
+TYPED_TEST_SUITE(DynamicsTest, ScalarTypes, ScalarName);
+
+// Rounding: every result is a sum over the n links of products of a few
+// exps, adjoints and inertias (entries up to ~10 for these arms): k = 64 n
+// ulps of the largest magnitude in the result or its terms. `scale` below is
+// the largest |tau| of the gravity, inertial and velocity terms, each of
+// order 100 for these arms at |qd|, |qdd| <= 2.
+constexpr LD kPerJoint = 64;
+
+TYPED_TEST(DynamicsTest, AgreesWithLongDouble) {
+  using S = TypeParam;
+  std::mt19937 rng(21);
+  for (int trial = 0; trial < 30; ++trial) {
+    const int n = 1 + trial % kMax;
+    const Arm arm = random_arm(rng, n);
+    const Dyn<S> d = dynamics_of<S>(arm);
+    const Dyn<LD> dl = dynamics_of<LD>(arm);
+    const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0), qdd = random_joints<S>(rng, n, 2.0);
+    const Wrench<S> F(Eigen::Matrix<S, 3, 1>(S(1), S(-2), S(3)), Eigen::Matrix<S, 3, 1>(S(0.5), S(0.1), S(-0.3)));
+    const auto tau = d.inverse_dynamics(q, qd, qdd, F);
+    const auto taul = dl.inverse_dynamics(to_ld(q), to_ld(qd), to_ld(qdd), F.template cast<LD>());
+    const LD scale = std::max(LD(100), max_abs(taul));
+    EXPECT_TRUE(near<S>(tau, taul, kPerJoint * n, scale)) << "n = " << n;
+    EXPECT_TRUE(near<S>(d.mass_matrix(q), dl.mass_matrix(to_ld(q)), kPerJoint * n, 10));
+    EXPECT_TRUE(near<S>(d.gravity_torques(q), dl.gravity_torques(to_ld(q)), kPerJoint * n, scale));
+    EXPECT_TRUE(near<S>(d.coriolis(q, qd), dl.coriolis(to_ld(q), to_ld(qd)), kPerJoint * n, scale));
+  }
+}
+
+TYPED_TEST(DynamicsTest, MassMatrixIsPositiveDefiniteAndTheColumnsOfInverseDynamics) {
+  using S = TypeParam;
+  std::mt19937 rng(22);
+  for (int trial = 0; trial < 30; ++trial) {
+    const int n = 1 + trial % kMax;
+    const Dyn<S> d = dynamics_of<S>(random_arm(rng, n));
+    const auto q = random_joints<S>(rng, n, 3.0);
+    const auto M = d.mass_matrix(q);
+    EXPECT_EQ(M, M.transpose());
+    EXPECT_EQ(Eigen::LLT<typename Dyn<S>::MassMatrix>(M).info(), Eigen::Success) << "n = " << n;
+    const typename Dyn<S>::JointVector zero = Dyn<S>::JointVector::Zero(n);
+    const auto tau0 = d.inverse_dynamics(q, zero, zero);  // gravity on: g(q)
+    for (int i = 0; i < n; ++i) {
+      const typename Dyn<S>::JointVector ei = Dyn<S>::JointVector::Unit(n, i);
+      const typename Dyn<S>::JointVector column = d.inverse_dynamics(q, zero, ei) - tau0;
+      EXPECT_TRUE(near<S>(column, M.col(i), kPerJoint * n, std::max(LD(100), max_abs(tau0)))) << "column " << i;
+    }
+  }
+}
+
+TYPED_TEST(DynamicsTest, KineticEnergyIsHalfQdMQd) {
+  using S = TypeParam;
+  std::mt19937 rng(23);
+  for (int trial = 0; trial < 30; ++trial) {
+    const int n = 1 + trial % kMax;
+    const Dyn<S> d = dynamics_of<S>(random_arm(rng, n));
+    const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0);
+    const LD T = d.kinetic_energy(q, qd);
+    const LD TM = LD(qd.dot(d.mass_matrix(q) * qd)) / 2;
+    EXPECT_GT(T, 0);
+    EXPECT_LE(std::fabs(T - TM), kPerJoint * n * eps<S>() * std::max(LD(10), T)) << "n = " << n;
+  }
+}
+
+TYPED_TEST(DynamicsTest, TipWrenchGivesTheBodyJacobianTranspose) {
+  using S = TypeParam;
+  std::mt19937 rng(24);
+  std::uniform_real_distribution<double> u(-5.0, 5.0);
+  for (int trial = 0; trial < 30; ++trial) {
+    const int n = 1 + trial % kMax;
+    const Arm arm = random_arm(rng, n);
+    const Dyn<S> d = dynamics_of<S>(arm);
+    const Chain<S, Eigen::Dynamic, kMax> chain(arm.S.template cast<S>(), arm.M.template cast<S>());
+    const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0), qdd = random_joints<S>(rng, n, 2.0);
+    Eigen::Matrix<S, 6, 1> Fv;
+    for (int k = 0; k < 6; ++k) Fv(k) = S(u(rng));
+    const typename Dyn<S>::JointVector diff =
+        d.inverse_dynamics(q, qd, qdd, Wrench<S>(Fv)) - d.inverse_dynamics(q, qd, qdd);
+    const typename Dyn<S>::JointVector expected = chain.jacobian_body(q).transpose() * Fv;
+    const LD scale = std::max(LD(100), max_abs(d.inverse_dynamics(q, qd, qdd)));
+    EXPECT_TRUE(near<S>(diff, expected, kPerJoint * n, scale)) << "n = " << n;
+  }
+}
+
+TYPED_TEST(DynamicsTest, ForwardDynamicsInvertsInverseDynamics) {
+  using S = TypeParam;
+  std::mt19937 rng(25);
+  for (int trial = 0; trial < 30; ++trial) {
+    const int n = 1 + trial % kMax;
+    const Dyn<S> d = dynamics_of<S>(random_arm(rng, n));
+    const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0), qdd = random_joints<S>(rng, n, 2.0);
+    const Wrench<S> F(Eigen::Matrix<S, 3, 1>(S(1), S(-2), S(3)), Eigen::Matrix<S, 3, 1>(S(0.5), S(0.1), S(-0.3)));
+    const auto tau = d.inverse_dynamics(q, qd, qdd, F);
+    const auto back = d.forward_dynamics(q, qd, tau, F);
+    // Conditioning: the error of qdd is cond(M) times the rounding of tau.
+    const auto M = d.mass_matrix(q);
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(M.template cast<double>());
+    const LD cond = LD(es.eigenvalues().maxCoeff() / es.eigenvalues().minCoeff());
+    EXPECT_TRUE(near<S>(back, to_ld(qdd), kPerJoint * n * cond, std::max(LD(100), max_abs(tau)) / LD(es.eigenvalues().maxCoeff())))
+        << "n = " << n << ", cond(M) = " << static_cast<double>(cond);
+    // bias = coriolis + gravity.
+    EXPECT_TRUE(near<S>(d.bias(q, qd), Eigen::Matrix<S, Eigen::Dynamic, 1>(d.coriolis(q, qd) + d.gravity_torques(q)),
+                        4, std::max(LD(100), max_abs(tau))));
+  }
+}
+
+TEST(Dynamics, FixedSizeGivesTheSameBitsAsBounded) {
+  std::mt19937 rng(26);
+  const Arm arm = random_arm(rng, 6);
+  const Dyn<double> d = dynamics_of<double>(arm);
+  Dynamics<double, 6>::Inertias I6;
+  for (std::size_t i = 0; i < 6; ++i) I6[i] = arm.I[i];
+  const Dynamics<double, 6> f(Eigen::Matrix<double, 6, 6>(arm.S), arm.M, I6, arm.gravity);
+  const auto q = random_joints<double>(rng, 6, 3.0), qd = random_joints<double>(rng, 6, 2.0);
+  const Eigen::Matrix<double, 6, 1> q6 = q, qd6 = qd;
+  EXPECT_EQ(Eigen::VectorXd(f.inverse_dynamics(q6, qd6, qd6)), Eigen::VectorXd(d.inverse_dynamics(q, qd, qd)));
+  EXPECT_EQ(Eigen::MatrixXd(f.mass_matrix(q6)), Eigen::MatrixXd(d.mass_matrix(q)));
+  EXPECT_TRUE(near<double>(f.forward_dynamics(q6, qd6, qd6), d.forward_dynamics(q, qd, qd), 64, 10));
+}
+
+// Central differences in double, five points, step h: truncation
+// h^4 / 30 |f^(5)|, rounding ~ eps |f| / h. With h = 1e-3 and |f^(5)| <= 1e4
+// (energies ~ 100 J whose derivatives grow by at most ~5 per order for
+// these arms) truncation is <= 3e-9 and rounding <= 3e-11: bound 1e-7 of
+// the scale.
+template <typename F>
+double derivative(F f, double h = 1e-3) {
+  return (-f(2 * h) + 8 * f(h) - 8 * f(-h) + f(-2 * h)) / (12 * h);
+}
+
+TEST(Dynamics, GravityTorquesAreTheGradientOfThePotentialEnergy) {
+  std::mt19937 rng(27);
+  for (int trial = 0; trial < 20; ++trial) {
+    const int n = 1 + trial % kMax;
+    const Dyn<double> d = dynamics_of<double>(random_arm(rng, n));
+    const auto q = random_joints<double>(rng, n, 3.0);
+    const auto g = d.gravity_torques(q);
+    for (int i = 0; i < n; ++i) {
+      const double dU = derivative([&](double t) {
+        Dyn<double>::JointVector qt = q;
+        qt(i) += t;
+        return d.potential_energy(qt);
+      });
+      EXPECT_NEAR(g(i), dU, 1e-7 * std::max(100.0, g.cwiseAbs().maxCoeff())) << "n = " << n << ", joint " << i;
+    }
+  }
+}
+
+TEST(Dynamics, PowerBalanceAlongATrajectory) {
+  // q(t) = q0 + a sin(w t): tau = ID(q, qd, qdd) with gravity; the power of
+  // tau - g(q) is the rate of the kinetic energy T = 1/2 qd^T M qd.
+  std::mt19937 rng(28);
+  for (int trial = 0; trial < 20; ++trial) {
+    const int n = 1 + trial % kMax;
+    const Dyn<double> d = dynamics_of<double>(random_arm(rng, n));
+    const auto q0 = random_joints<double>(rng, n, 3.0), a = random_joints<double>(rng, n, 1.0),
+               w = random_joints<double>(rng, n, 2.0);
+    auto state = [&](double t, Dyn<double>::JointVector& q, Dyn<double>::JointVector& qd, Dyn<double>::JointVector& qdd) {
+      q = q0;
+      qd.resize(n);
+      qdd.resize(n);
+      for (int i = 0; i < n; ++i) {
+        q(i) += a(i) * std::sin(w(i) * t);
+        qd(i) = a(i) * w(i) * std::cos(w(i) * t);
+        qdd(i) = -a(i) * w(i) * w(i) * std::sin(w(i) * t);
+      }
+    };
+    auto energy = [&](double t) {
+      Dyn<double>::JointVector q, qd, qdd;
+      state(t, q, qd, qdd);
+      return qd.dot(d.mass_matrix(q) * qd) / 2;
+    };
+    for (double t : {0.0, 0.4, 1.3}) {
+      Dyn<double>::JointVector q, qd, qdd;
+      state(t, q, qd, qdd);
+      const auto tau = d.inverse_dynamics(q, qd, qdd);
+      const double power = qd.dot(tau - d.gravity_torques(q));
+      const double dT = derivative([&](double s) { return energy(t + s); });
+      EXPECT_NEAR(power, dT, 1e-7 * std::max(100.0, tau.cwiseAbs().maxCoeff() * qd.cwiseAbs().maxCoeff()))
+          << "n = " << n << ", t = " << t;
+    }
+  }
+}
+
+TEST(Dynamics, CoriolisIsTheChristoffelFormOfTheMassMatrixDerivative) {
+  // C(q, qd) qd = M'(q) qd - 1/2 [qd^T dM/dq_k qd]_k (Lagrange's equations),
+  // dM/dq_k by forward-mode automatic differentiation through mass_matrix,
+  // checked against five-point central differences.
+  using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, 6, 1>>;
+  std::mt19937 rng(29);
+  for (int trial = 0; trial < 10; ++trial) {
+    const Arm arm = random_arm(rng, 6);
+    Dynamics<AD, 6>::Inertias Ia;
+    Dynamics<double, 6>::Inertias Id;
+    for (std::size_t i = 0; i < 6; ++i) {
+      Ia[i] = arm.I[i].cast<AD>();
+      Id[i] = arm.I[i];
+    }
+    const Eigen::Matrix<double, 6, 6> S6 = arm.S;
+    const Dynamics<AD, 6> da(S6.cast<AD>(), arm.M.cast<AD>(), Ia, arm.gravity.cast<AD>());
+    const Dynamics<double, 6> d(S6, arm.M, Id, arm.gravity);
+    const Eigen::Matrix<double, 6, 1> q = random_joints<double>(rng, 6, 3.0), qd = random_joints<double>(rng, 6, 2.0);
+    Eigen::Matrix<AD, 6, 1> qa;
+    for (int i = 0; i < 6; ++i) qa(i) = AD(q(i), 6, i);
+    const auto Ma = da.mass_matrix(qa);
+    std::array<Eigen::Matrix<double, 6, 6>, 6> dM;
+    for (int k = 0; k < 6; ++k) {
+      for (int r = 0; r < 6; ++r)
+        for (int c = 0; c < 6; ++c) dM[static_cast<std::size_t>(k)](r, c) = Ma(r, c).derivatives()(k);
+      const auto M_at = [&](double t) {
+        return Eigen::Matrix<double, 6, 6>(d.mass_matrix(Eigen::Matrix<double, 6, 1>(q + t * Eigen::Matrix<double, 6, 1>::Unit(k))));
+      };
+      // Five-point difference, h = 1e-3: truncation h^4/30 |M^(5)| <= 3e-12 for
+      // |M^(5)| <= 1e2 (these arms' masses and reaches), rounding ~ eps |M| / h <= 1e-11.
+      const double h = 1e-3;
+      const Eigen::Matrix<double, 6, 6> fd = (-M_at(2 * h) + 8 * M_at(h) - 8 * M_at(-h) + M_at(-2 * h)) / (12 * h);
+      EXPECT_LE((dM[static_cast<std::size_t>(k)] - fd).cwiseAbs().maxCoeff(), 1e-9) << "dM/dq_" << k;
+    }
+    Eigen::Matrix<double, 6, 6> Mdot = Eigen::Matrix<double, 6, 6>::Zero();
+    Eigen::Matrix<double, 6, 1> christoffel;
+    for (int k = 0; k < 6; ++k) {
+      Mdot += dM[static_cast<std::size_t>(k)] * qd(k);
+      christoffel(k) = qd.dot(dM[static_cast<std::size_t>(k)] * qd) / 2;
+    }
+    const Eigen::Matrix<double, 6, 1> expected = Mdot * qd - christoffel;
+    const auto c = d.coriolis(q, qd);
+    EXPECT_TRUE(near<double>(c, expected, 64 * 6, 100)) << "coriolis\n" << c.transpose() << "\nexpected\n" << expected.transpose();
+  }
+}
+
+TEST(Dynamics, RungeKuttaSimulationConservesEnergy) {
+  // No torque, no gravity: T = 1/2 qd^T M qd is constant. RK4 with step h has
+  // a global error of order T h^4 |d^5 x/dt^5| per unit time: with joint
+  // rates <= 1 rad/s and h = 1e-3 s, about 1e-12 T per second; over 2 s the
+  // drift bound 1e-9 T leaves room for arms whose accelerations reach ~10x
+  // the rates. With gravity, T + U is conserved to the same order.
+  std::mt19937 rng(30);
+  for (const bool with_gravity : {false, true}) {
+    for (int trial = 0; trial < 3; ++trial) {
+      const int n = 6 + trial % 2;
+      Arm arm = random_arm(rng, n);
+      if (!with_gravity) arm.gravity.setZero();
+      const Dyn<double> d = dynamics_of<double>(arm);
+      Dyn<double>::JointVector q = random_joints<double>(rng, n, 3.0), qd = random_joints<double>(rng, n, 1.0);
+      const Dyn<double>::JointVector zero = Dyn<double>::JointVector::Zero(n);
+      auto total = [&](const Dyn<double>::JointVector& x, const Dyn<double>::JointVector& xd) {
+        return d.kinetic_energy(x, xd) + d.potential_energy(x);
+      };
+      const double E0 = total(q, qd);
+      const double h = 1e-3;
+      double worst = 0;
+      for (int step = 0; step < 2000; ++step) {
+        const Dyn<double>::JointVector k1q = qd, k1v = d.forward_dynamics(q, qd, zero);
+        const Dyn<double>::JointVector q2 = q + h / 2 * k1q, v2 = qd + h / 2 * k1v;
+        const Dyn<double>::JointVector k2q = v2, k2v = d.forward_dynamics(q2, v2, zero);
+        const Dyn<double>::JointVector q3 = q + h / 2 * k2q, v3 = qd + h / 2 * k2v;
+        const Dyn<double>::JointVector k3q = v3, k3v = d.forward_dynamics(q3, v3, zero);
+        const Dyn<double>::JointVector q4 = q + h * k3q, v4 = qd + h * k3v;
+        const Dyn<double>::JointVector k4q = v4, k4v = d.forward_dynamics(q4, v4, zero);
+        q += h / 6 * (k1q + 2 * k2q + 2 * k3q + k4q);
+        qd += h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v);
+        worst = std::max(worst, std::fabs(total(q, qd) - E0));
+      }
+      const double T0 = d.kinetic_energy(q, qd);
+      EXPECT_GT(T0, 0);
+      EXPECT_LE(worst, 1e-9 * std::max(std::fabs(E0), T0))
+          << "n = " << n << ", gravity " << with_gravity << ", E0 = " << E0;
+    }
+  }
+}
+
+}  // namespace
