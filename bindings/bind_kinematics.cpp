@@ -1,11 +1,14 @@
 // chasles._core: class Chain over chasles::Chain<double, Dynamic, 32>
 // (include/chasles/kinematics.hpp): product-of-exponentials kinematics of a
 // serial chain of up to 32 joints.
+#include <chasles/inverse_kinematics.hpp>
 #include <chasles/kinematics.hpp>
+#include <chasles/spatial_inertia.hpp>
 
+#include <cmath>
 #include <limits>
 #include <optional>
-#include <cmath>
+#include <random>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -208,6 +211,20 @@ py::array screws_array(const ChainD& c) {
   return std::move(out);
 }
 
+/// A ufunc operand of joint values of shape (..., n), its last axis checked
+/// against the chain's n (numpy would name only the operand's index).
+py::object joint_operand(py::handle x, py::ssize_t n, const char* what) {
+  py::object operand = ufunc_operand(x, what);
+  if (npy().PyArray_Check_(operand.ptr())) {
+    const auto a = py::reinterpret_borrow<py::array>(operand);
+    if (a.ndim() < 1 || a.shape(a.ndim() - 1) != n)
+      raise_value_error(std::string(what) + ": expected shape (" + std::to_string(n) + ",) or (..., " +
+                        std::to_string(n) + ") for a chain of " + std::to_string(n) + " joints, got " +
+                        shape_string(a.shape(), static_cast<int>(a.ndim())));
+  }
+  return operand;
+}
+
 /// Calls the chain ufunc u with the chain and theta: numpy's rules decide
 /// dtypes and broadcasting. The last axis of theta is checked here, so that
 /// the message names the method and n. One configuration of float64 (a
@@ -225,14 +242,7 @@ py::object call_chain_ufunc(PyObject* u, const ChainD& c, py::handle theta, cons
                                                                                         dims[1]) = result;
     return std::move(out);
   }
-  const py::object operand = ufunc_operand(theta, what);
-  if (npy().PyArray_Check_(operand.ptr())) {
-    const auto a = py::reinterpret_borrow<py::array>(operand);
-    if (a.ndim() < 1 || a.shape(a.ndim() - 1) != n)
-      raise_value_error(std::string(what) + ": expected shape (" + std::to_string(n) + ",) or (..., " +
-                        std::to_string(n) + ") for a chain of " + std::to_string(n) + " joints, got " +
-                        shape_string(a.shape(), static_cast<int>(a.ndim())));
-  }
+  const py::object operand = joint_operand(theta, n, what);
   const py::array S = screws_array(c);
   const py::array M = mat_out<4, 4>(c.home().matrix());
   return call_ufunc<3>(u, what, {S.ptr(), M.ptr(), operand.ptr()});
@@ -433,6 +443,118 @@ bool is_plain(const PyChain& c) {
       return false;
   }
   return true;
+}
+
+/// The operands every dynamics ufunc (bind_dynamics.cpp) starts with: the
+/// screws (n, 6), the home pose (4, 4), the links' spatial inertia matrices
+/// (n, 6, 6) in the world frame at home (the link inertias are given in the
+/// base frame: moved by the base frame), and gravity (3).
+struct DynamicsOperands {
+  py::array screws, home, inertias, gravity;
+};
+
+DynamicsOperands dynamics_operands(const PyChain& c, const char* what) {
+  if (!c.has_inertias)
+    raise_value_error(std::string(what) +
+                      ": the chain has no link inertias (give Chain(..., link_inertias=...), or load it with "
+                      "Chain.from_urdf)");
+  const Py_intptr_t n = c.joints();
+  const Py_intptr_t dims[3] = {n, 6, 6};
+  py::array_t<double> G = new_array(3, dims);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const auto row = c.inertias.row(i);
+    Eigen::Matrix3d I;
+    I << row(4), row(5), row(6), row(5), row(7), row(8), row(6), row(8), row(9);
+    const chasles::SpatialInertia<double> body(row(0), Vector3(row(1), row(2), row(3)), I);
+    Eigen::Map<Eigen::Matrix<double, 6, 6, Eigen::RowMajor>>(array_data(G) + 36 * i) =
+        body.transform(c.given_base).matrix();
+  }
+  return {screws_array(c), mat_out<4, 4>(c.home().matrix()), std::move(G), vec_out<3>(c.gravity())};
+}
+
+/// A tip wrench operand (..., 6): zero when None.
+py::object tip_operand(py::handle tip, const char* what) {
+  if (tip.is_none()) return vec_out<6>(Eigen::Matrix<double, 6, 1>::Zero());
+  return ufunc_operand(tip, what);
+}
+
+/// The parts of Chain.inverse_kinematics' result (python/chasles/_results.py,
+/// IKResult): one solve (q of shape (n,), a bool, an int, error (6,)) or a
+/// batch (arrays with the batch shape).
+struct IKSolution {
+  py::object q, converged, iterations, error;
+};
+
+IKSolution solve_ik(const PyChain& c, py::handle target, py::handle q0, double position_tolerance,
+                    double orientation_tolerance, int max_iterations, int restarts, std::uint64_t seed) {
+  const char* what = "Chain.inverse_kinematics";
+  if (max_iterations < 0) raise_value_error(std::string(what) + "(max_iterations): expected >= 0, got " + std::to_string(max_iterations));
+  if (restarts < 0) raise_value_error(std::string(what) + "(restarts): expected >= 0, got " + std::to_string(restarts));
+  if (!(position_tolerance >= 0) || !(orientation_tolerance >= 0))
+    raise_value_error(std::string(what) + ": expected tolerances >= 0, got " + short_float(position_tolerance) + " and " +
+                      short_float(orientation_tolerance));
+  const py::ssize_t n = c.joints();
+  const py::array T = as_float64_array(target, "Chain.inverse_kinematics(target)");
+  if (T.ndim() < 2 || T.shape(T.ndim() - 1) != 4 || T.shape(T.ndim() - 2) != 4)
+    raise_value_error(std::string(what) + "(target): expected an SE3 or shape (4, 4) or (..., 4, 4), got " +
+                      array_shape(T));
+  const py::array Q = as_float64_array(q0, "Chain.inverse_kinematics(q0)");
+  if (Q.ndim() < 1 || Q.shape(Q.ndim() - 1) != n)
+    raise_value_error(std::string(what) + "(q0): expected shape (" + std::to_string(n) + ",) or (..., " +
+                      std::to_string(n) + ") for a chain of " + std::to_string(n) + " joints, got " + array_shape(Q));
+  const py::module_ np = py::module_::import("numpy");
+  const py::tuple t_shape = py::tuple(T.attr("shape")), q_shape = py::tuple(Q.attr("shape"));
+  py::tuple batch;
+  try {
+    batch = np.attr("broadcast_shapes")(t_shape[py::slice(0, T.ndim() - 2, 1)], q_shape[py::slice(0, Q.ndim() - 1, 1)]);
+  } catch (py::error_already_set&) {
+    raise_value_error(std::string(what) + ": the batch shapes of target " + array_shape(T) + " and q0 " + array_shape(Q) +
+                      " do not broadcast together");
+  }
+  const py::array Tb = np.attr("ascontiguousarray")(np.attr("broadcast_to")(T, batch + py::make_tuple(4, 4)));
+  const py::array Qb = np.attr("ascontiguousarray")(np.attr("broadcast_to")(Q, batch + py::make_tuple(n)));
+  const py::ssize_t k = Tb.size() / 16;
+  const double* tp = static_cast<const double*>(Tb.data());
+  const double* qp = static_cast<const double*>(Qb.data());
+  for (py::ssize_t i = 0; i < k; ++i) {
+    const Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>> Ti(tp + 16 * i);
+    if (!(SE3d::transform_defect(Ti) <= chasles::Thresholds<double>::rotation_tolerance))
+      raise_value_error(std::string(what) + "(target): not a rigid motion (defect " +
+                        short_float(SE3d::transform_defect(Ti)) + (k > 1 ? " at index " + std::to_string(i) : "") +
+                        "); SE3.from_matrix_projected makes one");
+  }
+  if (!Eigen::Map<const Eigen::ArrayXd>(qp, k * n).isFinite().all())
+    raise_value_error(std::string(what) + "(q0): expected finite numbers");
+  py::array_t<double> q_out(std::vector<py::ssize_t>{k, n}), e_out(std::vector<py::ssize_t>{k, 6});
+  py::array_t<bool> c_out(k);
+  py::array_t<int> i_out(k);
+  chasles::IKOptions<double> options;
+  options.position_tolerance = position_tolerance;
+  options.orientation_tolerance = orientation_tolerance;
+  options.max_iterations = max_iterations;
+  {
+    py::gil_scoped_release release;
+    std::mt19937_64 gen(seed);
+    double* qo = q_out.mutable_data();
+    double* eo = e_out.mutable_data();
+    bool* co = c_out.mutable_data();
+    int* io = i_out.mutable_data();
+    for (py::ssize_t i = 0; i < k; ++i) {
+      const SE3d Ti = SE3d::from_matrix_unchecked(Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(tp + 16 * i));
+      const ChainD::JointVector q0i = Eigen::Map<const Eigen::VectorXd>(qp + n * i, n);
+      const auto r = restarts > 0
+                         ? chasles::inverse_kinematics(c, Ti, q0i, c.lower(), c.upper(), options, gen, restarts)
+                         : chasles::inverse_kinematics(c, Ti, q0i, c.lower(), c.upper(), options);
+      Eigen::Map<Eigen::VectorXd>(qo + n * i, n) = r.q;
+      Eigen::Map<Eigen::Matrix<double, 6, 1>>(eo + 6 * i) = r.error;
+      co[i] = r.converged;
+      io[i] = r.iterations;
+    }
+  }
+  if (batch.empty())
+    return {q_out.attr("reshape")(n), py::bool_(c_out.at(0)), py::int_(i_out.at(0)), e_out.attr("reshape")(6)};
+  return {q_out.attr("reshape")(batch + py::make_tuple(n)), c_out.attr("reshape")(batch), i_out.attr("reshape")(batch),
+          e_out.attr("reshape")(batch + py::make_tuple(6))};
 }
 
 }  // namespace
@@ -659,6 +781,178 @@ Example:
     >>> arm = Chain([Chain.revolute_screw([0, 0, 0], [0, 0, 1])], SE3(translation=[1.0, 0.0, 0.0]))
     >>> np.round(arm.jacobian_body([0.3])[:, 0], 12) + 0.0
     array([0., 1., 0., 0., 0., 1.])
+)doc");
+
+  // ---- inverse kinematics (chasles/inverse_kinematics.hpp)
+  cls.def(
+      "inverse_kinematics",
+      [](Obj<PyChain> c, py::object target, py::object q0, double position_tolerance, double orientation_tolerance,
+         int max_iterations, int restarts, std::uint64_t seed) {
+        const IKSolution r =
+            solve_ik(*c, target, q0, position_tolerance, orientation_tolerance, max_iterations, restarts, seed);
+        return py::module_::import("chasles._results").attr("IKResult")(r.q, r.converged, r.iterations, r.error);
+      },
+      py::arg("target"), py::arg("q0"), py::kw_only(),
+      py::arg("position_tolerance") = chasles::Thresholds<double>::ik_tolerance,
+      py::arg("orientation_tolerance") = chasles::Thresholds<double>::ik_tolerance,
+      py::arg("max_iterations") = chasles::Thresholds<double>::ik_max_iterations, py::arg("restarts") = 0,
+      py::arg("seed") = 0,
+      R"doc(Inverse kinematics: joint positions q with forward(q) = target, within the joint limits.
+
+Levenberg-Marquardt on the body error e(q) = log(forward(q)^-1 target)
+(twist (v, w) in the tool frame) with its exact Jacobian
+-J_l(e)^-1 J_b(q), each step projected onto [lower, upper], at most
+max_iterations iterations; then, while not converged, up to ``restarts``
+more attempts from seeds uniform within the limits ([-pi, pi] where a
+limit is infinite), drawn from a generator seeded with ``seed``. The C++
+solver (chasles/inverse_kinematics.hpp) runs with the GIL released.
+
+Targets and seeds broadcast: one target (an SE3 or (4, 4)) and q0 (n,) give
+one solve; (..., 4, 4) targets and/or (..., n) seeds give a batch.
+
+Args:
+    target: SE3 or array_like of shape (4, 4) or (..., 4, 4), the tool pose(s).
+    q0: array_like of shape (n,) or (..., n), the seed(s) (clamped into the limits).
+    position_tolerance: |e_v| at a solution (the chain's length unit); default 3.7e-11.
+    orientation_tolerance: |e_w| at a solution (radians); default 3.7e-11.
+    max_iterations: iterations per attempt (>= 0).
+    restarts: further attempts from random seeds while not converged (>= 0).
+    seed: the seed of those random seeds (a 64-bit Mersenne twister).
+
+Returns:
+    IKResult: a named tuple (q, converged, iterations, error): q of shape
+    (n,), a bool, an int, the body error twist e of shape (6,); for a batch,
+    arrays of shapes (..., n), (...), (...), (..., 6).
+
+Raises:
+    ValueError: a target that is not a rigid motion, shapes that do not
+        match or broadcast, a non-finite seed, negative counts or tolerances.
+
+Example:
+    >>> arm = Chain([Chain.revolute_screw([0, 0, 0], [0, 0, 1]),
+    ...              Chain.revolute_screw([1, 0, 0], [0, 0, 1])], SE3(SO3(), [2, 0, 0]))
+    >>> r = arm.inverse_kinematics(arm.forward([0.3, -0.5]), [0.0, -0.2])
+    >>> r.converged, np.round(r.q, 12) + 0.0
+    (True, array([ 0.3, -0.5]))
+)doc");
+
+  // ---- dynamics (chasles/dynamics.hpp, through the ufuncs of bind_dynamics.cpp)
+  const py::object u_inverse_dynamics = m.attr("_inverse_dynamics"), u_forward_dynamics = m.attr("_forward_dynamics"),
+                   u_mass_matrix = m.attr("_mass_matrix"), u_gravity_torques = m.attr("_gravity_torques"),
+                   u_coriolis = m.attr("_coriolis");
+  cls.def(
+      "inverse_dynamics",
+      [u_inverse_dynamics](Obj<PyChain> c, py::object q, py::object qd, py::object qdd, py::object tip_wrench) {
+        const char* what = "Chain.inverse_dynamics";
+        const DynamicsOperands d = dynamics_operands(*c, what);
+        const py::ssize_t n = c->joints();
+        const py::object a = joint_operand(q, n, "Chain.inverse_dynamics(q)"),
+                         b = joint_operand(qd, n, "Chain.inverse_dynamics(qd)"),
+                         e = joint_operand(qdd, n, "Chain.inverse_dynamics(qdd)"),
+                         f = tip_operand(tip_wrench, "Chain.inverse_dynamics(tip_wrench)");
+        return call_ufunc<8>(u_inverse_dynamics.ptr(), what,
+                             {d.screws.ptr(), d.home.ptr(), d.inertias.ptr(), d.gravity.ptr(), a.ptr(), b.ptr(), e.ptr(),
+                              f.ptr()});
+      },
+      py::arg("q"), py::arg("qd"), py::arg("qdd"), py::kw_only(), py::arg("tip_wrench") = py::none(),
+      R"doc(Inverse dynamics: the joint torques (forces) tau that give the accelerations qdd.
+
+tau = M(q) qdd + C(q, qd) qd + g(q) + J_b(q)^T F_tip, by the recursive
+Newton-Euler algorithm in screw form (chasles/dynamics.hpp), with the
+chain's link inertias and gravity. An array function: (..., n) in, (..., n)
+out, the GIL released.
+
+Args:
+    q, qd, qdd: array_like of shape (..., n): joint positions, velocities, accelerations.
+    tip_wrench: array_like of shape (..., 6) or a Wrench: the wrench (f, tau)
+        the tool applies to the environment, in the tool frame (Modern
+        Robotics' F_tip); None: zero.
+
+Returns:
+    numpy.ndarray: shape (..., n), N m for revolute joints and N for prismatic ones.
+
+Raises:
+    ValueError: a chain without link inertias, shapes that do not match.
+)doc");
+  cls.def(
+      "forward_dynamics",
+      [u_forward_dynamics](Obj<PyChain> c, py::object q, py::object qd, py::object tau, py::object tip_wrench) {
+        const char* what = "Chain.forward_dynamics";
+        const DynamicsOperands d = dynamics_operands(*c, what);
+        const py::ssize_t n = c->joints();
+        const py::object a = joint_operand(q, n, "Chain.forward_dynamics(q)"),
+                         b = joint_operand(qd, n, "Chain.forward_dynamics(qd)"),
+                         e = joint_operand(tau, n, "Chain.forward_dynamics(tau)"),
+                         f = tip_operand(tip_wrench, "Chain.forward_dynamics(tip_wrench)");
+        return call_ufunc<8>(u_forward_dynamics.ptr(), what,
+                             {d.screws.ptr(), d.home.ptr(), d.inertias.ptr(), d.gravity.ptr(), a.ptr(), b.ptr(), e.ptr(),
+                              f.ptr()});
+      },
+      py::arg("q"), py::arg("qd"), py::arg("tau"), py::kw_only(), py::arg("tip_wrench") = py::none(),
+      R"doc(Forward dynamics: the joint accelerations qdd = M(q)^-1 (tau - C(q, qd) qd - g(q) - J_b^T F_tip).
+
+By a Cholesky factorization of the mass matrix (chasles/dynamics.hpp). An
+array function: (..., n) in, (..., n) out, the GIL released.
+
+Args:
+    q, qd, tau: array_like of shape (..., n): positions, velocities, joint torques.
+    tip_wrench: as in inverse_dynamics; None: zero.
+
+Returns:
+    numpy.ndarray: shape (..., n).
+)doc");
+  cls.def(
+      "mass_matrix",
+      [u_mass_matrix](Obj<PyChain> c, py::object q) {
+        const char* what = "Chain.mass_matrix";
+        const DynamicsOperands d = dynamics_operands(*c, what);
+        const py::object a = joint_operand(q, c->joints(), "Chain.mass_matrix(q)");
+        return call_ufunc<4>(u_mass_matrix.ptr(), what, {d.screws.ptr(), d.home.ptr(), d.inertias.ptr(), a.ptr()});
+      },
+      py::arg("q"),
+      R"doc(The joint-space mass matrix M(q), symmetric positive definite (composite rigid bodies).
+
+Args:
+    q: array_like of shape (..., n).
+
+Returns:
+    numpy.ndarray: shape (..., n, n).
+)doc");
+  cls.def(
+      "gravity_torques",
+      [u_gravity_torques](Obj<PyChain> c, py::object q) {
+        const char* what = "Chain.gravity_torques";
+        const DynamicsOperands d = dynamics_operands(*c, what);
+        const py::object a = joint_operand(q, c->joints(), "Chain.gravity_torques(q)");
+        return call_ufunc<5>(u_gravity_torques.ptr(), what,
+                             {d.screws.ptr(), d.home.ptr(), d.inertias.ptr(), d.gravity.ptr(), a.ptr()});
+      },
+      py::arg("q"),
+      R"doc(The torques g(q) that hold the chain still against gravity: inverse_dynamics(q, 0, 0).
+
+Args:
+    q: array_like of shape (..., n).
+
+Returns:
+    numpy.ndarray: shape (..., n).
+)doc");
+  cls.def(
+      "coriolis",
+      [u_coriolis](Obj<PyChain> c, py::object q, py::object qd) {
+        const char* what = "Chain.coriolis";
+        const DynamicsOperands d = dynamics_operands(*c, what);
+        const py::ssize_t n = c->joints();
+        const py::object a = joint_operand(q, n, "Chain.coriolis(q)"), b = joint_operand(qd, n, "Chain.coriolis(qd)");
+        return call_ufunc<5>(u_coriolis.ptr(), what, {d.screws.ptr(), d.home.ptr(), d.inertias.ptr(), a.ptr(), b.ptr()});
+      },
+      py::arg("q"), py::arg("qd"),
+      R"doc(The Coriolis and centrifugal torques C(q, qd) qd (no gravity).
+
+Args:
+    q, qd: array_like of shape (..., n).
+
+Returns:
+    numpy.ndarray: shape (..., n).
 )doc");
 
   cls.def_property_readonly(

@@ -145,10 +145,13 @@ struct Thresholds<long double> {
 //   has, by quadratic convergence, nearly reached the floor. 3.7e-11 in
 //   double (about 1.7e5 eps), 2.4e-5 in float (about 200 eps).
 //
-// ik_max_iterations: the bound on its iterations, 100. From seeds 0.3 rad
-//   away it takes 4 to 8 on 6- and 7-joint arms (bench/bench_ik.py reports
-//   the distribution); the bound is a budget for far seeds, beyond which a
-//   restart from another seed pays better than more iterations.
+// ik_max_iterations: the bound on its iterations (trial steps), 100.
+//   Measured on the UR5 in double over 2000 random targets: from seeds
+//   0.3 rad away the median is 6 and the 99th percentile 20 (one target in
+//   2000 ends in a local minimum); from uniform random seeds the median is
+//   29 and half do not converge within 100. The bound is a budget, beyond
+//   which a restart from another seed pays better than more iterations
+//   (with 10 restarts 993 of 1000 random targets converge).
 //
 // spline_series_theta2: below this theta^2 (s) the coefficients of the
 //   right Jacobian and their first and second derivatives in s (spline.hpp,

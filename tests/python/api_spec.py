@@ -249,6 +249,52 @@ class JointArray(Arg):
 
 
 @dataclass
+class IKTarget(Arg):
+    """Chain.inverse_kinematics' target: an SE3 or an array-like of shape
+    (4, 4) or (..., 4, 4) of real numbers, each a rigid motion (defect at most
+    1.49e-8; NaN is not one)."""
+
+    def good(self):
+        return np.asarray(CHAIN_HOME)
+
+    def judge(self, value):
+        a = real_array(value, self.label)
+        if isinstance(a, Refused):
+            return a
+        if a.ndim < 2 or a.shape[-2:] != (4, 4):
+            return Refused(ValueError, (self.label, "expected an SE3 or shape (4, 4)"))
+        c = plain(a, np.float64).reshape(-1, 4, 4)
+        with np.errstate(all="ignore"):
+            R = c[:, :3, :3]
+            defect = np.maximum(
+                np.abs(np.swapaxes(R, -1, -2) @ R - np.eye(3)).max(axis=(-1, -2)),
+                np.abs(np.linalg.det(R) - 1.0) if c.size else np.zeros(0),
+            )
+            defect = np.maximum(defect, np.abs(c[:, 3, :] - [0.0, 0.0, 0.0, 1.0]).max(axis=-1))
+        if not np.all(defect <= 1.4901161193847656e-08):
+            return Refused(ValueError, (self.label, "not a rigid motion"))
+        return Accepted(plain(a, np.float64))
+
+
+@dataclass
+class IKSeed(Arg):
+    """Chain.inverse_kinematics' q0: real numbers of shape (n,) or (..., n), finite."""
+
+    n: int = 2
+
+    def good(self):
+        return np.array([0.3, -0.7])[: self.n]
+
+    def judge(self, value):
+        a = real_array(value, self.label)
+        if isinstance(a, Refused):
+            return a
+        if a.ndim < 1 or a.shape[-1] != self.n:
+            return Refused(ValueError, (self.label, f"({self.n},) or (..., {self.n})", f"got {shape_text(a.shape)}"))
+        return finite_or_refused(a, self.label)
+
+
+@dataclass
 class ScrewRows(Arg):
     """The screws of a chain: shape (n, 6), 1 <= n <= 32, finite."""
 
@@ -438,10 +484,6 @@ def _rule(x, label, rule):
         return Refused(ValueError, (label, "tolerance >= 0"))
     if rule == "pitch" and (math.isnan(x) or x == -math.inf):
         return Refused(ValueError, (label, "pitch"))
-    if rule == "positive" and not math.isfinite(x):
-        return Refused(ValueError, (label, "finite"))
-    if rule == "positive" and not x > 0.0:
-        return Refused(ValueError, (label, "> 0"))
     return Accepted(x)
 
 
@@ -788,6 +830,9 @@ G0 = chasles.SE3(R0, [1.0, 2.0, 3.0])
 XI0 = chasles.Twist(v=[1.0, 0.0, 0.5], w=[0.0, 0.2, 1.0])
 CHAIN_SCREWS = np.array([[0.0, 0.0, 0.0, 0.0, 0.0, 1.0], [0.0, -1.0, 0.0, 0.0, 0.0, 1.0]])
 CHAIN_HOME = chasles.SE3(translation=[2.0, 0.0, 0.0])
+# Per joint: mass, center of mass (3), ixx, ixy, ixz, iyy, iyz, izz.
+CHAIN_INERTIAS = np.array([[1.0, 0.5, 0.0, 0.0, 0.01, 0.0, 0.0, 0.02, 0.0, 0.02],
+                           [0.5, 1.5, 0.0, 0.0, 0.01, 0.0, 0.0, 0.01, 0.0, 0.01]])
 URDF_TEXT = (
     '<robot name="r"><link name="a"/><link name="b"/><joint name="j" type="revolute">'
     '<parent link="a"/><child link="b"/><axis xyz="0 0 1"/>'
@@ -1226,6 +1271,20 @@ def _build_spec():
     )
     for m in ("forward", "forward_body", "jacobian_space", "jacobian_body"):
         spec[f"Chain.{m}"] = _method(Chain, m, JointArray(f"Chain.{m}(theta)", 2))
+    spec["Chain.inverse_kinematics"] = _method(
+        Chain, "inverse_kinematics", IKTarget("Chain.inverse_kinematics(target)"),
+        IKSeed("Chain.inverse_kinematics(q0)", 2),
+    )
+    # The dynamics: a chain with link inertias (GOOD's has none: refused, tested in test_robot.py).
+    inertial = Instance("self", (Chain,), valid=lambda: Chain(CHAIN_SCREWS, CHAIN_HOME, link_inertias=CHAIN_INERTIAS))
+    for m, names in (("inverse_dynamics", ("q", "qd", "qdd")), ("forward_dynamics", ("q", "qd", "tau")),
+                     ("mass_matrix", ("q",)), ("gravity_torques", ("q",)), ("coriolis", ("q", "qd"))):
+        spec[f"Chain.{m}"] = Entry(
+            # (a shape error names the argument, numpy's dtype error only the call)
+            [[inertial, *(JointArray(f"Chain.{m}", 2) for a in names)]],
+            call=lambda *a, m=m: getattr(Chain, m)(*a),
+            self_first=True,
+        )
     for p in ("screws", "body_screws", "home", "n_joints", "joint_types", "names", "lower", "upper",
               "velocity_limits", "effort_limits", "base", "tool", "gravity", "link_inertias"):
         spec[f"Chain.{p}"] = _prop(Chain, p)

@@ -214,7 +214,7 @@ def test_bad_input(cls):
     with pytest.raises(ValueError, match="element 2"):
         cls(0.0, 1.0, bad)
     for spacing in (0.0, -1.0):
-        with pytest.raises(ValueError, match=rf"{name}\(spacing\): expected a spacing > 0"):
+        with pytest.raises(ValueError, match=rf"{name}\(spacing\): expected a positive spacing \(> 0\)"):
             cls(0.0, spacing, X)
     for spacing in (np.inf, np.nan):
         with pytest.raises(ValueError, match=rf"{name}\(spacing\).*finite"):

@@ -387,7 +387,8 @@ COMPUTED = {
     Twist: {"to_modern_robotics", "hat", "ad", "bracket", "screw", "pitch", "power", "is_approx"},
     Wrench: {"power", "screw", "pitch", "is_approx"},
     Screw: {"is_approx"},
-    Chain: {"forward", "forward_body", "jacobian_space", "jacobian_body"},
+    Chain: {"forward", "forward_body", "jacobian_space", "jacobian_body", "inverse_kinematics", "inverse_dynamics",
+            "forward_dynamics", "mass_matrix", "gravity_torques", "coriolis"},
 }
 
 

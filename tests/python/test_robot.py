@@ -1,0 +1,232 @@
+"""Chain.inverse_kinematics and the Chain's dynamics methods on real arms of
+the example-robot-data package (UR5, Panda, xArm7, Kinova Jaco2 j2s6s200),
+loaded with Chain.from_urdf.
+
+- Inverse kinematics: targets forward(q*) for random q* within the limits;
+  from seeds 0.3 rad away every one converges, and the solution is checked
+  by an independent forward kinematics, the product of scipy.linalg.expm of
+  the 4x4 hat matrices; batches equal single solves; limits respected;
+  random seeds with restarts; errors.
+- Dynamics: inverse_dynamics, mass_matrix, gravity_torques, coriolis and
+  forward_dynamics against the modern_robotics package on the same arms
+  (screws to (w, v), link frames at each link's center of mass, inertias
+  described there), to 1e-12 relative; gravity_torques = inverse_dynamics
+  at rest; a chain without inertias refused.
+"""
+
+import importlib.metadata
+
+import modern_robotics as mr
+import numpy as np
+import pytest
+from scipy.linalg import expm
+
+from chasles import SE3, Chain, SpatialInertia
+
+ARMS = {
+    "ur5": ("ur_description/urdf/ur5_robot.urdf", "tool0"),
+    "panda": ("panda_description/urdf/panda.urdf", "panda_hand"),
+    "xarm7": ("xarm_description/urdf/xarm7.urdf", "link7"),
+    "jaco2": ("kinova_description/robots/kinova.urdf", "j2s6s200_end_effector"),
+}
+
+
+def robots_dir():
+    for f in importlib.metadata.files("example-robot-data") or []:
+        if str(f).endswith("ur_description/urdf/ur5_robot.urdf"):
+            return f.locate().parents[2]
+    raise RuntimeError("example-robot-data has no ur5_robot.urdf")
+
+
+@pytest.fixture(scope="module")
+def arms():
+    root = robots_dir()
+    return {key: Chain.from_urdf(root / rel, tip) for key, (rel, tip) in ARMS.items()}
+
+
+def hat6(xi):
+    v, w = xi[:3], xi[3:]
+    return np.array([[0, -w[2], w[1], v[0]], [w[2], 0, -w[0], v[1]], [-w[1], w[0], 0, v[2]], [0, 0, 0, 0]])
+
+
+def reference_forward(chain, q):
+    """The product of exponentials by scipy's expm of 4x4 hat matrices."""
+    g = np.eye(4)
+    for s, t in zip(chain.screws, q):
+        g = g @ expm(hat6(s * t))
+    return g @ np.asarray(chain.home)
+
+
+def within_limits(chain, rng, margin=0.0):
+    lo = np.maximum(chain.lower, -np.pi) + margin
+    hi = np.minimum(chain.upper, np.pi) - margin
+    return rng.uniform(lo, hi)
+
+
+# ---- inverse kinematics --------------------------------------------------------
+
+
+@pytest.mark.parametrize("key", list(ARMS))
+def test_ik_from_nearby_seeds_reaches_every_target(arms, key):
+    chain = arms[key]
+    rng = np.random.default_rng(1)
+    for _ in range(40):
+        q_true = within_limits(chain, rng, margin=0.3)
+        target = chain.forward(q_true)
+        r = chain.inverse_kinematics(target, q_true + rng.uniform(-0.3, 0.3, chain.n_joints))
+        assert r.converged, (key, r)
+        assert isinstance(r.converged, bool) and isinstance(r.iterations, int)
+        assert r.q.shape == (chain.n_joints,) and r.error.shape == (6,)
+        assert np.all(r.q >= chain.lower) and np.all(r.q <= chain.upper)
+        assert np.linalg.norm(r.error[:3]) <= 3.7e-11 and np.linalg.norm(r.error[3:]) <= 3.7e-11
+        # Independent check: scipy's matrix exponentials reach the target, to
+        # the tolerance on e (moving the tool frame by at most |e_w| |p| + |e_v|
+        # for a tool |p| <= 1.5 m from the base) plus expm's own rounding.
+        np.testing.assert_allclose(reference_forward(chain, r.q), target, rtol=0, atol=3 * 3.7e-11 + 1e-13)
+
+
+def test_ik_result_is_a_named_tuple(arms):
+    chain = arms["ur5"]
+    q, converged, iterations, error = r = chain.inverse_kinematics(chain.forward(np.full(6, 0.4)), np.full(6, 0.5))
+    assert type(r).__name__ == "IKResult" and r._fields == ("q", "converged", "iterations", "error")
+    assert converged and iterations == r.iterations > 0 and np.array_equal(q, r.q) and error is r.error
+    assert repr(r).startswith("IKResult(q=array([")
+
+
+def test_ik_batches_equal_single_solves(arms):
+    chain = arms["panda"]
+    rng = np.random.default_rng(2)
+    q_true = np.array([within_limits(chain, rng, 0.3) for _ in range(6)]).reshape(2, 3, -1)
+    targets = chain.forward(q_true)
+    seeds = q_true + rng.uniform(-0.3, 0.3, q_true.shape)
+    batch = chain.inverse_kinematics(targets, seeds)
+    assert batch.q.shape == (2, 3, 7) and batch.converged.shape == (2, 3) and batch.error.shape == (2, 3, 6)
+    assert batch.converged.dtype == bool and batch.iterations.dtype.kind == "i"
+    for i in np.ndindex(2, 3):
+        one = chain.inverse_kinematics(targets[i], seeds[i])
+        np.testing.assert_array_equal(batch.q[i], one.q)
+        np.testing.assert_array_equal(batch.error[i], one.error)
+        assert batch.converged[i] == one.converged and batch.iterations[i] == one.iterations
+    # One seed broadcast against many targets, and an SE3 target.
+    shared = chain.inverse_kinematics(targets, seeds[0, 0])
+    assert shared.q.shape == (2, 3, 7)
+    one = chain.inverse_kinematics(SE3.from_matrix(targets[0, 0]), seeds[0, 0])
+    np.testing.assert_array_equal(one.q, shared.q[0, 0])
+
+
+def test_ik_random_seeds_with_restarts(arms):
+    chain = arms["ur5"]
+    rng = np.random.default_rng(3)
+    targets = chain.forward(np.array([within_limits(chain, rng) for _ in range(50)]))
+    seeds = np.array([within_limits(chain, rng) for _ in range(50)])
+    first = chain.inverse_kinematics(targets, seeds)
+    again = chain.inverse_kinematics(targets, seeds, restarts=10, seed=7)
+    assert again.converged.sum() >= 49 and again.converged.sum() > first.converged.sum()
+    assert np.all(again.iterations >= first.iterations)
+    np.testing.assert_array_equal(again.q[first.converged], first.q[first.converged])
+    repeat = chain.inverse_kinematics(targets, seeds, restarts=10, seed=7)
+    np.testing.assert_array_equal(repeat.q, again.q)
+
+
+def test_ik_reports_an_unreachable_target_and_bounds_iterations(arms):
+    chain = arms["ur5"]
+    far = SE3.from_matrix(np.asarray(chain.home) + np.block([[np.zeros((3, 3)), np.full((3, 1), 5.0)], [np.zeros((1, 4))]]))
+    r = chain.inverse_kinematics(far, np.zeros(6), max_iterations=20)
+    assert not r.converged and r.iterations <= 20 and np.linalg.norm(r.error[:3]) > 3
+    assert np.all(np.isfinite(r.q))
+    r0 = chain.inverse_kinematics(far, np.zeros(6), max_iterations=0)
+    assert r0.iterations == 0 and not r0.converged
+
+
+@pytest.mark.parametrize(
+    ("target", "q0", "kwargs", "message"),
+    [
+        (np.eye(3), np.zeros(6), {}, r"target\): expected an SE3 or shape \(4, 4\)"),
+        (np.diag([2.0, 1, 1, 1]), np.zeros(6), {}, r"target\): not a rigid motion"),
+        (np.eye(4), np.zeros(5), {}, r"q0\): expected shape \(6,\)"),
+        (np.eye(4), np.full(6, np.nan), {}, r"q0\): expected finite"),
+        (np.eye(4), np.zeros(6), {"restarts": -1}, r"restarts\): expected >= 0"),
+        (np.eye(4), np.zeros(6), {"max_iterations": -1}, r"max_iterations\): expected >= 0"),
+        (np.eye(4), np.zeros(6), {"position_tolerance": -1.0}, r"expected tolerances >= 0"),
+        (np.broadcast_to(np.eye(4), (2, 4, 4)), np.zeros((3, 6)), {}, r"do not broadcast"),
+    ],
+)
+def test_ik_errors(arms, target, q0, kwargs, message):
+    with pytest.raises(ValueError, match=message):
+        arms["ur5"].inverse_kinematics(target, q0, **kwargs)
+
+
+# ---- dynamics --------------------------------------------------------------------
+
+# (v, w) <-> (w, v)
+SWAP = np.block([[np.zeros((3, 3)), np.eye(3)], [np.eye(3), np.zeros((3, 3))]])
+
+
+def to_modern_robotics(chain):
+    """(Slist, Mlist, Glist) of the chain: link frames {i} at each link's
+    center of mass with the base's orientation, Glist[i] the inertia
+    described in {i} in MR's (w, v) order."""
+    frames, Glist = [], []
+    for row in chain.link_inertias:
+        m, com, (ixx, ixy, ixz, iyy, iyz, izz) = row[0], row[1:4], row[4:]
+        body = SpatialInertia(m, com, [[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]])
+        T = np.eye(4)
+        T[:3, 3] = com
+        frames.append(T)
+        Glist.append(SWAP @ body.transform(SE3.from_matrix(np.linalg.inv(T))).matrix @ SWAP)
+    Mlist, previous = [], np.eye(4)
+    for T in frames:
+        Mlist.append(np.linalg.inv(previous) @ T)
+        previous = T
+    Mlist.append(np.linalg.inv(previous) @ np.asarray(chain.home))
+    return chain.screws[:, [3, 4, 5, 0, 1, 2]].T, np.array(Mlist), np.array(Glist)
+
+
+def assert_close(actual, expected, rtol=1e-12):
+    scale = max(1.0, float(np.max(np.abs(expected))))
+    np.testing.assert_allclose(actual, expected, rtol=0, atol=rtol * scale)
+
+
+@pytest.mark.parametrize("key", list(ARMS))
+def test_dynamics_against_modern_robotics(arms, key):
+    chain = arms[key]
+    assert chain.link_inertias is not None
+    Slist, Mlist, Glist = to_modern_robotics(chain)
+    gravity = chain.gravity
+    rng = np.random.default_rng(4)
+    n = chain.n_joints
+    for _ in range(3):
+        q, qd, qdd = within_limits(chain, rng), rng.uniform(-2, 2, n), rng.uniform(-2, 2, n)
+        tip = rng.uniform(-5, 5, 6)
+        ftip = np.r_[tip[3:], tip[:3]]
+        tau = chain.inverse_dynamics(q, qd, qdd, tip_wrench=tip)
+        assert_close(tau, mr.InverseDynamics(q, qd, qdd, gravity, ftip, Mlist, Glist, Slist))
+        M = chain.mass_matrix(q)
+        assert_close(M, mr.MassMatrix(q, Mlist, Glist, Slist))
+        np.testing.assert_array_equal(M, M.T)
+        assert np.all(np.linalg.eigvalsh(M) > 0)
+        assert_close(chain.gravity_torques(q), mr.GravityForces(q, gravity, Mlist, Glist, Slist))
+        assert_close(chain.coriolis(q, qd), mr.VelQuadraticForces(q, qd, Mlist, Glist, Slist))
+        cond = np.linalg.cond(M)
+        assert_close(chain.forward_dynamics(q, qd, tau, tip_wrench=tip), qdd, 1e-12 * cond)
+        np.testing.assert_array_equal(chain.gravity_torques(q), chain.inverse_dynamics(q, np.zeros(n), np.zeros(n)))
+
+
+def test_dynamics_are_array_functions(arms):
+    chain = arms["panda"]
+    rng = np.random.default_rng(5)
+    q, qd = rng.uniform(-1, 1, (4, 7)), rng.uniform(-1, 1, (4, 7))
+    taus = chain.inverse_dynamics(q, qd, np.zeros(7))
+    Ms = chain.mass_matrix(q)
+    assert taus.shape == (4, 7) and Ms.shape == (4, 7, 7)
+    for i in range(4):
+        np.testing.assert_array_equal(taus[i], chain.inverse_dynamics(q[i], qd[i], np.zeros(7)))
+        np.testing.assert_array_equal(Ms[i], chain.mass_matrix(q[i]))
+
+
+def test_dynamics_need_link_inertias_and_matching_shapes(arms):
+    bare = Chain(arms["ur5"].screws, arms["ur5"].home)
+    with pytest.raises(ValueError, match=r"Chain.gravity_torques: the chain has no link inertias"):
+        bare.gravity_torques(np.zeros(6))
+    with pytest.raises(ValueError, match=r"Chain.mass_matrix\(q\): expected shape \(6,\)"):
+        arms["ur5"].mass_matrix(np.zeros(7))
