@@ -107,6 +107,7 @@ int main() {
   const CubicBSplineView<SE3d> bspline(means.data(), kKeys, times[1], 1.0);
   const auto bspline_element = [&](double t) { return bspline(t); };
   std::printf("cumulative B-spline, the means as control poses:\n");
+  std::printf("   t |    position (m)      | body velocity v (m/s), w (rad/s)          | body acceleration (/s^2)\n");
   for (double t : {1.25, 1.5, 2.0, 2.5, 2.75}) {  // central differences stay inside [t_1, t_3]
     const BSplinePoint<SE3d> s = bspline.evaluate(t);
     print_row(t, s.value, s.velocity, s.acceleration);
