@@ -7,7 +7,7 @@ import numpy
 import numpy.dtypes
 import numpy.typing
 import typing
-__all__: list[str] = ['Chain', 'SE3', 'SE3BSpline', 'SO3', 'SO3BSpline', 'Screw', 'Twist', 'Wrench', 'act_jacobians', 'between', 'between_jacobians', 'compose_jacobians', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'lminus_jacobians', 'log_jacobian', 'lplus', 'lplus_jacobians', 'rminus', 'rminus_jacobians', 'rplus', 'rplus_jacobians', 'se3_act', 'se3_act_jacobian', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_distance', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_vee', 'so3_act', 'so3_act_jacobian', 'so3_angle', 'so3_compose', 'so3_distance', 'so3_exp', 'so3_from_uniforms', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee']
+__all__: list[str] = ['Chain', 'SE3', 'SE3BSpline', 'SO3', 'SO3BSpline', 'Screw', 'SpatialInertia', 'Twist', 'Wrench', 'act_jacobians', 'between', 'between_jacobians', 'compose_jacobians', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'lminus_jacobians', 'log_jacobian', 'lplus', 'lplus_jacobians', 'rminus', 'rminus_jacobians', 'rplus', 'rplus_jacobians', 'se3_act', 'se3_act_jacobian', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_distance', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_vee', 'so3_act', 'so3_act_jacobian', 'so3_angle', 'so3_compose', 'so3_distance', 'so3_exp', 'so3_from_uniforms', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee']
 class SO3:
     """
     A rotation of R^3: an element of SO(3), stored as its 3x3 matrix (float64).
@@ -1980,6 +1980,41 @@ class Chain:
     __array_ufunc__ = None
     __hash__: typing.ClassVar[None] = None
     @staticmethod
+    def from_urdf(source: typing.Any, tip_link: typing.Any, base_link: typing.Any = None) -> Chain:
+        """
+        The chain from base_link to tip_link of a URDF robot description.
+        
+        Revolute, continuous and prismatic joints become the chain's joints (their
+        names, types, limits); fixed joints are folded into the next joint's screw
+        or into the home pose; each moving joint's child link's ``<inertial>``
+        (with the links fixed to it) goes to ``link_inertias``. The home pose is
+        tip_link's frame at zero joint positions. Parsed with the standard
+        library's xml.etree (chasles/_urdf.py): URDF's kinematic and inertial
+        elements only, no meshes.
+        
+        Args:
+            source: a path (str or os.PathLike) to a .urdf file, or the XML text.
+            tip_link: the name of the last link (the tool).
+            base_link: the name of the base link; None: the root of the tree.
+        
+        Returns:
+            Chain.
+        
+        Raises:
+            ValueError: a malformed description; a floating or planar joint, or a
+                mimic joint, between base and tip; a joint naming a missing link; a
+                loop; an unknown tip or base link, or a tip not below the base.
+        
+        Example:
+            >>> urdf = \"\"\"<robot name="r"><link name="a"/><link name="b"/>
+            ...   <joint name="j" type="revolute"><parent link="a"/><child link="b"/>
+            ...     <origin xyz="0 0 0.5"/><axis xyz="0 0 1"/>
+            ...     <limit lower="-1" upper="1" effort="10" velocity="2"/></joint></robot>\"\"\"
+            >>> arm = Chain.from_urdf(urdf, "b")
+            >>> arm.names, arm.joint_types, arm.upper
+            (('j',), ('revolute',), array([1.]))
+        """
+    @staticmethod
     def prismatic_screw(direction: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
         The screw of a prismatic joint: (v, 0), v = direction / |direction|.
@@ -2032,23 +2067,57 @@ class Chain:
         """
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, screws: numpy.typing.ArrayLike, home: typing.Any) -> None:
+    def __init__(self, screws: numpy.typing.ArrayLike, home: typing.Any, *, joint_types: typing.Any = None, names: typing.Any = None, lower: typing.Any = None, upper: typing.Any = None, velocity_limits: typing.Any = None, effort_limits: typing.Any = None, base: typing.Any = None, tool: typing.Any = None, gravity: typing.Any = None, link_inertias: typing.Any = None) -> None:
         """
-        A serial chain from its space screws and its home pose.
+        A serial chain from its space screws and its home pose, with its robot model.
+        
+        The base and tool frames are folded in: the chain's ``screws`` are
+        Ad_base S_i and its ``home`` is base M tool (projected onto SE(3)), so that
+        forward kinematics and the Jacobians are in the world frame and end at the
+        tool; ``base`` and ``tool`` stay available.
+        
+        Each screw is checked against its joint's type: a revolute or continuous
+        joint's angular part w must be a unit vector and its pitch w . v zero, a
+        prismatic joint's w zero and its linear part v a unit vector (to 1.5e-8).
+        A table in Modern Robotics' (w, v) order, or transposed (one column per
+        joint, as MR's Slist), is refused with the conversion in the message.
         
         Args:
             screws: shape (n, 6), 1 <= n <= 32: row i is the space screw S_i = (v, w)
                 of joint i at the home configuration, in the base frame, finite.
-            home: SE3 or shape (4, 4), M = g(0), the tool frame at home.
+            home: SE3 or shape (4, 4), M = g(0), the tool frame at home (before
+                ``tool``), in the base frame.
+            joint_types: n of "revolute", "continuous", "prismatic"; None infers
+                them (prismatic where w = 0, revolute elsewhere).
+            names: n joint names (str), or None.
+            lower: shape (n,), lower position limits (radians or metres); None: -inf.
+            upper: shape (n,), upper position limits; None: inf. A continuous joint
+                has -inf and inf.
+            velocity_limits: shape (n,), >= 0; None: inf.
+            effort_limits: shape (n,), >= 0 (N m or N); None: inf.
+            base: SE3 or shape (4, 4), the base frame in the world frame; None: identity.
+            tool: SE3 or shape (4, 4), the tool frame after M; None: identity.
+            gravity: shape (3,), in the world frame, m/s^2; None: (0, 0, -9.81).
+            link_inertias: shape (n, 10), per joint the inertia of the link it moves
+                (mass, center of mass (3), ixx, ixy, ixz, iyy, iyz, izz about the
+                center of mass), in the base frame at home (``Chain.from_urdf``
+                fills it); or None.
         
         Raises:
             ValueError: a shape other than (n, 6), more than 32 joints, a non-finite
-                entry, or a home matrix that is not a rigid motion.
+                entry, a home, base or tool matrix that is not a rigid motion, a
+                screw that does not match its joint type, lower > upper, a negative
+                velocity or effort limit, a negative mass.
+            TypeError: joint types or names that are not strings.
         
         Example:
             >>> arm = Chain([[0, 0, 0, 0, 0, 1]], np.eye(4))
             >>> arm.n_joints
             1
+            >>> arm = Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), joint_types=["revolute"],
+            ...             names=["shoulder"], lower=[-1.5], upper=[1.5])
+            >>> arm
+            Chain(n_joints=1, names=('shoulder',))
         """
     def __ne__(self, other: typing.Any) -> bool:
         """
@@ -2159,9 +2228,24 @@ class Chain:
             array([0., 0., 0., 0., 0., 1.])
         """
     @property
+    def base(self) -> SE3:
+        """
+        SE3: the base frame in the world frame (already folded into screws and home).
+        """
+    @property
     def body_screws(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: shape (n, 6), the body screws B_i = Ad_{M^-1} S_i (a copy).
+        """
+    @property
+    def effort_limits(self) -> numpy.ndarray:
+        """
+        numpy.ndarray: shape (n,), the effort limits, N m or N (inf where none; a copy).
+        """
+    @property
+    def gravity(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        numpy.ndarray: shape (3,), gravity in the world frame, m/s^2 (a copy).
         """
     @property
     def home(self) -> SE3:
@@ -2169,14 +2253,52 @@ class Chain:
         SE3: the home pose M = g(0).
         """
     @property
+    def joint_types(self) -> tuple:
+        """
+        tuple[str, ...]: each joint's type: "revolute", "continuous" or "prismatic".
+        """
+    @property
+    def link_inertias(self) -> typing.Any:
+        """
+        numpy.ndarray | None: shape (n, 10), per joint the inertia of the link it moves
+        (with the links fixed to it): mass, center of mass (3), then ixx, ixy, ixz,
+        iyy, iyz, izz of the rotational inertia about the center of mass, both in
+        the base frame at home; None when not given (a copy).
+        """
+    @property
+    def lower(self) -> numpy.ndarray:
+        """
+        numpy.ndarray: shape (n,), the lower position limits (-inf where none; a copy).
+        """
+    @property
     def n_joints(self) -> int:
         """
         int: n, the number of joints.
         """
     @property
+    def names(self) -> typing.Any:
+        """
+        tuple[str, ...] | None: the joint names, or None when none were given.
+        """
+    @property
     def screws(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: shape (n, 6), the space screws S_i, one row (v, w) per joint (a copy).
+        """
+    @property
+    def tool(self) -> SE3:
+        """
+        SE3: the tool frame after the last link (already folded into home).
+        """
+    @property
+    def upper(self) -> numpy.ndarray:
+        """
+        numpy.ndarray: shape (n,), the upper position limits (inf where none; a copy).
+        """
+    @property
+    def velocity_limits(self) -> numpy.ndarray:
+        """
+        numpy.ndarray: shape (n,), the velocity limits (inf where none; a copy).
         """
 class _SO3SplineCore:
     """
@@ -2461,6 +2583,216 @@ class SE3BSpline:
     def start_time(self) -> float:
         """
         float: t0, the start of the first segment.
+        """
+class SpatialInertia:
+    """
+    The inertia of a rigid body described in some frame: mass m, center of mass c
+    and rotational inertia I_c about the center of mass, both in that frame.
+    
+    Its 6x6 matrix is in the twist order (v, w), so that the momentum of the body
+    moving with the twist V = (v, w) is the wrench h = G V = (f, tau) (linear
+    momentum, then angular momentum about the frame's origin) and its kinetic
+    energy is 1/2 V^T G V:
+    
+        G = [[ m 1,     -m [c]         ],
+             [ m [c],    I_c - m [c]^2 ]]
+    
+    (Murray, Li and Sastry, ch. 4.2; Lynch and Park, Modern Robotics, ch. 8.2,
+    where the order is (w, v); Pinocchio's ``Inertia`` in the order (v, w)). The
+    same body described in frame a, given in frame b: ``I.transform(g_ab)``, with
+    c_a = R c_b + p, I_a = R I_c R^T and G_a = Ad_g^-T G_b Ad_g^-1.
+    
+    Example:
+        >>> body = SpatialInertia(2.0, [0.0, 0.0, 0.5], np.diag([0.1, 0.1, 0.02]))
+        >>> body.momentum(Twist(v=[1.0, 0.0, 0.0], w=[0.0, 0.0, 0.0])).force
+        array([2., 0., 0.])
+        >>> body.kinetic_energy(Twist(v=[1.0, 0.0, 0.0], w=[0.0, 0.0, 0.0]))
+        1.0
+    
+    Conventions (the same in C++, in README.md and in every docstring):
+        - twists xi = (v, w), linear part first (Murray, Li and Sastry); the
+          Modern Robotics order (w, v) only through Twist.to_modern_robotics /
+          Twist.from_modern_robotics;
+        - wrenches F = (f, tau), force first, so power is the dot product V . F;
+        - g_ab maps frame b to frame a: q_a = g_ab q_b, g_ac = g_ab @ g_bc;
+          twists change frame by Ad_g = [[R, [p]R], [0, R]], wrenches by Ad_g^-T;
+        - hat(w) = [w] with [w] p = w x p; [xi] = [[ [w], v ], [0, 0]];
+        - quaternions are (x, y, z, w), scalar last, as in scipy; pass
+          scalar_first=True for (w, x, y, z); angles are in radians.
+    
+    Numbers may be given as lists, tuples or arrays of any real dtype (bool,
+    integers and floats are converted to float64), in any memory layout; a wrong
+    shape is a ValueError naming the expected and the given shape, a value that
+    is not real (complex, object, str, None) a TypeError. Constructors refuse NaN
+    and infinities (ValueError); functions that return the numbers given,
+    rearranged (hat, SO3.vee, SE3.vee, actions on points), carry a NaN through,
+    and the defects are inf for a matrix that is not finite.
+    
+    Values are float64 and immutable. ``==`` is the exact equality of the stored
+    numbers, compared as floats (-0.0 == 0.0; a NaN is unequal to everything,
+    itself included), ``!=`` its negation, and objects are unhashable; compare
+    within a tolerance with ``is_approx(other, tol)``. Objects pickle and copy
+    bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
+    """
+    __array_ufunc__ = None
+    __hash__: typing.ClassVar[None] = None
+    dtype: typing.ClassVar[numpy.dtypes.Float64DType]
+    def __add__(self, other: SpatialInertia) -> SpatialInertia:
+        """
+        The two bodies rigidly joined (both described in the same frame): the matrices add.
+        
+        Args:
+            other: SpatialInertia.
+        
+        Returns:
+            SpatialInertia.
+        """
+    def __array__(self, dtype: numpy.typing.DTypeLike = None, copy: bool | None = None) -> numpy.ndarray:
+        """
+        The matrix G, shape (6, 6), for np.asarray (numpy's dtype and copy keywords).
+        """
+    def __copy__(self) -> SpatialInertia:
+        ...
+    def __deepcopy__(self, memo: typing.Any) -> SpatialInertia:
+        ...
+    def __eq__(self, other: typing.Any) -> bool:
+        """
+        Exact equality of the stored numbers: SpatialInertias are values, compared as floats
+        (-0.0 == 0.0; a NaN is unequal to everything, itself included).
+        
+        For a tolerance, use ``is_approx(other, tol)``. An object of another type gives
+        NotImplemented, so ``==`` is False. SpatialInertias are unhashable.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, mass: float, com: numpy.typing.ArrayLike, inertia: numpy.typing.ArrayLike) -> None:
+        """
+        A rigid body's inertia from its mass, center of mass and rotational inertia about it.
+        
+        Args:
+            mass: m > 0, finite.
+            com: shape (3,), c, the center of mass in the frame of description.
+            inertia: shape (3, 3), I_c, the rotational inertia about the center of
+                mass (axes of that frame): symmetric, positive definite, with
+                principal moments that satisfy the triangle inequality
+                I_1 + I_2 >= I_3 (each to a relative 1.5e-8).
+        
+        Raises:
+            ValueError: a wrong shape, a non-finite number, m <= 0, or an inertia
+                that no rigid body has (the message says which condition fails).
+        
+        Example:
+            >>> SpatialInertia(1.0, [0.0, 0.0, 0.0], np.eye(3)).mass
+            1.0
+        """
+    def __ne__(self, other: typing.Any) -> bool:
+        """
+        The negation of ``==``: some stored number differs (or is NaN), or other is not a SpatialInertia.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
+    def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support: (copyreg.__newobj__, (cls,), state).
+        """
+    def __reduce_ex__(self, protocol: typing.SupportsInt | typing.SupportsIndex) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support (every protocol): (copyreg.__newobj__, (cls,), state).
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: typing.Any) -> None:
+        ...
+    def is_approx(self, other: SpatialInertia, tol: float = 1e-09) -> bool:
+        """
+        Whether m, c and I_c agree within tol: max difference <= tol * max(1, their largest magnitude).
+        
+        ``==`` is the exact comparison.
+        
+        Args:
+            other: SpatialInertia.
+            tol: the tolerance (>= 0).
+        
+        Returns:
+            bool.
+        """
+    def kinetic_energy(self, twist: numpy.typing.ArrayLike) -> float:
+        """
+        T = 1/2 V^T G V = 1/2 (m |v_c|^2 + w . I_c w).
+        
+        Args:
+            twist: Twist or shape (6,), V = (v, w).
+        
+        Returns:
+            float.
+        
+        Example:
+            >>> SpatialInertia(2.0, [0.0, 0.0, 0.0], np.eye(3)).kinetic_energy([1.0, 0.0, 0.0, 0.0, 0.0, 0.0])
+            1.0
+        """
+    def momentum(self, twist: numpy.typing.ArrayLike) -> Wrench:
+        """
+        The momentum wrench h = G V = (m v_c, c x m v_c + I_c w), v_c = v + w x c.
+        
+        Args:
+            twist: Twist or shape (6,), V = (v, w), the body's twist in the frame of description.
+        
+        Returns:
+            Wrench: (linear momentum, angular momentum about the frame's origin).
+        
+        Example:
+            >>> body = SpatialInertia(2.0, [0.0, 0.0, 0.0], np.eye(3))
+            >>> body.momentum(Twist(w=[0.0, 0.0, 3.0])).torque
+            array([0., 0., 3.])
+        """
+    def transform(self, g: SE3) -> SpatialInertia:
+        """
+        The same body described in frame a, this one describing it in frame b; g = g_ab.
+        
+        c_a = R c + p, I_a = R I_c R^T; the matrix is Ad_g^-T G Ad_g^-1, so the
+        kinetic energy of a motion is the same in both frames:
+        ``I.transform(g).kinetic_energy(g.act(V)) == I.kinetic_energy(V)``.
+        
+        Args:
+            g: SE3, g_ab.
+        
+        Returns:
+            SpatialInertia.
+        
+        Example:
+            >>> body = SpatialInertia(1.0, [0.0, 0.0, 0.0], np.eye(3))
+            >>> body.transform(SE3(translation=[1.0, 2.0, 3.0])).com
+            array([1., 2., 3.])
+        """
+    @property
+    def com(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        ndarray: c, the center of mass, shape (3,).
+        """
+    @property
+    def inertia(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        ndarray: I_c, the rotational inertia about the center of mass, shape (3, 3).
+        """
+    @property
+    def mass(self) -> float:
+        """
+        float: m, the mass.
+        """
+    @property
+    def matrix(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        ndarray: G, shape (6, 6), order (v, w): [[m 1, -m [c]], [m [c], I_c - m [c]^2]].
         """
 def _se3_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], geodesic: bool, max_iterations: typing.SupportsInt | typing.SupportsIndex) -> tuple:
     """
@@ -2900,6 +3232,11 @@ _chain_forward: numpy.ufunc
 _chain_forward_body: numpy.ufunc
 _chain_jacobian_body: numpy.ufunc
 _chain_jacobian_space: numpy.ufunc
+_coriolis: numpy.ufunc
+_forward_dynamics: numpy.ufunc
+_gravity_torques: numpy.ufunc
+_inverse_dynamics: numpy.ufunc
+_mass_matrix: numpy.ufunc
 _so3_as_euler_XYX: numpy.ufunc
 _so3_as_euler_XYX_deg: numpy.ufunc
 _so3_as_euler_XYZ: numpy.ufunc
