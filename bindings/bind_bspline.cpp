@@ -239,7 +239,7 @@ void bind_one(py::module_& m) {
             s.start_time = to_finite_real(start_time.obj, label<Group>("start_time").c_str());
             s.spacing = to_finite_real(spacing.obj, label<Group>("spacing").c_str());
             if (!(s.spacing > 0))
-              raise_value_error(label<Group>("spacing") + ": expected a spacing > 0, got " + float_repr(s.spacing));
+              raise_value_error(label<Group>("spacing") + ": expected a spacing > 0 (a positive time), got " + float_repr(s.spacing));
             s.control = control_of<Group>(control.obj);
             return s;
           }),
