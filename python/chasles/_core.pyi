@@ -2548,6 +2548,11 @@ class Chain:
         SE3: the base frame in the world frame (already folded into screws and home).
         """
     @property
+    def base(self) -> SE3:
+        """
+        SE3: the base frame in the world frame (already folded into screws and home).
+        """
+    @property
     def body_screws(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         numpy.ndarray: shape (n, 6), the body screws B_i = Ad_{M^-1} S_i (a copy).
@@ -2898,6 +2903,216 @@ class SE3BSpline:
     def start_time(self) -> float:
         """
         float: t0, the start of the first segment.
+        """
+class SpatialInertia:
+    """
+    The inertia of a rigid body described in some frame: mass m, center of mass c
+    and rotational inertia I_c about the center of mass, both in that frame.
+    
+    Its 6x6 matrix is in the twist order (v, w), so that the momentum of the body
+    moving with the twist V = (v, w) is the wrench h = G V = (f, tau) (linear
+    momentum, then angular momentum about the frame's origin) and its kinetic
+    energy is 1/2 V^T G V:
+    
+        G = [[ m 1,     -m [c]         ],
+             [ m [c],    I_c - m [c]^2 ]]
+    
+    (Murray, Li and Sastry, ch. 4.2; Lynch and Park, Modern Robotics, ch. 8.2,
+    where the order is (w, v); Pinocchio's ``Inertia`` in the order (v, w)). The
+    same body described in frame a, given in frame b: ``I.transform(g_ab)``, with
+    c_a = R c_b + p, I_a = R I_c R^T and G_a = Ad_g^-T G_b Ad_g^-1.
+    
+    Example:
+        >>> body = SpatialInertia(2.0, [0.0, 0.0, 0.5], np.diag([0.1, 0.1, 0.02]))
+        >>> body.momentum(Twist(v=[1.0, 0.0, 0.0], w=[0.0, 0.0, 0.0])).force
+        array([2., 0., 0.])
+        >>> body.kinetic_energy(Twist(v=[1.0, 0.0, 0.0], w=[0.0, 0.0, 0.0]))
+        1.0
+    
+    Conventions (the same in C++, in README.md and in every docstring):
+        - twists xi = (v, w), linear part first (Murray, Li and Sastry); the
+          Modern Robotics order (w, v) only through Twist.to_modern_robotics /
+          Twist.from_modern_robotics;
+        - wrenches F = (f, tau), force first, so power is the dot product V . F;
+        - g_ab maps frame b to frame a: q_a = g_ab q_b, g_ac = g_ab @ g_bc;
+          twists change frame by Ad_g = [[R, [p]R], [0, R]], wrenches by Ad_g^-T;
+        - hat(w) = [w] with [w] p = w x p; [xi] = [[ [w], v ], [0, 0]];
+        - quaternions are (x, y, z, w), scalar last, as in scipy; pass
+          scalar_first=True for (w, x, y, z); angles are in radians.
+    
+    Numbers may be given as lists, tuples or arrays of any real dtype (bool,
+    integers and floats are converted to float64), in any memory layout; a wrong
+    shape is a ValueError naming the expected and the given shape, a value that
+    is not real (complex, object, str, None) a TypeError. Constructors refuse NaN
+    and infinities (ValueError); functions that return the numbers given,
+    rearranged (hat, SO3.vee, SE3.vee, actions on points), carry a NaN through,
+    and the defects are inf for a matrix that is not finite.
+    
+    Values are float64 and immutable. ``==`` is the exact equality of the stored
+    numbers, compared as floats (-0.0 == 0.0; a NaN is unequal to everything,
+    itself included), ``!=`` its negation, and objects are unhashable; compare
+    within a tolerance with ``is_approx(other, tol)``. Objects pickle and copy
+    bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
+    """
+    __array_ufunc__ = None
+    __hash__: typing.ClassVar[None] = None
+    dtype: typing.ClassVar[numpy.dtypes.Float64DType]
+    def __add__(self, other: SpatialInertia) -> SpatialInertia:
+        """
+        The two bodies rigidly joined (both described in the same frame): the matrices add.
+        
+        Args:
+            other: SpatialInertia.
+        
+        Returns:
+            SpatialInertia.
+        """
+    def __array__(self, dtype: numpy.typing.DTypeLike = None, copy: bool | None = None) -> numpy.ndarray:
+        """
+        The matrix G, shape (6, 6), for np.asarray (numpy's dtype and copy keywords).
+        """
+    def __copy__(self) -> SpatialInertia:
+        ...
+    def __deepcopy__(self, memo: typing.Any) -> SpatialInertia:
+        ...
+    def __eq__(self, other: typing.Any) -> bool:
+        """
+        Exact equality of the stored numbers: SpatialInertias are values, compared as floats
+        (-0.0 == 0.0; a NaN is unequal to everything, itself included).
+        
+        For a tolerance, use ``is_approx(other, tol)``. An object of another type gives
+        NotImplemented, so ``==`` is False. SpatialInertias are unhashable.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, mass: float, com: numpy.typing.ArrayLike, inertia: numpy.typing.ArrayLike) -> None:
+        """
+        A rigid body's inertia from its mass, center of mass and rotational inertia about it.
+        
+        Args:
+            mass: m > 0, finite.
+            com: shape (3,), c, the center of mass in the frame of description.
+            inertia: shape (3, 3), I_c, the rotational inertia about the center of
+                mass (axes of that frame): symmetric, positive definite, with
+                principal moments that satisfy the triangle inequality
+                I_1 + I_2 >= I_3 (each to a relative 1.5e-8).
+        
+        Raises:
+            ValueError: a wrong shape, a non-finite number, m <= 0, or an inertia
+                that no rigid body has (the message says which condition fails).
+        
+        Example:
+            >>> SpatialInertia(1.0, [0.0, 0.0, 0.0], np.eye(3)).mass
+            1.0
+        """
+    def __ne__(self, other: typing.Any) -> bool:
+        """
+        The negation of ``==``: some stored number differs (or is NaN), or other is not a SpatialInertia.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
+    def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support: (copyreg.__newobj__, (cls,), state).
+        """
+    def __reduce_ex__(self, protocol: typing.SupportsInt | typing.SupportsIndex) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support (every protocol): (copyreg.__newobj__, (cls,), state).
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: typing.Any) -> None:
+        ...
+    def is_approx(self, other: SpatialInertia, tol: float = 1e-09) -> bool:
+        """
+        Whether m, c and I_c agree within tol: max difference <= tol * max(1, their largest magnitude).
+        
+        ``==`` is the exact comparison.
+        
+        Args:
+            other: SpatialInertia.
+            tol: the tolerance (>= 0).
+        
+        Returns:
+            bool.
+        """
+    def kinetic_energy(self, twist: numpy.typing.ArrayLike) -> float:
+        """
+        T = 1/2 V^T G V = 1/2 (m |v_c|^2 + w . I_c w).
+        
+        Args:
+            twist: Twist or shape (6,), V = (v, w).
+        
+        Returns:
+            float.
+        
+        Example:
+            >>> SpatialInertia(2.0, [0.0, 0.0, 0.0], np.eye(3)).kinetic_energy([1.0, 0.0, 0.0, 0.0, 0.0, 0.0])
+            1.0
+        """
+    def momentum(self, twist: numpy.typing.ArrayLike) -> Wrench:
+        """
+        The momentum wrench h = G V = (m v_c, c x m v_c + I_c w), v_c = v + w x c.
+        
+        Args:
+            twist: Twist or shape (6,), V = (v, w), the body's twist in the frame of description.
+        
+        Returns:
+            Wrench: (linear momentum, angular momentum about the frame's origin).
+        
+        Example:
+            >>> body = SpatialInertia(2.0, [0.0, 0.0, 0.0], np.eye(3))
+            >>> body.momentum(Twist(w=[0.0, 0.0, 3.0])).torque
+            array([0., 0., 3.])
+        """
+    def transform(self, g: SE3) -> SpatialInertia:
+        """
+        The same body described in frame a, this one describing it in frame b; g = g_ab.
+        
+        c_a = R c + p, I_a = R I_c R^T; the matrix is Ad_g^-T G Ad_g^-1, so the
+        kinetic energy of a motion is the same in both frames:
+        ``I.transform(g).kinetic_energy(g.act(V)) == I.kinetic_energy(V)``.
+        
+        Args:
+            g: SE3, g_ab.
+        
+        Returns:
+            SpatialInertia.
+        
+        Example:
+            >>> body = SpatialInertia(1.0, [0.0, 0.0, 0.0], np.eye(3))
+            >>> body.transform(SE3(translation=[1.0, 2.0, 3.0])).com
+            array([1., 2., 3.])
+        """
+    @property
+    def com(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        ndarray: c, the center of mass, shape (3,).
+        """
+    @property
+    def inertia(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        ndarray: I_c, the rotational inertia about the center of mass, shape (3, 3).
+        """
+    @property
+    def mass(self) -> float:
+        """
+        float: m, the mass.
+        """
+    @property
+    def matrix(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        ndarray: G, shape (6, 6), order (v, w): [[m 1, -m [c]], [m [c], I_c - m [c]^2]].
         """
 def _se3_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], geodesic: bool, max_iterations: typing.SupportsInt | typing.SupportsIndex) -> tuple:
     """

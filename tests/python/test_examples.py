@@ -14,6 +14,7 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "python"
 # A line each example prints, to know it ran to its end.
 EXPECTED = {
     "arm_kinematics.py": "10000 configurations: the tool stays between 0.100 and 0.700 m",
+    "average_and_spline.py": "the spline passes through the means: worst",
     "poses_and_frames.py": "as a twist xi = (v, w):",
     "twist_from_trajectory.py": "worst error over the trajectory:",
     "urdf_arm.py": "1000 configurations: forward kinematics within",
