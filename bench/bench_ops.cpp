@@ -112,6 +112,17 @@ void register_chain(const std::string& input, const std::string& sn, int n) {
   add("Chain/forward_body" + tail, th, [chain](const JV& t) { return chain.forward_body(t); });
   add("Chain/jacobian_space" + tail, th, [chain](const JV& t) { return chain.jacobian_space(t); });
   add("Chain/jacobian_body" + tail, th, [chain](const JV& t) { return chain.jacobian_body(t); });
+  // Inverse kinematics of forward(theta) from a seed 0.3 rad away (each
+  // joint theta_i + U(-0.3, 0.3)), to the default tolerances.
+  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+  std::vector<std::pair<chasles::SE3<S>, JV>> problems;
+  for (const JV& t : th) {
+    JV seed(n);
+    for (int j = 0; j < n; ++j) seed(j) = t(j) + S(jitter(rng));
+    problems.emplace_back(chain.forward(t), seed);
+  }
+  add("Chain/inverse_kinematics_from_0.3rad" + tail, problems,
+      [chain](const auto& p) { return chasles::inverse_kinematics(chain, p.first, p.second); });
 }
 
 /// Spline/<group>/fit_100_keys and Spline/<group>/evaluate (element, body velocity and acceleration at times

@@ -11,8 +11,10 @@
 //   de/dq = -J_l(e)^-1 J_b(q).
 // Each iteration tries the damped Gauss-Newton (Levenberg-Marquardt) step
 //   (J^T J + mu I) dq = -J^T e,
-// projected onto the joint limits (q + dq clamped to [lower, upper]), and
-// keeps it if the cost |e|^2 / 2 decreased. The damping mu follows Nielsen's
+// with the joints at a limit that the step would push past held there (the
+// step of the others solved again without them: an active set), projected
+// onto the joint limits (q + dq clamped to [lower, upper]), and keeps it if
+// the cost |e|^2 / 2 decreased. The damping mu follows Nielsen's
 // rule (Madsen, Nielsen and Tingleff, "Methods for non-linear least squares
 // problems", 2004, sec. 3.2): it starts at tau max(diag J^T J), shrinks
 // after a step by max(1/3, 1 - (2 rho - 1)^3), rho the ratio of the actual
@@ -28,7 +30,7 @@
 // (e_v, e_w the linear and angular parts of e: for a small error, the
 // position error in the tool frame, in the chain's length unit, and the
 // rotation angle in radians). The cost is bounded: at most max_iterations
-// iterations, each one n x n Cholesky factorization (Eigen's LLT on the
+// iterations, each one or two n x n Cholesky factorizations (Eigen's LLT on the
 // chain's fixed-capacity matrices: no allocation), one forward kinematics
 // and, after an accepted step, one body Jacobian.
 #pragma once
@@ -137,9 +139,29 @@ inline IKResult<ChainT> inverse_kinematics(const ChainT& chain, const SE3<typena
   const Scalar eps(ThresholdsOf<Scalar>::epsilon);
   for (int k = 1; k <= options.max_iterations; ++k) {
     if (detail::ik_converged(e, options)) return {q, true, k - 1, e};
-    // The damped Gauss-Newton step (J^T J + mu I) dq = -J^T e, projected onto the limits.
-    llt.compute(JtJ + mu * Normal::Identity(n, n));
-    const JointVector trial = (q - llt.solve(gradient)).cwiseMax(lower).cwiseMin(upper);
+    // The damped Gauss-Newton step (J^T J + mu I) dq = -J^T e. A joint at a
+    // limit that the step would push past is held there (removed from the
+    // system: an active set), and the step of the others solved again, so
+    // that the joints left free make the descent; then projected onto the limits.
+    Normal A = JtJ + mu * Normal::Identity(n, n);
+    llt.compute(A);
+    JointVector dq = -llt.solve(gradient);
+    JointVector reduced_gradient = gradient;
+    bool held = false;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if ((q(i) <= lower(i) && dq(i) < Scalar(0)) || (q(i) >= upper(i) && dq(i) > Scalar(0))) {
+        A.row(i).setZero();
+        A.col(i).setZero();
+        A(i, i) = Scalar(1);
+        reduced_gradient(i) = Scalar(0);
+        held = true;
+      }
+    }
+    if (held) {
+      llt.compute(A);
+      dq = -llt.solve(reduced_gradient);
+    }
+    const JointVector trial = (q + dq).cwiseMax(lower).cwiseMin(upper);
     const JointVector step = trial - q;
     if (!(step.squaredNorm() > eps * eps * (q.squaredNorm() + eps))) return {q, false, k, e};  // stalled
     const Vector6 e_trial = pose_error(chain, target, trial);
