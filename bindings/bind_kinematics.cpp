@@ -1031,7 +1031,7 @@ Returns:
         return std::move(out);
       },
       R"doc(numpy.ndarray | None: shape (n, 10), per joint the inertia of the link it moves
-(with the links fixed to it): mass, center of mass (3), then ixx, ixy, ixz,
+(with the links that ride on it): mass, center of mass (3), then ixx, ixy, ixz,
 iyy, iyz, izz of the rotational inertia about the center of mass, both in
 the base frame at home; None when not given (a copy).)doc");
 
@@ -1045,8 +1045,12 @@ the base frame at home; None when not given (a copy).)doc");
 
 Revolute, continuous and prismatic joints become the chain's joints (their
 names, types, limits); fixed joints are folded into the next joint's screw
-or into the home pose; each moving joint's child link's ``<inertial>``
-(with the links fixed to it) goes to ``link_inertias``. The home pose is
+or into the home pose; each moving joint's child link's ``<inertial>``,
+with those of the links that ride on it, goes to ``link_inertias``: links
+after it up to the next moving joint, and links hanging off the chain (side
+branches, and the links below tip_link), fixed joints as they are and
+moving joints off the chain at zero, as Pinocchio's buildReducedModel at
+the neutral configuration. The home pose is
 tip_link's frame at zero joint positions. Parsed with the standard
 library's xml.etree (chasles/_urdf.py): URDF's kinematic and inertial
 elements only, no meshes.

@@ -168,6 +168,27 @@ def chain_from_urdf(source, tip_link, base_link=None):
         path.append(joint)
         link = joint.find("parent").get("link")
     path.reverse()
+    # Links hanging off the chain (side branches, and what is below the tip)
+    # ride rigidly on the chain link they hang from: fixed joints as they
+    # are, moving joints off the chain at zero (as Pinocchio's
+    # buildReducedModel at the neutral configuration).
+    children = {}
+    for joint in root.findall("joint"):
+        children.setdefault(joint.find("parent").get("link"), []).append(joint)
+    on_path = {base_link} | {joint.find("child").get("link") for joint in path}
+
+    def hanging_parts(link, T_link):
+        parts = []
+        for joint in children.get(link, []):
+            child = joint.find("child").get("link")
+            if child in on_path:
+                continue
+            T_child = T_link @ _pose(joint.find("origin"), f"joint {joint.get('name')!r}")
+            part = _inertial(links[child], T_child)
+            if part is not None:
+                parts.append(part)
+            parts += hanging_parts(child, T_child)
+        return parts
 
     screws, types, names, lower, upper, velocity, effort = [], [], [], [], [], [], []
     bodies = []  # per moving joint, the (mass, com, inertia) of the links it moves
@@ -214,9 +235,11 @@ def chain_from_urdf(source, tip_link, base_link=None):
             effort.append(eff)
             bodies.append([])
         if bodies:  # links before the first moving joint belong to the base
-            part = _inertial(links[joint.find("child").get("link")], T)
+            child = joint.find("child").get("link")
+            part = _inertial(links[child], T)
             if part is not None:
                 bodies[-1].append(part)
+            bodies[-1] += hanging_parts(child, T)
     if not screws:
         raise ValueError(
             f"Chain.from_urdf: no revolute, continuous or prismatic joint from {base_link!r} to {tip_link!r}"

@@ -242,6 +242,46 @@ def test_small_description_parses():
     assert Chain.from_urdf(urdf(GOOD), "c", "b").names == ("j2",)
 
 
+def test_links_hanging_off_the_chain_ride_on_their_chain_link():
+    # a -j1-> b -j2-> c (the chain, tip c); b carries a sensor (fixed, 1 m up
+    # x) and c a finger (prismatic, off the chain: at zero, 1 m along y).
+    def link(name, mass):
+        return (f'<link name="{name}"><inertial><origin xyz="0 0 0"/><mass value="{mass}"/>'
+                f'<inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/></inertial></link>')
+
+    text = (
+        '<robot name="r">' + link("a", 5.0) + link("b", 1.0) + link("c", 2.0) + link("sensor", 1.0)
+        + link("finger", 2.0) + joint("j1", "revolute", "a", "b") + joint("j2", "revolute", "b", "c")
+        + joint("s", "fixed", "b", "sensor", '<origin xyz="1 0 0"/>')
+        + joint("f", "prismatic", "c", "finger",
+                '<origin xyz="0 1 0"/><axis xyz="1 0 0"/><limit lower="0" upper="1" effort="1" velocity="1"/>')
+        + "</robot>"
+    )
+    arm = Chain.from_urdf(text, "c")
+    (m1, *c1), (m2, *c2) = arm.link_inertias[:, :4]
+    assert (m1, m2) == (2.0, 4.0)  # b + sensor, c + finger (the base link a is the base's)
+    np.testing.assert_allclose(c1, [0.5, 0, 0], atol=1e-15)
+    np.testing.assert_allclose(c2, [0, 0.5, 0], atol=1e-15)
+    # parallel axis: each part 0.5 m from the merged center
+    np.testing.assert_allclose(arm.link_inertias[0, 4:], [0.2, 0, 0, 0.2 + 0.5, 0, 0.2 + 0.5], atol=1e-15)
+
+
+@needs_data
+def test_panda_hand_carries_its_fingers(arms):
+    chain, moving, path = arms["panda"]
+    root = ET.parse(ROBOTS / ARMS["panda"][0]).getroot()
+    mass = {
+        link.get("name"): float(link.find("inertial/mass").get("value"))
+        for link in root.findall("link")
+        if link.find("inertial") is not None
+    }
+    # joint 7 moves link7, link8 and the hand (fixed), and the fingers (off the chain)
+    expected = sum(mass.get(k, 0.0) for k in ("panda_link7", "panda_link8", "panda_hand", "panda_leftfinger",
+                                              "panda_rightfinger"))
+    assert chain.link_inertias[6, 0] == pytest.approx(expected, rel=1e-15)
+    assert mass.get("panda_leftfinger", 0.0) > 0
+
+
 @pytest.mark.parametrize(
     "text,tip,base,error",
     [
