@@ -62,6 +62,7 @@ __all__ = [
     "ChainArtists",
     "FrameArtists",
     "FramesArtists",
+    "PARALLEL_SINE",
     "ScrewArtists",
     "chain",
     "frame",
