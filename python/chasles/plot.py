@@ -13,6 +13,10 @@ artists it made, so that a program can restyle them or read their data.
   axis as a line in space, its pitch as a label, and the helix that a point
   follows under exp([xi] theta) for theta in a range (computed with
   ``chasles.se3_exp`` and ``chasles.se3_act``).
+- ``chain(arm, q)``: a serial arm (a ``chasles.Chain``) at joint positions q:
+  its links as a stick figure through points on the joint axes (the feet of
+  the common normals of successive axes, Denavit and Hartenberg's
+  construction), each joint's axis, and the base and tool frames.
 
 Call ``ax.set_aspect("equal", adjustable="datalim")`` after drawing so that
 right angles look right.
@@ -47,7 +51,7 @@ except ImportError as error:  # pragma: no cover - exercised in a subprocess by 
     ) from error
 
 import chasles
-from chasles import SE3, Screw, Twist
+from chasles import SE3, Chain, Screw, Twist
 
 if TYPE_CHECKING:
     from matplotlib.text import Text
@@ -55,9 +59,12 @@ if TYPE_CHECKING:
 
 __all__ = [
     "AXIS_COLORS",
+    "ChainArtists",
     "FrameArtists",
     "FramesArtists",
+    "PARALLEL_SINE",
     "ScrewArtists",
+    "chain",
     "frame",
     "frames",
     "screw",
@@ -346,3 +353,209 @@ def screw(
     pitch_text = "pitch h = inf" if not finite_pitch else f"pitch h = {s.pitch:.3g}"
     label = ax.text(*ends[1], pitch_text, color=axis_color)
     return ScrewArtists(axis_line, helix_line, start, end, label, s)
+
+
+#: Below this sine of the angle between two successive joint axes they count as
+#: parallel in ``chain``: their common normal is then not unique (the one
+#: through the previous point is taken), and above it the feet of the normal are
+#: at most (distance between the axes) / 1e-6 away, which arms do not come near
+#: (their parallel axes, from URDF angles rounded to 1e-7 or so, are below it).
+PARALLEL_SINE = 1e-6
+
+
+class ChainArtists(NamedTuple):
+    """What ``chain`` drew, and the points it drew through.
+
+    ``links``: the stick figure, one polyline through ``points`` in order.
+    ``joints``: markers at the joints' origins, ``points[1:-1:2]``.
+    ``joint_axes``: one line per joint along its current axis, centered on its
+    origin. ``base`` and ``tool``: the two frames (``frame``'s artists).
+    ``points``: shape (2 n + 2, 3), the base origin; for each joint i its
+    origin (where the previous link meets its axis) and the point where the
+    link it moves leaves its axis; the tool origin. ``directions``: shape (n, 3),
+    the unit directions of the joint axes at q. ``ax``: the Axes drawn into.
+    """
+
+    links: Line3D
+    joints: Line3D
+    joint_axes: list[Line3D]
+    base: FrameArtists
+    tool: FrameArtists
+    points: np.ndarray
+    directions: np.ndarray
+    ax: Axes3D
+
+
+def _project(point: np.ndarray, through: np.ndarray, d: np.ndarray) -> np.ndarray:
+    """The point of the line through ``through`` along unit d nearest to point."""
+    return through + ((point - through) @ d) * d
+
+
+def _common_normal(
+    a: np.ndarray, da: np.ndarray, b: np.ndarray, db: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """The feet, on line A (through a, unit da) and on line B (through b, unit db),
+    of their common normal; for parallel lines the normal through a."""
+    c = float(da @ db)
+    if np.linalg.norm(np.cross(da, db)) < PARALLEL_SINE:
+        return a, _project(a, b, db)
+    # Minimize |a + s da - b - t db|^2: s - c t = -da.r, c s - t = -db.r, r = a - b.
+    r = a - b
+    s = (c * (db @ r) - da @ r) / (1.0 - c * c)
+    t = db @ r + c * s
+    return a + s * da, b + t * db
+
+
+def _home_geometry(arm: Chain) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """At home, in the world frame: each joint's origin and exit point on its
+    axis, and the axis' unit direction; shapes (n, 3) each (see ``chain``)."""
+    screws = arm.screws
+    n = len(screws)
+    origins, exits, directions = np.zeros((n, 3)), np.zeros((n, 3)), np.zeros((n, 3))
+    for i, (v, w) in enumerate(zip(screws[:, :3], screws[:, 3:])):
+        previous = arm.base.translation if i == 0 else origins[i - 1]
+        nw, nv = np.linalg.norm(w), np.linalg.norm(v)
+        if nw > 0.0:  # a rotation about the screw axis through w x v / |w|^2 along w
+            directions[i], through = w / nw, np.cross(w, v) / (nw * nw)
+        elif nv > 0.0:  # a translation along v: the slide through the previous point
+            directions[i], through = v / nv, previous
+        else:
+            raise ValueError(f"joint {i} has the zero screw: it has no axis to draw")
+        if i == 0:
+            origins[0] = _project(previous, through, directions[0])
+        else:
+            exits[i - 1], origins[i] = _common_normal(
+                origins[i - 1], directions[i - 1], through, directions[i]
+            )
+    if n:
+        exits[n - 1] = _project(arm.home.translation, origins[n - 1], directions[n - 1])
+    return origins, exits, directions
+
+
+def chain(
+    arm: Chain,
+    q: np.ndarray | Sequence[float],
+    *,
+    ax: Axes3D | None = None,
+    length: float | None = None,
+    color: str = "0.3",
+    linewidth: float = 3.0,
+    axis_color: str = "tab:orange",
+    labels: bool = True,
+) -> ChainArtists:
+    """Draw a serial arm at joint positions q: its links, its joint axes, its base and tool frames.
+
+    The links are drawn as a stick figure through points on the joint axes,
+    chosen at home by Denavit and Hartenberg's construction and then carried
+    by the joints:
+
+    - joint i's axis at home is the screw axis of its space screw S_i (a
+      revolute joint: the line through w x v / |w|^2 along w; a prismatic
+      joint: the line along v through joint i-1's origin, or the base origin);
+    - joint 1's origin is the point of its axis nearest to the base origin;
+      joint i+1's origin and joint i's exit point are the feet, on the two
+      axes, of the common normal of axes i and i+1 (for parallel axes, sine of
+      their angle below ``PARALLEL_SINE``, the normal through joint i's
+      origin); joint n's exit point is the point of its axis nearest to the tool
+      origin;
+    - at q, joint i's origin moves with the links before it,
+      ``exp([S_1] q_1) ... exp([S_(i-1)] q_(i-1))``, and its exit point with
+      joint i too, ``exp([S_1] q_1) ... exp([S_i] q_i)``: both stay on joint
+      i's current axis, the segment between them slides with a prismatic
+      joint, and each segment keeps its length under revolute joints.
+
+    The polyline goes base origin, then for each joint its origin and its exit
+    point, then the tool origin (``chain.forward(q)``); the segments along an
+    axis are Denavit-Hartenberg's offsets, those between axes its link lengths.
+    Each joint's axis is a segment of ``length`` along its current direction
+    (the w, or v for a prismatic joint, of ``chain.jacobian_space(q)``'s
+    column), centered on its origin.
+
+    Args:
+        arm: the chain (a ``chasles.Chain``, e.g. from ``Chain.from_urdf``).
+        q: array_like of shape (n,), the joint positions (radians or lengths).
+        ax: the 3D Axes to draw into; a new pyplot figure when None.
+        length: the length of the joint axis lines and of the frames' axes;
+            None: a tenth of the stick figure's length at home (1 if that is 0).
+        color: the links' color.
+        linewidth: the links' width.
+        axis_color: the joint axes' color.
+        labels: whether to write "base" and "tool" at those frames.
+
+    Returns:
+        ChainArtists: the links' polyline, the joint markers, the joint axis
+        lines, the base and tool frames' artists, the points drawn through,
+        the axis directions at q and the Axes.
+
+    Raises:
+        TypeError: arm is not a Chain, q is not real numbers, or ax is not a
+            3D Axes.
+        ValueError: q is not of shape (n,) or not finite, length is not
+            positive, or a joint has the zero screw.
+
+    Example:
+        >>> from matplotlib.figure import Figure
+        >>> ax = Figure().add_subplot(projection="3d")
+        >>> screws = [Chain.revolute_screw([0, 0, 0], [0, 0, 1]),
+        ...           Chain.revolute_screw([1, 0, 0], [0, 0, 1])]
+        >>> arm = Chain(screws, SE3(translation=[2.0, 0.0, 0.0]))
+        >>> drawn = chain(arm, [np.pi / 2, 0.0], ax=ax)
+        >>> np.round(drawn.points, 12) + 0.0  # base, joint 1 (origin, exit), joint 2, tool
+        array([[0., 0., 0.],
+               [0., 0., 0.],
+               [0., 0., 0.],
+               [0., 1., 0.],
+               [0., 1., 0.],
+               [0., 2., 0.]])
+        >>> np.round(drawn.tool.x.get_data_3d()[1], 12) + 0.0  # the tool's x axis along y
+        array([2. , 2.2])
+    """
+    if not isinstance(arm, Chain):
+        raise TypeError(f"arm must be a chasles.Chain, not {type(arm).__name__}")
+    n = arm.n_joints
+    try:
+        qs = np.asarray(q, dtype=float)
+    except (TypeError, ValueError) as error:
+        raise TypeError(f"q must be real numbers of shape ({n},), not {q!r}") from error
+    if qs.shape != (n,):
+        raise ValueError(f"q must have shape ({n},) for a chain of {n} joints, not {qs.shape}")
+    if not np.all(np.isfinite(qs)):
+        raise ValueError(f"q must be finite, not {qs}")
+
+    origins, exits, directions = _home_geometry(arm)
+    # prefix[k] = exp([S_1] q_1) ... exp([S_k] q_k), k = 0 .. n.
+    prefix = np.empty((n + 1, 4, 4))
+    prefix[0] = np.eye(4)
+    for k, step in enumerate(chasles.se3_exp(arm.screws * qs[:, None])):
+        prefix[k + 1] = prefix[k] @ step
+    tool = np.asarray(arm.forward(qs))
+    base = arm.base.as_matrix()
+
+    points = np.empty((2 * n + 2, 3))
+    points[0], points[-1] = base[:3, 3], tool[:3, 3]
+    if n:
+        points[1:-1:2] = chasles.se3_act(prefix[:-1], origins)
+        points[2:-1:2] = chasles.se3_act(prefix[1:], exits)
+    moved = np.einsum("kij,kj->ki", prefix[:-1, :3, :3], directions)
+
+    if length is None:
+        at_home = np.concatenate(
+            [base[None, :3, 3], np.stack([origins, exits], axis=1).reshape(-1, 3),
+             arm.home.translation[None]]
+        )
+        span = float(np.sum(np.linalg.norm(np.diff(at_home, axis=0), axis=1)))
+        length = 0.1 * span if span > 0.0 else 1.0
+    elif not (np.isfinite(length) and length > 0.0):
+        raise ValueError(f"length must be a positive number, not {length!r}")
+
+    ax = _axes(ax)
+    (links,) = ax.plot(*points.T, color=color, linewidth=linewidth, solid_capstyle="round")
+    (joints,) = ax.plot(*points[1:-1:2].T, color="k", marker="o", markersize=5, linestyle="none")
+    axes = []
+    for p, d in zip(points[1:-1:2], moved):
+        ends = np.stack([p - 0.5 * length * d, p + 0.5 * length * d])
+        (line,) = ax.plot(*ends.T, color=axis_color, linewidth=2.0)
+        axes.append(line)
+    base_frame = _draw_frame(ax, base, "base" if labels else None, length, 2.0)
+    tool_frame = _draw_frame(ax, tool, "tool" if labels else None, length, 2.0)
+    return ChainArtists(links, joints, axes, base_frame, tool_frame, points, moved, ax)

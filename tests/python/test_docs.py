@@ -41,3 +41,23 @@ def test_scipy_rigid_transform_takes_modern_robotics_exp_coords():
     g = transform.RigidTransform.from_exp_coords(xi.to_modern_robotics())
     assert np.allclose(g.as_matrix(), SE3.exp(xi).as_matrix(), atol=1e-14)
     assert np.allclose(g.as_exp_coords(), xi.to_modern_robotics(), atol=1e-14)
+
+
+def test_every_picture_is_there_and_used():
+    """The pictures that README.md and docs/*.md show are PNG files of docs/images
+    (made by the commands written beside them: ``python -m chasles --png ...``,
+    ``python examples/python/robot_arm.py --png ...``), and each is shown."""
+    root = DOCS.parent
+    shown = set()
+    for page in [root / "README.md", *PAGES]:
+        for target in re.findall(r"!\[[^\]]*\]\(([^)]+)\)", page.read_text(encoding="utf-8")):
+            path = (page.parent / target).resolve()
+            assert path.is_file(), f"{page.name} shows {target}, which is not there"
+            head = path.read_bytes()[:24]
+            assert head[:8] == b"\x89PNG\r\n\x1a\n" and head[12:16] == b"IHDR", target
+            width, height = int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big")
+            assert width >= 400 and height >= 300, (target, width, height)
+            shown.add(path)
+    assert {p.resolve() for p in (DOCS / "images").iterdir()} == shown
+    readme = (root / "README.md").read_text(encoding="utf-8")
+    assert "python examples/python/robot_arm.py --png docs/images/robot_arm.png" in readme

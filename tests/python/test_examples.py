@@ -16,6 +16,7 @@ EXPECTED = {
     "arm_kinematics.py": "10000 configurations: the tool stays between 0.100 and 0.700 m",
     "average_and_spline.py": "the spline passes through the means: worst",
     "poses_and_frames.py": "as a twist xi = (v, w):",
+    "robot_arm.py": "peak torque within the effort limits of every joint: True",
     "twist_from_trajectory.py": "worst error over the trajectory:",
     "urdf_arm.py": "1000 configurations: forward kinematics within",
     "wrench_transformation.py": "line of action through",
@@ -40,3 +41,23 @@ def test_example_runs(name, tmp_path):
     assert r.stderr == ""
     assert EXPECTED[name] in r.stdout
     assert list(tmp_path.iterdir()) == []  # writes nothing
+
+
+def test_robot_arm_writes_its_picture_where_asked(tmp_path):
+    """robot_arm.py --png PATH: a PNG of the arm (docs/images/robot_arm.png is made so)."""
+    pytest.importorskip("matplotlib")
+    target = tmp_path / "arm.png"
+    r = subprocess.run(
+        [sys.executable, str(EXAMPLES / "robot_arm.py"), "--png", str(target)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+        cwd=tmp_path,
+    )
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert f"written to {target}" in r.stdout
+    head = target.read_bytes()[:24]
+    assert head[:8] == b"\x89PNG\r\n\x1a\n" and head[12:16] == b"IHDR"
+    assert int.from_bytes(head[16:20], "big") >= 400 and int.from_bytes(head[20:24], "big") >= 400
+    assert list(tmp_path.iterdir()) == [target]

@@ -16,7 +16,7 @@ matplotlib = pytest.importorskip("matplotlib")
 matplotlib.use("Agg", force=True)  # before pyplot is imported: no display needed
 
 import matplotlib.pyplot as plt
-from chasles import SE3, SO3, Screw, Twist, plot
+from chasles import SE3, SO3, Chain, Screw, Twist, plot
 from matplotlib.colors import to_rgba
 from matplotlib.figure import Figure
 from scipy.spatial.transform import Rotation
@@ -258,6 +258,211 @@ def test_screw_refuses_bad_input(ax, kwargs, message):
         plot.screw(args.pop("xi"), ax=ax, **args)
 
 
+# ---- chain -----------------------------------------------------------------
+
+
+def example_robot_chain(suffix: str, tip: str) -> Chain:
+    """A chain of an arm of the example-robot-data package (skips without it)."""
+    metadata = pytest.importorskip("importlib.metadata")
+    try:
+        files = metadata.files("example-robot-data") or []
+    except metadata.PackageNotFoundError:
+        pytest.skip("example-robot-data is not installed")
+    for f in files:
+        if str(f).endswith(suffix):
+            return Chain.from_urdf(f.locate(), tip)
+    pytest.skip(f"example-robot-data has no {suffix}")
+
+
+def ur5() -> Chain:
+    return example_robot_chain("ur_description/urdf/ur5_robot.urdf", "tool0")
+
+
+def panda() -> Chain:
+    return example_robot_chain("panda_description/urdf/panda.urdf", "panda_hand_tcp")
+
+
+def rail_arm() -> Chain:
+    """A revolute joint, a prismatic one along its link and two revolute joints
+    (one axis parallel to the first), on a moved base and with a tool offset."""
+    screws = [
+        Chain.revolute_screw([0.0, 0.0, 0.0], [0.0, 0.0, 1.0]),
+        Chain.prismatic_screw([1.0, 0.0, 0.0]),
+        Chain.revolute_screw([0.8, 0.0, 0.3], [0.0, 0.0, 1.0]),
+        Chain.revolute_screw([1.2, 0.1, 0.3], [0.0, 1.0, 0.0]),
+    ]
+    base = SE3.exp([0.2, -0.1, 0.5, 0.0, 0.0, 0.4])
+    tool = SE3(translation=[0.0, 0.0, 0.1])
+    return Chain(screws, SE3(translation=[1.5, 0.1, 0.3]), base=base, tool=tool)
+
+
+ARMS = {"ur5": ur5, "panda": panda, "rail": rail_arm}
+
+
+def random_q(arm: Chain, rng) -> np.ndarray:
+    lo, hi = np.maximum(arm.lower, -np.pi), np.minimum(arm.upper, np.pi)
+    return rng.uniform(lo, hi)
+
+
+def current_axis(arm: Chain, q, i: int) -> tuple[np.ndarray | None, np.ndarray]:
+    """Joint i's axis at q from the space Jacobian's column i (its screw moved by
+    the joints before it): a point of it (None for a prismatic joint) and its
+    unit direction."""
+    column = arm.jacobian_space(q)[:, i]
+    v, w = column[:3], column[3:]
+    if np.linalg.norm(w) == 0.0:
+        return None, v / np.linalg.norm(v)
+    return np.cross(w, v) / (w @ w), w / np.linalg.norm(w)
+
+
+@pytest.mark.parametrize("name", sorted(ARMS))
+def test_chain_points_move_as_the_partial_chains(ax, name):
+    arm = ARMS[name]()
+    n = arm.n_joints
+    home = plot.chain(arm, np.zeros(n), ax=ax).points
+    assert home.shape == (2 * n + 2, 3)
+    rng = np.random.default_rng(4)
+    for _ in range(10):
+        q = random_q(arm, rng)
+        drawn = plot.chain(arm, q, ax=ax)
+        assert np.array_equal(data(drawn.links), drawn.points)
+        assert np.array_equal(data(drawn.joints), drawn.points[1:-1:2])
+        assert np.allclose(drawn.points[0], arm.base.translation, atol=TOL, rtol=0)
+        # Joint i's origin rides on the first i joints, its exit point on the first i + 1.
+        for k in range(1, 2 * n + 1):
+            m = k // 2  # the number of joints that move point k
+            if m == 0:
+                expected = home[k]
+            else:
+                partial = Chain(arm.screws[:m], SE3(translation=home[k]))
+                expected = partial.forward(q[:m])[:3, 3]
+            assert np.allclose(drawn.points[k], expected, atol=TOL, rtol=0), (k, m)
+        # The tool frame at chain.forward(q), the base frame at chain.base.
+        g = arm.forward(q)
+        assert np.allclose(drawn.points[-1], g[:3, 3], atol=TOL, rtol=0)
+        for i in range(3):
+            assert np.allclose(data(drawn.tool[i])[0], g[:3, 3], atol=TOL, rtol=0)
+            direction = data(drawn.tool[i])[1] - data(drawn.tool[i])[0]
+            assert np.allclose(direction / np.linalg.norm(direction), g[:3, i], atol=TOL)
+            assert np.allclose(
+                data(drawn.base[i])[1] - data(drawn.base[i])[0],
+                np.linalg.norm(direction) * arm.base.rotation.as_matrix()[:, i],
+                atol=TOL,
+            )
+        assert drawn.tool.label.get_text().strip() == "tool"
+        assert drawn.base.label.get_text().strip() == "base"
+        assert drawn.ax is ax
+
+
+@pytest.mark.parametrize("name", sorted(ARMS))
+def test_chain_points_are_on_the_joint_axes_and_links_are_common_normals(ax, name):
+    arm = ARMS[name]()
+    n = arm.n_joints
+    rng = np.random.default_rng(5)
+    for _ in range(10):
+        q = random_q(arm, rng)
+        drawn = plot.chain(arm, q, ax=ax, length=0.2)
+        origins, exits = drawn.points[1:-1:2], drawn.points[2:-1:2]
+        for i in range(n):
+            point, d = current_axis(arm, q, i)
+            assert np.allclose(drawn.directions[i], d, atol=TOL, rtol=0)
+            if point is not None:
+                for p in (origins[i], exits[i]):
+                    assert np.max(distance_to_line(p[None], point, d)) < TOL
+            else:  # the slide: from the origin along the axis
+                r = exits[i] - origins[i]
+                assert np.linalg.norm(r - (r @ d) * d) < TOL
+            # The joint's axis line: length 0.2 along d, centered on its origin.
+            ends = data(drawn.joint_axes[i])
+            assert np.allclose(ends, [origins[i] - 0.1 * d, origins[i] + 0.1 * d], atol=TOL)
+        # Between successive axes the links are perpendicular to both (when the
+        # axes are not parallel the common normal is unique); the first and
+        # last reach the base and tool origins perpendicularly.
+        d = drawn.directions
+        for i in range(n - 1):
+            link = origins[i + 1] - exits[i]
+            assert abs(link @ d[i]) < TOL and abs(link @ d[i + 1]) < TOL, i
+        assert abs((origins[0] - drawn.points[0]) @ d[0]) < TOL
+        assert abs((drawn.points[-1] - exits[-1]) @ d[-1]) < TOL
+
+
+def test_chain_of_the_ur5_is_its_denavit_hartenberg_table(ax):
+    """The stick figure at home has UR's published DH parameters (d1, a2, a3,
+    d4, d5, d6 of the UR5) as its segments."""
+    d1, a2, a3, d4, d5, d6 = 0.089159, 0.425, 0.39225, 0.10915, 0.09465, 0.0823
+    expected = [
+        [0.0, 0.0, 0.0],  # base
+        [0.0, 0.0, 0.0],  # shoulder pan: origin, exit
+        [0.0, 0.0, d1],
+        [0.0, 0.0, d1],  # shoulder lift (parallel to the next two)
+        [0.0, 0.0, d1],
+        [a2, 0.0, d1],  # elbow
+        [a2, 0.0, d1],
+        [a2 + a3, 0.0, d1],  # wrist 1
+        [a2 + a3, d4, d1],
+        [a2 + a3, d4, d1],  # wrist 2, along -z
+        [a2 + a3, d4, d1 - d5],
+        [a2 + a3, d4, d1 - d5],  # wrist 3
+        [a2 + a3, d4 + d6, d1 - d5],
+        [a2 + a3, d4 + d6, d1 - d5],  # tool0
+    ]
+    drawn = plot.chain(ur5(), np.zeros(6), ax=ax)
+    # The URDF writes pi/2 as 1.57079632679 (4.9e-12 short): its axes are off
+    # by that angle, which moves points of this 1 m arm by a few 1e-12.
+    assert np.allclose(drawn.points, expected, atol=1e-11, rtol=0)
+    # Its default length: a tenth of the figure's, which revolute joints keep.
+    figure = np.sum(np.linalg.norm(np.diff(expected, axis=0), axis=1))
+    ends = data(drawn.joint_axes[0])
+    assert np.linalg.norm(ends[1] - ends[0]) == pytest.approx(0.1 * figure, rel=1e-12)
+    moved = plot.chain(ur5(), [0.3, -1.0, 1.2, 0.4, -0.5, 2.0], ax=ax).points
+    moved_length = np.sum(np.linalg.norm(np.diff(moved, axis=0), axis=1))
+    assert moved_length == pytest.approx(figure, rel=1e-12)
+
+
+def test_chain_prismatic_segment_slides_by_q(ax):
+    arm = rail_arm()
+    for slide in (0.0, 0.25, -0.4):
+        drawn = plot.chain(arm, [0.7, slide, -0.3, 0.2], ax=ax)
+        origin, exit_ = drawn.points[3], drawn.points[4]  # joint 2, the prismatic one
+        at_zero = plot.chain(arm, [0.7, 0.0, -0.3, 0.2], ax=ax).points
+        assert np.allclose(exit_ - origin, at_zero[4] - at_zero[3] + slide * drawn.directions[1])
+
+
+def test_chain_without_labels_and_into_a_new_figure():
+    try:
+        drawn = plot.chain(rail_arm(), np.zeros(4), labels=False)
+        assert drawn.ax.name == "3d"
+        assert drawn.tool.label is None and drawn.base.label is None
+        assert drawn.ax.figure in [plt.figure(n) for n in plt.get_fignums()]
+    finally:
+        plt.close("all")
+
+
+@pytest.mark.parametrize(
+    "q, kwargs, error, message",
+    [
+        (np.zeros(3), {}, ValueError, r"shape \(4,\) for a chain of 4 joints, not \(3,\)"),
+        (np.zeros((2, 4)), {}, ValueError, r"shape \(4,\) for a chain of 4 joints, not \(2, 4\)"),
+        (0.0, {}, ValueError, r"not \(\)"),
+        ([0.0, np.nan, 0.0, 0.0], {}, ValueError, "finite"),
+        ([0.0, np.inf, 0.0, 0.0], {}, ValueError, "finite"),
+        (["a", "b", "c", "d"], {}, TypeError, "real numbers"),
+        (np.zeros(4), {"length": 0.0}, ValueError, "length"),
+        (np.zeros(4), {"length": np.nan}, ValueError, "length"),
+    ],
+)
+def test_chain_refuses_bad_input(ax, q, kwargs, error, message):
+    with pytest.raises(error, match=message):
+        plot.chain(rail_arm(), q, ax=ax, **kwargs)
+
+
+def test_chain_refuses_what_is_not_a_chain_or_a_3d_axes(ax):
+    with pytest.raises(TypeError, match="Chain"):
+        plot.chain(np.eye(4), np.zeros(1), ax=ax)
+    with pytest.raises(TypeError, match="3D Axes"):
+        plot.chain(rail_arm(), np.zeros(4), ax=Figure().add_subplot())
+
+
 def test_docstring_examples_run():
     # Each example runs in (a copy of) the module's own namespace.
     runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE)
@@ -267,6 +472,7 @@ def test_docstring_examples_run():
         "chasles.plot.frame",
         "chasles.plot.frames",
         "chasles.plot.screw",
+        "chasles.plot.chain",
     }
     for t in tests:
         runner.run(t)
