@@ -116,6 +116,21 @@ Part merge(const std::vector<Part>& parts) {
   return out;
 }
 
+/// urdfdom's links hold their children by shared_ptr, so a loop in the
+/// description (which urdfdom may accept: a link under the root that is the
+/// child of two joints, two links each the parent of the other) is a
+/// reference cycle that outlives the model. Cleared on every way out.
+struct ReleaseCycles {
+  const urdf::ModelInterfaceSharedPtr& model;
+  ~ReleaseCycles() {
+    if (!model) return;
+    for (const auto& entry : model->links_) {
+      entry.second->child_links.clear();
+      entry.second->child_joints.clear();
+    }
+  }
+};
+
 std::string read_source(const std::string& source) {
   const std::size_t first = source.find_first_not_of(" \t\r\n\f\v");
   if (first != std::string::npos && source[first] == '<') return source;
@@ -129,6 +144,7 @@ std::string read_source(const std::string& source) {
 UrdfDescription read(const std::string& source, const std::string& tip_link, const std::string& base_link_in) {
   const std::string text = read_source(source);
   urdf::ModelInterfaceSharedPtr model;
+  const ReleaseCycles release{model};
   {
     const std::lock_guard<std::mutex> lock(console_mutex());
     Capture capture;
