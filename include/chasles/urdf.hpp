@@ -33,7 +33,10 @@
 // no urdfdom header and compiles, and chain_from_urdf runs, in a
 // -fno-exceptions build. Loading allocates (strings, the parsed tree): it is
 // for start-up, not for a real-time loop; the Chain it returns is
-// allocation-free as always.
+// allocation-free as always. urdfdom reports its errors through
+// console_bridge's one global log handler, which the loader replaces while it
+// parses (a mutex serializes the loaders; another thread logging through
+// console_bridge at that moment would have its message in the loader's).
 #pragma once
 
 #include <array>
