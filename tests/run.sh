@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs every test of chasles on a fresh Debian/Ubuntu machine: installs what
-# it needs (apt-get for Eigen, GoogleTest, Google Benchmark; pip for the
-# Python side), then
+# it needs (apt-get for Eigen, GoogleTest, Google Benchmark, urdfdom for the
+# C++ URDF loader; pip for the Python side), then
 #   1. configures and builds the C++ tests, examples and benchmarks, and runs ctest
 #      (the tests, the examples, and a millisecond smoke run of every benchmark);
 #   2. builds the Python wheel (pip wheel .: scikit-build-core, pybind11 and
@@ -27,7 +27,7 @@ WHEEL_BUILD_DIR=${WHEEL_BUILD_DIR:-$ROOT/build/wheel-cmake}
 JOBS=${JOBS:-$(nproc)}
 
 need_apt=()
-for pkg in libeigen3-dev libgtest-dev libbenchmark-dev cmake g++; do
+for pkg in libeigen3-dev libgtest-dev libbenchmark-dev liburdfdom-dev cmake g++; do
   dpkg -s "$pkg" >/dev/null 2>&1 || need_apt+=("$pkg")
 done
 python3 -c "import venv, ensurepip" >/dev/null 2>&1 || need_apt+=(python3-venv)
@@ -96,4 +96,8 @@ CC=/bin/false CXX=/bin/false "$VENV/bin/python" -m pip install --quiet --only-bi
 # One BLAS thread: the tests' small scipy/numpy products gain nothing from
 # more, and OpenBLAS threads spinning on a loaded 2-core machine made the
 # suite several times slower (116 s against 17 s for the same tests).
-(cd "$VENV" && OPENBLAS_NUM_THREADS=1 "$VENV/bin/python" -m pytest "$ROOT/tests/python" -p no:cacheprovider)
+# CHASLES_URDF_DUMP: the C++ URDF loader's JSON dump (tests/cpp/urdf_dump.cpp,
+# built above), which tests/python/test_urdf_cpp.py compares with
+# Chain.from_urdf on the arms of example-robot-data (a Python package).
+(cd "$VENV" && OPENBLAS_NUM_THREADS=1 CHASLES_URDF_DUMP="$BUILD_DIR/tests/cpp/chasles_urdf_dump" \
+  "$VENV/bin/python" -m pytest "$ROOT/tests/python" -p no:cacheprovider)

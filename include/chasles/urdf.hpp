@@ -1,0 +1,156 @@
+// chasles: a serial chain from a URDF robot description (optional: needs
+// urdfdom, Debian's liburdfdom-dev, and the CMake target chasles::urdf; not
+// included by chasles.hpp).
+//
+// The C++ counterpart of the Python Chain.from_urdf (python/chasles/_urdf.py),
+// with the same semantics: the revolute, continuous and prismatic joints from
+// the base link (default: the root of the tree) down to the tip link become
+// the chain's joints; fixed joints are folded into the screws and the home
+// pose; each joint's <origin xyz rpy> is the pose of its child link in its
+// parent link at zero, R = Rz(yaw) Ry(pitch) Rx(roll); <axis> (default
+// (1, 0, 0)) is in the child link frame and is normalized; <limit> gives the
+// position, velocity and effort limits (continuous joints: -inf, +inf; no
+// <limit>: +inf velocity and effort). Each moving joint's link inertia is the
+// body it moves: its child link, the links fixed after it on the chain, and
+// the links hanging off the chain there (side branches, the links below the
+// tip), their own moving joints at zero (as Pinocchio's buildReducedModel at
+// the neutral configuration), described in the base frame at home.
+//
+// Refused, with a message that names the element: a description urdfdom
+// cannot read (not well-formed XML, a missing link, duplicate names, an
+// unknown joint type, a revolute or prismatic joint without <limit>, and
+// urdfdom's own stricter rules: <limit> needs effort and velocity, <inertial>
+// needs <mass> and all six <inertia> attributes, one root link only), a link
+// that is the child of two joints, an unknown tip or base link, a tip not
+// below the base, a floating or planar joint or a <mimic> joint on the
+// chain, a zero axis, a non-finite number, no moving joint, more moving
+// joints than MaxJoints.
+//
+// Why a compiled part (chasles_urdf, linked by the target chasles::urdf):
+// urdfdom's headers throw in inline code (urdf_model/pose.h), so they do not
+// compile with -fno-exceptions. They are included only by src/urdf.cpp,
+// compiled with exceptions, which catches everything: this header includes
+// no urdfdom header and compiles, and chain_from_urdf runs, in a
+// -fno-exceptions build. Loading allocates (strings, the parsed tree): it is
+// for start-up, not for a real-time loop; the Chain it returns is
+// allocation-free as always. urdfdom reports its errors through
+// console_bridge's one global log handler, which the loader replaces while it
+// parses (a mutex serializes the loaders; another thread logging through
+// console_bridge at that moment would have its message in the loader's).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "chasles/kinematics.hpp"
+#include "chasles/se3.hpp"
+#include "chasles/so3.hpp"
+#include "chasles/spatial_inertia.hpp"
+
+namespace chasles {
+
+namespace detail {
+
+/// What src/urdf.cpp reads, in double: n moving joints from base to tip.
+struct UrdfDescription {
+  std::string error;                       ///< empty on success
+  std::vector<std::string> names;          ///< n joint names
+  std::vector<JointType> types;            ///< n joint types
+  Eigen::Matrix<double, 6, Eigen::Dynamic> screws;  ///< 6 x n, (v, w), base frame at home
+  Eigen::Matrix4d home = Eigen::Matrix4d::Identity();  ///< the tip link frame at home
+  Eigen::VectorXd lower, upper, velocity, effort;      ///< n each
+  Eigen::VectorXd mass;                                ///< n link masses
+  Eigen::Matrix<double, 3, Eigen::Dynamic> com;        ///< 3 x n centers of mass (base frame)
+  Eigen::Matrix<double, 9, Eigen::Dynamic> inertia;    ///< 9 x n rotational inertias about com (column-major 3x3)
+};
+
+/// Reads the description (compiled in src/urdf.cpp; never throws: every
+/// exception of urdfdom or of an allocation becomes `error`).
+UrdfDescription read_urdf(const std::string& xml_or_path, const std::string& tip_link,
+                          const std::string& base_link) noexcept;
+
+}  // namespace detail
+
+/// The outcome of chain_from_urdf: the chain, its joint names and its link
+/// inertias, or an error.
+template <typename Scalar, int MaxJoints>
+struct UrdfChain {
+  using ChainType = Chain<Scalar, Eigen::Dynamic, MaxJoints>;
+  /// One inertia per moving joint (the first n are used).
+  using Inertias = std::array<SpatialInertia<Scalar>, static_cast<std::size_t>(MaxJoints)>;
+
+  /// The chain (identity base and tool, default gravity); empty on failure.
+  std::optional<ChainType> chain;
+  /// The n joint names, base to tip.
+  std::vector<std::string> joint_names;
+  /// Per moving joint, the inertia of the body it moves, in the base frame at
+  /// home (what chasles::Dynamics takes). Kept beside the chain until Chain
+  /// holds link inertias itself; then they go into the chain's constructor.
+  Inertias link_inertias{};
+  /// Empty on success; otherwise what is wrong, naming the element.
+  std::string error;
+
+  /// Whether the description was loaded.
+  explicit operator bool() const noexcept { return chain.has_value(); }
+};
+
+/// The serial chain from the base link (empty: the root of the tree) to the
+/// tip link of a URDF, given as its XML text (starts with '<' after
+/// blanks) or as a file path. See the top of this header. Never throws (an
+/// allocation failure ends the program, as anything noexcept).
+template <typename Scalar, int MaxJoints>
+UrdfChain<Scalar, MaxJoints> chain_from_urdf(const std::string& xml_or_path, const std::string& tip_link,
+                                             const std::string& base_link = "") noexcept {
+  using Result = UrdfChain<Scalar, MaxJoints>;
+  using ChainType = typename Result::ChainType;
+  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
+  using Matrix3 = Eigen::Matrix<Scalar, 3, 3>;
+  Result out;
+  detail::UrdfDescription d = detail::read_urdf(xml_or_path, tip_link, base_link);
+  if (!d.error.empty()) {
+    out.error = std::move(d.error);
+    return out;
+  }
+  const Eigen::Index n = d.screws.cols();
+  if (n > MaxJoints) {
+    out.error = "chain_from_urdf: the chain from the base to '" + tip_link + "' has " + std::to_string(n) +
+                " moving joints, more than MaxJoints = " + std::to_string(MaxJoints);
+    return out;
+  }
+  typename ChainType::Screws S(6, n);
+  typename ChainType::JointTypes types{};
+  typename ChainType::JointVector lower(n), upper(n), velocity(n), effort(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    for (Eigen::Index r = 0; r < 6; ++r) S(r, i) = Scalar(d.screws(r, i));
+    types[k] = d.types[k];
+    lower(i) = Scalar(d.lower(i));
+    upper(i) = Scalar(d.upper(i));
+    velocity(i) = Scalar(d.velocity(i));
+    effort(i) = Scalar(d.effort(i));
+    Vector3 c;
+    Matrix3 I;
+    for (Eigen::Index r = 0; r < 3; ++r) c(r) = Scalar(d.com(r, i));
+    for (Eigen::Index r = 0; r < 9; ++r) I(r % 3, r / 3) = Scalar(d.inertia(r, i));
+    out.link_inertias[k] = SpatialInertia<Scalar>(Scalar(d.mass(i)), c, I);
+  }
+  Matrix3 R;
+  Vector3 p;
+  for (Eigen::Index r = 0; r < 3; ++r) {
+    p(r) = Scalar(d.home(r, 3));
+    for (Eigen::Index c = 0; c < 3; ++c) R(r, c) = Scalar(d.home(r, c));
+  }
+  // The full constructor projects the home pose onto SE(3) (a product of
+  // URDF transforms is a rigid motion up to a few eps). When Chain takes link
+  // inertias, out.link_inertias goes in as its last argument here.
+  out.chain.emplace(S, SE3<Scalar>(SO3<Scalar>::from_matrix_unchecked(R), p), types, lower, upper, velocity, effort);
+  out.joint_names = std::move(d.names);
+  return out;
+}
+
+}  // namespace chasles
