@@ -1,17 +1,27 @@
 // chasles._core: classes SO3BSpline and SE3BSpline over
 // chasles::CubicBSplineView (include/chasles/bspline.hpp): the uniform
-// cumulative cubic B-spline on SO(3) and SE(3), evaluated at arrays of times
-// in one C++ loop with the GIL released.
+// cumulative cubic B-spline on SO(3) and SE(3). The classes hold the start
+// time, the spacing and the control elements as an (N, D, D) array; the
+// private gufuncs evaluate them at times (the broadcast operand), registered
+// by def_ufunc (ufunc.hpp) with the spline as the model of those three:
+//
+//   _so3_bspline        (),(),(n,3,3),()->(3,3)             the element
+//   _so3_bspline_rates  (),(),(n,3,3),()->(3,3),(3),(3)     and its body velocity, acceleration
+//   _se3_bspline        (),(),(n,4,4),()->(4,4)
+//   _se3_bspline_rates  (),(),(n,4,4),()->(4,4),(6),(6)
 #include <chasles/bspline.hpp>
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "bindings.hpp"
 #include "convert.hpp"
+#include "ufunc.hpp"
 
 namespace chasles_py {
 
@@ -20,17 +30,14 @@ namespace {
 using chasles::SE3d;
 using chasles::SO3d;
 
-/// The Python class's value: its own copy of the control elements and the
-/// two times; the C++ view is made over them for each call.
+/// The Python class's value: the two times and its own copy of the control
+/// elements, as the (N, D, D) float64 array (read-only) that the private
+/// gufuncs take as an operand.
 template <typename Group>
 struct BSpline {
-  std::vector<Group> control;
   double start_time = 0, spacing = 1;
-
-  chasles::CubicBSplineView<Group> view() const {
-    return {control.data(), static_cast<std::ptrdiff_t>(control.size()), start_time, spacing};
-  }
-  double end_time() const { return view().end_time(); }
+  py::array control;
+  double end_time() const { return start_time + double(control.shape(0) - 3) * spacing; }
 };
 
 template <typename Group>
@@ -130,15 +137,83 @@ std::vector<Group> control_of(py::handle h) {
   return out;
 }
 
-enum class Quantity { value, velocity, acceleration };
+/// The control elements as a new (N, D, D) array, read-only.
+template <typename Group>
+py::array control_array(const std::vector<Group>& control) {
+  constexpr int rows = Names<Group>::rows;
+  const Py_intptr_t dims[3] = {static_cast<Py_intptr_t>(control.size()), rows, rows};
+  py::array_t<double> out = new_array(3, dims);
+  double* o = array_data(out);
+  for (std::size_t i = 0; i < control.size(); ++i)
+    Eigen::Map<Eigen::Matrix<double, rows, rows, Eigen::RowMajor>>(o + i * rows * rows) = control[i].matrix();
+  out.attr("flags").attr("writeable") = false;
+  return std::move(out);
+}
 
-/// The spline at the times t (a number or an array of any shape): an array
-/// of shape t.shape + (3, 3) / (4, 4) for the elements, + (3,) / (6,) for
-/// the rates. Times outside [start_time, end_time] are a ValueError; a NaN
-/// time gives NaN numbers in its element.
-template <typename Group, Quantity Q>
-py::array evaluate(const BSpline<Group>& s, py::handle t, const char* what) {
-  constexpr int rows = Names<Group>::rows, dof = Names<Group>::dof;
+/// The spline of the gufuncs' operands start_time, spacing and control, in
+/// storage of its own (the C++ spline views an array of elements); valid
+/// when N >= 4 and the spacing is finite and > 0 (NaN results otherwise).
+template <typename Group>
+struct BSplineModel {
+  double start_time, spacing;
+  std::vector<Group> control;
+
+  bool valid() const noexcept {
+    return control.size() >= 4 && spacing > 0 && spacing <= std::numeric_limits<double>::max();
+  }
+  chasles::CubicBSplineView<Group> view() const noexcept {
+    return {control.data(), static_cast<std::ptrdiff_t>(control.size()), start_time, spacing};
+  }
+};
+
+template <typename Group>
+struct BSplineOf {
+  template <typename Control>
+  BSplineModel<Group> operator()(double start_time, double spacing, const Control& control) const noexcept {
+    constexpr int n = Names<Group>::rows;
+    BSplineModel<Group> m{start_time, spacing, {}};
+    for (Eigen::Index i = 0; i < control.size(); ++i)
+      m.control.push_back(Group::from_matrix_unchecked(Eigen::Matrix<double, n, n>(control[i])));
+    return m;
+  }
+};
+
+template <typename Group>
+Eigen::Matrix<double, Names<Group>::rows, Names<Group>::rows> nan_matrix() {
+  return Eigen::Matrix<double, Names<Group>::rows, Names<Group>::rows>::Constant(
+      std::numeric_limits<double>::quiet_NaN());
+}
+
+/// The element at t (clamped to [start_time, end_time]; the methods check).
+template <typename Group>
+struct Element {
+  Eigen::Matrix<double, Names<Group>::rows, Names<Group>::rows> operator()(const BSplineModel<Group>& m,
+                                                                           double t) const noexcept {
+    return m.valid() ? m.view()(t).matrix() : nan_matrix<Group>();
+  }
+};
+
+/// The element, body velocity and body acceleration at t.
+template <typename Group>
+struct Rates {
+  using Tangent = Eigen::Matrix<double, Names<Group>::dof, 1>;
+  std::tuple<Eigen::Matrix<double, Names<Group>::rows, Names<Group>::rows>, Tangent, Tangent> operator()(
+      const BSplineModel<Group>& m, double t) const noexcept {
+    if (!m.valid()) {
+      const Tangent nan = Tangent::Constant(std::numeric_limits<double>::quiet_NaN());
+      return {nan_matrix<Group>(), nan, nan};
+    }
+    const chasles::BSplinePoint<Group> p = m.view().evaluate(t);
+    return {p.value.matrix(), p.velocity, p.acceleration};
+  }
+};
+
+/// The times t of a method call as a ufunc operand, numpy's times checked
+/// to lie in [start_time, end_time] (a NaN time passes: NaN results).
+template <typename Group>
+py::object times_operand(const BSpline<Group>& s, py::handle t, const char* what) {
+  if (!npy().PyArray_Check_(t.ptr()) && py::hasattr(t, "__array_ufunc__") && !t.attr("__array_ufunc__").is_none())
+    return py::reinterpret_borrow<py::object>(t);  // dask: numpy dispatches to it; times clamped, unchecked
   const py::array a = as_float64_array(t, what);
   const auto times = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
   const py::ssize_t count = times.size();
@@ -150,29 +225,7 @@ py::array evaluate(const BSpline<Group>& s, py::handle t, const char* what) {
                         ", " + float_repr(t1) + "], got " + float_repr(tp[i]));
     }
   }
-  std::vector<Py_intptr_t> dims(times.shape(), times.shape() + times.ndim());
-  if constexpr (Q == Quantity::value) {
-    dims.push_back(rows);
-    dims.push_back(rows);
-  } else {
-    dims.push_back(dof);
-  }
-  py::array_t<double> out = new_array(static_cast<int>(dims.size()), dims.data());
-  double* o = array_data(out);
-  {
-    py::gil_scoped_release release;
-    const chasles::CubicBSplineView<Group> spline = s.view();
-    for (py::ssize_t i = 0; i < count; ++i) {
-      if constexpr (Q == Quantity::value) {
-        Eigen::Map<Eigen::Matrix<double, rows, rows, Eigen::RowMajor>>(o + i * rows * rows) = spline(tp[i]).matrix();
-      } else {
-        const chasles::BSplinePoint<Group> p = spline.evaluate(tp[i]);
-        Eigen::Map<Eigen::Matrix<double, dof, 1>>(o + i * dof) =
-            Q == Quantity::velocity ? p.velocity : p.acceleration;
-      }
-    }
-  }
-  return std::move(out);
+  return std::move(times);
 }
 
 template <typename Group>
@@ -240,7 +293,7 @@ void bind_one(py::module_& m) {
             s.spacing = to_finite_real(spacing.obj, label<Group>("spacing").c_str());
             if (!(s.spacing > 0))
               raise_value_error(label<Group>("spacing") + ": expected a positive spacing (> 0), got " + float_repr(s.spacing));
-            s.control = control_of<Group>(control.obj);
+            s.control = control_array(control_of<Group>(control.obj));
             return s;
           }),
           py::arg("start_time"), py::arg("spacing"), py::arg("control"), init_doc.c_str());
@@ -269,18 +322,41 @@ void bind_one(py::module_& m) {
       "Args:\n    t: a time or an array_like of times of any shape, in [start_time, end_time].\n\n"
       "Returns:\n    numpy.ndarray: shape t.shape + (" + k + ",), per unit of time squared.\n\n"
       "Raises:\n    ValueError: a time outside [start_time, end_time].\n    TypeError: times that are not real numbers.\n";
+  using ufunc::Core;
+  using Control = Core<ufunc::upto<ufunc::unbounded>, rows, rows>;
+  constexpr int dof = Names<Group>::dof;
+  const std::string lower = so3 ? "so3" : "se3";
+  static const std::string element_name = "_" + lower + "_bspline", rates_name = "_" + lower + "_bspline_rates";
+  const std::string operands = std::string("\n\nOperands (float64): start_time (), spacing () > 0, control (n, ") +
+                               std::to_string(rows) + ", " + std::to_string(rows) +
+                               "), n >= 4 (NaN results otherwise), t (), clamped to [start_time, end_time]. "
+                               "A private ufunc of chasles." + Names<Group>::cls + ".";
+  const py::object u_element = ufunc::def_ufunc<Core<rows, rows>(Core<>, Core<>, Control, Core<>), ufunc::Float64>(
+      m, element_name.c_str(), "start_time, spacing, control, t", "The spline's element at t." + operands,
+      ufunc::model<3>(BSplineOf<Group>()), Element<Group>());
+  const py::object u_rates =
+      ufunc::def_ufunc<std::tuple<Core<rows, rows>, Core<dof>, Core<dof>>(Core<>, Core<>, Control, Core<>),
+                       ufunc::Float64>(m, rates_name.c_str(), "start_time, spacing, control, t",
+                                       "The spline's element, body velocity and body acceleration at t." + operands,
+                                       ufunc::model<3>(BSplineOf<Group>()), Rates<Group>());
+  /// The method `what` at t: the element (order 0) or a rate (1, 2).
+  const auto evaluate = [](const py::object& u, const S& s, py::handle t, const std::string& what,
+                           int order) -> Returns<py::array> {
+    const py::object times = times_operand(s, t, what.c_str());
+    const py::float_ t0(s.start_time), dt(s.spacing);
+    const py::object r = call_ufunc<4>(u.ptr(), what.c_str(), {t0.ptr(), dt.ptr(), s.control.ptr(), times.ptr()});
+    return {order == 0 ? r : py::object(py::tuple(r)[static_cast<std::size_t>(order)])};
+  };
   cls.def(
-      "__call__",
-      [](Obj<S> s, ArrayLike t) { return evaluate<Group, Quantity::value>(*s, t.obj, call_what.c_str()); },
+      "__call__", [u_element, evaluate](Obj<S> s, ArrayLike t) { return evaluate(u_element, *s, t.obj, call_what, 0); },
       py::arg("t"), call_doc.c_str());
   cls.def(
-      "body_velocity",
-      [](Obj<S> s, ArrayLike t) { return evaluate<Group, Quantity::velocity>(*s, t.obj, vel_what.c_str()); },
+      "body_velocity", [u_rates, evaluate](Obj<S> s, ArrayLike t) { return evaluate(u_rates, *s, t.obj, vel_what, 1); },
       py::arg("t"), vel_doc.c_str());
   cls.def(
       "body_acceleration",
-      [](Obj<S> s, ArrayLike t) { return evaluate<Group, Quantity::acceleration>(*s, t.obj, acc_what.c_str()); },
-      py::arg("t"), acc_doc.c_str());
+      [u_rates, evaluate](Obj<S> s, ArrayLike t) { return evaluate(u_rates, *s, t.obj, acc_what, 2); }, py::arg("t"),
+      acc_doc.c_str());
   cls.def_property_readonly(
       "start_time", [](Obj<S> s) { return s->start_time; }, "float: t0, the start of the first segment.");
   cls.def_property_readonly(
@@ -291,19 +367,11 @@ void bind_one(py::module_& m) {
                                          std::to_string(rows) + "), the control elements (a copy).";
   cls.def_property_readonly(
       "control",
-      [](Obj<S> s_) {
-        const S& s = *s_;
-        const Py_intptr_t dims[3] = {static_cast<Py_intptr_t>(s.control.size()), rows, rows};
-        py::array_t<double> out = new_array(3, dims);
-        double* o = array_data(out);
-        for (std::size_t i = 0; i < s.control.size(); ++i)
-          Eigen::Map<Eigen::Matrix<double, rows, rows, Eigen::RowMajor>>(o + i * rows * rows) = s.control[i].matrix();
-        return out;
-      },
+      [](Obj<S> s) { return Returns<py::array_t<double>>{s->control.attr("copy")()}; },
       control_doc.c_str());
   def_repr(cls, [](const S& s) {
     return std::string(Names<Group>::cls) + "(start_time=" + float_repr(s.start_time) +
-           ", spacing=" + float_repr(s.spacing) + ", n_control=" + std::to_string(s.control.size()) + ")";
+           ", spacing=" + float_repr(s.spacing) + ", n_control=" + std::to_string(s.control.shape(0)) + ")";
   });
 }
 

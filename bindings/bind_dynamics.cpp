@@ -7,16 +7,12 @@
 
 #include <Eigen/Eigenvalues>
 
-#include <array>
 #include <cstddef>
-#include <limits>
-#include <optional>
 #include <string>
 
 #include "bindings.hpp"
 #include "conventions.hpp"
 #include "convert.hpp"
-#include "numpy_capi.hpp"
 #include "ufunc.hpp"
 
 namespace chasles_py {
@@ -101,140 +97,66 @@ Vector6 twist_vector(py::handle h, const char* what) {
 // pose M (4, 4); the links' spatial inertias (n, 6, 6), each the matrix G
 // (order (v, w)) of the link described in the base frame at home; gravity
 // (3) in the base frame; the joint arrays (n); the tip wrench (6), (f, tau),
-// that the tool applies on the environment, in the tool frame. float64 only.
-// The model is built once per loop when S, M, the inertias and gravity stay
-// put (outer strides 0).
+// that the tool applies on the environment, in the tool frame; n <= 32
+// bound at run time. Registered by def_ufunc (ufunc.hpp) with the model
+// (chasles::Dynamics) made of the first operands (screws, home, inertias,
+// and gravity where the ufunc has it), built once per loop when they stay
+// put (outer strides 0). float64 only: the model is.
 
-enum class DynOp { inverse, mass, gravity, coriolis, forward };
-enum class Kind { screws, home, inertias, gravity, joints, wrench };
+using ufunc::Core;
+using ufunc::upto;
+using JointsCore = Core<upto<kMaxJoints>>;
+using ScrewsCore = Core<upto<kMaxJoints>, 6>;
+using InertiasCore = Core<upto<kMaxJoints>, 6, 6>;
 
-constexpr int ndim_of(Kind k) {
-  return k == Kind::screws || k == Kind::home ? 2 : k == Kind::inertias ? 3 : 1;
-}
-
-template <DynOp Op>
-constexpr auto kinds_of() {
-  using K = Kind;
-  if constexpr (Op == DynOp::inverse || Op == DynOp::forward)
-    return std::array<K, 8>{K::screws, K::home, K::inertias, K::gravity, K::joints, K::joints, K::joints, K::wrench};
-  else if constexpr (Op == DynOp::mass)
-    return std::array<K, 4>{K::screws, K::home, K::inertias, K::joints};
-  else if constexpr (Op == DynOp::gravity)
-    return std::array<K, 5>{K::screws, K::home, K::inertias, K::gravity, K::joints};
-  else
-    return std::array<K, 5>{K::screws, K::home, K::inertias, K::joints, K::joints};
-}
-
-template <DynOp Op>
-void dynamics_loop(char** args, const npy_intp* dims, const npy_intp* steps, void* /*data*/) noexcept {
-  constexpr auto kinds = kinds_of<Op>();
-  constexpr std::size_t N = kinds.size();
-  constexpr int out_ndim = Op == DynOp::mass ? 2 : 1;
-  const npy_intp count = dims[0], n = dims[1];  // the outer size, then the core sizes (n first)
-  std::array<std::array<npy_intp, 3>, N + 1> cs{};
-  const npy_intp* s = steps + N + 1;
-  for (std::size_t j = 0; j < N; ++j)
-    for (int k = 0; k < ndim_of(kinds[j]); ++k) cs[j][static_cast<std::size_t>(k)] = *s++;
-  for (int k = 0; k < out_ndim; ++k) cs[N][static_cast<std::size_t>(k)] = *s++;
-  const auto rd = [](const char* p, npy_intp off) { return *reinterpret_cast<const double*>(p + off); };
-  const auto write = [&](char* out, npy_intp r, npy_intp c, double x) {
-    *reinterpret_cast<double*>(out + r * cs[N][0] + c * cs[N][1]) = x;
-  };
-  const npy_intp cols = out_ndim == 2 ? n : 1;
-  if (n < 1 || n > kMaxJoints) {  // only the Chain methods call these, with 1 <= n <= 32
-    for (npy_intp e = 0; e < count; ++e)
-      for (npy_intp r = 0; r < n; ++r)
-        for (npy_intp c = 0; c < cols; ++c) write(args[N] + e * steps[N], r, c, std::numeric_limits<double>::quiet_NaN());
-    return;
+/// The model of the screws, home, inertias (and gravity) operands; zero
+/// gravity without one (mass matrix, Coriolis).
+struct DynamicsOf {
+  template <typename S, typename M, typename G>
+  DynD operator()(const S& screws, const M& home, const G& inertias) const noexcept {
+    return (*this)(screws, home, inertias, Vector3::Zero());
   }
-  bool fixed = true;  // the model stays put: built once
-  for (std::size_t j = 0; j < N; ++j)
-    if (kinds[j] != Kind::joints && kinds[j] != Kind::wrench && steps[j] != 0) fixed = false;
-  std::optional<DynD> model;
-  std::array<DynD::JointVector, 3> joint;
-  Wrenchd tip;
-  for (npy_intp e = 0; e < count; ++e) {
-    if (!fixed || !model) {
-      DynD::Screws S(6, n);
-      Matrix4 M;
-      DynD::Inertias I;
-      Vector3 gravity = Vector3::Zero();
-      for (std::size_t j = 0; j < N; ++j) {
-        const char* p = args[j] + e * steps[j];
-        const auto& c = cs[j];
-        switch (kinds[j]) {
-          case Kind::screws:
-            for (npy_intp i = 0; i < n; ++i)
-              for (npy_intp k = 0; k < 6; ++k) S(k, i) = rd(p, i * c[0] + k * c[1]);
-            break;
-          case Kind::home:
-            for (int r = 0; r < 4; ++r)
-              for (int k = 0; k < 4; ++k) M(r, k) = rd(p, r * c[0] + k * c[1]);
-            break;
-          case Kind::inertias:
-            for (npy_intp i = 0; i < n; ++i) {
-              Matrix6 G;
-              for (int r = 0; r < 6; ++r)
-                for (int k = 0; k < 6; ++k) G(r, k) = rd(p, i * c[0] + r * c[1] + k * c[2]);
-              I[static_cast<std::size_t>(i)] = InertiaD::from_matrix_unchecked(G);
-            }
-            break;
-          case Kind::gravity:
-            for (int k = 0; k < 3; ++k) gravity(k) = rd(p, k * c[0]);
-            break;
-          default:
-            break;
-        }
-      }
-      model.emplace(S, SE3d::from_matrix_unchecked(M), I, gravity);
-    }
-    std::size_t next = 0;
-    for (std::size_t j = 0; j < N; ++j) {
-      const char* p = args[j] + e * steps[j];
-      if (kinds[j] == Kind::joints) {
-        DynD::JointVector& v = joint[next++];
-        v.resize(n);
-        for (npy_intp i = 0; i < n; ++i) v(i) = rd(p, i * cs[j][0]);
-      } else if (kinds[j] == Kind::wrench) {
-        for (int k = 0; k < 6; ++k) tip.vector()(k) = rd(p, k * cs[j][0]);
-      }
-    }
-    char* out = args[N] + e * steps[N];
-    if constexpr (Op == DynOp::mass) {
-      const DynD::MassMatrix Mq = model->mass_matrix(joint[0]);
-      for (npy_intp r = 0; r < n; ++r)
-        for (npy_intp c = 0; c < n; ++c) write(out, r, c, Mq(r, c));
-    } else {
-      DynD::JointVector tau;
-      if constexpr (Op == DynOp::inverse)
-        tau = model->inverse_dynamics(joint[0], joint[1], joint[2], tip);
-      else if constexpr (Op == DynOp::forward)
-        tau = model->forward_dynamics(joint[0], joint[1], joint[2], tip);
-      else if constexpr (Op == DynOp::gravity)
-        tau = model->gravity_torques(joint[0]);
-      else
-        tau = model->coriolis(joint[0], joint[1]);
-      for (npy_intp r = 0; r < n; ++r) write(out, r, 0, tau(r));
-    }
+  template <typename S, typename M, typename G, typename V>
+  DynD operator()(const S& screws, const M& home, const G& inertias, const V& gravity) const noexcept {
+    DynD::Inertias I;
+    for (Eigen::Index i = 0; i < inertias.size(); ++i)
+      I[static_cast<std::size_t>(i)] = InertiaD::from_matrix_unchecked(Matrix6(inertias[i]));
+    return DynD(DynD::Screws(screws.transpose()), SE3d::from_matrix_unchecked(Matrix4(home)), I, Vector3(gravity));
   }
-  ufunc::clear_floating_point_flags();
-}
+};
 
-template <DynOp Op>
-void dynamics_ufunc(py::module_& m, const char* name, const char* signature, const char* params, const char* doc) {
-  constexpr std::size_t N = kinds_of<Op>().size();
-  static PyUFuncGenericFunction funcs[] = {&dynamics_loop<Op>};
-  static void* data[] = {nullptr};
-  static char types[N + 1];
-  for (std::size_t j = 0; j <= N; ++j) types[j] = NPY_DOUBLE;
-  static const std::string doc_kept = doc;
-  PyObject* u = PyUFunc_FromFuncAndDataAndSignature(funcs, data, types, 1, static_cast<int>(N), 1, PyUFunc_None, name,
-                                                    doc_kept.c_str(), 0, signature);
-  if (u == nullptr) throw py::error_already_set();
-  py::object ufunc = py::reinterpret_steal<py::object>(u);
-  ufunc::describe_ufunc(ufunc, name, params, doc);
-  m.attr(name) = ufunc;
-}
+using Joints = DynD::JointVector;
+
+struct InverseDynamics {
+  template <typename Q, typename Qd, typename Qdd, typename F>
+  Joints operator()(const DynD& d, const Q& q, const Qd& qd, const Qdd& qdd, const F& tip) const noexcept {
+    return d.inverse_dynamics(Joints(q), Joints(qd), Joints(qdd), Wrenchd(Vector6(tip)));
+  }
+};
+struct ForwardDynamics {
+  template <typename Q, typename Qd, typename Tau, typename F>
+  Joints operator()(const DynD& d, const Q& q, const Qd& qd, const Tau& tau, const F& tip) const noexcept {
+    return d.forward_dynamics(Joints(q), Joints(qd), Joints(tau), Wrenchd(Vector6(tip)));
+  }
+};
+struct MassMatrix {
+  template <typename Q>
+  DynD::MassMatrix operator()(const DynD& d, const Q& q) const noexcept {
+    return d.mass_matrix(Joints(q));
+  }
+};
+struct GravityTorques {
+  template <typename Q>
+  Joints operator()(const DynD& d, const Q& q) const noexcept {
+    return d.gravity_torques(Joints(q));
+  }
+};
+struct Coriolis {
+  template <typename Q, typename Qd>
+  Joints operator()(const DynD& d, const Q& q, const Qd& qd) const noexcept {
+    return d.coriolis(Joints(q), Joints(qd));
+  }
+};
 
 const char* const kOperands = R"doc(
 
@@ -271,8 +193,13 @@ void bind_dynamics(py::module_& m) {
 Returns:
     numpy.ndarray: (..., n), the joint forces (torques, or forces of
     prismatic joints).)doc" + kPrivate;
-  dynamics_ufunc<DynOp::inverse>(m, "_inverse_dynamics", "(n,6),(4,4),(n,6,6),(3),(n),(n),(n),(6)->(n)",
-                                 "screws, home, inertias, gravity, q, qd, qdd, tip_wrench", inverse_doc.c_str());
+  using ufunc::def_ufunc;
+  using ufunc::Float64;
+  using ufunc::model;
+  // (n,6),(4,4),(n,6,6),(3),(n),(n),(n),(6)->(n)
+  def_ufunc<JointsCore(ScrewsCore, Core<4, 4>, InertiasCore, Core<3>, JointsCore, JointsCore, JointsCore, Core<6>),
+            Float64>(m, "_inverse_dynamics", "screws, home, inertias, gravity, q, qd, qdd, tip_wrench", inverse_doc,
+                     model<4>(DynamicsOf()), InverseDynamics());
   const std::string forward_doc =
       std::string("qdd = M(q)^-1 (tau - C(q, qd) qd - g(q) - J_b(q)^T F_tip), by a Cholesky solve.") + kOperands +
       kGravity + R"doc(
@@ -280,16 +207,19 @@ Returns:
 
 Returns:
     numpy.ndarray: (..., n), the joint accelerations.)doc" + kPrivate;
-  dynamics_ufunc<DynOp::forward>(m, "_forward_dynamics", "(n,6),(4,4),(n,6,6),(3),(n),(n),(n),(6)->(n)",
-                                 "screws, home, inertias, gravity, q, qd, tau, tip_wrench", forward_doc.c_str());
+  // (n,6),(4,4),(n,6,6),(3),(n),(n),(n),(6)->(n)
+  def_ufunc<JointsCore(ScrewsCore, Core<4, 4>, InertiasCore, Core<3>, JointsCore, JointsCore, JointsCore, Core<6>),
+            Float64>(m, "_forward_dynamics", "screws, home, inertias, gravity, q, qd, tau, tip_wrench", forward_doc,
+                     model<4>(DynamicsOf()), ForwardDynamics());
   const std::string mass_doc = std::string("M(q), the joint-space mass matrix (T = 1/2 qd^T M qd), by composite rigid bodies.") +
                                kOperands + R"doc(
     q: (n,), joint positions.
 
 Returns:
     numpy.ndarray: (..., n, n), symmetric positive definite.)doc" + kPrivate;
-  dynamics_ufunc<DynOp::mass>(m, "_mass_matrix", "(n,6),(4,4),(n,6,6),(n)->(n,n)", "screws, home, inertias, q",
-                              mass_doc.c_str());
+  // (n,6),(4,4),(n,6,6),(n)->(n,n)
+  def_ufunc<Core<upto<kMaxJoints>, upto<kMaxJoints>>(ScrewsCore, Core<4, 4>, InertiasCore, JointsCore), Float64>(
+      m, "_mass_matrix", "screws, home, inertias, q", mass_doc, model<3>(DynamicsOf()), MassMatrix());
   const std::string gravity_doc =
       std::string("g(q), the joint forces that hold the chain still against gravity.") + kOperands + kGravity +
       R"doc(
@@ -297,16 +227,19 @@ Returns:
 
 Returns:
     numpy.ndarray: (..., n).)doc" + kPrivate;
-  dynamics_ufunc<DynOp::gravity>(m, "_gravity_torques", "(n,6),(4,4),(n,6,6),(3),(n)->(n)",
-                                 "screws, home, inertias, gravity, q", gravity_doc.c_str());
+  // (n,6),(4,4),(n,6,6),(3),(n)->(n)
+  def_ufunc<JointsCore(ScrewsCore, Core<4, 4>, InertiasCore, Core<3>, JointsCore), Float64>(
+      m, "_gravity_torques", "screws, home, inertias, gravity, q", gravity_doc, model<4>(DynamicsOf()),
+      GravityTorques());
   const std::string coriolis_doc =
       std::string("C(q, qd) qd, the Coriolis and centrifugal joint forces (without gravity).") + kOperands + R"doc(
     q, qd: (n,), joint positions and velocities.
 
 Returns:
     numpy.ndarray: (..., n).)doc" + kPrivate;
-  dynamics_ufunc<DynOp::coriolis>(m, "_coriolis", "(n,6),(4,4),(n,6,6),(n),(n)->(n)", "screws, home, inertias, q, qd",
-                                  coriolis_doc.c_str());
+  // (n,6),(4,4),(n,6,6),(n),(n)->(n)
+  def_ufunc<JointsCore(ScrewsCore, Core<4, 4>, InertiasCore, JointsCore, JointsCore), Float64>(
+      m, "_coriolis", "screws, home, inertias, q, qd", coriolis_doc, model<3>(DynamicsOf()), Coriolis());
 
   // ---- SpatialInertia ---------------------------------------------------------
   const std::string doc = class_doc();

@@ -6,8 +6,6 @@
 #include <chasles/spatial_inertia.hpp>
 
 #include <cmath>
-#include <limits>
-#include <optional>
 #include <random>
 #include <cstring>
 #include <string>
@@ -123,15 +121,31 @@ ChainD::Screws screws_of(py::handle h) {
 //
 // (n,6),(4,4),(n)->(4,4) for the poses, (n,6),(4,4),(n)->(6,n) for the
 // Jacobians: the space screws (one row (v, w) per joint), the home pose and
-// the joint positions. Chain's methods call them with the chain's own
-// screws and home pose, so numpy does the broadcasting, dtypes, out= and
-// GIL, as for every array function; the chain is built once per loop when
-// it stays put (the screws' and home's outer strides are 0).
+// the joint positions, n <= 32 bound at run time. Registered by def_ufunc
+// (ufunc.hpp) with the chain as the model of the first two operands, built
+// once per loop when they stay put (as when Chain's methods pass the
+// chain's own screws and home pose); numpy does the broadcasting, dtypes,
+// out= and GIL, as for every array function. float64 only: the chain is.
+
+using ufunc::Core;
+using ufunc::upto;
+using JointsCore = Core<upto<kMaxJoints>>;
+using ScrewsCore = Core<upto<kMaxJoints>, 6>;
+
+/// The chain of a screws (n, 6) and a home (4, 4) operand, the home taken
+/// as given (the Chain passes its own, already a rigid motion).
+struct ChainOf {
+  template <typename S, typename M>
+  ChainD operator()(const S& screws, const M& home) const noexcept {
+    return ChainD(ChainD::Screws(screws.transpose()), SE3d::from_matrix_unchecked(Matrix4(home)), ChainD::HomeAsGiven());
+  }
+};
 
 enum class ChainOp { forward, forward_body, jacobian_space, jacobian_body };
 
 /// What the method computes for one configuration: the 4x4 pose or the 6 x n
-/// Jacobian (the loop and the one-configuration fast path both call this).
+/// Jacobian (the ufunc's kernel and the one-configuration fast path both
+/// call this).
 template <ChainOp Op>
 auto chain_result(const ChainD& c, const ChainD::JointVector& theta) {
   if constexpr (Op == ChainOp::forward)
@@ -145,60 +159,23 @@ auto chain_result(const ChainD& c, const ChainD::JointVector& theta) {
 }
 
 template <ChainOp Op>
-void chain_loop(char** args, const npy_intp* dims, const npy_intp* steps, void* /*data*/) noexcept {
-  const npy_intp count = dims[0], n = dims[1];  // numpy: the outer size, then the core sizes (n, 6, 4)
-  const npy_intp* core = steps + 4;             // S (n, 6), M (4, 4), theta (n), result (4, 4) or (6, n)
-  const auto at = [](const char* p, npy_intp i, npy_intp si, npy_intp j, npy_intp sj) {
-    return *reinterpret_cast<const double*>(p + i * si + j * sj);
-  };
-  const auto chain_at = [&](const char* S, const char* M) {
-    ChainD::Screws screws(6, n);
-    for (npy_intp i = 0; i < n; ++i)
-      for (npy_intp k = 0; k < 6; ++k) screws(k, i) = at(S, i, core[0], k, core[1]);
-    Matrix4 home;
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) home(i, j) = at(M, i, core[2], j, core[3]);
-    return ChainD(screws, SE3d::from_matrix_unchecked(home), ChainD::HomeAsGiven());
-  };
-  const auto write = [&](char* out, int r, npy_intp c, double x) {
-    *reinterpret_cast<double*>(out + r * core[5] + c * core[6]) = x;
-  };
-  constexpr bool pose = Op == ChainOp::forward || Op == ChainOp::forward_body;
-  const int rows = pose ? 4 : 6;
-  const npy_intp cols = pose ? 4 : n;
-  if (n < 1 || n > kMaxJoints) {  // only Chain calls these, with 1 <= n <= 32; never read past a chain
-    for (npy_intp e = 0; e < count; ++e)
-      for (int r = 0; r < rows; ++r)
-        for (npy_intp c = 0; c < cols; ++c) write(args[3] + e * steps[3], r, c, std::numeric_limits<double>::quiet_NaN());
-    return;
+struct ChainKernel {
+  template <typename Theta>
+  auto operator()(const ChainD& c, const Theta& theta) const noexcept {
+    return chain_result<Op>(c, ChainD::JointVector(theta));
   }
-  const bool fixed = steps[0] == 0 && steps[1] == 0;  // one chain for the whole loop: built once
-  std::optional<ChainD> chain;
-  ChainD::JointVector theta(n);
-  for (npy_intp e = 0; e < count; ++e) {
-    if (!fixed || !chain) chain.emplace(chain_at(args[0] + e * steps[0], args[1] + e * steps[1]));
-    for (npy_intp j = 0; j < n; ++j) theta(j) = at(args[2] + e * steps[2], j, core[4], 0, 0);
-    const auto result = chain_result<Op>(*chain, theta);
-    char* out = args[3] + e * steps[3];
-    for (int r = 0; r < rows; ++r)
-      for (npy_intp c = 0; c < cols; ++c) write(out, r, c, result(r, c));
-  }
-  ufunc::clear_floating_point_flags();
-}
+};
 
-/// Registers chain_loop<Op> as the private ufunc `name` (float64 only: the
-/// chain is).
+/// Registers the private ufunc `name` of Op, behind the Chain method `method`.
 template <ChainOp Op>
-py::object chain_ufunc(py::module_& m, const char* name, const char* signature) {
-  static PyUFuncGenericFunction funcs[] = {&chain_loop<Op>};
-  static void* data[] = {nullptr};
-  static char types[] = {NPY_DOUBLE, NPY_DOUBLE, NPY_DOUBLE, NPY_DOUBLE};
-  PyObject* u = PyUFunc_FromFuncAndDataAndSignature(funcs, data, types, 1, 3, 1, PyUFunc_None, name,
-                                                    "A private ufunc of chasles.Chain.", 0, signature);
-  if (u == nullptr) throw py::error_already_set();
-  py::object ufunc = py::reinterpret_steal<py::object>(u);
-  m.attr(name) = ufunc;
-  return ufunc;
+py::object chain_ufunc(py::module_& m, const char* name, const char* method) {
+  constexpr bool pose = Op == ChainOp::forward || Op == ChainOp::forward_body;
+  using Out = std::conditional_t<pose, Core<4, 4>, Core<6, upto<kMaxJoints>>>;
+  return ufunc::def_ufunc<Out(ScrewsCore, Core<4, 4>, JointsCore), ufunc::Float64>(
+      m, name, "screws, home, theta",
+      std::string("A private ufunc of chasles.Chain (its method ") + method +
+          "): screws (n, 6), 1 <= n <= 32 (NaN beyond), home (4, 4), theta (n,); float64.",
+      ufunc::model<2>(ChainOf()), ChainKernel<Op>());
 }
 
 /// The chain's space screws, shape (n, 6), and home pose, shape (4, 4), as
@@ -478,6 +455,81 @@ py::object tip_operand(py::handle tip, const char* what) {
   return ufunc_operand(tip, what);
 }
 
+// ---- inverse kinematics: the private ufunc _inverse_kinematics ----------------
+//
+// (n,6),(4,4),(n),(n),(),(),(),(4,4),(n),(),()->(n),(),(),(6): the chain
+// (screws, home, lower and upper limits) and the solver's options
+// (position and orientation tolerances, max_iterations, a C int) make the
+// model; each element solves for a target from a seed q0 with `restarts`
+// (int) further attempts drawn from a 64-bit Mersenne twister seeded with
+// `seed` (uint64); the results are q, converged (bool), iterations (int)
+// and the body error (6). float64 only: the chain is.
+
+struct IKModel {
+  ChainD chain;
+  ChainD::JointVector lower, upper;
+  chasles::IKOptions<double> options;
+};
+
+struct IKModelOf {
+  template <typename S, typename M, typename Lo, typename Hi>
+  IKModel operator()(const S& screws, const M& home, const Lo& lower, const Hi& upper, double position_tolerance,
+                     double orientation_tolerance, int max_iterations) const noexcept {
+    chasles::IKOptions<double> options;
+    options.position_tolerance = position_tolerance;
+    options.orientation_tolerance = orientation_tolerance;
+    options.max_iterations = max_iterations;
+    return {ChainOf()(screws, home), ChainD::JointVector(lower), ChainD::JointVector(upper), options};
+  }
+};
+
+struct IKKernel {
+  template <typename Target, typename Q0>
+  std::tuple<ChainD::JointVector, bool, int, Eigen::Matrix<double, 6, 1>> operator()(const IKModel& m,
+                                                                                      const Target& target,
+                                                                                      const Q0& q0, int restarts,
+                                                                                      npy_uint64 seed) const noexcept {
+    const SE3d T = SE3d::from_matrix_unchecked(Matrix4(target));
+    const ChainD::JointVector q = q0;
+    if (restarts > 0) {
+      std::mt19937_64 gen(seed);
+      const auto r = chasles::inverse_kinematics(m.chain, T, q, m.lower, m.upper, m.options, gen, restarts);
+      return {r.q, r.converged, r.iterations, r.error};
+    }
+    const auto r = chasles::inverse_kinematics(m.chain, T, q, m.lower, m.upper, m.options);
+    return {r.q, r.converged, r.iterations, r.error};
+  }
+};
+
+py::object ik_ufunc(py::module_& m) {
+  using ufunc::Core;
+  using ufunc::Typed;
+  using Int = Typed<Core<>, int>;
+  using Signature = std::tuple<JointsCore, Typed<Core<>, bool>, Int, Core<6>>(
+      ScrewsCore, Core<4, 4>, JointsCore, JointsCore, Core<>, Core<>, Int, Core<4, 4>, JointsCore, Int,
+      Typed<Core<>, npy_uint64>);
+  return ufunc::def_ufunc<Signature, ufunc::Float64>(
+      m, "_inverse_kinematics",
+      "screws, home, lower, upper, position_tolerance, orientation_tolerance, max_iterations, target, q0, restarts, "
+      "seed",
+      R"doc(A private ufunc of chasles.Chain (its method inverse_kinematics, which checks the arguments).
+
+Operands (float64 unless said):
+    screws: (n, 6), 1 <= n <= 32 (NaN results beyond), the space screws.
+    home: (4, 4), the home pose.
+    lower, upper: (n,), the joint limits.
+    position_tolerance, orientation_tolerance: (), the tolerances on |e_v|, |e_w|.
+    max_iterations: (), int32, iterations per attempt.
+    target: (4, 4), a rigid motion (taken as given).
+    q0: (n,), the seed.
+    restarts: (), int32, further attempts from random seeds while not converged.
+    seed: (), uint64, the seed of the Mersenne twister those are drawn from.
+
+Returns:
+    (q (n,), converged () bool, iterations () int32, error (6,)).)doc",
+      ufunc::model<7>(IKModelOf()), IKKernel());
+}
+
 /// The parts of Chain.inverse_kinematics' result (python/chasles/_results.py,
 /// IKResult): one solve (q of shape (n,), a bool, an int, error (6,)) or a
 /// batch (arrays with the batch shape).
@@ -485,7 +537,12 @@ struct IKSolution {
   py::object q, converged, iterations, error;
 };
 
-IKSolution solve_ik(const PyChain& c, py::handle target, py::handle q0, double position_tolerance,
+/// Chain.inverse_kinematics: the arguments checked here (with messages
+/// naming the method), the solves by the ufunc u. Element i of a batch (in
+/// C order) draws its restarts from a generator seeded with seed + i, so
+/// that it equals the single solve with that seed, however numpy splits the
+/// loop.
+IKSolution solve_ik(PyObject* u, const PyChain& c, py::handle target, py::handle q0, double position_tolerance,
                     double orientation_tolerance, int max_iterations, int restarts, std::uint64_t seed) {
   const char* what = "Chain.inverse_kinematics";
   if (max_iterations < 0) raise_value_error(std::string(what) + "(max_iterations): expected >= 0, got " + std::to_string(max_iterations));
@@ -525,48 +582,29 @@ IKSolution solve_ik(const PyChain& c, py::handle target, py::handle q0, double p
   }
   if (!Eigen::Map<const Eigen::ArrayXd>(qp, k * n).isFinite().all())
     raise_value_error(std::string(what) + "(q0): expected finite numbers");
-  py::array_t<double> q_out(std::vector<py::ssize_t>{k, n}), e_out(std::vector<py::ssize_t>{k, 6});
-  py::array_t<bool> c_out(k);
-  py::array_t<int> i_out(k);
-  chasles::IKOptions<double> options;
-  options.position_tolerance = position_tolerance;
-  options.orientation_tolerance = orientation_tolerance;
-  options.max_iterations = max_iterations;
-  {
-    py::gil_scoped_release release;
-    std::mt19937_64 gen(seed);
-    double* qo = q_out.mutable_data();
-    double* eo = e_out.mutable_data();
-    bool* co = c_out.mutable_data();
-    int* io = i_out.mutable_data();
-    for (py::ssize_t i = 0; i < k; ++i) {
-      const SE3d Ti = SE3d::from_matrix_unchecked(Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(tp + 16 * i));
-      const ChainD::JointVector q0i = Eigen::Map<const Eigen::VectorXd>(qp + n * i, n);
-      const auto r = restarts > 0
-                         ? chasles::inverse_kinematics(c, Ti, q0i, c.lower(), c.upper(), options, gen, restarts)
-                         : chasles::inverse_kinematics(c, Ti, q0i, c.lower(), c.upper(), options);
-      Eigen::Map<Eigen::VectorXd>(qo + n * i, n) = r.q;
-      Eigen::Map<Eigen::Matrix<double, 6, 1>>(eo + 6 * i) = r.error;
-      co[i] = r.converged;
-      io[i] = r.iterations;
-    }
-  }
-  if (batch.empty())
-    return {q_out.attr("reshape")(n), py::bool_(c_out.at(0)), py::int_(i_out.at(0)), e_out.attr("reshape")(6)};
-  return {q_out.attr("reshape")(batch + py::make_tuple(n)), c_out.attr("reshape")(batch), i_out.attr("reshape")(batch),
-          e_out.attr("reshape")(batch + py::make_tuple(6))};
+  py::array_t<npy_uint64> seeds(std::vector<py::ssize_t>{k});
+  for (py::ssize_t i = 0; i < k; ++i) seeds.mutable_data()[i] = static_cast<npy_uint64>(seed + static_cast<std::uint64_t>(i));
+  const py::object S = screws_array(c), M = mat_out<4, 4>(c.home().matrix()), lo = vector_out(c.lower()),
+                   hi = vector_out(c.upper()), ptol = py::float_(position_tolerance),
+                   otol = py::float_(orientation_tolerance), iters = np.attr("int32")(max_iterations),
+                   starts = np.attr("int32")(restarts), seed_array = seeds.attr("reshape")(batch);
+  const py::tuple r = call_ufunc<11>(u, what,
+                                     {S.ptr(), M.ptr(), lo.ptr(), hi.ptr(), ptol.ptr(), otol.ptr(), iters.ptr(), Tb.ptr(),
+                                      Qb.ptr(), starts.ptr(), seed_array.ptr()});
+  const py::object q = r[0], converged = r[1], iterations = r[2], error = r[3];
+  if (batch.empty()) return {q, py::bool_(converged), py::int_(iterations), error};
+  return {q, converged, iterations, error};
 }
 
 }  // namespace
 
 void bind_kinematics(py::module_& m) {
-  const py::object u_forward = chain_ufunc<ChainOp::forward>(m, "_chain_forward", "(n,6),(4,4),(n)->(4,4)");
-  const py::object u_forward_body =
-      chain_ufunc<ChainOp::forward_body>(m, "_chain_forward_body", "(n,6),(4,4),(n)->(4,4)");
+  const py::object u_forward = chain_ufunc<ChainOp::forward>(m, "_chain_forward", "forward");
+  const py::object u_forward_body = chain_ufunc<ChainOp::forward_body>(m, "_chain_forward_body", "forward_body");
   const py::object u_jacobian_space =
-      chain_ufunc<ChainOp::jacobian_space>(m, "_chain_jacobian_space", "(n,6),(4,4),(n)->(6,n)");
-  const py::object u_jacobian_body =
-      chain_ufunc<ChainOp::jacobian_body>(m, "_chain_jacobian_body", "(n,6),(4,4),(n)->(6,n)");
+      chain_ufunc<ChainOp::jacobian_space>(m, "_chain_jacobian_space", "jacobian_space");
+  const py::object u_jacobian_body = chain_ufunc<ChainOp::jacobian_body>(m, "_chain_jacobian_body", "jacobian_body");
+  const py::object u_ik = ik_ufunc(m);
 
   const std::string doc = class_doc();
   py::class_<PyChain> cls(m, "Chain", doc.c_str());
@@ -786,10 +824,10 @@ Example:
   // ---- inverse kinematics (chasles/inverse_kinematics.hpp)
   cls.def(
       "inverse_kinematics",
-      [](Obj<PyChain> c, py::object target, py::object q0, double position_tolerance, double orientation_tolerance,
+      [u_ik](Obj<PyChain> c, py::object target, py::object q0, double position_tolerance, double orientation_tolerance,
          int max_iterations, int restarts, std::uint64_t seed) {
-        const IKSolution r =
-            solve_ik(*c, target, q0, position_tolerance, orientation_tolerance, max_iterations, restarts, seed);
+        const IKSolution r = solve_ik(u_ik.ptr(), *c, target, q0, position_tolerance, orientation_tolerance,
+                                      max_iterations, restarts, seed);
         return py::module_::import("chasles._results").attr("IKResult")(r.q, r.converged, r.iterations, r.error);
       },
       py::arg("target"), py::arg("q0"), py::kw_only(),
@@ -805,10 +843,13 @@ Levenberg-Marquardt on the body error e(q) = log(forward(q)^-1 target)
 max_iterations iterations; then, while not converged, up to ``restarts``
 more attempts from seeds uniform within the limits ([-pi, pi] where a
 limit is infinite), drawn from a generator seeded with ``seed``. The C++
-solver (chasles/inverse_kinematics.hpp) runs with the GIL released.
+solver (chasles/inverse_kinematics.hpp) runs with the GIL released, as the
+private gufunc ``chasles._core._inverse_kinematics``.
 
 Targets and seeds broadcast: one target (an SE3 or (4, 4)) and q0 (n,) give
-one solve; (..., 4, 4) targets and/or (..., n) seeds give a batch.
+one solve; (..., 4, 4) targets and/or (..., n) seeds give a batch. Element
+i of a batch (in C order) draws its restarts from a generator seeded with
+``seed + i``: it equals the single solve with that seed.
 
 Args:
     target: SE3 or array_like of shape (4, 4) or (..., 4, 4), the tool pose(s).
@@ -817,7 +858,8 @@ Args:
     orientation_tolerance: |e_w| at a solution (radians); default 3.7e-11.
     max_iterations: iterations per attempt (>= 0).
     restarts: further attempts from random seeds while not converged (>= 0).
-    seed: the seed of those random seeds (a 64-bit Mersenne twister).
+    seed: the seed of those random seeds (a 64-bit Mersenne twister; seed + i
+        for element i of a batch).
 
 Returns:
     IKResult: a named tuple (q, converged, iterations, error): q of shape

@@ -2463,10 +2463,13 @@ class Chain:
         max_iterations iterations; then, while not converged, up to ``restarts``
         more attempts from seeds uniform within the limits ([-pi, pi] where a
         limit is infinite), drawn from a generator seeded with ``seed``. The C++
-        solver (chasles/inverse_kinematics.hpp) runs with the GIL released.
+        solver (chasles/inverse_kinematics.hpp) runs with the GIL released, as the
+        private gufunc ``chasles._core._inverse_kinematics``.
         
         Targets and seeds broadcast: one target (an SE3 or (4, 4)) and q0 (n,) give
-        one solve; (..., 4, 4) targets and/or (..., n) seeds give a batch.
+        one solve; (..., 4, 4) targets and/or (..., n) seeds give a batch. Element
+        i of a batch (in C order) draws its restarts from a generator seeded with
+        ``seed + i``: it equals the single solve with that seed.
         
         Args:
             target: SE3 or array_like of shape (4, 4) or (..., 4, 4), the tool pose(s).
@@ -2475,7 +2478,8 @@ class Chain:
             orientation_tolerance: |e_w| at a solution (radians); default 3.7e-11.
             max_iterations: iterations per attempt (>= 0).
             restarts: further attempts from random seeds while not converged (>= 0).
-            seed: the seed of those random seeds (a 64-bit Mersenne twister).
+            seed: the seed of those random seeds (a 64-bit Mersenne twister; seed + i
+                for element i of a batch).
         
         Returns:
             IKResult: a named tuple (q, converged, iterations, error): q of shape
@@ -2618,44 +2622,6 @@ class Chain:
     def velocity_limits(self) -> numpy.ndarray:
         """
         numpy.ndarray: shape (n,), the velocity limits (inf where none; a copy).
-        """
-class _SO3SplineCore:
-    """
-    The fitted C++ spline behind chasles.SO3Spline: checked (N,) float64 times and (N, 3, 3) rotations.
-    """
-    def __init__(self, times: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], keys: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], natural: bool) -> None:
-        ...
-    def evaluate(self, t: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], order: typing.SupportsInt | typing.SupportsIndex) -> numpy.ndarray:
-        """
-        Elements (order 0), body velocities (1) or body accelerations (2) at a float64 array of times.
-        """
-    def keys(self) -> numpy.ndarray:
-        """
-        The key elements as an (N, D, D) array.
-        """
-    @property
-    def iterations(self) -> int:
-        """
-        Fixed-point iterations the fit took.
-        """
-class _SE3SplineCore:
-    """
-    The fitted C++ spline behind chasles.SE3Spline: checked (N,) float64 times and (N, 4, 4) poses.
-    """
-    def __init__(self, times: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], keys: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], natural: bool) -> None:
-        ...
-    def evaluate(self, t: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], order: typing.SupportsInt | typing.SupportsIndex) -> numpy.ndarray:
-        """
-        Elements (order 0), body velocities (1) or body accelerations (2) at a float64 array of times.
-        """
-    def keys(self) -> numpy.ndarray:
-        """
-        The key elements as an (N, D, D) array.
-        """
-    @property
-    def iterations(self) -> int:
-        """
-        Fixed-point iterations the fit took.
         """
 class SO3BSpline:
     """
@@ -2907,9 +2873,17 @@ def _se3_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64],
     """
     The C++ mean behind chasles.se3_mean, on checked (N, 4, 4) float64 poses and (N,) weights: (mean, iterations, converged).
     """
+def _se3_spline_fit(times: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], keys: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], natural: bool) -> numpy.ndarray:
+    """
+    The coefficients (n, 18) of the spline through checked (n,) float64 times and (n, 4, 4) poses (row i: c1, c2, c3 of segment i; the last row zero).
+    """
 def _so3_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], geodesic: bool, max_iterations: typing.SupportsInt | typing.SupportsIndex) -> tuple:
     """
     The C++ mean behind chasles.so3_mean, on checked (N, 3, 3) float64 rotations and (N,) weights: (mean, iterations, converged).
+    """
+def _so3_spline_fit(times: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], keys: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], natural: bool) -> numpy.ndarray:
+    """
+    The coefficients (n, 9) of the spline through checked (n,) float64 times and (n, 3, 3) rotations (row i: c1, c2, c3 of segment i; the last row zero).
     """
 @typing.overload
 def act_jacobians(g: SO3, p: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
@@ -3345,7 +3319,12 @@ _coriolis: numpy.ufunc
 _forward_dynamics: numpy.ufunc
 _gravity_torques: numpy.ufunc
 _inverse_dynamics: numpy.ufunc
+_inverse_kinematics: numpy.ufunc
 _mass_matrix: numpy.ufunc
+_se3_bspline: numpy.ufunc
+_se3_bspline_rates: numpy.ufunc
+_se3_spline: numpy.ufunc
+_se3_spline_rates: numpy.ufunc
 _so3_as_euler_XYX: numpy.ufunc
 _so3_as_euler_XYX_deg: numpy.ufunc
 _so3_as_euler_XYZ: numpy.ufunc
@@ -3398,6 +3377,8 @@ _so3_as_quat_wxyz: numpy.ufunc
 _so3_as_quat_xyzw: numpy.ufunc
 _so3_as_rpy: numpy.ufunc
 _so3_as_rpy_deg: numpy.ufunc
+_so3_bspline: numpy.ufunc
+_so3_bspline_rates: numpy.ufunc
 _so3_from_euler_XYX: numpy.ufunc
 _so3_from_euler_XYX_deg: numpy.ufunc
 _so3_from_euler_XYZ: numpy.ufunc
@@ -3450,6 +3431,8 @@ _so3_from_quat_wxyz: numpy.ufunc
 _so3_from_quat_xyzw: numpy.ufunc
 _so3_from_rpy: numpy.ufunc
 _so3_from_rpy_deg: numpy.ufunc
+_so3_spline: numpy.ufunc
+_so3_spline_rates: numpy.ufunc
 se3_act: numpy.ufunc
 se3_act_jacobian: numpy.ufunc
 se3_act_twist: numpy.ufunc

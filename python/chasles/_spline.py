@@ -1,9 +1,12 @@
 """Interpolating C2 splines through key rotations and key poses.
 
-The fit and the evaluation are C++ (include/chasles/spline.hpp, through the
-private cores of bindings/bind_spline.cpp): these classes check the
-arguments, hold the fitted core and give the results numpy's shapes. An
-array of times is evaluated in one C++ loop without the GIL.
+The fit and the evaluation are C++ (include/chasles/spline.hpp, through
+bindings/bind_spline.cpp): these classes check the arguments, hold the
+spline's numbers as arrays (times, keys, the coefficients of each segment's
+cubic, computed once by the private fit) and evaluate it with the private
+gufuncs ``_so3_spline`` / ``_so3_spline_rates`` (``_se3_...``), whose
+operands are those arrays and the times: numpy broadcasts the times and
+runs the loop without the GIL. Everything is float64.
 """
 
 from __future__ import annotations
@@ -67,23 +70,31 @@ class _Spline:
     _what = ""
     _matrix = 0
 
-    def _fit(self, core_class: Any, times: ArrayLike, keys: ArrayLike, ends: str) -> None:
+    _fit_function = ""
+    _element_ufunc = ""
+    _rates_ufunc = ""
+
+    def _fit(self, times: ArrayLike, keys: ArrayLike, ends: str) -> None:
         name = self._name
         if not isinstance(ends, str) or ends not in ENDS:
             raise ValueError(f"{name}(ends): expected 'natural' or 'chord', got {ends!r}")
         t = _times(times, name)
-        k = _keys(keys, t.shape[0], self._matrix, name, self._what)
-        self._core = core_class(t, k, ends == "natural")
-        self._t = t
-        self._t.flags.writeable = False
+        k = _keys(keys, t.shape[0], self._matrix, name, self._what).copy()  # the spline's own
+        coefficients = getattr(_core, self._fit_function)(t, k, ends == "natural")
+        for a in (t, k, coefficients):
+            a.flags.writeable = False
+        self._t, self._keys, self._coefficients = t, k, coefficients
         self._ends = ends
 
-    def _evaluate(self, t: ArrayLike, order: int) -> np.ndarray:
+    def _evaluate(self, t: ArrayLike, order: int) -> Any:
         a = _asarray(t, f"{self._name}(t)")
-        a = np.asarray(a, dtype=np.float64, order="C")  # (ascontiguousarray would make a 0-d array 1-d)
+        a = np.asarray(a, dtype=np.float64)
         if not np.all(np.isfinite(a)):
             raise ValueError(f"{self._name}(t): expected finite times, got {a!r}")
-        return self._core.evaluate(a, order)
+        operands = (self._t, self._keys, self._coefficients, a)
+        if order == 0:
+            return getattr(_core, self._element_ufunc)(*operands)
+        return getattr(_core, self._rates_ufunc)(*operands)[order]
 
     @property
     def times(self) -> np.ndarray:
@@ -140,14 +151,17 @@ class SO3Spline(_Spline):
     _name = "SO3Spline"
     _what = "rotations"
     _matrix = 3
+    _fit_function = "_so3_spline_fit"
+    _element_ufunc = "_so3_spline"
+    _rates_ufunc = "_so3_spline_rates"
 
     def __init__(self, times: ArrayLike, rotations: ArrayLike, *, ends: str = "natural") -> None:
-        self._fit(_core._SO3SplineCore, times, rotations, ends)
+        self._fit(times, rotations, ends)
 
     @property
     def rotations(self) -> np.ndarray:
-        """The key rotations, shape (N, 3, 3)."""
-        return self._core.keys()
+        """The key rotations, shape (N, 3, 3) (a copy)."""
+        return self._keys.copy()
 
     def __call__(self, t: ArrayLike) -> np.ndarray:
         """Rotation matrices at the times t.
@@ -210,14 +224,17 @@ class SE3Spline(_Spline):
     _name = "SE3Spline"
     _what = "poses"
     _matrix = 4
+    _fit_function = "_se3_spline_fit"
+    _element_ufunc = "_se3_spline"
+    _rates_ufunc = "_se3_spline_rates"
 
     def __init__(self, times: ArrayLike, poses: ArrayLike, *, ends: str = "natural") -> None:
-        self._fit(_core._SE3SplineCore, times, poses, ends)
+        self._fit(times, poses, ends)
 
     @property
     def poses(self) -> np.ndarray:
-        """The key poses, shape (N, 4, 4)."""
-        return self._core.keys()
+        """The key poses, shape (N, 4, 4) (a copy)."""
+        return self._keys.copy()
 
     def __call__(self, t: ArrayLike) -> np.ndarray:
         """Poses at the times t.
