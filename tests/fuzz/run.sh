@@ -17,7 +17,7 @@ FUZZ_DIR=$PWD
 SECONDS_PER_TARGET=${2:-20}
 shift $(( $# >= 2 ? 2 : 1 ))
 TARGETS=("$@")
-[ ${#TARGETS[@]} -gt 0 ] || TARGETS=(fuzz_so3 fuzz_se3 fuzz_matrix)
+[ ${#TARGETS[@]} -gt 0 ] || TARGETS=(fuzz_so3 fuzz_se3 fuzz_matrix fuzz_robot)
 
 mkdir -p "$BUILD_DIR/fuzz-artifacts"
 for target in "${TARGETS[@]}"; do
