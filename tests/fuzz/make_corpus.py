@@ -268,6 +268,12 @@ def robot_seeds(ty):
         "dynamics_nan": robot_seed(ty, 2, 6, [NAN] * 27),
         "dynamics_max": robot_seed(ty, 2, 4, [t["max"]] * 27),
     }
+    if ty == "float":
+        # A velocity of subnormal size: the kinetic energy underflowed to 0 (the
+        # property's bound lacked its allowance for underflow; the library was right).
+        seeds["found_energy_subnormal_velocity"] = robot_seed(
+            ty, 2, 0, [-1.7014118e38, 1.1709024e-38, 0, 2.3509887e-38, -1.7014118e38, 1.1709024e-38, 0]
+            + [4.2038954e-45, 0, -1.7014118e38, -4186111.75, -3953276.5, -3953276.5, 0.23563364] + [0.5] * 7 + [0] * 6)
     return seeds
 
 
