@@ -16,6 +16,14 @@
 // The maximum includes whatever the operating system does to the thread
 // (interrupts, preemption on a shared machine): it bounds the machine, not
 // only the code. Timings are reported, never asserted.
+//
+// Then the robot-arm operations (run_robot): inverse kinematics on a UR5 and
+// a Panda-like 7R arm per kind of problem (near the seed, 0.3 rad away,
+// unreachable: the solver runs to its iteration bound, the worst case; at
+// the joint limits) and mixed, with the iterations each kind took; dynamics
+// of the 7R arm; SpatialInertia::transform; spline and B-spline evaluation.
+// IK rows time calls / 100 calls (at least 16): a call is up to 100
+// iterations.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -32,6 +40,11 @@
 #include "chasles/chasles.hpp"
 #include "chasles/jacobians.hpp"
 #include "chasles/kinematics.hpp"
+#include "chasles/dynamics.hpp"
+#include "chasles/inverse_kinematics.hpp"
+#include "chasles/spatial_inertia.hpp"
+#include "chasles/spline.hpp"
+#include "chasles/bspline.hpp"
 
 #if defined(__x86_64__) || defined(__i386__)
 #include <x86intrin.h>
@@ -129,12 +142,14 @@ struct Timer {
 };
 
 /// Times op(inputs[i]) call by call over `calls` calls cycling through the
-/// shuffled inputs; returns the row.
-template <typename In, typename Op>
-Row measure(const std::string& name, const std::vector<In>& in, const std::vector<Kind>& kinds, Op op,
-            std::size_t calls, const Timer& timer) {
+/// shuffled inputs; returns the row. `kinds[i]` indexes `kind_names` (the
+/// rotation kinds above unless given).
+template <typename In, typename Op, typename K>
+Row measure(const std::string& name, const std::vector<In>& in, const std::vector<K>& kinds, Op op,
+            std::size_t calls, const Timer& timer, const char* const* kind_names = kKindNames,
+            int kind_count = kKinds) {
   std::vector<double> t(calls);
-  std::vector<std::vector<double>> by_kind(kKinds);
+  std::vector<std::vector<double>> by_kind(static_cast<std::size_t>(kind_count));
   for (std::size_t i = 0; i < std::min<std::size_t>(calls, 4096); ++i) {  // warm up
     auto r = op(in[i % in.size()]);
     benchmark::DoNotOptimize(r);
@@ -146,19 +161,19 @@ Row measure(const std::string& name, const std::vector<In>& in, const std::vecto
     benchmark::DoNotOptimize(r);
     const std::uint64_t t1 = stamp_end();
     t[i] = std::max(0.0, (double(t1 - t0) - timer.overhead_ticks) * timer.ns_tick);
-    by_kind[kinds[i % in.size()]].push_back(t[i]);
+    by_kind[static_cast<std::size_t>(kinds[i % in.size()])].push_back(t[i]);
   }
   Row row{name, 0, 0, 0, 0, 0, ""};
   row.max = *std::max_element(t.begin(), t.end());
   row.p9999 = percentile(t, 0.9999);
   row.p99 = percentile(t, 0.99);
   row.median = percentile(t, 0.5);
-  for (int k = 0; k < kKinds; ++k) {
-    if (by_kind[k].empty()) continue;
-    const double m = percentile(by_kind[k], 0.5);
+  for (int k = 0; k < kind_count; ++k) {
+    if (by_kind[static_cast<std::size_t>(k)].empty()) continue;
+    const double m = percentile(by_kind[static_cast<std::size_t>(k)], 0.5);
     if (m >= row.worst_kind_median) {
       row.worst_kind_median = m;
-      row.worst_kind = kKindNames[k];
+      row.worst_kind = kind_names[k];
     }
   }
   return row;
@@ -283,6 +298,330 @@ std::vector<Row> run_all(std::size_t calls, const Timer& timer) {
   return rows;
 }
 
+// ---------------------------------------------------------------------------
+// Robot-arm operations: inverse kinematics, dynamics, spatial inertia,
+// splines.
+
+/// A Panda-like 7R arm (the Franka Panda's joint axes and points at zero,
+/// links as boxes of its masses, its position limits), as in
+/// tests/fuzz/fuzz_robot.cpp.
+template <typename S>
+struct Panda {
+  using C = chasles::Chain<S, 7>;
+  using D = chasles::Dynamics<S, 7>;
+  typename C::Screws screws;
+  chasles::SE3<S> home;
+  typename D::Inertias inertias;
+  typename C::JointVector lower, upper;
+
+  Panda() {
+    using V3 = Eigen::Vector3d;
+    const V3 axis[7] = {V3(0, 0, 1), V3(0, -1, 0), V3(0, 0, 1), V3(0, 1, 0), V3(0, 0, 1), V3(0, 1, 0), V3(0, 0, -1)};
+    const V3 point[7] = {V3(0, 0, 0.333), V3(0, 0, 0.333), V3(0, 0, 0.649), V3(0.0825, 0, 0.649),
+                         V3(0, 0, 1.033), V3(0, 0, 1.033), V3(0.088, 0, 1.033)};
+    const double mass[7] = {4.97, 0.65, 3.23, 3.59, 1.23, 1.67, 0.74};
+    const V3 box[7] = {V3(0.1, 0.1, 0.3), V3(0.1, 0.1, 0.3), V3(0.1, 0.1, 0.3), V3(0.1, 0.1, 0.3),
+                       V3(0.08, 0.08, 0.35), V3(0.08, 0.08, 0.1), V3(0.06, 0.06, 0.1)};
+    const V3 com[7] = {V3(0, -0.03, 0.28), V3(0, -0.07, 0.37), V3(0.04, 0.02, 0.6), V3(-0.04, 0.04, 0.7),
+                       V3(0, 0.04, 0.8), V3(0.04, 0, 1.02), V3(0.09, 0, 0.98)};
+    const double lo[7] = {-2.8973, -1.7628, -2.8973, -3.0718, -2.8973, -0.0175, -2.8973};
+    const double hi[7] = {2.8973, 1.7628, 2.8973, -0.0698, 2.8973, 3.7525, 2.8973};
+    for (int i = 0; i < 7; ++i) {
+      screws.col(i) = C::revolute_screw(point[i].cast<S>(), axis[i].cast<S>());
+      const double x = box[i][0], y = box[i][1], z = box[i][2], m = mass[i];
+      const V3 moments(m * (y * y + z * z) / 12, m * (x * x + z * z) / 12, m * (x * x + y * y) / 12);
+      inertias[std::size_t(i)] =
+          chasles::SpatialInertia<double>(m, com[i], moments.asDiagonal().toDenseMatrix()).cast<S>();
+      lower(i) = S(lo[i]);
+      upper(i) = S(hi[i]);
+    }
+    Eigen::Matrix4d M;
+    M << 1, 0, 0, 0.088, 0, -1, 0, 0, 0, 0, -1, 0.926, 0, 0, 0, 1;
+    home = chasles::SE3<double>::from_matrix_unchecked(M).cast<S>();
+  }
+};
+
+/// The UR5 of Modern Robotics, example 4.5.
+template <typename S>
+chasles::Chain<S, 6> ur5() {
+  using C = chasles::Chain<S, 6>;
+  typename C::Screws screws;
+  const S W1 = S(0.109), W2 = S(0.082), L1 = S(0.425), L2 = S(0.392), H1 = S(0.089), H2 = S(0.095);
+  screws.col(0) << 0, 0, 0, 0, 0, 1;
+  screws.col(1) << -H1, 0, 0, 0, 1, 0;
+  screws.col(2) << -H1, 0, L1, 0, 1, 0;
+  screws.col(3) << -H1, 0, L1 + L2, 0, 1, 0;
+  screws.col(4) << -W1, L1 + L2, 0, 0, 0, -1;
+  screws.col(5) << H2 - H1, 0, L1 + L2, 0, 1, 0;
+  Eigen::Matrix<S, 4, 4> home;
+  home << -1, 0, 0, L1 + L2, 0, 0, 1, W1 + W2, 0, 1, 0, H1 - H2, 0, 0, 0, 1;
+  return C(screws, chasles::SE3<S>::from_matrix_unchecked(home));
+}
+
+/// The kinds of inverse kinematics problem.
+enum IKKind { kNear, kAway, kUnreachable, kAtLimits, kIKKinds };
+const char* const kIKKindNames[kIKKinds] = {"near seed", "0.3 rad", "unreachable", "at limits"};
+
+/// Iterations per IK row (the same inputs, solved once beforehand).
+struct IKIterations {
+  std::string op;
+  int min, max;
+  double median;
+  int converged, count;
+};
+
+/// IK problems on `chain` within [lower, upper] (every entry finite): per
+/// kind, 64 targets forward(q*) of q* drawn within the limits (0.3 rad inside
+/// them) with the seed q* + U(-0.01, 0.01) ("near seed") or q* + U(-0.3, 0.3)
+/// per joint ("0.3 rad"); targets 3 times as far from the base as a reachable
+/// one, seeded at its q*, kept when the solver runs to its iteration bound
+/// ("unreachable": the worst case); q* with two joints exactly at a limit
+/// and the seed 0.3 rad away ("at limits").
+template <typename C>
+void ik_rows(const std::string& arm, const C& chain, const typename C::JointVector& lower,
+             const typename C::JointVector& upper, std::size_t calls, const Timer& timer, std::vector<Row>& rows,
+             std::vector<IKIterations>& table) {
+  using S = typename C::Scalar;
+  using JV = typename C::JointVector;
+  struct Problem {
+    chasles::SE3<S> target;
+    JV seed;
+  };
+  const int n = int(chain.joints());
+  const chasles::IKOptions<S> options;
+  std::mt19937_64 rng(7 + std::uint64_t(n));
+  std::uniform_real_distribution<double> u(0, 1), near(-0.01, 0.01), away(-0.3, 0.3);
+  const auto solve = [&](const Problem& p) { return chasles::inverse_kinematics(chain, p.target, p.seed, lower, upper, options); };
+  const auto inside = [&] {
+    JV q(n);
+    for (int i = 0; i < n; ++i) {
+      const double a = double(lower(i)) + 0.3, b = double(upper(i)) - 0.3;
+      q(i) = S(a + (b - a) * u(rng));
+    }
+    return q;
+  };
+  std::vector<std::vector<Problem>> by_kind(kIKKinds);
+  constexpr std::size_t kPerKind = 64;
+  for (std::size_t k = 0; k < kPerKind; ++k) {
+    const JV q = inside();
+    JV s1(n), s2(n);
+    for (int i = 0; i < n; ++i) s1(i) = q(i) + S(near(rng)), s2(i) = q(i) + S(away(rng));
+    by_kind[kNear].push_back({chain.forward(q), s1});
+    by_kind[kAway].push_back({chain.forward(q), s2});
+    JV ql = q;
+    const int a = int(rng() % std::uint64_t(n)), b = int((a + 1 + int(rng() % std::uint64_t(n - 1))) % n);
+    ql(a) = lower(a);
+    ql(b) = upper(b);
+    JV s3(n);
+    for (int i = 0; i < n; ++i) s3(i) = ql(i) + S(away(rng));
+    by_kind[kAtLimits].push_back({chain.forward(ql), s3});
+  }
+  // Unreachable: a reachable pose moved out from the base by a factor 3 to
+  // 100, seeded at its q*. The solver settles on the nearest pose, slowly
+  // (a large residual: linear convergence), and stops at the bound or when
+  // its step is below rounding, whichever comes first; the farther, the
+  // more often at the bound (UR5 in double: 8% of the targets at 3 times,
+  // 40% at 100 times; in float 0.5% to 4%). Kept: up to 64 of 2000 that ran
+  // to the bound (the worst case), or if none did, the 64 that took the
+  // most iterations (the iteration table shows which).
+  std::vector<std::pair<int, Problem>> candidates;
+  const double factors[4] = {3.0, 10.0, 30.0, 100.0};
+  std::size_t at_bound = 0;
+  for (int attempt = 0; attempt < 2000 && at_bound < kPerKind; ++attempt) {
+    const JV q = inside();
+    const chasles::SE3<S> g = chain.forward(q);
+    const Problem p{chasles::SE3<S>(g.rotation(), Eigen::Matrix<S, 3, 1>(g.translation() * S(factors[attempt % 4]))),
+                    q};
+    const auto r = solve(p);
+    if (r.converged) continue;
+    candidates.emplace_back(r.iterations, p);
+    at_bound += r.iterations == options.max_iterations;
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const auto& a, const auto& b) { return a.first > b.first; });
+  const std::size_t keep = std::min(candidates.size(), at_bound > 0 ? at_bound : kPerKind);
+  for (std::size_t i = 0; i < keep; ++i) by_kind[kUnreachable].push_back(candidates[i].second);
+  const std::size_t ik_calls = std::max<std::size_t>(calls / 100, 16);
+  std::vector<Problem> mixed;
+  std::vector<int> mixed_kinds;
+  for (int k = 0; k < kIKKinds; ++k) {
+    const std::vector<Problem>& ps = by_kind[std::size_t(k)];
+    if (ps.empty()) continue;
+    const std::string op = "IK/" + arm + " " + kIKKindNames[k];
+    std::vector<int> kinds(ps.size(), k), its;
+    int converged = 0;
+    for (const Problem& p : ps) {
+      const auto r = solve(p);
+      its.push_back(r.iterations);
+      converged += r.converged;
+    }
+    std::sort(its.begin(), its.end());
+    table.push_back({op, its.front(), its.back(), double(its[its.size() / 2]), converged, int(ps.size())});
+    rows.push_back(measure(op, ps, kinds, [&](const Problem& p) { return solve(p).q; }, ik_calls, timer,
+                           kIKKindNames, kIKKinds));
+    for (const Problem& p : ps) mixed.push_back(p), mixed_kinds.push_back(k);
+  }
+  // The same problems shuffled together: the tail of a mix.
+  std::vector<std::size_t> order(mixed.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::shuffle(order.begin(), order.end(), rng);
+  std::vector<Problem> shuffled;
+  std::vector<int> shuffled_kinds;
+  for (std::size_t i : order) shuffled.push_back(mixed[i]), shuffled_kinds.push_back(mixed_kinds[i]);
+  rows.push_back(measure("IK/" + arm + " mixed", shuffled, shuffled_kinds,
+                         [&](const Problem& p) { return solve(p).q; }, ik_calls, timer, kIKKindNames, kIKKinds));
+}
+
+/// The kinds of dynamics input.
+enum DynKind { kDynGeneric, kDynRest, kDynHuge, kDynKinds };
+const char* const kDynKindNames[kDynKinds] = {"generic", "at rest", "huge velocities"};
+
+/// The robot-arm rows: IK (UR5, Panda-like), dynamics (Panda-like, inputs
+/// generic, at rest, at huge velocities 1e4 rad/s), SpatialInertia::transform
+/// over poses of every rotation kind, spline and B-spline evaluation at
+/// times in segments whose relative motion is of every rotation kind.
+template <typename S>
+std::vector<Row> run_robot(std::size_t calls, const Timer& timer, std::vector<IKIterations>& table) {
+  using namespace chasles;
+  using V3 = Eigen::Matrix<S, 3, 1>;
+  using V6 = Eigen::Matrix<S, 6, 1>;
+  std::vector<Row> rows;
+  const Panda<S> panda;
+
+  // Inverse kinematics: the UR5 within [-2 pi, 2 pi] per joint, the Panda-like arm within its limits.
+  {
+    const Chain<S, 6> u5 = ur5<S>();
+    const typename Chain<S, 6>::JointVector lo = Chain<S, 6>::JointVector::Constant(S(-2 * kPi)),
+                                            hi = Chain<S, 6>::JointVector::Constant(S(2 * kPi));
+    ik_rows("UR5 (6 joints)", u5, lo, hi, calls, timer, rows, table);
+    const Chain<S, 7> arm(panda.screws, panda.home);
+    ik_rows("Panda-like (7 joints)", arm, panda.lower, panda.upper, calls, timer, rows, table);
+  }
+
+  // Dynamics of the Panda-like arm.
+  {
+    using D = Dynamics<S, 7>;
+    using JV = typename D::JointVector;
+    const D dyn(panda.screws, panda.home, panda.inertias, V3(S(0), S(0), S(-9.81)));
+    struct State {
+      JV q, qd, qdd, tau;
+    };
+    constexpr std::size_t kN = 4096;
+    std::mt19937_64 rng(99);
+    std::uniform_real_distribution<double> u(-1, 1);
+    std::vector<State> states;
+    std::vector<int> kinds;
+    for (std::size_t i = 0; i < kN; ++i) {
+      const int k = int(i % kDynKinds);
+      const double v = k == kDynRest ? 0 : k == kDynHuge ? 1e4 : 2;
+      State st;
+      for (int j = 0; j < 7; ++j) {
+        st.q(j) = S(kPi * u(rng));
+        st.qd(j) = S(v * u(rng));
+        st.qdd(j) = S(2.5 * v * u(rng));
+        st.tau(j) = S(20 * u(rng));
+      }
+      states.push_back(st);
+      kinds.push_back(k);
+    }
+    std::vector<std::size_t> order(kN);
+    for (std::size_t i = 0; i < kN; ++i) order[i] = i;
+    std::shuffle(order.begin(), order.end(), rng);
+    std::vector<State> xs;
+    std::vector<int> ks;
+    for (std::size_t i : order) xs.push_back(states[i]), ks.push_back(kinds[i]);
+    rows.push_back(measure("Dynamics/inverse_dynamics (7 joints)", xs, ks,
+                           [&dyn](const State& s) { return dyn.inverse_dynamics(s.q, s.qd, s.qdd); }, calls, timer,
+                           kDynKindNames, kDynKinds));
+    rows.push_back(measure("Dynamics/mass_matrix (7 joints)", xs, ks,
+                           [&dyn](const State& s) { return dyn.mass_matrix(s.q); }, calls, timer, kDynKindNames,
+                           kDynKinds));
+    rows.push_back(measure("Dynamics/gravity_torques (7 joints)", xs, ks,
+                           [&dyn](const State& s) { return dyn.gravity_torques(s.q); }, calls, timer, kDynKindNames,
+                           kDynKinds));
+    rows.push_back(measure("Dynamics/forward_dynamics (7 joints)", xs, ks,
+                           [&dyn](const State& s) { return dyn.forward_dynamics(s.q, s.qd, s.tau); }, calls, timer,
+                           kDynKindNames, kDynKinds));
+  }
+
+  // SpatialInertia::transform over poses of every rotation kind, and splines
+  // through 64 keys whose consecutive relative motions are of every kind.
+  {
+    constexpr std::size_t kN = 4096, kKeys = 64;
+    std::mt19937_64 rng(2025);
+    std::normal_distribution<double> nd(0, 1);
+    std::vector<Kind> kinds(kN);
+    for (std::size_t i = 0; i < kN; ++i) kinds[i] = Kind(i % kKinds);
+    std::shuffle(kinds.begin(), kinds.end(), rng);
+    std::vector<SE3<S>> gs;
+    for (std::size_t i = 0; i < kN; ++i) {
+      V6 xi;
+      xi << V3(S(nd(rng)), S(nd(rng)), S(nd(rng))), rotation_vector<S>(kinds[i], rng);
+      gs.push_back(SE3<S>::exp(xi));
+    }
+    const SpatialInertia<S>& body = panda.inertias[3];
+    rows.push_back(measure("SpatialInertia/transform", gs, kinds,
+                           [&body](const SE3<S>& g) { return body.transform(g); }, calls, timer));
+
+    // Keys: X_{i+1} = X_i exp(xi_i) with xi_i of kind i % kKinds; times 0, 0.5, 1, ...
+    std::vector<SE3<S>> keys{SE3<S>::identity()};
+    std::vector<SO3<S>> rkeys{SO3<S>::identity()};
+    std::vector<Kind> segment_kind;
+    std::vector<S> times{S(0)};
+    for (std::size_t i = 0; i + 1 < kKeys; ++i) {
+      const Kind k = Kind(i % kKinds);
+      V6 xi;
+      xi << V3(S(nd(rng)), S(nd(rng)), S(nd(rng))), rotation_vector<S>(k, rng);
+      keys.push_back(keys.back() * SE3<S>::exp(xi));
+      rkeys.push_back(rkeys.back() * SO3<S>::exp(V3(xi.template tail<3>())));
+      segment_kind.push_back(k);
+      times.push_back(S(0.5 * double(i + 1)));
+    }
+    std::vector<SplineSegment<SE3<S>>> seg(kKeys - 1);
+    std::vector<SplineWork<SE3<S>>> work(kKeys);
+    std::vector<SplineSegment<SO3<S>>> rseg(kKeys - 1);
+    std::vector<SplineWork<SO3<S>>> rwork(kKeys);
+    fit_spline(int(kKeys), times.data(), keys.data(), seg.data(), work.data());
+    fit_spline(int(kKeys), times.data(), rkeys.data(), rseg.data(), rwork.data());
+    const SE3Spline<S> spline(int(kKeys), times.data(), keys.data(), seg.data());
+    const SO3Spline<S> rspline(int(kKeys), times.data(), rkeys.data(), rseg.data());
+    // B-splines over the same keys as control points, spacing 0.5 from 0.
+    const SE3BSplineView<S> bspline(keys.data(), std::ptrdiff_t(kKeys), S(0), S(0.5));
+    const SO3BSplineView<S> rbspline(rkeys.data(), std::ptrdiff_t(kKeys), S(0), S(0.5));
+    std::vector<S> ts(kN);
+    std::vector<Kind> tkinds(kN);
+    std::uniform_real_distribution<double> within(0, 1);
+    for (std::size_t i = 0; i < kN; ++i) {
+      const std::size_t s = rng() % (kKeys - 1);
+      ts[i] = S(0.5 * (double(s) + within(rng)));
+      tkinds[i] = segment_kind[s];
+    }
+    rows.push_back(measure("SE3Spline/operator() (64 keys)", ts, tkinds,
+                           [&spline](const S& t) { return spline(t).velocity; }, calls, timer));
+    rows.push_back(measure("SE3Spline/element (64 keys)", ts, tkinds,
+                           [&spline](const S& t) { return spline.element(t); }, calls, timer));
+    rows.push_back(measure("SO3Spline/operator() (64 keys)", ts, tkinds,
+                           [&rspline](const S& t) { return rspline(t).velocity; }, calls, timer));
+    rows.push_back(measure("SE3BSplineView/evaluate (64 points)", ts, tkinds,
+                           [&bspline](const S& t) { return bspline.evaluate(t).velocity; }, calls, timer));
+    rows.push_back(measure("SE3BSplineView/operator() (64 points)", ts, tkinds,
+                           [&bspline](const S& t) { return bspline(t); }, calls, timer));
+    rows.push_back(measure("SO3BSplineView/evaluate (64 points)", ts, tkinds,
+                           [&rbspline](const S& t) { return rbspline.evaluate(t).velocity; }, calls, timer));
+  }
+  return rows;
+}
+
+void print_iterations(const char* scalar, const std::vector<IKIterations>& table) {
+  std::printf("### Inverse kinematics iterations per problem, %s (bound %d)\n\n", scalar,
+              chasles::ThresholdsOf<double>::ik_max_iterations);
+  std::printf("| problems | min | median | max | converged |\n");
+  std::printf("| --- | ---: | ---: | ---: | ---: |\n");
+  for (const IKIterations& r : table)
+    std::printf("| %s | %d | %.0f | %d | %d / %d |\n", r.op.c_str(), r.min, r.median, r.max, r.converged, r.count);
+  std::printf("\n");
+}
+
 void print(const char* scalar, const std::vector<Row>& rows, std::size_t calls) {
   std::printf("### Latency per call, %s, %zu calls per op (ns)\n\n", scalar, calls);
   std::printf("| op | median | p99 | p99.99 | max | slowest kind | its median | / median |\n");
@@ -320,5 +659,13 @@ int main(int argc, char** argv) {
               timer.overhead_ticks * timer.ns_tick);
   print("double", run_all<double>(calls, timer), calls);
   print("float", run_all<float>(calls, timer), calls);
+  std::printf("Robot-arm operations. IK rows: %zu calls each (calls / 100, at least 16).\n\n",
+              std::max<std::size_t>(calls / 100, 16));
+  for (const bool dbl : {true, false}) {
+    std::vector<IKIterations> table;
+    const std::vector<Row> rows = dbl ? run_robot<double>(calls, timer, table) : run_robot<float>(calls, timer, table);
+    print(dbl ? "double, robot arms" : "float, robot arms", rows, calls);
+    print_iterations(dbl ? "double" : "float", table);
+  }
   return 0;
 }

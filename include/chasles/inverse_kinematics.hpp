@@ -75,6 +75,16 @@ struct IKResult {
 
 namespace detail {
 
+/// de/dq = -J_l(e)^-1 J_b(q) (6 x n) at q, e = pose_error at q already
+/// known: the formula of pose_error_jacobian, shared with the iteration of
+/// inverse_kinematics (which has e at hand).
+template <typename ChainT, typename Derived>
+inline typename ChainT::Jacobian pose_error_jacobian_at(const ChainT& chain,
+                                                        const Eigen::Matrix<typename ChainT::Scalar, 6, 1>& e,
+                                                        const Eigen::MatrixBase<Derived>& q) noexcept {
+  return -(se3_left_jacobian_inverse(e) * chain.jacobian_body(q));
+}
+
 template <typename Scalar>
 inline bool ik_converged(const Eigen::Matrix<Scalar, 6, 1>& e, const IKOptions<Scalar>& o) noexcept {
   return e.template head<3>().squaredNorm() <= o.position_tolerance * o.position_tolerance &&
@@ -97,7 +107,7 @@ inline Eigen::Matrix<typename ChainT::Scalar, 6, 1> pose_error(const ChainT& cha
 template <typename ChainT, typename Derived>
 inline typename ChainT::Jacobian pose_error_jacobian(const ChainT& chain, const SE3<typename ChainT::Scalar>& target,
                                                      const Eigen::MatrixBase<Derived>& q) noexcept {
-  return -(se3_left_jacobian_inverse(pose_error(chain, target, q)) * chain.jacobian_body(q));
+  return detail::pose_error_jacobian_at(chain, pose_error(chain, target, q), q);
 }
 
 /// Inverse kinematics of `chain` for the tool pose `target`, from the
@@ -128,7 +138,7 @@ inline IKResult<ChainT> inverse_kinematics(const ChainT& chain, const SE3<typena
   JointVector gradient(n);  // J^T e, the gradient of cost = |e|^2 / 2
   const auto linearize = [&] {
     // J = de/dq = -J_l(e)^-1 J_b(q) (pose_error_jacobian, with e known).
-    const typename ChainT::Jacobian J = -(se3_left_jacobian_inverse(e) * chain.jacobian_body(q));
+    const typename ChainT::Jacobian J = detail::pose_error_jacobian_at(chain, e, q);
     JtJ.noalias() = J.transpose() * J;
     gradient.noalias() = J.transpose() * e;
   };

@@ -196,8 +196,89 @@ def se3_seeds(ty):
     return seeds
 
 
+def robot_seed(ty, part, options, values):
+    """fuzz_robot: head byte (type, part), the part's options byte, values (at most 2 + 29 doubles)."""
+    t = TYPES[ty]
+    out = bytes([t["head"] | (part << 1), options])
+    for v in values:
+        out += struct.pack(t["fmt"], v)
+    return out
+
+
+def ik_options(n, limits, projected=False, restart=False):
+    return (n - 1) + 7 * limits + (0x40 if projected else 0) + (0x80 if restart else 0)
+
+
+def robot_seeds(ty):
+    t = TYPES[ty]
+    # The rail + UR5 at q = 0 has its tool at (0.817, 0.191, -0.006), rotation
+    # rows (-1, 0, 0), (0, 0, 1), (0, 1, 0) (fuzz_robot.cpp, rail_ur5).
+    home = matrix_rows([[-1, 0, 0, 0.817], [0, 0, 1, 0.191], [0, 1, 0, -0.006], [0, 0, 0, 1]])
+    c, s = math.cos(0.3), math.sin(0.3)
+    turned = matrix_rows([[-c, 0, s, 0.6], [0, 1, 0, 0.3], [-s, 0, -c, 0.2], [0, 0, 0, 1]])
+    far = matrix_rows([[-1, 0, 0, 5.0], [0, 0, 1, 5.0], [0, 1, 0, 5.0], [0, 0, 0, 1]])
+    q_small = [0.0, 0.1, -0.2, 0.3, -0.1, 0.2, 0.1]
+    seeds = {
+        # Inverse kinematics: near the seed, 0.3 rad away, unreachable, at the limits,
+        # a non-rotation, huge, non-finite; 6 and 7 joints; each limit mode.
+        "ik_home_6": robot_seed(ty, 0, ik_options(6, 0), home + [0.0] * 7 + [0, 0]),
+        "ik_near_7": robot_seed(ty, 0, ik_options(7, 1), home + q_small + [0, 0]),
+        "ik_turned_6_limits": robot_seed(ty, 0, ik_options(6, 1, projected=True), turned + [0.3] * 7 + [0, 0]),
+        "ik_unreachable_7": robot_seed(ty, 0, ik_options(7, 0), far + q_small + [0, 0]),
+        "ik_unreachable_6_restart": robot_seed(ty, 0, ik_options(6, 1, restart=True), far + q_small + [0, 0]),
+        "ik_at_raw_limits_7": robot_seed(ty, 0, ik_options(7, 2), turned + [0.5] * 7 + [-0.5, 0.5]),
+        "ik_empty_limits": robot_seed(ty, 0, ik_options(3, 2), turned + [0.5] * 7 + [1.0, 1.0]),
+        "ik_reversed_limits": robot_seed(ty, 0, ik_options(5, 2), turned + [0.5] * 7 + [1.0, -1.0]),
+        "ik_not_a_rotation": robot_seed(ty, 0, ik_options(6, 0), [2.0, 1.0, 0, 0.1, 0, 3.0, 1.0, 0, 0, 0, 0, 0, 0, 0, 0, 1]
+                                        + q_small + [0, 0]),
+        "ik_huge_target": robot_seed(ty, 0, ik_options(7, 0, projected=True), matrix_rows(
+            [[1, 0, 0, t["huge"]], [0, 1, 0, -t["huge"]], [0, 0, 1, t["max"]], [0, 0, 0, 1]]) + q_small + [0, 0]),
+        "ik_huge_seed": robot_seed(ty, 0, ik_options(7, 0), home + [t["huge"]] * 7 + [0, 0]),
+        "ik_nan_target": robot_seed(ty, 0, ik_options(6, 0), home[:5] + [NAN] + home[6:] + q_small + [0, 0]),
+        "ik_inf_seed": robot_seed(ty, 0, ik_options(7, 1), home + [INF, -INF] + q_small[2:] + [0, 0]),
+        "ik_infinite_limits": robot_seed(ty, 0, ik_options(4, 2), home + q_small + [INF, INF]),
+        "ik_one_joint": robot_seed(ty, 0, ik_options(1, 0), turned + q_small + [0, 0]),
+        # SpatialInertia: m, c, I (row by row), V, xi, m2, c2.
+        "inertia_box": robot_seed(ty, 1, 0, [2.0, 0.1, -0.2, 0.3, 0.2, 0.01, 0, 0.01, 0.3, 0.02, 0, 0.02, 0.4]
+                                  + [1.0, -2.0, 0.5, 0.3, 0.2, -0.1] + [0.1, 0.2, 0.3, 0.4, 0.5, 0.6] + [1.5, 1, 1, 1]),
+        "inertia_triangle_edge": robot_seed(ty, 1, 0, [1.0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 2]
+                                            + [1.0] * 6 + [0.0] * 6 + [1.0, 0, 0, 0]),
+        "inertia_triangle_broken": robot_seed(ty, 1, 0, [1.0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 2.5]
+                                              + [1.0] * 6 + [0.0] * 6 + [1.0, 0, 0, 0]),
+        "inertia_asymmetric": robot_seed(ty, 1, 0, [1.0, 0, 0, 0, 1, 0.1, 0, 0, 1, 0, 0, 0, 1]
+                                         + [1.0] * 6 + [0.0] * 6 + [1.0, 0, 0, 0]),
+        "inertia_zero": robot_seed(ty, 1, 0, [0.0] * 29),
+        "inertia_negative_mass": robot_seed(ty, 1, 0, [-1.0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1]
+                                            + [1.0] * 6 + [0.0] * 6 + [-1.0, 0, 0, 0]),
+        "inertia_denormal": robot_seed(ty, 1, 0, [t["denorm"]] * 29),
+        "inertia_huge": robot_seed(ty, 1, 0, [t["huge"], t["huge"], 0, 0, t["max"], 0, 0, 0, t["max"], 0, 0, 0,
+                                              t["max"]] + [t["huge"]] * 6 + [0.0] * 6 + [t["max"], 0, 0, 0]),
+        "inertia_nan": robot_seed(ty, 1, 0, [NAN] * 29),
+        "inertia_inf": robot_seed(ty, 1, 0, [1.0, 0, 0, 0, INF, 0, 0, 0, 1, 0, 0, 0, 1] + [1.0] * 6 + [0.0] * 6
+                                  + [INF, 0, 0, 0]),
+        # Dynamics: q, qd, qdd (also the tau of forward_dynamics), F_tip; generic,
+        # at rest, huge velocities.
+        "dynamics_generic_7": robot_seed(ty, 2, 6, [0.1, -0.5, 0.3, -2.0, 0.2, 1.5, 0.7] + [0.5, -0.3, 0.2, 1.0, -1.0,
+                                         0.4, 2.0] + [10.0, -5.0, 3.0, 2.0, 1.0, 0.5, 0.1] + [1, 2, 3, 0.1, 0.2, 0.3]),
+        "dynamics_rest_7": robot_seed(ty, 2, 6, [0.0] * 27),
+        "dynamics_huge_velocities": robot_seed(ty, 2, 6, [0.3] * 7 + [1e11 if ty == "float" else 1e140] * 14
+                                               + [0.0] * 6),
+        "dynamics_huge_angles": robot_seed(ty, 2, 6, [t["huge"]] * 7 + [1.0] * 20),
+        "dynamics_one_joint": robot_seed(ty, 2, 0, [0.5] * 27),
+        "dynamics_nan": robot_seed(ty, 2, 6, [NAN] * 27),
+        "dynamics_max": robot_seed(ty, 2, 4, [t["max"]] * 27),
+    }
+    if ty == "float":
+        # A velocity of subnormal size: the kinetic energy underflowed to 0 (the
+        # property's bound lacked its allowance for underflow; the library was right).
+        seeds["found_energy_subnormal_velocity"] = robot_seed(
+            ty, 2, 0, [-1.7014118e38, 1.1709024e-38, 0, 2.3509887e-38, -1.7014118e38, 1.1709024e-38, 0]
+            + [4.2038954e-45, 0, -1.7014118e38, -4186111.75, -3953276.5, -3953276.5, 0.23563364] + [0.5] * 7 + [0] * 6)
+    return seeds
+
+
 def main():
-    makers = {"fuzz_so3": so3_seeds, "fuzz_matrix": matrix_seeds, "fuzz_se3": se3_seeds}
+    makers = {"fuzz_so3": so3_seeds, "fuzz_matrix": matrix_seeds, "fuzz_se3": se3_seeds, "fuzz_robot": robot_seeds}
     for target, make in makers.items():
         folder = ROOT / target
         folder.mkdir(parents=True, exist_ok=True)

@@ -17,7 +17,7 @@ FUZZ_DIR=$PWD
 SECONDS_PER_TARGET=${2:-20}
 shift $(( $# >= 2 ? 2 : 1 ))
 TARGETS=("$@")
-[ ${#TARGETS[@]} -gt 0 ] || TARGETS=(fuzz_so3 fuzz_se3 fuzz_matrix)
+[ ${#TARGETS[@]} -gt 0 ] || TARGETS=(fuzz_so3 fuzz_se3 fuzz_matrix fuzz_robot)
 
 mkdir -p "$BUILD_DIR/fuzz-artifacts"
 for target in "${TARGETS[@]}"; do
@@ -26,8 +26,8 @@ for target in "${TARGETS[@]}"; do
   log="$BUILD_DIR/fuzz-work/$target.log"
   mkdir -p "$work"
   echo "-- $target: ${SECONDS_PER_TARGET} s from $(ls "$FUZZ_DIR/corpus/$target" | wc -l) seeds and $(ls "$work" | wc -l) inputs of earlier runs"
-  # Inputs are at most 1 + 22 doubles: longer ones only repeat what the
-  # targets ignore.
+  # Inputs are at most 2 + 29 doubles (fuzz_robot; 1 + 22 for the others):
+  # longer ones only repeat what the targets ignore.
   if ! "$binary" -max_total_time="$SECONDS_PER_TARGET" -max_len=256 -timeout=10 -rss_limit_mb=2048 \
       -print_final_stats=1 -artifact_prefix="$BUILD_DIR/fuzz-artifacts/$target-" \
       "$work" "$FUZZ_DIR/corpus/$target" > "$log" 2>&1; then

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <random>
 #include <type_traits>
@@ -184,6 +185,23 @@ S exercise_all() noexcept {
   const auto ikr = inverse_kinematics(cd, target, thd, ik_lo, ik_hi, ik_options, ik_gen, 2);
   sum += ik6.q.sum() + ik6.error.sum() + S(ik6.iterations) + S(ikd.converged ? 1 : 0) + ikd.q.sum() + ikr.q.sum();
   sum += pose_error(c6, target, th6).sum() + pose_error_jacobian(cd, target, thd).sum();
+  {
+    // Fixed size with limits, seeded at a limit the step pushes past (the
+    // active set holds it), an unreachable target (to the stall or the
+    // bound), the restarts overload on the fixed chain, non-finite targets.
+    typename C6::JointVector lo6 = C6::JointVector::Constant(S(-0.5)), hi6 = C6::JointVector::Constant(S(0.5));
+    const SE3<S> beyond = c6.forward(typename C6::JointVector(C6::JointVector::Constant(S(-1))));
+    const auto held = inverse_kinematics(c6, beyond, typename C6::JointVector(C6::JointVector::Constant(S(-0.5))), lo6,
+                                         hi6);
+    const SE3<S> far(R, V3(p * S(100)));
+    const auto unreachable = inverse_kinematics(c6, far, th6, lo6, hi6);
+    std::minstd_rand gen6(5);
+    const auto restarted = inverse_kinematics(c6, far, th6, lo6, hi6, IKOptions<S>(), gen6, 1);
+    const SE3<S> nan_target = SE3<S>::from_matrix_unchecked(Eigen::Matrix<S, 4, 4>::Constant(S(RealOf<S>(NAN))));
+    const auto not_finite = inverse_kinematics(cd, nan_target, thd);
+    sum += held.q.sum() + S(held.iterations) + unreachable.error.sum() + S(unreachable.iterations);
+    sum += restarted.q.sum() + S(restarted.converged ? 1 : 0) + S(not_finite.iterations);
+  }
 
   // Splines (spline.hpp) over caller storage, both groups and both end conditions.
   {
@@ -204,6 +222,19 @@ S exercise_all() noexcept {
     sum += a.element.matrix().sum() + a.velocity.sum() + a.acceleration.sum() + S(spr.size() + spr.segment(S(0.6)));
     sum += spr.element(S(0.3)).matrix().sum() + spg.element(S(2)).translation().sum();
     sum += b.element.translation().sum() + b.velocity.sum() + b.acceleration.sum() + spg.sample(1, S(0.75)).velocity.sum();
+    // The other end conditions, and the fits that refuse their input.
+    const SplineFit fr2 = fit_spline(3, ts.data(), Rs.data(), sr.data(), wr.data(), SplineEnds::chord);
+    const SplineFit fg2 = fit_spline(3, ts.data(), gs.data(), sg.data(), wg.data(), SplineEnds::natural);
+    const std::array<S, 3> bad_ts{S(0), S(1), S(1)};
+    const SplineFit few = fit_spline(1, ts.data(), Rs.data(), sr.data(), wr.data());
+    const SplineFit unordered = fit_spline(3, bad_ts.data(), gs.data(), sg.data(), wg.data());
+    sum += S(fr2.iterations + fg2.iterations + few.iterations + unordered.iterations);
+    sum += S(int(few.status) + int(unordered.status));
+    V3 rate_r, acc_r;
+    V6 rate_g, acc_g;
+    spline_body_rates<SO3<S>>(w, p, V3(w * S(2)), rate_r, acc_r);
+    spline_body_rates<SE3<S>>(xi, V6(xi * S(0.5)), V6(xi * S(-1)), rate_g, acc_g);
+    sum += rate_r.sum() + acc_r.sum() + rate_g.sum() + acc_g.sum();
   }
 
   // Cubic B-splines (bspline.hpp): the segment evaluators, the view, and a
@@ -216,6 +247,8 @@ S exercise_all() noexcept {
     sum += cubic_bspline_segment(Rs.begin(), S(0.4)).matrix().sum() + cubic_bspline_segment(gs.data(), S(0.4)).translation().sum();
     const BSplinePoint<SE3<S>> pg = cubic_bspline_segment_derivatives(gs.begin() + 1, S(0.6), S(0.5));
     sum += pg.value.translation().sum() + pg.velocity.sum() + pg.acceleration.sum();
+    const BSplinePoint<SO3<S>> pr0 = cubic_bspline_segment_derivatives(Rs.data(), S(0), S(2));
+    sum += pr0.value.matrix().sum() + pr0.velocity.sum() + pr0.acceleration.sum();
     const SO3BSplineView<S> rs(Rs.data(), 5, S(1), S(0.5));
     const SE3BSplineView<S> ss(gs.data(), 5, S(1), S(0.5));
     for (const S& t : {S(1.2), S(1.7), S(0), S(9)}) {
@@ -241,7 +274,42 @@ S exercise_all() noexcept {
   sum += model.base().translation().sum() + model.tool().translation().sum() + model.gravity().sum();
   sum += model.forward(thd).translation().sum() + model.jacobian_body(thd).sum();
   const CD again(model.space_screws(), model.home(), typename CD::HomeAsGiven());
-  sum += again.body_screws().sum();
+  sum += again.body_screws().sum() + S(RealOf<S>(int(model.joint_types()[5])));
+  {
+    // The fixed-size model (valid: unit axes, zero pitch), and validate()
+    // reaching each of its refusals.
+    typename C6::Screws U6;
+    for (int i = 0; i < 6; ++i)
+      U6.col(i) = i == 2 ? C6::prismatic_screw(V3::UnitX()) : C6::revolute_screw(V3(p * S(0.1 * i)), V3::Unit(i % 3));
+    typename C6::JointTypes types6{};
+    types6.fill(JointType::revolute);
+    types6[2] = JointType::prismatic;
+    const typename C6::JointVector lo6 = C6::JointVector::Constant(S(-1)), hi6 = C6::JointVector::Constant(S(1)),
+                                   big6 = C6::JointVector::Constant(S(10));
+    const C6 model6(U6, g, types6, lo6, hi6, big6, big6, h, e, V3(V3::UnitZ()));
+    const ChainCheck ok6 = model6.validate();
+    sum += S(RealOf<S>(int(ok6.status) + int(ok6.joint) + (ok6 ? 1 : 0))) + model6.forward(th6).translation().sum();
+    sum += model6.jacobian_space(th6).sum() + model6.lower().sum() + model6.gravity().sum();
+    sum += model6.base().translation().sum() + model6.tool().translation().sum();
+    typename C6::JointTypes rotating = types6, continuous = types6;
+    rotating[0] = JointType::prismatic;  // joint 0 rotates
+    continuous[1] = JointType::continuous;  // with finite limits
+    typename C6::Screws long_axis = U6, pitched = U6, long_slide = U6;
+    long_axis.col(0).template tail<3>() *= S(2);
+    pitched.col(0).template head<3>() += long_axis.col(0).template tail<3>();
+    long_slide.col(2) *= S(2);
+    const ChainCheck refusals[] = {
+        C6(long_axis, g, types6, lo6, hi6, big6, big6).validate(),
+        C6(pitched, g, types6, lo6, hi6, big6, big6).validate(),
+        C6(U6, g, rotating, lo6, hi6, big6, big6).validate(),
+        C6(long_slide, g, types6, lo6, hi6, big6, big6).validate(),
+        C6(U6, g, types6, hi6, lo6, big6, big6).validate(),
+        C6(U6, g, continuous, lo6, hi6, big6, big6).validate(),
+        C6(U6, g, types6, lo6, hi6, typename C6::JointVector(-big6), big6).validate(),
+        C6(U6, g, types6, lo6, hi6, big6, big6, e, e, V3(V3::Constant(S(RealOf<S>(INFINITY))))).validate(),
+    };
+    for (const ChainCheck& r : refusals) sum += S(RealOf<S>(int(r.status) + int(r.joint)));
+  }
 
   // SpatialInertia (spatial_inertia.hpp).
   M3 Ic;
@@ -253,6 +321,18 @@ S exercise_all() noexcept {
   sum += si.transform(g).com().sum() + si.transform_inv(g).com().sum() + (si + si.transform(g)).inertia().sum();
   sum += S(si.is_physical() ? 1 : 0) + S(si.is_physical(RealOf<S>(0)) ? 1 : 0) + si.template cast<S>().mass();
   sum += S(si.is_approx(si0, RealOf<S>(1e-3)) ? 1 : 0);
+  {
+    // is_physical's refusals: mass, a non-finite centre, asymmetry, an
+    // indefinite I_c, the triangle inequality, I_c = 0.
+    M3 asym = Ic, flat = Ic, tri = M3::Zero();
+    asym(0, 1) = S(1);
+    flat(2, 2) = S(-4);
+    tri.diagonal() << S(1), S(1), S(3);
+    const SpatialInertia<S> bodies[] = {SpatialInertia<S>(S(-1), p, Ic), SpatialInertia<S>(S(1), V3(V3::Constant(S(RealOf<S>(NAN)))), Ic),
+                                        SpatialInertia<S>(S(1), p, asym), SpatialInertia<S>(S(1), p, flat),
+                                        SpatialInertia<S>(S(1), p, tri), SpatialInertia<S>(S(1), p, M3(M3::Zero()))};
+    for (const SpatialInertia<S>& b : bodies) sum += S(b.is_physical() ? 1 : 0) + b.symmetry_defect();
+  }
 
   // Dynamics (dynamics.hpp): fixed size, and dynamic with a compile-time bound.
   using D6 = Dynamics<S, 6>;
