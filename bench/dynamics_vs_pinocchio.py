@@ -10,7 +10,12 @@ largest relative difference (max |a - b| / max(1, max |b|)) of
 - inverse dynamics (pin.rnea), the mass matrix (pin.crba, both triangles),
   gravity torques (pin.computeGeneralizedGravity), the Coriolis terms
   (pin.nonLinearEffects minus gravity) and forward dynamics (pin.aba),
-and the time per call of each side's Python call.
+and the time of each side's Python call: one configuration per call (the
+median over 7 runs of 2000 calls), and chasles' batched call on N = 1000
+configurations ((N, n) arrays) per configuration (Pinocchio's Python API
+has no batched call: a loop costs its per-call time); with the floor of a
+chasles method that returns a new (n,) array and computes nothing
+(Chain.lower), the cost of the pybind11 call and the array alone.
 
 Pinocchio (pip install pin, about 480 MB) is not a test dependency: this
 script runs where it is installed.
@@ -69,11 +74,44 @@ def rel(a, b) -> float:
     return float(np.max(np.abs(np.asarray(a) - np.asarray(b))) / max(1.0, float(np.max(np.abs(b)))))
 
 
-def per_call(fn, repeats=2000) -> float:
-    t0 = time.perf_counter()
-    for _ in range(repeats):
-        fn()
-    return (time.perf_counter() - t0) / repeats
+def per_call(fn, repeats=1000, runs=15) -> tuple[float, float]:
+    """The median and the minimum over `runs` of the mean time of `repeats`
+    calls (the minimum: the time on a machine that other processes leave
+    alone)."""
+    times = []
+    for _ in range(runs):
+        t0 = time.perf_counter()
+        for _ in range(repeats):
+            fn()
+        times.append((time.perf_counter() - t0) / repeats)
+    return float(np.median(times)), float(np.min(times))
+
+
+BATCH = 1000
+
+
+def timings(chain: Chain, model, data, rng):
+    """{operation: (chasles per call, Pinocchio per call, chasles batched per configuration)} in seconds."""
+    n = chain.n_joints
+    q, qd, qdd = rng.uniform(-1, 1, (3, n))
+    qp = pin_configuration(model, q)
+    Q, QD, QDD = rng.uniform(-1, 1, (3, BATCH, n))
+    batch = lambda fn: tuple(t / BATCH for t in per_call(fn, repeats=3))  # noqa: E731
+    return {
+        "rnea": (per_call(lambda: chain.inverse_dynamics(q, qd, qdd)), per_call(lambda: pin.rnea(model, data, qp, qd, qdd)),
+                 batch(lambda: chain.inverse_dynamics(Q, QD, QDD))),
+        "crba": (per_call(lambda: chain.mass_matrix(q)), per_call(lambda: pin.crba(model, data, qp)),
+                 batch(lambda: chain.mass_matrix(Q))),
+        "gravity": (per_call(lambda: chain.gravity_torques(q)),
+                    per_call(lambda: pin.computeGeneralizedGravity(model, data, qp)),
+                    batch(lambda: chain.gravity_torques(Q))),
+        # Pinocchio's C(q, qd) qd: nonLinearEffects (with gravity; no call without it)
+        "coriolis": (per_call(lambda: chain.coriolis(q, qd)), per_call(lambda: pin.nonLinearEffects(model, data, qp, qd)),
+                     batch(lambda: chain.coriolis(Q, QD))),
+        "aba": (per_call(lambda: chain.forward_dynamics(q, qd, qdd)), per_call(lambda: pin.aba(model, data, qp, qd, qdd)),
+                batch(lambda: chain.forward_dynamics(Q, QD, QDD))),
+        "floor": (per_call(lambda: chain.lower), (np.nan, np.nan), (np.nan, np.nan)),
+    }
 
 
 def main() -> None:
@@ -108,19 +146,19 @@ def main() -> None:
             worst["coriolis"] = max(worst["coriolis"], rel(chain.coriolis(q, qd), pin.nonLinearEffects(model, data, qp, qd) - g))
             worst["aba"] = max(worst["aba"], rel(chain.forward_dynamics(q, qd, tau), pin.aba(model, data, qp, qd, tau)))
         print(f"{name:6} {n:>2} " + " ".join(f"{worst[k]:8.1e}" for k in worst))
-        if name == "Panda":
-            q, qd, qdd = rng.uniform(-1, 1, (3, n))
-            qp = pin_configuration(model, q)
-            timing = {
-                "inverse dynamics": (per_call(lambda: chain.inverse_dynamics(q, qd, qdd)),
-                                     per_call(lambda: pin.rnea(model, data, qp, qd, qdd))),
-                "mass matrix": (per_call(lambda: chain.mass_matrix(q)), per_call(lambda: pin.crba(model, data, qp))),
-                "forward dynamics": (per_call(lambda: chain.forward_dynamics(q, qd, qdd)),
-                                     per_call(lambda: pin.aba(model, data, qp, qd, qdd))),
-            }
-    print("\nPanda, one call from Python (microseconds): chasles / Pinocchio")
-    for k, (a, b) in timing.items():
-        print(f"  {k:17} {1e6 * a:6.2f} / {1e6 * b:6.2f}")
+        if name in ("UR5", "Panda"):
+            timing[name] = timings(chain, model, data, rng)
+    print("\nTime from Python, microseconds, median (minimum) of 15 runs: one configuration per call,")
+    print(f"chasles and Pinocchio and their ratio; chasles batched on N = {BATCH} configurations, per configuration")
+    print(f"{'arm':6} {'operation':9} {'chasles':>14} {'pinocchio':>14} {'ratio':>12} {'batched':>14}")
+    for name, rows in timing.items():
+        for op, (a, b, c) in rows.items():
+            if op == "floor":
+                print(f"{name:6} {'floor':9} {1e6 * a[0]:6.2f} ({1e6 * a[1]:5.2f})"
+                      "  (Chain.lower: a pybind11 call returning a new (n,) array)")
+            else:
+                print(f"{name:6} {op:9} {1e6 * a[0]:6.2f} ({1e6 * a[1]:5.2f}) {1e6 * b[0]:6.2f} ({1e6 * b[1]:5.2f})"
+                      f" {a[0] / b[0]:5.2f} ({a[1] / b[1]:4.2f}) {1e6 * c[0]:6.3f} ({1e6 * c[1]:5.3f})")
 
 
 if __name__ == "__main__":

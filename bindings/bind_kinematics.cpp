@@ -1,11 +1,14 @@
 // chasles._core: class Chain over chasles::Chain<double, Dynamic, 32>
 // (include/chasles/kinematics.hpp): product-of-exponentials kinematics of a
-// serial chain of up to 32 joints.
+// serial chain of up to 32 joints, and its dynamics over
+// chasles::Dynamics<double, Dynamic, 32> (include/chasles/dynamics.hpp).
+#include <chasles/dynamics.hpp>
 #include <chasles/inverse_kinematics.hpp>
 #include <chasles/kinematics.hpp>
 #include <chasles/spatial_inertia.hpp>
 
 #include <cmath>
+#include <memory>
 #include <random>
 #include <cstring>
 #include <string>
@@ -23,23 +26,41 @@ namespace {
 
 constexpr int kMaxJoints = 32;
 using ChainD = chasles::Chain<double, Eigen::Dynamic, kMaxJoints>;
+using DynD = chasles::Dynamics<double, Eigen::Dynamic, kMaxJoints>;
+using InertiaD = chasles::SpatialInertia<double>;
 using chasles::SE3d;
 using Vector3 = Eigen::Vector3d;
 using Matrix4 = Eigen::Matrix4d;
-using Inertias = Eigen::Matrix<double, Eigen::Dynamic, 10, Eigen::RowMajor, kMaxJoints, 10>;
+using InertiaRows = Eigen::Matrix<double, Eigen::Dynamic, 10, Eigen::RowMajor, kMaxJoints, 10>;
 
-/// The Python Chain: the C++ chain (the model every computation uses), and
-/// what only Python needs, kept beside it: the screws and home pose as given
-/// (before base and tool: pickling rebuilds the chain from them, bit for
-/// bit), the joint names (strings allocate: the real-time C++ chain has no
-/// use for them) and the URDF's link inertias (plain numbers until the
-/// dynamics consume them).
+/// What the dynamics methods use, built once when the chain is made: the
+/// operands that every dynamics ufunc (bind_dynamics.cpp) starts with (the
+/// screws (n, 6), the home pose (4, 4), the links' spatial inertia matrices
+/// (n, 6, 6) in the world frame at home, gravity (3)), and the C++ Dynamics
+/// that the ufunc loop builds from those operands (the same numbers: the
+/// inertias read back from their matrices by
+/// SpatialInertia::from_matrix_unchecked, as the loop reads them), which
+/// computes one configuration without numpy's dispatch, to the same bits.
+struct DynamicsModel {
+  py::array screws, home, inertias, gravity;
+  DynD model;
+};
+
+/// The Python Chain: the C++ chain (the model every computation uses, link
+/// inertias included), and what only Python needs, kept beside it: the
+/// screws and home pose as given (before base and tool: pickling rebuilds
+/// the chain from them, bit for bit), the joint names (strings allocate: the
+/// real-time C++ chain has no use for them), the link inertias as given
+/// (n x 10 numbers, for link_inertias and pickling), and the dynamics model
+/// (null when no inertias were given: the dynamics methods refuse such a
+/// chain rather than compute a massless one).
 struct PyChain : ChainD {
   ChainD::Screws given_screws;
   SE3d given_home, given_base, given_tool;
   std::vector<std::string> names;  // empty: none given
   bool has_inertias = false;
-  Inertias inertias;  // n x 10: mass, com (3), ixx, ixy, ixz, iyy, iyz, izz
+  InertiaRows inertias;  // n x 10: mass, com (3), ixx, ixy, ixz, iyy, iyz, izz
+  std::shared_ptr<const DynamicsModel> dynamics;  // immutable, shared by copies
 
   PyChain(const ChainD& c, const ChainD::Screws& S0, const SE3d& M0, const SE3d& base, const SE3d& tool)
       : ChainD(c), given_screws(S0), given_home(M0), given_base(base), given_tool(tool) {}
@@ -329,6 +350,9 @@ bool screws_valid(const ChainD::Screws& S, const ChainD::JointTypes& given, bool
       raise_value_error("Chain(velocity_limits, effort_limits): " + joint + ": expected limits >= 0, got " +
                         float_repr(c.velocity_limits()(check.joint)) + " and " +
                         float_repr(c.effort_limits()(check.joint)));
+    case ChainStatus::link_inertia_invalid:
+      raise_value_error("Chain(link_inertias): " + joint +
+                        ": expected finite numbers and a mass >= 0 (moved into the world frame by the base frame)");
     default:
       raise_value_error("Chain(gravity): expected finite numbers");
   }
@@ -347,6 +371,8 @@ bool screws_valid(const ChainD::Screws& S, const ChainD::JointTypes& given, bool
   raise_value_error(message);
 }
 
+std::shared_ptr<const DynamicsModel> dynamics_model(const ChainD& c);
+
 /// The chain from the constructor's arguments (validated).
 PyChain make_chain(py::handle screws, py::handle home, py::handle joint_types, py::handle names, py::handle lower,
                    py::handle upper, py::handle velocity_limits, py::handle effort_limits, py::handle base,
@@ -363,7 +389,29 @@ PyChain make_chain(py::handle screws, py::handle home, py::handle joint_types, p
   const SE3d b = base.is_none() ? SE3d() : home_pose(base, "Chain(base)");
   const SE3d t = tool.is_none() ? SE3d() : home_pose(tool, "Chain(tool)");
   const Vector3 g = gravity.is_none() ? ChainD::default_gravity() : to_finite_eigen<3>(gravity, "Chain(gravity)");
-  PyChain c(ChainD(S0, M0, types, lo, hi, vel, eff, b, t, g), S0, M0, b, t);
+  InertiaRows given_inertias;  // n x 10
+  ChainD::Inertias link{};  // zero (massless) when none are given
+  if (!link_inertias.is_none()) {
+    const py::array a = as_float64_array(link_inertias, "Chain(link_inertias)");
+    if (a.ndim() != 2 || a.shape(0) != n || a.shape(1) != 10)
+      raise_value_error("Chain(link_inertias): expected shape (" + std::to_string(n) +
+                        ", 10) (mass, com (3), ixx, ixy, ixz, iyy, iyz, izz per joint), got " + array_shape(a));
+    given_inertias.resize(n, 10);
+    const char* data = static_cast<const char*>(a.data());
+    for (py::ssize_t i = 0; i < n; ++i)
+      for (py::ssize_t k = 0; k < 10; ++k)
+        given_inertias(i, k) = *reinterpret_cast<const double*>(data + i * a.strides(0) + k * a.strides(1));
+    require_finite(given_inertias, "Chain(link_inertias)");
+    if ((given_inertias.col(0).array() < 0).any())
+      raise_value_error("Chain(link_inertias): expected masses >= 0 (column 0)");
+    for (py::ssize_t i = 0; i < n; ++i) {
+      const auto row = given_inertias.row(i);
+      Eigen::Matrix3d I;
+      I << row(4), row(5), row(6), row(5), row(7), row(8), row(6), row(8), row(9);
+      link[static_cast<std::size_t>(i)] = InertiaD(row(0), Vector3(row(1), row(2), row(3)), I);
+    }
+  }
+  PyChain c(ChainD(S0, M0, types, lo, hi, vel, eff, b, t, g, link), S0, M0, b, t);
   if (const chasles::ChainCheck check = c.validate(); !check) raise_invalid(c, check, S0, types, inferred);
   if (!names.is_none()) {
     if (py::isinstance<py::str>(names) || !PySequence_Check(names.ptr()))
@@ -380,19 +428,9 @@ PyChain make_chain(py::handle screws, py::handle home, py::handle joint_types, p
     }
   }
   if (!link_inertias.is_none()) {
-    const py::array a = as_float64_array(link_inertias, "Chain(link_inertias)");
-    if (a.ndim() != 2 || a.shape(0) != n || a.shape(1) != 10)
-      raise_value_error("Chain(link_inertias): expected shape (" + std::to_string(n) +
-                        ", 10) (mass, com (3), ixx, ixy, ixz, iyy, iyz, izz per joint), got " + array_shape(a));
-    c.inertias.resize(n, 10);
-    const char* data = static_cast<const char*>(a.data());
-    for (py::ssize_t i = 0; i < n; ++i)
-      for (py::ssize_t k = 0; k < 10; ++k)
-        c.inertias(i, k) = *reinterpret_cast<const double*>(data + i * a.strides(0) + k * a.strides(1));
-    require_finite(c.inertias, "Chain(link_inertias)");
-    if ((c.inertias.col(0).array() < 0).any())
-      raise_value_error("Chain(link_inertias): expected masses >= 0 (column 0)");
+    c.inertias = given_inertias;
     c.has_inertias = true;
+    c.dynamics = dynamics_model(c);
   }
   return c;
 }
@@ -420,33 +458,6 @@ bool is_plain(const PyChain& c) {
       return false;
   }
   return true;
-}
-
-/// The operands every dynamics ufunc (bind_dynamics.cpp) starts with: the
-/// screws (n, 6), the home pose (4, 4), the links' spatial inertia matrices
-/// (n, 6, 6) in the world frame at home (the link inertias are given in the
-/// base frame: moved by the base frame), and gravity (3).
-struct DynamicsOperands {
-  py::array screws, home, inertias, gravity;
-};
-
-DynamicsOperands dynamics_operands(const PyChain& c, const char* what) {
-  if (!c.has_inertias)
-    raise_value_error(std::string(what) +
-                      ": the chain has no link inertias (give Chain(..., link_inertias=...), or load it with "
-                      "Chain.from_urdf)");
-  const Py_intptr_t n = c.joints();
-  const Py_intptr_t dims[3] = {n, 6, 6};
-  py::array_t<double> G = new_array(3, dims);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const auto row = c.inertias.row(i);
-    Eigen::Matrix3d I;
-    I << row(4), row(5), row(6), row(5), row(7), row(8), row(6), row(8), row(9);
-    const chasles::SpatialInertia<double> body(row(0), Vector3(row(1), row(2), row(3)), I);
-    Eigen::Map<Eigen::Matrix<double, 6, 6, Eigen::RowMajor>>(array_data(G) + 36 * i) =
-        body.transform(c.given_base).matrix();
-  }
-  return {screws_array(c), mat_out<4, 4>(c.home().matrix()), std::move(G), vec_out<3>(c.gravity())};
 }
 
 /// A tip wrench operand (..., 6): zero when None.
@@ -529,6 +540,98 @@ Returns:
     (q (n,), converged () bool, iterations () int32, error (6,)).)doc",
       ufunc::model<7>(IKModelOf()), IKKernel());
 }
+
+/// The dynamics model of a chain (see DynamicsModel): its operands from the
+/// C++ chain (whose link inertias the base frame has moved into the world
+/// frame), read-only, and the Dynamics built from them as the ufunc loop
+/// builds its model.
+std::shared_ptr<const DynamicsModel> dynamics_model(const ChainD& c) {
+  const Py_intptr_t n = c.joints();
+  const Py_intptr_t dims[3] = {n, 6, 6};
+  py::array_t<double> G = new_array(3, dims);
+  DynD::Inertias I{};
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    Eigen::Map<Eigen::Matrix<double, 6, 6, Eigen::RowMajor>>(array_data(G) + 36 * i) = c.link_inertias()[k].matrix();
+    I[k] = InertiaD::from_matrix_unchecked(c.link_inertias()[k].matrix());
+  }
+  DynamicsModel d{screws_array(c), mat_out<4, 4>(c.home().matrix()), std::move(G), vec_out<3>(c.gravity()),
+                  DynD(c.space_screws(), SE3d::from_matrix_unchecked(c.home().matrix()), I, c.gravity())};
+  for (py::array* a : {&d.screws, &d.home, &d.inertias, &d.gravity})
+    py::detail::array_proxy(a->ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+  return std::make_shared<const DynamicsModel>(std::move(d));
+}
+
+/// The chain's dynamics model; ValueError for a chain without link inertias.
+const DynamicsModel& dynamics_of(const PyChain& c, const char* what) {
+  if (!c.dynamics)
+    raise_value_error(std::string(what) +
+                      ": the chain has no link inertias (give Chain(..., link_inertias=...), or load it with "
+                      "Chain.from_urdf)");
+  return *c.dynamics;
+}
+
+/// Calls the dynamics ufunc u (bind_dynamics.cpp) with the chain's operands
+/// (screws, home, inertias, and gravity when `with_gravity`), the J joint
+/// arguments and, when `with_tip`, the tip wrench (None: zero). The last
+/// axis of each joint argument is checked here, so that the message names
+/// the method and n. One configuration of float64 (each joint argument a
+/// native float64 array of shape (n,) or a list of n Python numbers, the
+/// tip wrench None or one such of 6) skips numpy's dispatch, as
+/// call_chain_ufunc does: `kernel(model, joints, tip)` computes it with the
+/// Dynamics the loop would build from the same operands, the same bits
+/// (tests/python/test_dynamics.py compares the two).
+template <std::size_t J, typename Kernel>
+py::object call_dynamics_ufunc(PyObject* u, const PyChain& c, const char* what, const std::array<py::handle, J>& joints,
+                               const std::array<const char*, J>& names, bool with_gravity, const py::handle* tip,
+                               Kernel kernel) {
+  const DynamicsModel& d = dynamics_of(c, what);
+  const py::ssize_t n = c.joints();
+  std::array<DynD::JointVector, J> one;
+  bool single = true;
+  for (std::size_t j = 0; j < J && single; ++j) {
+    one[j].resize(n);
+    single = single_element(joints[j], one[j].data(), n);
+  }
+  chasles::Wrenchd tip_wrench;
+  if (single && tip != nullptr && !tip->is_none()) {
+    Eigen::Matrix<double, 6, 1> w;
+    single = single_element(*tip, w.data(), 6);
+    tip_wrench = chasles::Wrenchd(w);
+  }
+  if (single) {
+    const auto result = kernel(d.model, one, tip_wrench);
+    constexpr bool vector = decltype(result)::ColsAtCompileTime == 1;  // the torques (n,), or M(q) (n, n)
+    const Py_intptr_t dims[2] = {result.rows(), result.cols()};
+    py::array_t<double> out = new_array(vector ? 1 : 2, dims);
+    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(array_data(out), dims[0],
+                                                                                        dims[1]) = result;
+    return std::move(out);
+  }
+  std::array<py::object, J + 2> keep;  // the joint and tip operands, alive through the call
+  std::array<PyObject*, 9> args{};
+  std::size_t k = 0;
+  args[k++] = d.screws.ptr();
+  args[k++] = d.home.ptr();
+  args[k++] = d.inertias.ptr();
+  if (with_gravity) args[k++] = d.gravity.ptr();
+  for (std::size_t j = 0; j < J; ++j) {
+    keep[j] = joint_operand(joints[j], n, names[j]);
+    args[k++] = keep[j].ptr();
+  }
+  if (tip != nullptr) {
+    const std::string tip_what = std::string(what) + "(tip_wrench)";
+    keep[J] = tip_operand(*tip, tip_what.c_str());
+    args[k++] = keep[J].ptr();
+  }
+  PyObject* r = PyObject_Vectorcall(u, args.data(), k, nullptr);
+  if (r == nullptr) {
+    py::error_already_set e;
+    raise_conversion_error(e, what);
+  }
+  return py::reinterpret_steal<py::object>(r);
+}
+
 
 /// The parts of Chain.inverse_kinematics' result (python/chasles/_results.py,
 /// IKResult): one solve (q of shape (n,), a bool, an int, error (6,)) or a
@@ -885,16 +988,12 @@ Example:
   cls.def(
       "inverse_dynamics",
       [u_inverse_dynamics](Obj<PyChain> c, py::object q, py::object qd, py::object qdd, py::object tip_wrench) {
-        const char* what = "Chain.inverse_dynamics";
-        const DynamicsOperands d = dynamics_operands(*c, what);
-        const py::ssize_t n = c->joints();
-        const py::object a = joint_operand(q, n, "Chain.inverse_dynamics(q)"),
-                         b = joint_operand(qd, n, "Chain.inverse_dynamics(qd)"),
-                         e = joint_operand(qdd, n, "Chain.inverse_dynamics(qdd)"),
-                         f = tip_operand(tip_wrench, "Chain.inverse_dynamics(tip_wrench)");
-        return call_ufunc<8>(u_inverse_dynamics.ptr(), what,
-                             {d.screws.ptr(), d.home.ptr(), d.inertias.ptr(), d.gravity.ptr(), a.ptr(), b.ptr(), e.ptr(),
-                              f.ptr()});
+        return call_dynamics_ufunc<3>(
+            u_inverse_dynamics.ptr(), *c, "Chain.inverse_dynamics", {q, qd, qdd},
+            {"Chain.inverse_dynamics(q)", "Chain.inverse_dynamics(qd)", "Chain.inverse_dynamics(qdd)"}, true,
+            &tip_wrench, [](const DynD& d, const std::array<DynD::JointVector, 3>& x, const chasles::Wrenchd& tip) {
+              return d.inverse_dynamics(x[0], x[1], x[2], tip);
+            });
       },
       py::arg("q"), py::arg("qd"), py::arg("qdd"), py::kw_only(), py::arg("tip_wrench") = py::none(),
       R"doc(Inverse dynamics: the joint torques (forces) tau that give the accelerations qdd.
@@ -919,16 +1018,12 @@ Raises:
   cls.def(
       "forward_dynamics",
       [u_forward_dynamics](Obj<PyChain> c, py::object q, py::object qd, py::object tau, py::object tip_wrench) {
-        const char* what = "Chain.forward_dynamics";
-        const DynamicsOperands d = dynamics_operands(*c, what);
-        const py::ssize_t n = c->joints();
-        const py::object a = joint_operand(q, n, "Chain.forward_dynamics(q)"),
-                         b = joint_operand(qd, n, "Chain.forward_dynamics(qd)"),
-                         e = joint_operand(tau, n, "Chain.forward_dynamics(tau)"),
-                         f = tip_operand(tip_wrench, "Chain.forward_dynamics(tip_wrench)");
-        return call_ufunc<8>(u_forward_dynamics.ptr(), what,
-                             {d.screws.ptr(), d.home.ptr(), d.inertias.ptr(), d.gravity.ptr(), a.ptr(), b.ptr(), e.ptr(),
-                              f.ptr()});
+        return call_dynamics_ufunc<3>(
+            u_forward_dynamics.ptr(), *c, "Chain.forward_dynamics", {q, qd, tau},
+            {"Chain.forward_dynamics(q)", "Chain.forward_dynamics(qd)", "Chain.forward_dynamics(tau)"}, true,
+            &tip_wrench, [](const DynD& d, const std::array<DynD::JointVector, 3>& x, const chasles::Wrenchd& tip) {
+              return d.forward_dynamics(x[0], x[1], x[2], tip);
+            });
       },
       py::arg("q"), py::arg("qd"), py::arg("tau"), py::kw_only(), py::arg("tip_wrench") = py::none(),
       R"doc(Forward dynamics: the joint accelerations qdd = M(q)^-1 (tau - C(q, qd) qd - g(q) - J_b^T F_tip).
@@ -946,10 +1041,9 @@ Returns:
   cls.def(
       "mass_matrix",
       [u_mass_matrix](Obj<PyChain> c, py::object q) {
-        const char* what = "Chain.mass_matrix";
-        const DynamicsOperands d = dynamics_operands(*c, what);
-        const py::object a = joint_operand(q, c->joints(), "Chain.mass_matrix(q)");
-        return call_ufunc<4>(u_mass_matrix.ptr(), what, {d.screws.ptr(), d.home.ptr(), d.inertias.ptr(), a.ptr()});
+        return call_dynamics_ufunc<1>(u_mass_matrix.ptr(), *c, "Chain.mass_matrix", {q}, {"Chain.mass_matrix(q)"}, false,
+                                      nullptr, [](const DynD& d, const std::array<DynD::JointVector, 1>& x,
+                                                  const chasles::Wrenchd&) { return d.mass_matrix(x[0]); });
       },
       py::arg("q"),
       R"doc(The joint-space mass matrix M(q), symmetric positive definite (composite rigid bodies).
@@ -963,11 +1057,10 @@ Returns:
   cls.def(
       "gravity_torques",
       [u_gravity_torques](Obj<PyChain> c, py::object q) {
-        const char* what = "Chain.gravity_torques";
-        const DynamicsOperands d = dynamics_operands(*c, what);
-        const py::object a = joint_operand(q, c->joints(), "Chain.gravity_torques(q)");
-        return call_ufunc<5>(u_gravity_torques.ptr(), what,
-                             {d.screws.ptr(), d.home.ptr(), d.inertias.ptr(), d.gravity.ptr(), a.ptr()});
+        return call_dynamics_ufunc<1>(u_gravity_torques.ptr(), *c, "Chain.gravity_torques", {q},
+                                      {"Chain.gravity_torques(q)"}, true, nullptr,
+                                      [](const DynD& d, const std::array<DynD::JointVector, 1>& x,
+                                         const chasles::Wrenchd&) { return d.gravity_torques(x[0]); });
       },
       py::arg("q"),
       R"doc(The torques g(q) that hold the chain still against gravity: inverse_dynamics(q, 0, 0).
@@ -981,11 +1074,10 @@ Returns:
   cls.def(
       "coriolis",
       [u_coriolis](Obj<PyChain> c, py::object q, py::object qd) {
-        const char* what = "Chain.coriolis";
-        const DynamicsOperands d = dynamics_operands(*c, what);
-        const py::ssize_t n = c->joints();
-        const py::object a = joint_operand(q, n, "Chain.coriolis(q)"), b = joint_operand(qd, n, "Chain.coriolis(qd)");
-        return call_ufunc<5>(u_coriolis.ptr(), what, {d.screws.ptr(), d.home.ptr(), d.inertias.ptr(), a.ptr(), b.ptr()});
+        return call_dynamics_ufunc<2>(u_coriolis.ptr(), *c, "Chain.coriolis", {q, qd},
+                                      {"Chain.coriolis(q)", "Chain.coriolis(qd)"}, false, nullptr,
+                                      [](const DynD& d, const std::array<DynD::JointVector, 2>& x,
+                                         const chasles::Wrenchd&) { return d.coriolis(x[0], x[1]); });
       },
       py::arg("q"), py::arg("qd"),
       R"doc(The Coriolis and centrifugal torques C(q, qd) qd (no gravity).

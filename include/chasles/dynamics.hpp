@@ -29,7 +29,8 @@ namespace chasles {
 /// base frame), its home pose M (the tool frame at home), the spatial
 /// inertia of each link i (the body moved by joint i) described in the base
 /// frame at the home configuration, and gravity, a 3-vector in the base
-/// frame (e.g. (0, 0, -9.81)).
+/// frame (e.g. (0, 0, -9.81)). From a Chain, Dynamics(chain) takes all four
+/// from it (in the world frame, which is then the "base frame" here).
 ///
 /// Why the base frame: everything the chain is given in (S, M, inertias at
 /// home) is in the base frame, so no link frames are needed. At q, link i
@@ -80,6 +81,14 @@ class Dynamics {
   Dynamics(const Eigen::MatrixBase<Derived>& space_screws, const Group& home, const Inertias& inertias,
            const Vector3& gravity) noexcept
       : S_(space_screws), M_(home), I_(inertias), gravity_(gravity) {}
+
+  /// The dynamics of a Chain: its space screws, home pose, link inertias and
+  /// gravity, all in the world frame (the chain has folded its base frame
+  /// into them): Dynamics(chain.space_screws(), chain.home(),
+  /// chain.link_inertias(), chain.gravity()). The chain's joint limits play
+  /// no part.
+  explicit Dynamics(const Chain<Scalar, Joints, MaxJoints>& chain) noexcept
+      : Dynamics(chain.space_screws(), chain.home(), chain.link_inertias(), chain.gravity()) {}
 
   /// tau = M(q) qdd + C(q, qd) qd + g(q) + J_b(q)^T F_tip: the joint forces
   /// that give the accelerations qdd at (q, qd) while the tool applies the

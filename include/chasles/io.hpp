@@ -8,7 +8,9 @@
 //   Twist(v=[1, 0, 0], w=[0, 0, 1])
 //   Wrench(f=[0, 0, -9.81], tau=[0, 0, 0])
 //   Screw(point=[0, 0, 0], direction=[0, 0, 1], pitch=0, magnitude=1)
-//   Chain(n_joints=2, space_screws=[[0, 0, 0, 0, 0, 1], [0, -1, 0, 0, 0, 1]], home=SE3(...))
+//   Chain(n_joints=2, space_screws=[[0, 0, 0, 0, 0, 1], [0, -1, 0, 0, 0, 1]], home=SE3(...),
+//         joint_types=[revolute, revolute], lower=[-inf, -inf], upper=[inf, inf],
+//         gravity=[0, 0, -9.81], link_masses=[0, 0])
 // (space screws one (v, w) per joint). An autodiff scalar prints its value.
 //
 // Like the standard streams' own operator<<, these are not noexcept (a
@@ -18,6 +20,7 @@
 // includes it. <ostream> only (no <iostream>: no static initializer).
 #pragma once
 
+#include <cstddef>
 #include <ostream>
 
 #include <Eigen/Core>
@@ -93,16 +96,30 @@ std::ostream& operator<<(std::ostream& os, const Screw<Scalar>& s) {
   return os;
 }
 
-/// Chain(n_joints=n, space_screws=[[v, w], ...], home=SE3(...)): the space
-/// screws one joint at a time, each (v, w).
+/// Chain(n_joints=n, space_screws=[[v, w], ...], home=SE3(...),
+/// joint_types=[revolute, ...], lower=[...], upper=[...], gravity=[...],
+/// link_masses=[...]): the space screws one joint at a time, each (v, w),
+/// and the model (all zero masses: no inertias given). Velocity and effort
+/// limits, base and tool are left out (base and tool are folded into the
+/// screws and home).
 template <typename Scalar, int Joints, int MaxJoints>
 std::ostream& operator<<(std::ostream& os, const Chain<Scalar, Joints, MaxJoints>& chain) {
+  static const char* const type_names[] = {"revolute", "continuous", "prismatic"};
   os << "Chain(n_joints=" << chain.joints() << ", space_screws=[";
   for (Eigen::Index i = 0; i < chain.joints(); ++i) {
     if (i > 0) os << ", ";
     detail::print_numbers(os, chain.space_screws().col(i));
   }
-  return os << "], home=" << chain.home() << ')';
+  os << "], home=" << chain.home() << ", joint_types=[";
+  for (Eigen::Index i = 0; i < chain.joints(); ++i)
+    os << (i > 0 ? ", " : "") << type_names[static_cast<int>(chain.joint_type(i))];
+  os << "], lower=";
+  detail::print_numbers(os, chain.lower()) << ", upper=";
+  detail::print_numbers(os, chain.upper()) << ", gravity=";
+  detail::print_numbers(os, chain.gravity()) << ", link_masses=[";
+  for (Eigen::Index i = 0; i < chain.joints(); ++i)
+    os << (i > 0 ? ", " : "") << chain.link_inertias()[static_cast<std::size_t>(i)].mass();
+  return os << "])";
 }
 
 /// SpatialInertia(mass=m, com=[...], inertia=[[...], [...], [...]]).

@@ -14,6 +14,7 @@
 
 #include "chasles/detail/assert.hpp"
 #include "chasles/se3.hpp"
+#include "chasles/spatial_inertia.hpp"
 #include "chasles/twist.hpp"
 
 namespace chasles {
@@ -91,9 +92,13 @@ enum class ChainStatus : unsigned char {
   velocity_or_effort_limit_invalid,
   /// a NaN or infinite gravity vector
   gravity_not_finite,
+  /// a link inertia with a NaN or infinite mass, center of mass or
+  /// rotational inertia, or a negative mass
+  link_inertia_invalid,
 };
 
-/// ChainStatus and the joint it is about (-1 for ok and gravity_not_finite).
+/// ChainStatus and the joint it is about (-1 for ok and gravity_not_finite;
+/// for link_inertia_invalid, the joint whose link it is).
 struct ChainCheck {
   ChainStatus status;
   Eigen::Index joint;
@@ -119,22 +124,26 @@ struct ChainCheck {
 /// (the pose of the chain's base in the world frame), a tool frame (the pose
 /// of the tool in the last link's frame at home, i.e. appended to M) and
 /// gravity (a 3-vector in the world frame, default (0, 0, -9.81) m/s^2, the
-/// value of URDF tools and Pinocchio). Base and tool are folded into the
-/// screws and the home pose on construction:
-///   S_i = Ad_base S0_i,  M = base M0 tool,
-/// so that every algorithm (forward kinematics, Jacobians, and later inverse
-/// kinematics and dynamics) works on (S, M) alone, in the world frame; base()
-/// and tool() stay available. The home pose is projected onto SE(3) on
+/// value of URDF tools and Pinocchio) and each link's inertia (the link
+/// joint i moves, a SpatialInertia described in the base frame at home, as
+/// the screws; default: massless, all zero, the SpatialInertia() that adds
+/// nothing to the dynamics). Base and tool are folded into the screws, the
+/// home pose and the inertias on construction:
+///   S_i = Ad_base S0_i,  M = base M0 tool,  G_i = G0_i.transform(base)
+/// (G_i = Ad_base^-T G0_i Ad_base^-1), so that every algorithm (forward
+/// kinematics, Jacobians, inverse kinematics, and the dynamics of
+/// dynamics.hpp, Dynamics(chain)) works on (S, M, G) alone, in the world
+/// frame; base() and tool() stay available. The home pose is projected onto SE(3) on
 /// construction (detail::orthonormalized: a pose composed of URDF transforms
 /// is a rigid motion only up to a defect of a few eps).
 ///
 /// Joint names are not stored: strings allocate, and a real-time chain has
-/// no use for them. The Python Chain keeps them (and the URDF's link
-/// inertias) beside its C++ chain.
+/// no use for them. The Python Chain keeps them beside its C++ chain.
 ///
 /// Validation: the constructors cannot throw, so they check nothing;
 /// validate() says whether the model is consistent (unit joint axes, zero
-/// pitch for revolute joints, ordered limits; ChainStatus).
+/// pitch for revolute joints, ordered limits, finite inertias of nonnegative
+/// mass; ChainStatus).
 ///
 /// Every operation is noexcept, allocation-free and of cost O(n).
 template <typename Scalar_, int Joints, int MaxJoints = Joints>
@@ -156,12 +165,15 @@ class Chain {
   using JointVector = Eigen::Matrix<Scalar, Joints, 1, Eigen::ColMajor, MaxJoints, 1>;
   /// One JointType per joint (the first n are used).
   using JointTypes = std::array<JointType, static_cast<std::size_t>(MaxJoints)>;
+  using Inertia = SpatialInertia<Scalar>;
+  /// One inertia per link (the first n are used; the others stay zero).
+  using Inertias = std::array<Inertia, static_cast<std::size_t>(MaxJoints)>;
   static constexpr int JointsAtCompileTime = Joints;
   static constexpr int MaxJointsAtCompileTime = MaxJoints;
 
   /// From the space screws S (6 x n, columns (v, w)) and the home pose M:
   /// joint types inferred (prismatic where w = 0, revolute elsewhere), no
-  /// limits (+-inf), identity base and tool, default gravity.
+  /// limits (+-inf), identity base and tool, default gravity, massless links.
   template <typename Derived>
   Chain(const Eigen::MatrixBase<Derived>& space_screws, const Group& home) noexcept
       : S_(space_screws), B_(6, space_screws.cols()), M_(detail::projected(home)),
@@ -192,19 +204,26 @@ class Chain {
   /// type, position limits (lower, upper: +-inf where there are none, and
   /// always for continuous joints), velocity and effort limits (+inf where
   /// there are none), the base frame (in the world frame), the tool frame
-  /// (after M0) and gravity (in the world frame). Stores S = Ad_base S0,
-  /// M = base M0 tool (projected onto SE(3)). Checks nothing: validate().
+  /// (after M0), gravity (in the world frame) and the links' inertias G0
+  /// (in the base frame at home, the first n entries; default: massless,
+  /// SpatialInertia(), all zero). Stores S = Ad_base S0, M = base M0 tool
+  /// (projected onto SE(3)), G = G0.transform(base). Checks nothing:
+  /// validate().
   template <typename Derived>
   Chain(const Eigen::MatrixBase<Derived>& space_screws, const Group& home, const JointTypes& types,
         const JointVector& lower, const JointVector& upper, const JointVector& velocity_limits,
         const JointVector& effort_limits, const Group& base = Group(), const Group& tool = Group(),
-        const Vector3& gravity = default_gravity()) noexcept
+        const Vector3& gravity = default_gravity(), const Inertias& link_inertias = Inertias()) noexcept
       : S_(space_screws), B_(6, space_screws.cols()), types_(types), lower_(lower), upper_(upper),
         velocity_(velocity_limits), effort_(effort_limits), base_(detail::projected(base)),
         tool_(detail::projected(tool)), gravity_(gravity) {
     CHASLES_ASSERT(lower.size() == S_.cols() && upper.size() == S_.cols() && velocity_limits.size() == S_.cols() &&
                    effort_limits.size() == S_.cols());
-    for (Eigen::Index i = 0; i < S_.cols(); ++i) S_.col(i) = base_.act(Twist<Scalar>(Vector6(S_.col(i)))).vector();
+    for (Eigen::Index i = 0; i < S_.cols(); ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      S_.col(i) = base_.act(Twist<Scalar>(Vector6(S_.col(i)))).vector();
+      inertias_[k] = link_inertias[k].transform(base_);
+    }
     M_ = detail::projected(Group(base_ * detail::projected(home) * tool_));
     compute_body_screws();
   }
@@ -305,10 +324,17 @@ class Chain {
   const Group& tool() const noexcept { return tool_; }
   /// Gravity, in the world frame.
   const Vector3& gravity() const noexcept { return gravity_; }
+  /// The links' inertias (link i: the body joint i moves) in the world
+  /// frame at home (the given ones moved by the base frame); the first n
+  /// are used, the others are zero. Massless (zero) unless given.
+  const Inertias& link_inertias() const noexcept { return inertias_; }
 
   /// Whether each joint is what its type says (unit axes, zero pitch for
   /// revolute joints: see ChainStatus), its limits are ordered and
-  /// nonnegative, and gravity is finite; the first problem found.
+  /// nonnegative, gravity is finite, and the link inertias are finite with
+  /// masses >= 0; the first problem found. A link inertia need not be a
+  /// rigid body's (SpatialInertia::is_physical): a massless link (zero, the
+  /// default) and a point mass (I_c = 0) are valid models, as in URDF files.
   /// Tolerance: Thresholds::screw_tolerance (constants.hpp).
   ChainCheck validate() const noexcept {
     using std::abs;
@@ -333,6 +359,15 @@ class Chain {
         return {ChainStatus::velocity_or_effort_limit_invalid, i};
     }
     if (!(abs(gravity_(0)) + abs(gravity_(1)) + abs(gravity_(2)) < infinity())) return {ChainStatus::gravity_not_finite, -1};
+    for (Eigen::Index i = 0; i < joints(); ++i) {
+      const Inertia& G = inertias_[static_cast<std::size_t>(i)];
+      bool finite = G.mass() >= Scalar(0) && G.mass() < infinity();  // false for NaN
+      for (int r = 0; r < 3; ++r) {
+        finite = finite && abs(G.com()(r)) < infinity();
+        for (int c = 0; c < 3; ++c) finite = finite && abs(G.inertia()(r, c)) < infinity();
+      }
+      if (!finite) return {ChainStatus::link_inertia_invalid, i};
+    }
     return {ChainStatus::ok, -1};
   }
 
@@ -381,6 +416,7 @@ class Chain {
   JointVector lower_, upper_, velocity_, effort_;
   Group base_, tool_;
   Vector3 gravity_;
+  Inertias inertias_{};
 };
 
 }  // namespace chasles

@@ -80,11 +80,14 @@ class SpatialInertia {
   /// The inverse of `matrix()` on matrices of that form: m = G(0, 0),
   /// c from the antisymmetric part of the lower-left block m [c], and
   /// I_c = G_ww + m [c]^2 (symmetrized). Taken as given, like the unchecked
-  /// constructors of the groups.
+  /// constructors of the groups. A massless body (m = 0: G = [[0, 0], [0,
+  /// I_c]], whatever c) gets c = 0, so that the zero matrix gives back
+  /// SpatialInertia(), not a NaN center of mass.
   static SpatialInertia from_matrix_unchecked(const Matrix6& G) noexcept {
     const Scalar m = G(0, 0);
     const Matrix3 mC = G.template bottomLeftCorner<3, 3>();
-    const Vector3 c = SO3<Scalar>::vee(mC) / m;
+    const bool massless = !(m > Scalar(0) || m < Scalar(0));  // m == 0 (-Wfloat-equal)
+    const Vector3 c = massless ? Vector3(Vector3::Zero()) : Vector3(SO3<Scalar>::vee(mC) / m);
     const Matrix3 C = SO3<Scalar>::hat(c);
     const Matrix3 Iww = G.template bottomRightCorner<3, 3>();
     const Matrix3 I = Iww + m * (C * C);

@@ -18,6 +18,7 @@
 // The modern_robotics package (and Pinocchio, bench/) check the values
 // themselves from Python (tests/python/test_dynamics.py).
 #include <cmath>
+#include <limits>
 #include <random>
 #include <string>
 #include <type_traits>
@@ -206,6 +207,102 @@ TYPED_TEST(DynamicsTest, ForwardDynamicsInvertsInverseDynamics) {
     EXPECT_TRUE(near<S>(d.bias(q, qd), Eigen::Matrix<S, Eigen::Dynamic, 1>(d.coriolis(q, qd) + d.gravity_torques(q)),
                         4, std::max(LD(100), max_abs(tau))));
   }
+}
+
+template <typename S>
+using ChainOf = Chain<S, Eigen::Dynamic, kMax>;
+
+/// The chain of an arm with a base frame: its screws and home pose moved
+/// back by the base (S0 = Ad_base^-1 S, M0 = base^-1 M) and its inertias
+/// likewise, so that in the world frame it is `a` carried by `base`.
+template <typename S>
+ChainOf<S> chain_of(const Arm& a, const SE3<double>& base, const Eigen::Vector3d& gravity) {
+  using C = ChainOf<S>;
+  const Eigen::Index n = a.S.cols();
+  typename C::Inertias I{};
+  for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i) I[i] = a.I[i].template cast<S>();
+  typename C::JointTypes types{};
+  for (Eigen::Index i = 0; i < n; ++i)
+    types[static_cast<std::size_t>(i)] =
+        a.S.col(i).tail<3>().squaredNorm() > 0 ? chasles::JointType::revolute : chasles::JointType::prismatic;
+  const typename C::JointVector inf = C::JointVector::Constant(n, S(std::numeric_limits<double>::infinity()));
+  return C(a.S.template cast<S>(), a.M.template cast<S>(), types, -inf, inf, inf, inf, base.template cast<S>(),
+           SE3<S>(), gravity.template cast<S>(), I);
+}
+
+TYPED_TEST(DynamicsTest, FromAChainEqualsFromItsParts) {
+  using S = TypeParam;
+  std::mt19937 rng(31);
+  Eigen::Matrix<double, 6, 1> xi;
+  xi << 0.3, -1.2, 0.8, 0.4, -0.6, 1.1;
+  const SE3<double> base = SE3<double>::exp(xi);
+  for (int n = 1; n <= kMax; ++n) {
+    const Arm arm = random_arm(rng, n);
+    const ChainOf<S> chain = chain_of<S>(arm, base, Eigen::Vector3d(0.2, -0.1, -9.8));
+    const Dyn<S> a(chain);
+    const Dyn<S> b(chain.space_screws(), chain.home(), chain.link_inertias(), chain.gravity());
+    const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0), qdd = random_joints<S>(rng, n, 2.0);
+    const Wrench<S> F(Eigen::Matrix<S, 3, 1>(S(1), S(-2), S(3)), Eigen::Matrix<S, 3, 1>(S(0.5), S(0.1), S(-0.3)));
+    using V = Eigen::Matrix<S, Eigen::Dynamic, 1>;
+    using Mat = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>;
+    EXPECT_EQ(V(a.inverse_dynamics(q, qd, qdd, F)), V(b.inverse_dynamics(q, qd, qdd, F)));
+    EXPECT_EQ(Mat(a.mass_matrix(q)), Mat(b.mass_matrix(q)));
+    EXPECT_EQ(V(a.forward_dynamics(q, qd, qdd, F)), V(b.forward_dynamics(q, qd, qdd, F)));
+    EXPECT_EQ(V(a.gravity_torques(q)), V(b.gravity_torques(q)));
+    EXPECT_EQ(V(a.coriolis(q, qd)), V(b.coriolis(q, qd)));
+    EXPECT_TRUE(a.space_screws() == chain.space_screws() && a.gravity() == chain.gravity());
+  }
+}
+
+// A chain on a base frame, given its screws, home and inertias in the base
+// frame, has the dynamics of the same chain without a base under gravity
+// rotated into the base frame (R_base^T gravity): the joints cannot tell.
+// Both sides are compared with the unbased chain in long double.
+TYPED_TEST(DynamicsTest, TheBaseFrameMovesTheInertias) {
+  using S = TypeParam;
+  std::mt19937 rng(32);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 16; ++trial) {
+    const int n = 1 + trial % kMax;
+    const Arm arm = random_arm(rng, n);
+    Eigen::Matrix<double, 6, 1> xi;
+    for (int k = 0; k < 6; ++k) xi(k) = 2 * u(rng);
+    const SE3<double> base = SE3<double>::exp(xi);
+    const Eigen::Vector3d gravity(0, 0, -9.81);
+    const Dyn<S> based(chain_of<S>(arm, base, gravity));
+    const Eigen::Vector3d rotated = base.rotation().matrix().transpose() * gravity;
+    const Dyn<LD> reference(chain_of<LD>(arm, SE3<double>(), rotated));
+    const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0), qdd = random_joints<S>(rng, n, 2.0);
+    const Wrench<S> F(Eigen::Matrix<S, 3, 1>(S(1), S(-2), S(3)), Eigen::Matrix<S, 3, 1>(S(0.5), S(0.1), S(-0.3)));
+    const auto taul = reference.inverse_dynamics(to_ld(q), to_ld(qd), to_ld(qdd), F.template cast<LD>());
+    const LD scale = std::max(LD(100), max_abs(taul));
+    // twice the rounding of AgreesWithLongDouble: the base frame adds a change of frame to every quantity
+    EXPECT_TRUE(near<S>(based.inverse_dynamics(q, qd, qdd, F), taul, 2 * kPerJoint * n, scale)) << "n = " << n;
+    EXPECT_TRUE(near<S>(based.mass_matrix(q), reference.mass_matrix(to_ld(q)), 2 * kPerJoint * n, 10));
+    EXPECT_TRUE(near<S>(based.gravity_torques(q), reference.gravity_torques(to_ld(q)), 2 * kPerJoint * n, scale));
+    EXPECT_TRUE(near<S>(based.coriolis(q, qd), reference.coriolis(to_ld(q), to_ld(qd)), 2 * kPerJoint * n, scale));
+    // and not the same without rotating gravity (the test can fail)
+    if (base.rotation().matrix().col(2).z() < 0.9) {
+      const Dyn<LD> unrotated(chain_of<LD>(arm, SE3<double>(), gravity));
+      EXPECT_FALSE(near<S>(based.gravity_torques(q), unrotated.gravity_torques(to_ld(q)), 2 * kPerJoint * n, scale));
+    }
+  }
+}
+
+TYPED_TEST(DynamicsTest, AChainWithoutInertiasIsMassless) {
+  using S = TypeParam;
+  std::mt19937 rng(33);
+  const Arm arm = random_arm(rng, 5);
+  using C = ChainOf<S>;
+  const C chain(arm.S.template cast<S>(), arm.M.template cast<S>());  // no inertias given
+  const Dyn<S> d(chain);
+  const auto q = random_joints<S>(rng, 5, 3.0), qd = random_joints<S>(rng, 5, 2.0), qdd = random_joints<S>(rng, 5, 2.0);
+  EXPECT_TRUE(d.inverse_dynamics(q, qd, qdd).isZero(0));
+  EXPECT_TRUE(d.mass_matrix(q).isZero(0));
+  // only a tip wrench needs torques: J_b(q)^T F_tip
+  const Wrench<S> F(Eigen::Matrix<S, 3, 1>(S(1), S(-2), S(3)), Eigen::Matrix<S, 3, 1>(S(0.5), S(0.1), S(-0.3)));
+  const Eigen::Matrix<S, Eigen::Dynamic, 1> expected = chain.jacobian_body(q).transpose() * F.vector();
+  EXPECT_TRUE(near<S>(d.inverse_dynamics(q, qd, qdd, F), expected, kPerJoint * 5, 10));
 }
 
 TEST(Dynamics, FixedSizeGivesTheSameBitsAsBounded) {

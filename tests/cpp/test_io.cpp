@@ -1,5 +1,6 @@
 // operator<< of every public type (include/chasles/io.hpp): the type, then
 // its numbers named as in the Python reprs, with the stream's own format.
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 #include <string>
@@ -49,14 +50,31 @@ TEST(Io, Chain) {
   const Arm arm(S, SE3d(SO3d(), Eigen::Vector3d(2, 0, 0)));
   EXPECT_EQ(str(arm),
             "Chain(n_joints=2, space_screws=[[0, 0, 0, 0, 0, 1], [0, -1, 0, 0, 0, 1]], "
-            "home=SE3(rotation=[[1, 0, 0], [0, 1, 0], [0, 0, 1]], translation=[2, 0, 0]))");
+            "home=SE3(rotation=[[1, 0, 0], [0, 1, 0], [0, 0, 1]], translation=[2, 0, 0]), "
+            "joint_types=[revolute, revolute], lower=[-inf, -inf], upper=[inf, inf], gravity=[0, 0, -9.81], "
+            "link_masses=[0, 0])");
   // A dynamic chain of one joint: still a list of screws.
   using Dyn = Chain<float, Eigen::Dynamic, 4>;
   Dyn::Screws D(6, 1);
   D.col(0) = Dyn::prismatic_screw(Eigen::Vector3f(0, 0, 2));
   EXPECT_EQ(str(Dyn(D, SE3f())),
             "Chain(n_joints=1, space_screws=[[0, 0, 1, 0, 0, 0]], "
-            "home=SE3(rotation=[[1, 0, 0], [0, 1, 0], [0, 0, 1]], translation=[0, 0, 0]))");
+            "home=SE3(rotation=[[1, 0, 0], [0, 1, 0], [0, 0, 1]], translation=[0, 0, 0]), "
+            "joint_types=[prismatic], lower=[-inf], upper=[inf], gravity=[0, 0, -9.81], link_masses=[0])");
+  // The full model: types, limits, gravity and the links' masses.
+  Arm::JointTypes types{};
+  types[0] = JointType::continuous;
+  types[1] = JointType::revolute;
+  Arm::Inertias inertias{};
+  inertias[1] = SpatialInertia<double>(2.5, Eigen::Vector3d(1, 0, 0), Eigen::Matrix3d::Identity());
+  const Arm model(S, SE3d(), types, Arm::JointVector(-INFINITY, -1), Arm::JointVector(INFINITY, 1.5),
+                  Arm::JointVector(1, 2), Arm::JointVector(3, 4), SE3d(), SE3d(), Eigen::Vector3d(0, -9.8, 0),
+                  inertias);
+  EXPECT_EQ(str(model),
+            "Chain(n_joints=2, space_screws=[[0, 0, 0, 0, 0, 1], [0, -1, 0, 0, 0, 1]], "
+            "home=SE3(rotation=[[1, 0, 0], [0, 1, 0], [0, 0, 1]], translation=[0, 0, 0]), "
+            "joint_types=[continuous, revolute], lower=[-inf, -1], upper=[inf, 1.5], gravity=[0, -9.8, 0], "
+            "link_masses=[0, 2.5])");
 }
 
 TEST(Io, JacobianResults) {

@@ -543,4 +543,83 @@ TYPED_TEST(Kinematics, ValidateBothSidesOfTheTolerance) {
   EXPECT_EQ(second.joint, 1);
 }
 
+TYPED_TEST(Kinematics, LinkInertiasDefaultToMasslessAndMoveWithTheBase) {
+  using S = TypeParam;
+  using C = Chain<S, Eigen::Dynamic, 8>;
+  using I = typename C::Inertia;
+  Arm arm = ur5_on_rail();
+  const C plain = make_chain<C>(arm);
+  // default: every entry (the first n and the unused ones) is SpatialInertia(), zero
+  for (const I& G : plain.link_inertias()) {
+    EXPECT_EQ(G.mass(), S(0));
+    EXPECT_TRUE(G.com().isZero(0) && G.inertia().isZero(0));
+  }
+  typename C::Inertias given{};
+  for (std::size_t i = 0; i < 7; ++i) {
+    typename C::Vector3 moments(S(0.1) + S(0.01) * S(i), S(0.2), S(0.25));
+    given[i] = I(S(1) + S(i), typename C::Vector3(S(0.1) * S(i), S(-0.2), S(0.3)),
+                 typename I::Matrix3(moments.asDiagonal()));
+  }
+  const SE3<S> base = SE3<S>::exp(Eigen::Matrix<S, 6, 1>(S(0.5), S(-0.2), S(1), S(0.3), S(-0.1), S(0.7)));
+  const typename C::JointVector inf = C::JointVector::Constant(7, std::numeric_limits<S>::infinity());
+  const C model(plain.space_screws(), plain.home(), plain.joint_types(), -inf, inf, inf, inf, base, SE3<S>(),
+                C::default_gravity(), given);
+  EXPECT_TRUE(static_cast<bool>(model.validate()));
+  // moved by the base frame exactly as SpatialInertia::transform(base) moves them (the base as stored)
+  for (std::size_t i = 0; i < 7; ++i) {
+    const I expected = given[i].transform(model.base());
+    EXPECT_EQ(model.link_inertias()[i].mass(), expected.mass());
+    EXPECT_TRUE(model.link_inertias()[i].com() == expected.com());
+    EXPECT_TRUE(model.link_inertias()[i].inertia() == expected.inertia());
+  }
+  EXPECT_EQ(model.link_inertias()[7].mass(), S(0));  // unused entries stay zero
+  // and with an identity base, as given
+  const C unbased(plain.space_screws(), plain.home(), plain.joint_types(), -inf, inf, inf, inf, SE3<S>(), SE3<S>(),
+                  C::default_gravity(), given);
+  for (std::size_t i = 0; i < 7; ++i)
+    EXPECT_TRUE(unbased.link_inertias()[i].com() == given[i].com() &&
+                unbased.link_inertias()[i].inertia() == given[i].inertia());
+}
+
+TYPED_TEST(Kinematics, ValidateLinkInertias) {
+  using S = TypeParam;
+  using C = Chain<S, 2>;
+  using I = typename C::Inertia;
+  using chasles::ChainStatus;
+  typename C::Screws screws;
+  screws.col(0) << 0, 0, 0, 0, 0, 1;
+  screws.col(1) << 0, -1, 0, 0, 0, 1;
+  const typename C::JointVector inf = C::JointVector::Constant(2, std::numeric_limits<S>::infinity());
+  const auto check = [&](const I& second) {
+    typename C::Inertias inertias{};
+    inertias[0] = I(S(1), typename C::Vector3(S(0.1), 0, 0), I::Matrix3::Identity());
+    inertias[1] = second;
+    const typename C::Vector3 earth(0, 0, S(-9.81));
+    return C(screws, SE3<S>(), typename C::JointTypes{}, -inf, inf, inf, inf, SE3<S>(), SE3<S>(), earth, inertias)
+        .validate();
+  };
+  using V3 = typename C::Vector3;
+  using M3 = typename I::Matrix3;
+  EXPECT_EQ(check(I()).status, ChainStatus::ok);                             // massless
+  EXPECT_EQ(check(I(S(2), V3(1, 2, 3), M3::Zero())).status, ChainStatus::ok);  // a point mass
+  const S nan = std::numeric_limits<S>::quiet_NaN(), big = std::numeric_limits<S>::infinity();
+  const S tiny = std::numeric_limits<S>::denorm_min();
+  EXPECT_EQ(check(I(S(0), V3::Zero(), M3::Zero())).status, ChainStatus::ok);
+  const ChainCheck negative = check(I(-tiny, V3::Zero(), M3::Zero()));
+  EXPECT_EQ(negative.status, ChainStatus::link_inertia_invalid);
+  EXPECT_EQ(negative.joint, 1);
+  EXPECT_EQ(check(I(nan, V3::Zero(), M3::Zero())).status, ChainStatus::link_inertia_invalid);
+  EXPECT_EQ(check(I(big, V3::Zero(), M3::Zero())).status, ChainStatus::link_inertia_invalid);
+  EXPECT_EQ(check(I(S(1), V3(0, nan, 0), M3::Zero())).status, ChainStatus::link_inertia_invalid);
+  EXPECT_EQ(check(I(S(1), V3(0, 0, -big), M3::Zero())).status, ChainStatus::link_inertia_invalid);
+  M3 bad = M3::Identity();
+  bad(2, 1) = big;
+  EXPECT_EQ(check(I(S(1), V3::Zero(), bad)).status, ChainStatus::link_inertia_invalid);
+  bad(2, 1) = nan;
+  EXPECT_EQ(check(I(S(1), V3::Zero(), bad)).status, ChainStatus::link_inertia_invalid);
+  // the largest finite numbers are finite
+  const S max = std::numeric_limits<S>::max();
+  EXPECT_EQ(check(I(max, V3(max, -max, max), M3::Constant(max))).status, ChainStatus::ok);
+}
+
 }  // namespace

@@ -169,6 +169,16 @@ TYPED_TEST(SpatialInertiaTest, MatrixIsTheParallelAxisFormula) {
     // from_matrix_unchecked recovers (m, c, I_c).
     EXPECT_TRUE(SpatialInertia<S>::from_matrix_unchecked(G).is_approx(I, RealOf<S>(kInertia * eps<S>() * 10)));
   }
+  // A massless body: the zero matrix gives SpatialInertia() (c = 0, not 0 / 0), and a
+  // rotational inertia alone comes back as it is.
+  const SpatialInertia<S> zero = SpatialInertia<S>::from_matrix_unchecked(Eigen::Matrix<S, 6, 6>::Zero());
+  EXPECT_EQ(zero.mass(), S(0));
+  EXPECT_TRUE(zero.com().isZero(0) && zero.inertia().isZero(0));
+  Eigen::Matrix<S, 6, 6> spin = Eigen::Matrix<S, 6, 6>::Zero();
+  spin.template bottomRightCorner<3, 3>() = Eigen::Matrix<S, 3, 1>(S(1), S(2), S(3)).asDiagonal();
+  const SpatialInertia<S> flywheel = SpatialInertia<S>::from_matrix_unchecked(spin);
+  EXPECT_TRUE(flywheel.com().isZero(0));
+  EXPECT_TRUE(flywheel.matrix() == spin);
 }
 
 TYPED_TEST(SpatialInertiaTest, ChangeOfFrameIsTheAdjointProduct) {

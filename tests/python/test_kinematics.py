@@ -336,6 +336,12 @@ def test_model_validation():
         Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), link_inertias=np.ones((1, 9)))
     with pytest.raises(ValueError, match=r"masses >= 0"):
         Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), link_inertias=-np.ones((1, 10)))
+    # finite as given, infinite once the base frame moves it (the C++ chain's validate)
+    far = np.eye(4)
+    far[0, 3] = 1e308
+    with pytest.raises(ValueError, match=r"Chain\(link_inertias\): joint 0: expected finite numbers"):
+        Chain([[1, 0, 0, 0, 0, 0]], np.eye(4), base=far, link_inertias=[[1, 1e308, 0, 0, 1, 0, 0, 1, 0, 1]])
+    assert Chain([[1, 0, 0, 0, 0, 0]], np.eye(4), base=far, link_inertias=[[1, 0, 0, 0, 1, 0, 0, 1, 0, 1]]).n_joints == 1
     with pytest.raises(ValueError, match=r"Chain\(base\): not a rigid motion"):
         Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), base=2 * np.eye(4))
 

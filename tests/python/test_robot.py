@@ -224,6 +224,95 @@ def test_dynamics_are_array_functions(arms):
         np.testing.assert_array_equal(Ms[i], chain.mass_matrix(q[i]))
 
 
+def world_inertias(chain):
+    """The (n, 6, 6) operand of the dynamics gufuncs: the chain's link inertias moved by its base frame."""
+    out = []
+    for row in chain.link_inertias:
+        m, com, (ixx, ixy, ixz, iyy, iyz, izz) = row[0], row[1:4], row[4:]
+        body = SpatialInertia(m, com, [[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]])
+        out.append(body.transform(chain.base).matrix)
+    return np.array(out)
+
+
+def test_dynamics_one_configuration_gives_the_bits_of_the_gufuncs(arms):
+    """A single configuration of float64 (an (n,) array or a list) takes the
+    methods' fast path (the chain's C++ Dynamics, no numpy dispatch): the
+    same bits as the private gufuncs on the chain's operands; float32 and
+    Wrench arguments go through the gufuncs."""
+    from chasles import Wrench, _core
+
+    ur5 = arms["ur5"]
+    base = SE3.exp([0.3, -0.2, 0.5, 0.4, -0.7, 1.1])
+    chain = Chain(
+        ur5.screws, ur5.home, link_inertias=ur5.link_inertias, base=base, gravity=[0.1, -0.2, -9.7]
+    )
+    S, M, G, g = chain.screws, np.asarray(chain.home), world_inertias(chain), chain.gravity
+    rng = np.random.default_rng(8)
+    q, qd, x = rng.uniform(-2, 2, (3, 6))
+    tip = rng.uniform(-5, 5, 6)
+    zero = np.zeros(6)
+    for a, b, c in [(q, qd, x), (list(q), list(qd), list(x)), (q.astype(np.float32), qd, x)]:
+        for t, t_op in [(None, zero), (tip, tip), (list(tip), tip), (Wrench(tip[:3], tip[3:]), tip)]:
+            kw = {} if t is None else {"tip_wrench": t}
+            np.testing.assert_array_equal(
+                chain.inverse_dynamics(a, b, c, **kw), _core._inverse_dynamics(S, M, G, g, a, b, c, t_op)
+            )
+            np.testing.assert_array_equal(
+                chain.forward_dynamics(a, b, c, **kw), _core._forward_dynamics(S, M, G, g, a, b, c, t_op)
+            )
+        np.testing.assert_array_equal(chain.mass_matrix(a), _core._mass_matrix(S, M, G, a))
+        np.testing.assert_array_equal(chain.gravity_torques(a), _core._gravity_torques(S, M, G, g, a))
+        np.testing.assert_array_equal(chain.coriolis(a, b), _core._coriolis(S, M, G, a, b))
+    out = chain.inverse_dynamics(list(q), q, q)
+    assert type(out) is np.ndarray and out.shape == (6,) and out.dtype == np.float64
+    assert chain.mass_matrix(q).shape == (6, 6)
+    one = Chain(S[:1], M, link_inertias=ur5.link_inertias[:1])
+    assert one.mass_matrix([0.3]).shape == (1, 1) and one.gravity_torques([0.3]).shape == (1,)
+    # a NaN gives NaN, on the fast path as in the loop
+    bad = q.copy()
+    bad[2] = np.nan
+    np.testing.assert_array_equal(chain.gravity_torques(bad), _core._gravity_torques(S, M, G, g, bad))
+
+
+def test_dynamics_base_frame_moves_the_inertias(arms):
+    """A chain on a base frame has the joint torques of the same chain
+    without it under gravity rotated into the base frame."""
+    ur5 = arms["ur5"]
+    base = SE3.exp([0.3, -0.2, 0.5, 0.4, -0.7, 1.1])
+    based = Chain(ur5.screws, ur5.home, link_inertias=ur5.link_inertias, base=base)
+    rotated = base.rotation.as_matrix().T @ based.gravity
+    plain = Chain(ur5.screws, ur5.home, link_inertias=ur5.link_inertias, gravity=rotated)
+    rng = np.random.default_rng(9)
+    q, qd, qdd = rng.uniform(-2, 2, (3, 4, 6))
+    tip = rng.uniform(-5, 5, 6)
+    assert_close(based.inverse_dynamics(q, qd, qdd, tip_wrench=tip), plain.inverse_dynamics(q, qd, qdd, tip_wrench=tip))
+    assert_close(based.mass_matrix(q), plain.mass_matrix(q))
+    assert_close(based.forward_dynamics(q, qd, qdd), plain.forward_dynamics(q, qd, qdd), 1e-10)
+    # and not without rotating gravity
+    unrotated = Chain(ur5.screws, ur5.home, link_inertias=ur5.link_inertias)
+    assert not np.allclose(based.gravity_torques(q), unrotated.gravity_torques(q))
+
+
+def test_a_massless_link_adds_nothing(arms):
+    """A link of zero mass and inertia (as URDF links may be): the torques of
+    the chain without it, and zero on its own joint (no NaN from its
+    undefined center of mass)."""
+    ur5 = arms["ur5"]
+    inertias = ur5.link_inertias.copy()
+    inertias[5] = 0.0
+    chain = Chain(ur5.screws, ur5.home, link_inertias=inertias)
+    shorter = Chain(ur5.screws[:5], ur5.home, link_inertias=inertias[:5])
+    rng = np.random.default_rng(10)
+    q, qd, qdd = rng.uniform(-2, 2, (3, 6))
+    for single in (q, list(q)):  # the fast path
+        tau = chain.inverse_dynamics(single, qd, qdd)
+        assert tau[5] == 0.0
+        assert_close(tau[:5], shorter.inverse_dynamics(q[:5], qd[:5], qdd[:5]))
+    tau = chain.inverse_dynamics(q[None], qd, qdd)[0]  # the gufunc
+    assert tau[5] == 0.0
+    assert_close(tau[:5], shorter.inverse_dynamics(q[:5], qd[:5], qdd[:5]))
+
+
 def test_dynamics_need_link_inertias_and_matching_shapes(arms):
     bare = Chain(arms["ur5"].screws, arms["ur5"].home)
     with pytest.raises(ValueError, match=r"Chain.gravity_torques: the chain has no link inertias"):

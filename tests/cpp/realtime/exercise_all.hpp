@@ -359,6 +359,13 @@ S exercise_all() noexcept {
   sum += dd.inverse_dynamics(thd, qdd, qddd, tip).sum() + dd.mass_matrix(thd).sum() + dd.gravity_torques(thd).sum();
   sum += dd.coriolis(thd, qdd).sum() + dd.bias(thd, qdd).sum() + dd.forward_dynamics(thd, qdd, qddd, tip).sum();
   sum += dd.kinetic_energy(thd, qdd) + dd.potential_energy(thd);
+  // A Chain carrying its link inertias (moved by its base frame), and its Dynamics.
+  const CD heavy(SD, h, types, lo, hi, CD::JointVector::Constant(7, S(3)), CD::JointVector::Constant(7, S(50)), g, h,
+                 CD::default_gravity(), ID);
+  sum += heavy.link_inertias()[3].com().sum() + model.link_inertias()[0].mass();
+  sum += S(RealOf<S>(int(heavy.validate().status)));
+  const DD from_chain(heavy);
+  sum += from_chain.inverse_dynamics(thd, qdd, qddd, tip).sum() + from_chain.mass_matrix(thd).sum();
   return sum;
 }
 
