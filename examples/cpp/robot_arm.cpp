@@ -30,8 +30,7 @@ int main(int argc, char** argv) {
   const chasles::SE3d target = arm.forward(Arm::JointVector::Constant(arm.joints(), 0.4));  // forward kinematics
   const auto ik = chasles::inverse_kinematics(arm, target, Arm::JointVector::Zero(arm.joints()),  // from q = 0
                                               arm.lower(), arm.upper());
-  const chasles::Dynamics<double, Eigen::Dynamic, 7> dynamics(arm.space_screws(), arm.home(), robot.link_inertias,
-                                                              arm.gravity());
+  const chasles::Dynamics<double, Eigen::Dynamic, 7> dynamics(arm);  // its link inertias and gravity
   const Arm::JointVector tau = dynamics.gravity_torques(ik.q);  // N m (N for a prismatic joint)
   // ---- printing and checks
   const Eigen::Vector3d p = target.translation();

@@ -81,17 +81,12 @@ UrdfDescription read_urdf(const std::string& xml_or_path, const std::string& tip
 template <typename Scalar, int MaxJoints>
 struct UrdfChain {
   using ChainType = Chain<Scalar, Eigen::Dynamic, MaxJoints>;
-  /// One inertia per moving joint (the first n are used).
-  using Inertias = std::array<SpatialInertia<Scalar>, static_cast<std::size_t>(MaxJoints)>;
-
-  /// The chain (identity base and tool, default gravity); empty on failure.
+  /// The chain (identity base and tool, default gravity) with its link
+  /// inertias (`chain->link_inertias()`: per moving joint, the body it moves,
+  /// in the base frame at home); empty on failure.
   std::optional<ChainType> chain;
   /// The n joint names, base to tip.
   std::vector<std::string> joint_names;
-  /// Per moving joint, the inertia of the body it moves, in the base frame at
-  /// home (what chasles::Dynamics takes). Kept beside the chain until Chain
-  /// holds link inertias itself; then they go into the chain's constructor.
-  Inertias link_inertias{};
   /// Empty on success; otherwise what is wrong, naming the element.
   std::string error;
 
@@ -125,6 +120,7 @@ UrdfChain<Scalar, MaxJoints> chain_from_urdf(const std::string& xml_or_path, con
   typename ChainType::Screws S(6, n);
   typename ChainType::JointTypes types{};
   typename ChainType::JointVector lower(n), upper(n), velocity(n), effort(n);
+  typename ChainType::Inertias inertias{};
   for (Eigen::Index i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
     for (Eigen::Index r = 0; r < 6; ++r) S(r, i) = Scalar(d.screws(r, i));
@@ -137,7 +133,7 @@ UrdfChain<Scalar, MaxJoints> chain_from_urdf(const std::string& xml_or_path, con
     Matrix3 I;
     for (Eigen::Index r = 0; r < 3; ++r) c(r) = Scalar(d.com(r, i));
     for (Eigen::Index r = 0; r < 9; ++r) I(r % 3, r / 3) = Scalar(d.inertia(r, i));
-    out.link_inertias[k] = SpatialInertia<Scalar>(Scalar(d.mass(i)), c, I);
+    inertias[k] = SpatialInertia<Scalar>(Scalar(d.mass(i)), c, I);
   }
   Matrix3 R;
   Vector3 p;
@@ -146,9 +142,9 @@ UrdfChain<Scalar, MaxJoints> chain_from_urdf(const std::string& xml_or_path, con
     for (Eigen::Index c = 0; c < 3; ++c) R(r, c) = Scalar(d.home(r, c));
   }
   // The full constructor projects the home pose onto SE(3) (a product of
-  // URDF transforms is a rigid motion up to a few eps). When Chain takes link
-  // inertias, out.link_inertias goes in as its last argument here.
-  out.chain.emplace(S, SE3<Scalar>(SO3<Scalar>::from_matrix_unchecked(R), p), types, lower, upper, velocity, effort);
+  // URDF transforms is a rigid motion up to a few eps).
+  out.chain.emplace(S, SE3<Scalar>(SO3<Scalar>::from_matrix_unchecked(R), p), types, lower, upper, velocity, effort,
+                    SE3<Scalar>(), SE3<Scalar>(), ChainType::default_gravity(), inertias);
   out.joint_names = std::move(d.names);
   return out;
 }

@@ -72,8 +72,8 @@ TEST(Urdf, SmallDescription) {
   EXPECT_EQ(arm.gravity(), Arm::default_gravity());
   EXPECT_TRUE(static_cast<bool>(arm.validate()));
   // no <inertial>: zero bodies
-  EXPECT_EQ(r.link_inertias[0].mass(), 0.0);
-  EXPECT_EQ(r.link_inertias[1].inertia(), Matrix3d::Zero());
+  EXPECT_EQ(r.chain->link_inertias()[0].mass(), 0.0);
+  EXPECT_EQ(r.chain->link_inertias()[1].inertia(), Matrix3d::Zero());
 
   const Result from_b = chasles::chain_from_urdf<double, 8>(urdf(kGood), "c", "b");
   ASSERT_TRUE(from_b) << from_b.error;
@@ -140,7 +140,7 @@ TEST(Urdf, LinkInertiasInTheBaseFrameAtHome) {
       "</robot>";
   const Result r = chasles::chain_from_urdf<double, 8>(text, "b");
   ASSERT_TRUE(r) << r.error;
-  const chasles::SpatialInertia<double>& body = r.link_inertias[0];
+  const chasles::SpatialInertia<double>& body = r.chain->link_inertias()[0];
   EXPECT_EQ(body.mass(), 2.0);
   EXPECT_LT((body.com() - Vector3d(0, 0.2, 1)).norm(), 1e-15);
   Matrix3d I;
@@ -163,17 +163,17 @@ TEST(Urdf, LinksHangingOffTheChainRideOnTheirChainLink) {
       "</robot>";
   const Result r = chasles::chain_from_urdf<double, 8>(text, "c");
   ASSERT_TRUE(r) << r.error;
-  EXPECT_EQ(r.link_inertias[0].mass(), 2.0);  // b + sensor (the base link a is the base's)
-  EXPECT_EQ(r.link_inertias[1].mass(), 4.0);  // c + finger
-  EXPECT_LT((r.link_inertias[0].com() - Vector3d(0.5, 0, 0)).norm(), 1e-15);
-  EXPECT_LT((r.link_inertias[1].com() - Vector3d(0, 0.5, 0)).norm(), 1e-15);
+  EXPECT_EQ(r.chain->link_inertias()[0].mass(), 2.0);  // b + sensor (the base link a is the base's)
+  EXPECT_EQ(r.chain->link_inertias()[1].mass(), 4.0);  // c + finger
+  EXPECT_LT((r.chain->link_inertias()[0].com() - Vector3d(0.5, 0, 0)).norm(), 1e-15);
+  EXPECT_LT((r.chain->link_inertias()[1].com() - Vector3d(0, 0.5, 0)).norm(), 1e-15);
   // parallel axis: each part 0.5 m from the merged center
   const Vector3d diagonal(0.2, 0.2 + 0.5, 0.2 + 0.5);
-  EXPECT_LT((r.link_inertias[0].inertia() - Matrix3d(diagonal.asDiagonal())).cwiseAbs().maxCoeff(), 1e-15);
+  EXPECT_LT((r.chain->link_inertias()[0].inertia() - Matrix3d(diagonal.asDiagonal())).cwiseAbs().maxCoeff(), 1e-15);
   // a link below the tip rides on the last joint
   const Result to_b = chasles::chain_from_urdf<double, 8>(text, "b");
   ASSERT_TRUE(to_b) << to_b.error;
-  EXPECT_EQ(to_b.link_inertias[0].mass(), 1.0 + 1.0 + 2.0 + 2.0);
+  EXPECT_EQ(to_b.chain->link_inertias()[0].mass(), 1.0 + 1.0 + 2.0 + 2.0);
 }
 
 TEST(Urdf, FloatChainAndPathSource) {

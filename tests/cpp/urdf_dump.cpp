@@ -88,7 +88,7 @@ int main(int argc, char** argv) {
   vector("effort_limits", c.effort_limits());
   std::printf("\"link_inertias\": [");
   for (Eigen::Index i = 0; i < n; ++i) {
-    const auto& body = r.link_inertias[static_cast<std::size_t>(i)];
+    const auto& body = r.chain->link_inertias()[static_cast<std::size_t>(i)];
     const Eigen::Matrix3d& I = body.inertia();
     const double row[10] = {body.mass(), body.com()(0), body.com()(1), body.com()(2), I(0, 0),
                             I(0, 1),     I(0, 2),       I(1, 1),       I(1, 2),       I(2, 2)};
