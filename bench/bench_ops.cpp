@@ -22,6 +22,7 @@
 #include "chasles/chasles.hpp"
 #include "chasles/dynamics.hpp"
 #include "chasles/kinematics.hpp"
+#include "support/arms.hpp"
 
 namespace {
 
@@ -75,30 +76,12 @@ void add(const std::string& name, std::vector<In> in, Op op) {
   benchmark::RegisterBenchmark(name.c_str(), [in = std::move(in), op](benchmark::State& s) { run(s, in, op); });
 }
 
-/// The UR5's space screws (v, w) and home pose, metres, optionally behind a
-/// prismatic rail joint along (1, 2, 0) / sqrt(5).
-template <typename S, typename C>
-C ur5_chain(int n) {
-  const S W1 = S(0.109), W2 = S(0.082), L1 = S(0.425), L2 = S(0.392), H1 = S(0.089), H2 = S(0.095);
-  typename C::Screws screws(6, n);
-  const int o = n - 6;
-  if (o == 1) screws.col(0) << S(1 / std::sqrt(5.0)), S(2 / std::sqrt(5.0)), 0, 0, 0, 0;
-  screws.col(o + 0) << 0, 0, 0, 0, 0, 1;
-  screws.col(o + 1) << -H1, 0, 0, 0, 1, 0;
-  screws.col(o + 2) << -H1, 0, L1, 0, 1, 0;
-  screws.col(o + 3) << -H1, 0, L1 + L2, 0, 1, 0;
-  screws.col(o + 4) << -W1, L1 + L2, 0, 0, 0, -1;
-  screws.col(o + 5) << H2 - H1, 0, L1 + L2, 0, 1, 0;
-  Eigen::Matrix<S, 4, 4> M;
-  M << -1, 0, 0, L1 + L2, 0, 0, 1, W1 + W2, 0, 1, 0, H1 - H2, 0, 0, 0, 1;
-  return C(screws, chasles::SE3<S>::from_matrix_unchecked(M));
-}
 
 /// Chain/<op>/<input>/<scalar> over joint vectors uniform in [-pi, pi].
 template <typename S, typename C>
 void register_chain(const std::string& input, const std::string& sn, int n) {
   using JV = typename C::JointVector;
-  const C chain = ur5_chain<S, C>(n);
+  const C chain = chasles_test::ur5_chain<C>(n);
   std::mt19937_64 rng(11 + std::uint32_t(n));
   std::uniform_real_distribution<double> u(-kPi, kPi);
   std::vector<JV> th;
@@ -204,7 +187,7 @@ template <typename S, typename D>
 void register_dynamics(const std::string& input, const std::string& sn, int n) {
   using JV = typename D::JointVector;
   using C = chasles::Chain<S, D::Screws::ColsAtCompileTime, D::Screws::MaxColsAtCompileTime>;
-  const C chain = ur5_chain<S, C>(n);
+  const C chain = chasles_test::ur5_chain<C>(n);
   typename D::Inertias inertias;
   std::mt19937_64 rng(17 + std::uint32_t(n));
   std::uniform_real_distribution<double> u(-kPi, kPi), r(-2, 2), m(1, 4), side(0.05, 0.3);

@@ -45,6 +45,7 @@
 #include "chasles/spatial_inertia.hpp"
 #include "chasles/spline.hpp"
 #include "chasles/bspline.hpp"
+#include "support/arms.hpp"
 
 #if defined(__x86_64__) || defined(__i386__)
 #include <x86intrin.h>
@@ -240,17 +241,7 @@ std::vector<Row> run_all(std::size_t calls, const Timer& timer) {
   // A UR5 (Modern Robotics, example 4.5) with joint angles drawn from the
   // same kinds (each joint's angle is a rotation vector's norm, signed).
   using C = Chain<S, 6>;
-  typename C::Screws screws;
-  const S W1 = S(0.109), W2 = S(0.082), L1 = S(0.425), L2 = S(0.392), H1 = S(0.089), H2 = S(0.095);
-  screws.col(0) << 0, 0, 0, 0, 0, 1;
-  screws.col(1) << -H1, 0, 0, 0, 1, 0;
-  screws.col(2) << -H1, 0, L1, 0, 1, 0;
-  screws.col(3) << -H1, 0, L1 + L2, 0, 1, 0;
-  screws.col(4) << -W1, L1 + L2, 0, 0, 0, -1;
-  screws.col(5) << H2 - H1, 0, L1 + L2, 0, 1, 0;
-  Eigen::Matrix<S, 4, 4> home;
-  home << -1, 0, 0, L1 + L2, 0, 0, 1, W1 + W2, 0, 1, 0, H1 - H2, 0, 0, 0, 1;
-  const C chain(screws, SE3<S>::from_matrix_unchecked(home));
+  const C chain = chasles_test::ur5_chain<C>();
   std::vector<typename C::JointVector> joints(kN);
   for (std::size_t i = 0; i < kN; ++i)
     for (int j = 0; j < 6; ++j) joints[i](j) = (n(rng) < 0 ? -1 : 1) * rotation_vector<S>(kinds[i], rng).norm();
@@ -302,61 +293,7 @@ std::vector<Row> run_all(std::size_t calls, const Timer& timer) {
 // Robot-arm operations: inverse kinematics, dynamics, spatial inertia,
 // splines.
 
-/// A Panda-like 7R arm (the Franka Panda's joint axes and points at zero,
-/// links as boxes of its masses, its position limits), as in
-/// tests/fuzz/fuzz_robot.cpp.
-template <typename S>
-struct Panda {
-  using C = chasles::Chain<S, 7>;
-  using D = chasles::Dynamics<S, 7>;
-  typename C::Screws screws;
-  chasles::SE3<S> home;
-  typename D::Inertias inertias;
-  typename C::JointVector lower, upper;
 
-  Panda() {
-    using V3 = Eigen::Vector3d;
-    const V3 axis[7] = {V3(0, 0, 1), V3(0, -1, 0), V3(0, 0, 1), V3(0, 1, 0), V3(0, 0, 1), V3(0, 1, 0), V3(0, 0, -1)};
-    const V3 point[7] = {V3(0, 0, 0.333), V3(0, 0, 0.333), V3(0, 0, 0.649), V3(0.0825, 0, 0.649),
-                         V3(0, 0, 1.033), V3(0, 0, 1.033), V3(0.088, 0, 1.033)};
-    const double mass[7] = {4.97, 0.65, 3.23, 3.59, 1.23, 1.67, 0.74};
-    const V3 box[7] = {V3(0.1, 0.1, 0.3), V3(0.1, 0.1, 0.3), V3(0.1, 0.1, 0.3), V3(0.1, 0.1, 0.3),
-                       V3(0.08, 0.08, 0.35), V3(0.08, 0.08, 0.1), V3(0.06, 0.06, 0.1)};
-    const V3 com[7] = {V3(0, -0.03, 0.28), V3(0, -0.07, 0.37), V3(0.04, 0.02, 0.6), V3(-0.04, 0.04, 0.7),
-                       V3(0, 0.04, 0.8), V3(0.04, 0, 1.02), V3(0.09, 0, 0.98)};
-    const double lo[7] = {-2.8973, -1.7628, -2.8973, -3.0718, -2.8973, -0.0175, -2.8973};
-    const double hi[7] = {2.8973, 1.7628, 2.8973, -0.0698, 2.8973, 3.7525, 2.8973};
-    for (int i = 0; i < 7; ++i) {
-      screws.col(i) = C::revolute_screw(point[i].cast<S>(), axis[i].cast<S>());
-      const double x = box[i][0], y = box[i][1], z = box[i][2], m = mass[i];
-      const V3 moments(m * (y * y + z * z) / 12, m * (x * x + z * z) / 12, m * (x * x + y * y) / 12);
-      inertias[std::size_t(i)] =
-          chasles::SpatialInertia<double>(m, com[i], moments.asDiagonal().toDenseMatrix()).cast<S>();
-      lower(i) = S(lo[i]);
-      upper(i) = S(hi[i]);
-    }
-    Eigen::Matrix4d M;
-    M << 1, 0, 0, 0.088, 0, -1, 0, 0, 0, 0, -1, 0.926, 0, 0, 0, 1;
-    home = chasles::SE3<double>::from_matrix_unchecked(M).cast<S>();
-  }
-};
-
-/// The UR5 of Modern Robotics, example 4.5.
-template <typename S>
-chasles::Chain<S, 6> ur5() {
-  using C = chasles::Chain<S, 6>;
-  typename C::Screws screws;
-  const S W1 = S(0.109), W2 = S(0.082), L1 = S(0.425), L2 = S(0.392), H1 = S(0.089), H2 = S(0.095);
-  screws.col(0) << 0, 0, 0, 0, 0, 1;
-  screws.col(1) << -H1, 0, 0, 0, 1, 0;
-  screws.col(2) << -H1, 0, L1, 0, 1, 0;
-  screws.col(3) << -H1, 0, L1 + L2, 0, 1, 0;
-  screws.col(4) << -W1, L1 + L2, 0, 0, 0, -1;
-  screws.col(5) << H2 - H1, 0, L1 + L2, 0, 1, 0;
-  Eigen::Matrix<S, 4, 4> home;
-  home << -1, 0, 0, L1 + L2, 0, 0, 1, W1 + W2, 0, 1, 0, H1 - H2, 0, 0, 0, 1;
-  return C(screws, chasles::SE3<S>::from_matrix_unchecked(home));
-}
 
 /// The kinds of inverse kinematics problem.
 enum IKKind { kNear, kAway, kUnreachable, kAtLimits, kIKKinds };
@@ -486,11 +423,11 @@ std::vector<Row> run_robot(std::size_t calls, const Timer& timer, std::vector<IK
   using V3 = Eigen::Matrix<S, 3, 1>;
   using V6 = Eigen::Matrix<S, 6, 1>;
   std::vector<Row> rows;
-  const Panda<S> panda;
+  const chasles_test::PandaLike<S> panda;
 
   // Inverse kinematics: the UR5 within [-2 pi, 2 pi] per joint, the Panda-like arm within its limits.
   {
-    const Chain<S, 6> u5 = ur5<S>();
+    const Chain<S, 6> u5 = chasles_test::ur5_chain<Chain<S, 6>>();
     const typename Chain<S, 6>::JointVector lo = Chain<S, 6>::JointVector::Constant(S(-2 * kPi)),
                                             hi = Chain<S, 6>::JointVector::Constant(S(2 * kPi));
     ik_rows("UR5 (6 joints)", u5, lo, hi, calls, timer, rows, table);

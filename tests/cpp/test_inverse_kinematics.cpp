@@ -20,6 +20,7 @@
 
 #include <chasles/inverse_kinematics.hpp>
 
+#include "support/arms.hpp"
 #include "support/group_traits.hpp"
 #include "support/reference.hpp"
 
@@ -30,23 +31,6 @@ using chasles::Chain;
 using chasles::IKOptions;
 using chasles::SE3;
 
-template <typename C>
-C ur5(int n) {
-  using S = typename C::Scalar;
-  const S W1 = S(0.109), W2 = S(0.082), L1 = S(0.425), L2 = S(0.392), H1 = S(0.089), H2 = S(0.095);
-  typename C::Screws screws(6, n);
-  const int o = n - 6;  // a prismatic rail along (1, 2, 0) / sqrt(5) first when n == 7
-  if (o == 1) screws.col(0) << S(1 / std::sqrt(5.0)), S(2 / std::sqrt(5.0)), 0, 0, 0, 0;
-  screws.col(o + 0) << 0, 0, 0, 0, 0, 1;
-  screws.col(o + 1) << -H1, 0, 0, 0, 1, 0;
-  screws.col(o + 2) << -H1, 0, L1, 0, 1, 0;
-  screws.col(o + 3) << -H1, 0, L1 + L2, 0, 1, 0;
-  screws.col(o + 4) << -W1, L1 + L2, 0, 0, 0, -1;
-  screws.col(o + 5) << H2 - H1, 0, L1 + L2, 0, 1, 0;
-  Eigen::Matrix<S, 4, 4> M;
-  M << -1, 0, 0, L1 + L2, 0, 0, 1, W1 + W2, 0, 1, 0, H1 - H2, 0, 0, 0, 1;
-  return C(screws, SE3<S>::from_matrix_unchecked(M));
-}
 
 /// |log(g^-1 T)| parts by the long double reference forward kinematics.
 template <typename C>
@@ -83,7 +67,7 @@ TYPED_TEST(InverseKinematics, ErrorJacobianMatchesCentralDifferences) {
   using S = typename C::Scalar;
   using JV = typename C::JointVector;
   const int n = TypeParam::joints;
-  const C chain = ur5<C>(n);
+  const C chain = ur5_chain<C>(n);
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-2.5, 2.5);
   for (int trial = 0; trial < 20; ++trial) {
@@ -116,7 +100,7 @@ TYPED_TEST(InverseKinematics, SolvesReachableTargetsFromNearbySeeds) {
   using S = typename C::Scalar;
   using JV = typename C::JointVector;
   const int n = TypeParam::joints;
-  const C chain = ur5<C>(n);
+  const C chain = ur5_chain<C>(n);
   JV lower(n), upper(n);
   for (int i = 0; i < n; ++i) lower(i) = S(-2 * kPi), upper(i) = S(2 * kPi);
   if (n == 7) lower(0) = S(-1), upper(0) = S(1);  // the rail
@@ -159,7 +143,7 @@ TYPED_TEST(InverseKinematics, RandomSeedsWithRestarts) {
   using S = typename C::Scalar;
   using JV = typename C::JointVector;
   const int n = TypeParam::joints;
-  const C chain = ur5<C>(n);
+  const C chain = ur5_chain<C>(n);
   JV lower(n), upper(n);
   for (int i = 0; i < n; ++i) lower(i) = S(-2 * kPi), upper(i) = S(2 * kPi);
   if (n == 7) lower(0) = S(-1), upper(0) = S(1);
@@ -201,7 +185,7 @@ TYPED_TEST(InverseKinematics, ZeroIterationsAtASolution) {
   using C = typename TypeParam::Chain;
   using S = typename C::Scalar;
   const int n = TypeParam::joints;
-  const C chain = ur5<C>(n);
+  const C chain = ur5_chain<C>(n);
   typename C::JointVector q(n);
   for (int i = 0; i < n; ++i) q(i) = S(0.1) * S(i + 1);
   const auto r = chasles::inverse_kinematics(chain, chain.forward(q), q);
@@ -215,7 +199,7 @@ TYPED_TEST(InverseKinematics, RespectsJointLimits) {
   using S = typename C::Scalar;
   using JV = typename C::JointVector;
   const int n = TypeParam::joints;
-  const C chain = ur5<C>(n);
+  const C chain = ur5_chain<C>(n);
   JV lower(n), upper(n), qt(n), q0(n);
   for (int i = 0; i < n; ++i) {
     lower(i) = S(-0.5), upper(i) = S(0.5);
@@ -242,7 +226,7 @@ TYPED_TEST(InverseKinematics, UnreachableTargetIsReportedWithinTheBound) {
   using S = typename C::Scalar;
   using JV = typename C::JointVector;
   const int n = TypeParam::joints;
-  const C chain = ur5<C>(n);
+  const C chain = ur5_chain<C>(n);
   const SE3<S> far(chain.home().rotation(),
                    chain.home().translation() + Eigen::Matrix<S, 3, 1>(S(5), S(5), S(5)));  // ~9 m from a 1 m arm
   JV lower(n), upper(n);

@@ -77,6 +77,7 @@
 
 #include "fuzz_support.hpp"
 #include "properties.hpp"
+#include "support/arms.hpp"
 
 namespace {
 
@@ -90,23 +91,12 @@ constexpr int kJoints = 7;
 template <typename T>
 using IKChain = chasles::Chain<T, Eigen::Dynamic, kJoints>;
 
-/// The first n joints of a UR5 (Modern Robotics, example 4.5) on a prismatic
-/// rail along (1, 2, 0) / sqrt(5) (tests/cpp/test_inverse_kinematics.cpp).
+/// The first n joints of the UR5 of Modern Robotics on its prismatic rail
+/// (tests/cpp/support/arms.hpp).
 template <typename T>
 IKChain<T> rail_ur5(int n) {
-  const T W1 = T(0.109), W2 = T(0.082), L1 = T(0.425), L2 = T(0.392), H1 = T(0.089), H2 = T(0.095);
-  Eigen::Matrix<T, 6, 7> all;
-  all.col(0) << T(1 / std::sqrt(5.0)), T(2 / std::sqrt(5.0)), 0, 0, 0, 0;
-  all.col(1) << 0, 0, 0, 0, 0, 1;
-  all.col(2) << -H1, 0, 0, 0, 1, 0;
-  all.col(3) << -H1, 0, L1, 0, 1, 0;
-  all.col(4) << -H1, 0, L1 + L2, 0, 1, 0;
-  all.col(5) << -W1, L1 + L2, 0, 0, 0, -1;
-  all.col(6) << H2 - H1, 0, L1 + L2, 0, 1, 0;
-  typename IKChain<T>::Screws screws = all.leftCols(n);
-  Mat4<T> M;
-  M << -1, 0, 0, L1 + L2, 0, 0, 1, W1 + W2, 0, 1, 0, H1 - H2, 0, 0, 0, 1;
-  return IKChain<T>(screws, chasles::SE3<T>::from_matrix_unchecked(M));
+  const typename IKChain<T>::Screws screws = chasles_test::railed_ur5_screws<T>().leftCols(n);
+  return IKChain<T>(screws, chasles_test::ur5_home<T>());
 }
 
 template <typename T>
@@ -269,31 +259,12 @@ void fuzz_inertia(Bytes& in) {
 template <typename T>
 using Dyn = chasles::Dynamics<T, Eigen::Dynamic, kJoints>;
 
-/// A Panda-like arm (joint axes and points of the Franka Panda at zero,
-/// links as boxes of the Panda's masses): the first n joints.
+/// The first n joints of the Panda-like arm (tests/cpp/support/arms.hpp).
 template <typename T>
 Dyn<T> panda_like(int n) {
-  using V3 = Eigen::Vector3d;
-  const V3 axis[7] = {V3(0, 0, 1), V3(0, -1, 0), V3(0, 0, 1), V3(0, 1, 0), V3(0, 0, 1), V3(0, 1, 0), V3(0, 0, -1)};
-  const V3 point[7] = {V3(0, 0, 0.333), V3(0, 0, 0.333), V3(0, 0, 0.649), V3(0.0825, 0, 0.649),
-                       V3(0, 0, 1.033), V3(0, 0, 1.033), V3(0.088, 0, 1.033)};
-  const double mass[7] = {4.97, 0.65, 3.23, 3.59, 1.23, 1.67, 0.74};
-  const V3 box[7] = {V3(0.1, 0.1, 0.3), V3(0.1, 0.1, 0.3), V3(0.1, 0.1, 0.3), V3(0.1, 0.1, 0.3),
-                     V3(0.08, 0.08, 0.35), V3(0.08, 0.08, 0.1), V3(0.06, 0.06, 0.1)};
-  const V3 com[7] = {V3(0, -0.03, 0.28), V3(0, -0.07, 0.37), V3(0.04, 0.02, 0.6), V3(-0.04, 0.04, 0.7),
-                     V3(0, 0.04, 0.8), V3(0.04, 0, 1.02), V3(0.09, 0, 0.98)};
-  typename Dyn<T>::Screws S(6, n);
-  typename Dyn<T>::Inertias I;
-  for (int i = 0; i < n; ++i) {
-    S.col(i) = chasles::Chain<double, 7>::revolute_screw(point[i], axis[i]).template cast<T>();
-    const double x = box[i][0], y = box[i][1], z = box[i][2], mi = mass[i];
-    const V3 moments(mi * (y * y + z * z) / 12, mi * (x * x + z * z) / 12, mi * (x * x + y * y) / 12);
-    I[std::size_t(i)] = chasles::SpatialInertia<double>(mi, com[i], moments.asDiagonal().toDenseMatrix()).template cast<T>();
-  }
-  Mat4<double> M;
-  M << 1, 0, 0, 0.088, 0, -1, 0, 0, 0, 0, -1, 0.926, 0, 0, 0, 1;
-  return Dyn<T>(S, chasles::SE3<double>::from_matrix_unchecked(M).template cast<T>(), I,
-                Vec3<T>(T(0), T(0), T(-9.81)));
+  const chasles_test::PandaLike<T> panda;
+  const typename Dyn<T>::Screws S = panda.screws.leftCols(n);
+  return Dyn<T>(S, panda.home, panda.inertias, Vec3<T>(T(0), T(0), T(-9.81)));
 }
 
 template <typename T>
