@@ -234,6 +234,19 @@ void register_all(const std::string& sn) {
     std::vector<SO3<S>> Rs;
     for (const auto& w : ws) Rs.push_back(SO3<S>::exp(w));
     add("SO3/log/" + kind + "/" + sn, Rs, [](const SO3<S>& R) { return R.log(); });
+    // The speed issue's peers on every kind of input: Eigen's exp to a
+    // quaternion (4 numbers out, no matrix) and its log from a stored
+    // quaternion.
+    add("Eigen/quaternion_exp/" + kind + "/" + sn, ws, [](const V3& w) {
+      const S a = w.norm();
+      return Q(Eigen::AngleAxis<S>(a, w / a));
+    });
+    std::vector<Q> qs;
+    for (const auto& R : Rs) qs.push_back(R.quaternion());
+    add("Eigen/AngleAxis_from_quaternion/" + kind + "/" + sn, qs, [](const Q& q) {
+      const Eigen::AngleAxis<S> aa(q);
+      return V3(aa.angle() * aa.axis());
+    });
     if (kind == "generic") {
       add("Eigen/AngleAxis_to_matrix/" + kind + "/" + sn, ws, [](const V3& w) {
         const S a = w.norm();

@@ -37,6 +37,18 @@ struct Thresholds;
 //   in log, equal to theta^2 to within the series' own accuracy), never theta,
 //   so that no square root of 0 is ever formed (its derivative is infinite).
 //
+// exp_polynomial_theta2: up to this theta^2, exp's coefficients A, B, C
+//   (detail/series.hpp, exp_coefficients) are polynomials in theta^2 for
+//   float and double, fitted on [0, 10]: past pi^2 (9.87), so every
+//   rotation vector of a log (angle <= pi) and every joint step of an arm
+//   up to 3.16 rad is on the fast path, and little further, since the
+//   degree the accuracy needs grows with the interval (on [0, 10] A needs
+//   degree 10 in double). Beyond it the closed forms (sqrt, sincos). Long
+//   double has no polynomials (0: never taken).
+// exp_polynomial_center: the polynomials are in t - 7, not t: centered
+//   near the top of the interval, where the coefficients multiply the
+//   largest matrices, their terms cancel least (series.hpp measures it).
+//
 // rotation_tolerance: default for the checked constructors
 //   (`from_matrix`): the largest accepted defect max(|M^T M - I|_max,
 //   |det M - 1|). sqrt(eps): data written with at least half the digits of
@@ -64,6 +76,8 @@ template <>
 struct Thresholds<float> {
   static constexpr float epsilon = 1.1920929e-07f;
   static constexpr float taylor_theta2 = 4.9215667e-03f;       // eps^(1/3)
+  static constexpr float exp_polynomial_theta2 = 10.0f;        // past pi^2
+  static constexpr float exp_polynomial_center = 7.0f;
   static constexpr float rotation_tolerance = 3.4526698e-04f;  // eps^(1/2)
   static constexpr float huge_theta2 = 3.4e30f;                // max / 1e8
   static constexpr float tiny_norm2 = 1.0f / huge_theta2;
@@ -83,6 +97,8 @@ template <>
 struct Thresholds<double> {
   static constexpr double epsilon = 2.220446049250313e-16;
   static constexpr double taylor_theta2 = 6.0554544523933395e-06;      // eps^(1/3)
+  static constexpr double exp_polynomial_theta2 = 10.0;                 // past pi^2
+  static constexpr double exp_polynomial_center = 7.0;
   static constexpr double rotation_tolerance = 1.4901161193847656e-08;  // eps^(1/2)
   static constexpr double huge_theta2 = 1.7e300;                        // max / 1e8
   static constexpr double tiny_norm2 = 1.0 / huge_theta2;
@@ -104,6 +120,8 @@ struct Thresholds<long double> {
   // is double, these are merely conservative.
   static constexpr long double epsilon = 1.0842021724855044340e-19L;
   static constexpr long double taylor_theta2 = 4.7683715820312500000e-07L;       // eps^(1/3)
+  static constexpr long double exp_polynomial_theta2 = 0.0L;  // none: series and closed forms
+  static constexpr long double exp_polynomial_center = 0.0L;
   static constexpr long double rotation_tolerance = 3.2927225399135962334e-10L;  // eps^(1/2)
   static constexpr long double huge_theta2 = 1.7e300L;  // as double: safe for both long double formats
   static constexpr long double tiny_norm2 = 1.0L / huge_theta2;

@@ -23,6 +23,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <type_traits>
 
 #include <Eigen/Core>
@@ -40,30 +41,144 @@ struct ExpCoefficients {
   Scalar c;  ///< (theta - sin(theta)) / theta^3
 };
 
-/// A, B, C from theta^2 alone: one sincos of theta/2 above the cutoff.
-/// The compiler drops `c` where a caller does not read it.
+/// sum_i coef(i) x^i, i < N, by Estrin's scheme: the pairs
+/// coef(2i) + coef(2i+1) x, then pairs of those with x^2, then x^4, ...: a
+/// chain of about 2 log2(N) dependent operations instead of Horner's
+/// 2 (N - 1). V is the scalar type, or an Eigen array of K scalars that
+/// evaluates K polynomials of the same degree side by side (one vector
+/// operation each: exp's A and B).
+template <typename V, std::size_t N, typename X, typename Coef>
+inline V estrin(const X& x0, const Coef& coef) noexcept {
+  V v[N];
+  for (std::size_t i = 0; i < N; ++i) v[i] = coef(i);
+  X x = x0;
+  for (std::size_t n = N; n > 1; n = (n + 1) / 2) {
+    for (std::size_t i = 0; 2 * i + 1 < n; ++i) v[i] = v[2 * i] + v[2 * i + 1] * x;
+    if (n % 2 == 1) v[n / 2] = v[n - 1];
+    if (n > 2) x = x * x;
+  }
+  return v[0];
+}
+
+/// Polynomials for A, B and C in u = t - exp_polynomial_center, t =
+/// theta^2, on t in [0, exp_polynomial_theta2] (constants.hpp: 7, and 10,
+/// past pi^2), in place of sqrt, sincos and a divide: the near-minimax
+/// (Chebyshev) fits computed in 50-digit arithmetic and rounded to the type.
+/// tests/tools/fit_exp_polynomials.py makes them and measures them:
+/// evaluated as below, in the type, against 40-digit values at 6200 points
+/// of [0, 10] (uniform, random, and geometric down to 1e-12), the worst
+/// absolute errors, and the same times theta for A (which multiplies [w]) and
+/// times t for B and C (which multiply [w]^2), i.e. as they reach a matrix:
+///   double: A degree 10 1.46 eps (1.93 times theta), B 10 0.51 (2.68 times t),
+///           C 9 0.27 (1.27 times t);
+///   float:  A degree 6 1.43 eps (1.66), B 6 0.59 (3.43), C 5 0.22 (1.07);
+/// each degree the lowest at which the fit's own error is far below that
+/// rounding (B takes A's, one more than it needs: they are evaluated side by
+/// side, `ab` holding their coefficients in pairs). Centered: in powers of t itself (f(0) + t g(t), exact at 0)
+/// the terms of B at t = pi^2 are 0.5, -0.41, 0.14, ... for a value of 0.2,
+/// and that cancellation reached the matrix as 6.1 eps (the closed form:
+/// 4.1): SO3 exp erred by 5.6 eps near pi, past test_accuracy's 4.5. The
+/// centered fits reach 2.7, and SO3 exp's worst entrywise error near pi
+/// (2000 random axes, theta in [2.5, pi]) is 3.8 eps against the closed
+/// form's 5.8. They do not give f(0) exactly, so below taylor_theta2 the
+/// series is used as before (exact at 0, autodiff derivatives exact there).
+/// The closed forms err by a few eps too. Only float and double have the
+/// polynomials; other real types take the series and the closed forms.
+template <typename Real>
+struct ExpPolynomials {
+  static constexpr bool available = false;
+};
+
+template <>
+struct ExpPolynomials<double> {
+  static constexpr bool available = true;
+  alignas(2 * sizeof(double)) static constexpr double ab[][2] = {{0.17982485208003604, 0.2685098191583184},
+                                                                 {-0.07567097044201891, -0.02551391330261434},
+                                                                 {0.004896445903072807, 0.0009423100988728012},
+                                                                 {-0.0001324877834490328, -1.8033683099142838e-05},
+                                                                 {1.988217267223815e-06, 2.103871668592042e-07},
+                                                                 {-1.9042606768955807e-08, -1.6522057338245808e-09},
+                                                                 {1.2674937763121227e-10, 9.331690901748137e-12},
+                                                                 {-6.21000254748272e-13, -3.973770716349296e-14},
+                                                                 {2.3346040986261543e-15, 1.321705996211109e-16},
+                                                                 {-6.94479565159577e-18, -3.5269488640657977e-19},
+                                                                 {1.755264802987073e-20, 8.051663747841043e-22}};
+  static constexpr double c[] = {0.11716787827428056,
+                                 -0.005928129690323091,
+                                 0.00014738339817861249,
+                                 -2.1279449613694143e-06,
+                                 1.9961099163359695e-08,
+                                 -1.3121319906013034e-10,
+                                 6.376888363585834e-13,
+                                 -2.38408481750134e-15,
+                                 7.065156482087271e-18,
+                                 -1.7728724485362963e-20};
+};
+
+template <>
+struct ExpPolynomials<float> {
+  static constexpr bool available = true;
+  alignas(2 * sizeof(float)) static constexpr float ab[][2] = {{0.1798248589038849f, 0.26850980520248413f},
+                                                               {-0.07567097246646881f, -0.025513913482427597f},
+                                                               {0.004896446131169796f, 0.0009423101437278092f},
+                                                               {-0.00013248820323497057f, -1.8033710148301907e-05f},
+                                                               {1.9881156276824186e-06f, 2.1038069064616138e-07f},
+                                                               {-1.901587332042709e-08f, -1.6505081745776806e-09f},
+                                                               {1.3581735736067913e-10f, 9.909129072838141e-12f}};
+  static constexpr float c[] = {0.1171678751707077f,
+                                -0.005928129889070988f,
+                                0.0001473836018703878f,
+                                -2.127852212652215e-06f,
+                                1.994574461150478e-08f,
+                                -1.3916268137847965e-10f};
+};
+
+/// A, B, C from theta^2 alone: the series below the cutoff; above it, for
+/// float and double (and autodiff scalars over them) up to
+/// exp_polynomial_theta2 the polynomials above (no libm call), and beyond
+/// it, or for other real types, one sincos of theta/2. The compiler drops
+/// `c` where a caller does not read it.
 template <typename Scalar>
 inline ExpCoefficients<Scalar> exp_coefficients(const Scalar& theta2) noexcept {
   using std::cos;
   using std::sin;
   using std::sqrt;
   ExpCoefficients<Scalar> k;
+  using P = ExpPolynomials<RealOf<Scalar>>;
   if (theta2 < ThresholdsOf<Scalar>::taylor_theta2) {
     const Scalar& t = theta2;
     k.a = Scalar(1) - t * (Scalar(1) / Scalar(6) - t * (Scalar(1) / Scalar(120)));
     k.b = Scalar(0.5) - t * (Scalar(1) / Scalar(24) - t * (Scalar(1) / Scalar(720)));
     k.c = Scalar(1) / Scalar(6) - t * (Scalar(1) / Scalar(120) - t * (Scalar(1) / Scalar(5040)));
-  } else {
-    const Scalar theta = sqrt(theta2);
-    const Scalar sh = sin(Scalar(0.5) * theta);
-    const Scalar ch = cos(Scalar(0.5) * theta);
-    // sin(theta) = 2 sin(theta/2) cos(theta/2); 1 - cos(theta) = 2 sin^2(theta/2):
-    // no cancellation at small theta.
-    const Scalar inv = Scalar(1) / theta;  // one divide for all three
-    k.a = Scalar(2) * sh * ch * inv;
-    k.b = Scalar(2) * sh * sh * inv * inv;
-    k.c = (Scalar(1) - k.a) * inv * inv;
+    return k;
   }
+  if constexpr (P::available) {
+    if (theta2 <= ThresholdsOf<Scalar>::exp_polynomial_theta2) {
+      constexpr std::size_t nab = std::extent<decltype(P::ab)>::value, nc = std::extent<decltype(P::c)>::value;
+      const Scalar u = theta2 - Scalar(ThresholdsOf<Scalar>::exp_polynomial_center);
+      if constexpr (std::is_floating_point<Scalar>::value) {
+        // A and B in the two lanes of one vector: half the operations.
+        using Pair = Eigen::Array<Scalar, 2, 1>;
+        const Pair ab = estrin<Pair, nab>(u, [](std::size_t i) { return Pair(P::ab[i][0], P::ab[i][1]); });
+        k.a = ab[0];
+        k.b = ab[1];
+      } else {
+        k.a = estrin<Scalar, nab>(u, [](std::size_t i) { return Scalar(P::ab[i][0]); });
+        k.b = estrin<Scalar, nab>(u, [](std::size_t i) { return Scalar(P::ab[i][1]); });
+      }
+      k.c = estrin<Scalar, nc>(u, [](std::size_t i) { return Scalar(P::c[i]); });
+      return k;
+    }
+  }
+  const Scalar theta = sqrt(theta2);
+  const Scalar sh = sin(Scalar(0.5) * theta);
+  const Scalar ch = cos(Scalar(0.5) * theta);
+  // sin(theta) = 2 sin(theta/2) cos(theta/2); 1 - cos(theta) = 2 sin^2(theta/2):
+  // no cancellation at small theta.
+  const Scalar inv = Scalar(1) / theta;  // one divide for all three
+  k.a = Scalar(2) * sh * ch * inv;
+  k.b = Scalar(2) * sh * sh * inv * inv;
+  k.c = (Scalar(1) - k.a) * inv * inv;
   return k;
 }
 
