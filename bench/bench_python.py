@@ -229,6 +229,39 @@ def kinematics_table(rep: int) -> None:
     print()
 
 
+THREADS_TARGET_SPEEDUP = 1.7  # 2 threads against 1 at N = 1e6 (the speed issue)
+ONE_THREAD_TARGET_NS = {"SO3 exp": 15, "SE3 exp": 22}  # per element at N = 1e5, one thread
+
+
+def threads_table(rep: int) -> None:
+    """set_num_threads: per element on 1 and 2 threads (N = 1e5 and 1e6),
+    the speedup, and at N = 2 grains (32768: the smallest batch split) that
+    the split does not cost more than it gains."""
+    rng = np.random.default_rng(3)
+    before = chasles.get_num_threads()
+    print(f"### Python array functions on threads (set_num_threads; ns per element, median of {rep})\n")
+    print("| op | N | 1 thread | 2 threads | speedup | target speedup | target ns (1 thread) |")
+    print("| --- | ---: | ---: | ---: | ---: | ---: | ---: |")
+    for n in (32_768, 100_000, 1_000_000):
+        W = rng.normal(size=(n, 3))
+        XI = np.concatenate([rng.normal(size=(n, 3)), W], axis=1)
+        Rs, Gs = chasles.so3_exp(W), chasles.se3_exp(XI)
+        ops = {"SO3 exp": lambda: chasles.so3_exp(W), "SO3 log": lambda: chasles.so3_log(Rs),
+               "SE3 exp": lambda: chasles.se3_exp(XI), "SE3 log": lambda: chasles.se3_log(Gs),
+               "SE3 compose": lambda: chasles.se3_compose(Gs, Gs)}
+        for op, fn in ops.items():
+            times = []
+            for k in (1, 2):
+                chasles.set_num_threads(k)
+                times.append(median_time(fn, rep, 0.2) / n)
+            chasles.set_num_threads(before)
+            target = ONE_THREAD_TARGET_NS.get(op, "") if n == 100_000 else ""
+            speedup_target = THREADS_TARGET_SPEEDUP if n == 1_000_000 and op != "SE3 compose" else ""
+            print(f"| {op} | {n:.0e} | {times[0] * 1e9:.3g} | {times[1] * 1e9:.3g} | {times[0] / times[1]:.2f} | "
+                  f"{speedup_target} | {target} |")
+    print()
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--repeats", type=int, default=7)
@@ -463,7 +496,8 @@ def main() -> int:
         print(f"| {op} | {fig(ours * 1e6)} | {fig(peer * 1e6) if peer else ''} | {ratio} |")
     print()
 
-    # ---- kinematics ---------------------------------------------------------
+    # ---- threads and kinematics ----------------------------------------------
+    threads_table(rep)
     kinematics_table(rep)
     return 0
 

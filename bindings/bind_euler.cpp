@@ -42,9 +42,10 @@ constexpr const char* kSequences[24] = {"xyz", "xzy", "yxz", "yzx", "zxy", "zyx"
 
 /// An Euler sequence argument, a str checked in the function body (so that
 /// the error names the call); shown as str in signatures and stubs.
-struct CHASLES_PY_HIDDEN SequenceLike {
-  py::handle obj;
+struct SequenceName {
+  static constexpr auto text = py::detail::const_name("str");
 };
+using SequenceLike = AnyObject<SequenceName>;
 
 /// The index of a sequence in kSequences, or TypeError / ValueError naming `what`.
 int sequence_index(py::handle seq, const char* what) {
@@ -167,26 +168,6 @@ void def_rpy_ufuncs(py::module_& m) {
 }
 
 }  // namespace
-
-}  // namespace chasles_py
-
-namespace pybind11 {
-namespace detail {
-template <>
-struct type_caster<chasles_py::SequenceLike> {
-  PYBIND11_TYPE_CASTER(chasles_py::SequenceLike, const_name("str"));
-  bool load(handle src, bool /*convert*/) {
-    value.obj = src;
-    return static_cast<bool>(src);
-  }
-  static handle cast(const chasles_py::SequenceLike& src, return_value_policy, handle) {
-    return src.obj.inc_ref();
-  }
-};
-}  // namespace detail
-}  // namespace pybind11
-
-namespace chasles_py {
 
 void bind_euler(py::module_& m) {
   def_all_ufuncs(m, std::make_integer_sequence<int, 24>());

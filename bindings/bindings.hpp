@@ -19,5 +19,6 @@ void bind_euler(py::module_& m);         // bind_euler.cpp: SO3 Euler angles and
 void bind_spline(py::module_& m);        // bind_spline.cpp: the cores of SO3Spline, SE3Spline
 void bind_bspline(py::module_& m);       // bind_bspline.cpp: classes SO3BSpline, SE3BSpline
 void bind_dynamics(py::module_& m);      // bind_dynamics.cpp: class SpatialInertia, the dynamics ufuncs
+void bind_threads(py::module_& m);       // bind_threads.cpp: set_num_threads, get_num_threads
 
 }  // namespace chasles_py

@@ -27,7 +27,8 @@
 //   float64 arrays, built with numpy's C API directly (no shape vectors).
 // - Argument types whose conversion (and error) happens in the function body,
 //   naming the argument, and which read well in signatures and stubs:
-//   `ArrayLike` (numpy.typing.ArrayLike), `RealLike` (float), `Obj<T>` (the
+//   `ArrayLike` (numpy.typing.ArrayLike), `RealLike` (float), `IndexLike`
+//   (typing.SupportsIndex), `Obj<T>` (the
 //   bound class T, checked with one type test: fast to reject in overload
 //   sets), `Returns<T>` (a T or NotImplemented, shown as T).
 // - Protocol helpers: `array_protocol` (__array__ with numpy 2's dtype and
@@ -60,25 +61,41 @@ namespace chasles_py {
 
 namespace py = pybind11;
 
-/// An argument taken as any array-like object, converted in the function body.
-struct CHASLES_PY_HIDDEN ArrayLike {
+/// An argument taken as any object and converted (or refused, naming it) in
+/// the function body; signatures and the stub show it as `Name::text`.
+template <typename Name>
+struct CHASLES_PY_HIDDEN AnyObject {
   py::handle obj;
 };
 
-/// An argument taken as any real number, converted in the function body.
-struct CHASLES_PY_HIDDEN RealLike {
-  py::handle obj;
+namespace names {
+struct ArrayLike {
+  static constexpr auto text = py::detail::const_name("numpy.typing.ArrayLike");
 };
-
-/// A dtype argument (numpy's __array__ protocol), taken as any object.
-struct CHASLES_PY_HIDDEN DTypeLike {
-  py::handle obj;
+struct RealLike {
+  static constexpr auto text = py::detail::const_name("float");
 };
+struct IndexLike {
+  static constexpr auto text = py::detail::const_name("typing.SupportsIndex");
+};
+struct DTypeLike {
+  static constexpr auto text = py::detail::const_name("numpy.typing.DTypeLike");
+};
+struct CopyFlag {
+  static constexpr auto text = py::detail::const_name("bool | None");
+};
+}  // namespace names
 
+/// Any array-like object.
+using ArrayLike = AnyObject<names::ArrayLike>;
+/// Any real number.
+using RealLike = AnyObject<names::RealLike>;
+/// Any integer (an object with __index__).
+using IndexLike = AnyObject<names::IndexLike>;
+/// A dtype argument (numpy's __array__ protocol).
+using DTypeLike = AnyObject<names::DTypeLike>;
 /// The copy argument of __array__: True, False or None.
-struct CHASLES_PY_HIDDEN CopyFlag {
-  py::handle obj;
-};
+using CopyFlag = AnyObject<names::CopyFlag>;
 
 /// A result that is a T, or NotImplemented for an operator whose operand
 /// it does not take; signatures show T.
@@ -129,26 +146,14 @@ InstanceState instance_state(py::handle h, const T** value) {
 namespace pybind11 {
 namespace detail {
 
-template <>
-struct type_caster<chasles_py::DTypeLike> {
-  PYBIND11_TYPE_CASTER(chasles_py::DTypeLike, const_name("numpy.typing.DTypeLike"));
+template <typename Name>
+struct type_caster<chasles_py::AnyObject<Name>> {
+  PYBIND11_TYPE_CASTER(chasles_py::AnyObject<Name>, Name::text);
   bool load(handle src, bool /*convert*/) {
     value.obj = src;
     return static_cast<bool>(src);
   }
-  static handle cast(const chasles_py::DTypeLike& src, return_value_policy, handle) {
-    return src.obj.inc_ref();
-  }
-};
-
-template <>
-struct type_caster<chasles_py::CopyFlag> {
-  PYBIND11_TYPE_CASTER(chasles_py::CopyFlag, const_name("bool | None"));
-  bool load(handle src, bool /*convert*/) {
-    value.obj = src;
-    return static_cast<bool>(src);
-  }
-  static handle cast(const chasles_py::CopyFlag& src, return_value_policy, handle) {
+  static handle cast(const chasles_py::AnyObject<Name>& src, return_value_policy, handle) {
     return src.obj.inc_ref();
   }
 };
@@ -189,30 +194,6 @@ struct type_caster<chasles_py::Obj<T>> {
   operator chasles_py::Obj<T>&() { return value; }
   template <typename U>
   using cast_op_type = chasles_py::Obj<T>&;
-};
-
-template <>
-struct type_caster<chasles_py::ArrayLike> {
-  PYBIND11_TYPE_CASTER(chasles_py::ArrayLike, const_name("numpy.typing.ArrayLike"));
-  bool load(handle src, bool /*convert*/) {
-    value.obj = src;
-    return static_cast<bool>(src);
-  }
-  static handle cast(const chasles_py::ArrayLike& src, return_value_policy, handle) {
-    return src.obj.inc_ref();
-  }
-};
-
-template <>
-struct type_caster<chasles_py::RealLike> {
-  PYBIND11_TYPE_CASTER(chasles_py::RealLike, const_name("float"));
-  bool load(handle src, bool /*convert*/) {
-    value.obj = src;
-    return static_cast<bool>(src);
-  }
-  static handle cast(const chasles_py::RealLike& src, return_value_policy, handle) {
-    return src.obj.inc_ref();
-  }
 };
 
 }  // namespace detail

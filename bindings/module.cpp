@@ -21,5 +21,6 @@ PYBIND11_MODULE(_core, m) {
   chasles_py::bind_euler(m);  // after SO3: adds its Euler methods
   chasles_py::bind_spline(m);
   chasles_py::bind_bspline(m);
+  chasles_py::bind_threads(m);
   chasles_py::finish_functions(m);  // last: signatures for help() and inspect (signatures.hpp)
 }

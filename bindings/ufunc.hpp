@@ -59,6 +59,7 @@
 
 #include "bindings.hpp"
 #include "numpy_capi.hpp"
+#include "parallel.hpp"
 
 // Flatten: the loop inlines its whole kernel. Left to itself, the compiler
 // kept some conversions out of line (SE3::from_matrix_unchecked, Eigen's 4x4
@@ -535,7 +536,8 @@ void store_invalid_results(char** args, ssize count, const ssize* steps, const S
 
 /// The numpy loop (PyUFuncGenericFunction) of a kernel for T: reads the
 /// core strides numpy passes after the outer ones and n, and runs the
-/// layout's instantiation. `data` points to the Entry. An n outside
+/// layout's instantiation, split across threads for a large batch
+/// (parallel.hpp). `data` points to the Entry. An n outside
 /// [1, the cores' maximum] gives NaN results (the kernels never see it;
 /// the callers check n first, with a message).
 template <typename P, typename T, typename E>
@@ -554,14 +556,21 @@ void loop(char** args, const ssize* dims, const ssize* steps, void* data) noexce
       return;
     }
   }
-  if constexpr (std::is_same_v<typename E::ModelType, NoModel>) {
-    dispatch<P, T>(args, dims[0], steps, core, n, entry.kernel, std::make_index_sequence<N>(),
-                   std::make_index_sequence<P::nout>());
-  } else {
-    constexpr std::size_t K = E::ModelType::size;
-    run_model<P, T>(args, dims[0], steps, core, n, entry.model.make, entry.kernel, std::make_index_sequence<K>(),
-                    shifted<K>(std::make_index_sequence<N - K>()));
-  }
+  constexpr bool with_model = !std::is_same_v<typename E::ModelType, NoModel>;
+  constexpr ssize grain = with_model ? parallel::model_grain : parallel::elementwise_grain;
+  // The elements [begin, end) (parallel.hpp: on one thread or several).
+  parallel::for_ranges(dims[0], grain, [&](ssize begin, ssize end) {
+    std::array<char*, P::nops> at;
+    for (std::size_t j = 0; j < P::nops; ++j) at[j] = args[j] + begin * steps[j];
+    if constexpr (with_model) {
+      constexpr std::size_t K = E::ModelType::size;
+      run_model<P, T>(at.data(), end - begin, steps, core, n, entry.model.make, entry.kernel,
+                      std::make_index_sequence<K>(), shifted<K>(std::make_index_sequence<N - K>()));
+    } else {
+      dispatch<P, T>(at.data(), end - begin, steps, core, n, entry.kernel, std::make_index_sequence<N>(),
+                     std::make_index_sequence<P::nout>());
+    }
+  });
   clear_floating_point_flags();
 }
 

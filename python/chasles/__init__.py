@@ -26,9 +26,11 @@ apply, as for ``np.matmul``:
   choose otherwise);
 - ``out=`` writes into the caller's array and returns it, ``axes=`` picks
   the core axes, ``where=`` is not supported by generalized ufuncs;
-- the GIL is released during the loop, and arrays of other libraries that
-  implement ``__array_ufunc__`` dispatch: a dask array in gives a dask
-  array out, computed lazily chunk by chunk (its core axes in one chunk);
+- the GIL is released during the loop, which ``set_num_threads(n)``
+  splits across n threads for a large batch (bit-identical results), and
+  arrays of other libraries that implement ``__array_ufunc__`` dispatch: a
+  dask array in gives a dask array out, computed lazily chunk by chunk (its
+  core axes in one chunk);
 - matrices are taken as given, like the C++ unchecked constructors (the
   bottom row of a 4x4 pose is not read), and a NaN gives NaN in its own
   element only.
@@ -79,6 +81,7 @@ from chasles._core import (
     between,
     between_jacobians,
     compose_jacobians,
+    get_num_threads,
     interpolate,
     interpolate_jacobian_t,
     inverse_jacobian,
@@ -104,6 +107,7 @@ from chasles._core import (
     se3_log,
     se3_hat,
     se3_vee,
+    set_num_threads,
     so3_act,
     so3_act_jacobian,
     so3_angle,
@@ -117,7 +121,6 @@ from chasles._core import (
     so3_log,
     so3_vee,
 )
-from chasles._arrays import so3_as_quat, so3_from_quat
 from chasles._mean import se3_mean, so3_mean
 from chasles._random import se3_gaussian, se3_random, so3_gaussian, so3_random
 from chasles._spline import SE3Spline, SO3Spline
@@ -147,6 +150,7 @@ __all__ = [
     "between",
     "between_jacobians",
     "compose_jacobians",
+    "get_num_threads",
     "interpolate",
     "interpolate_jacobian_t",
     "inverse_jacobian",
@@ -175,6 +179,7 @@ __all__ = [
     "se3_mean",
     "se3_random",
     "se3_vee",
+    "set_num_threads",
     "so3_act",
     "so3_act_jacobian",
     "so3_angle",

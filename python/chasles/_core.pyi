@@ -7,7 +7,7 @@ import numpy
 import numpy.dtypes
 import numpy.typing
 import typing
-__all__: list[str] = ['Chain', 'SE3', 'SE3BSpline', 'SO3', 'SO3BSpline', 'Screw', 'SpatialInertia', 'Twist', 'Wrench', 'act_jacobians', 'between', 'between_jacobians', 'compose_jacobians', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'lminus_jacobians', 'log_jacobian', 'lplus', 'lplus_jacobians', 'rminus', 'rminus_jacobians', 'rplus', 'rplus_jacobians', 'se3_act', 'se3_act_jacobian', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_distance', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_vee', 'so3_act', 'so3_act_jacobian', 'so3_angle', 'so3_compose', 'so3_distance', 'so3_exp', 'so3_from_uniforms', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee']
+__all__: list[str] = ['Chain', 'SE3', 'SE3BSpline', 'SO3', 'SO3BSpline', 'Screw', 'SpatialInertia', 'Twist', 'Wrench', 'act_jacobians', 'between', 'between_jacobians', 'compose_jacobians', 'get_num_threads', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'lminus_jacobians', 'log_jacobian', 'lplus', 'lplus_jacobians', 'rminus', 'rminus_jacobians', 'rplus', 'rplus_jacobians', 'se3_act', 'se3_act_jacobian', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_distance', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_vee', 'set_num_threads', 'so3_act', 'so3_act_jacobian', 'so3_angle', 'so3_compose', 'so3_distance', 'so3_exp', 'so3_from_uniforms', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee']
 class SO3:
     """
     A rotation of R^3: an element of SO(3), stored as its 3x3 matrix (float64).
@@ -2885,6 +2885,10 @@ def _so3_spline_fit(times: typing.Annotated[numpy.typing.ArrayLike, numpy.float6
     """
     The coefficients (n, 9) of the spline through checked (n,) float64 times and (n, 3, 3) rotations (row i: c1, c2, c3 of segment i; the last row zero).
     """
+def _threads_started() -> int:
+    """
+    For the tests: how many threads the array functions' loops have started since import.
+    """
 @typing.overload
 def act_jacobians(g: SO3, p: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     ...
@@ -2996,6 +3000,10 @@ def compose_jacobians(a: SE3, b: SE3) -> tuple[numpy.typing.NDArray[numpy.float6
         >>> J_a, J_b = chasles.compose_jacobians(a, b)
         >>> bool(np.allclose(J_a, b.inverse().as_matrix())), bool(np.array_equal(J_b, np.eye(3)))
         (True, True)
+    """
+def get_num_threads() -> int:
+    """
+    The number of threads an array function may split a large batch across (set_num_threads).
     """
 @typing.overload
 def interpolate(a: SO3, b: SO3, t: float) -> SO3:
@@ -3309,6 +3317,21 @@ def rplus_jacobians(g: SE3, xi: numpy.typing.ArrayLike) -> tuple[numpy.typing.ND
         >>> J_g, J_xi = chasles.rplus_jacobians(chasles.SO3(), [0.0, 0.0, 0.0])
         >>> bool(np.array_equal(J_g, np.eye(3))), bool(np.array_equal(J_xi, np.eye(3)))
         (True, True)
+    """
+def set_num_threads(n: typing.SupportsIndex) -> None:
+    """
+    Sets how many threads an array function may split a large batch across.
+    
+    The default is 1, or the environment variable CHASLES_NUM_THREADS read at
+    import. With n > 1, a call on a batch of N elements runs on
+    min(n, N // grain) threads, each on a contiguous part of the batch, inside
+    the ufunc's loop (the GIL is released there as always): grain is 16384
+    elements for the array functions and 512 configurations for the methods of
+    Chain, so a small batch never pays for a thread. Every element is computed
+    by the same code as on one thread: results are bit for bit the same.
+    
+    The setting is the process's, shared by every Python thread. n: an int from
+    1 to 1024 (ValueError outside, TypeError for a non-integer).
     """
 __version__: str = '0.1.0'
 _chain_forward: numpy.ufunc

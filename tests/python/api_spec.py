@@ -720,6 +720,24 @@ class Size(Arg):
         return None  # sequences and other objects: no model
 
 
+class ThreadCount(Arg):
+    """The n of set_num_threads: an int from 1 to 1024."""
+
+    def good(self):
+        return 1
+
+    def judge(self, value):
+        if isinstance(value, (bool, np.bool_)):
+            return Refused(TypeError, (self.label, "1 to 1024"))
+        if isinstance(value, (int, np.integer)):
+            if not 1 <= value <= 1024:
+                return Refused(ValueError, (self.label, "1 to 1024"))
+            return Accepted(int(value))
+        if isinstance(value, (float, complex, str, bytes, np.floating)):
+            return Refused(TypeError, (self.label, "1 to 1024"))
+        return None  # other objects with __index__: no model
+
+
 @dataclass
 class Rng(Arg):
     """The rng of the samplers, as scipy and numpy.random.default_rng take
@@ -1423,6 +1441,12 @@ def _build_spec():
         "so3_from_quat", [("quat", (4,), quat)], kw=("scalar_first",)
     )
     spec["so3_as_quat"] = _array_function("so3_as_quat", [("R",) + R3], kw=("scalar_first",))
+
+    # the threads of the array functions' loops
+    spec["set_num_threads"] = Entry(
+        [[ThreadCount("set_num_threads(n)")]], call=chasles.set_num_threads
+    )
+    spec["get_num_threads"] = Entry([[]], call=chasles.get_num_threads)
 
     # samplers (numpy's Generator draws, C++ kernels map)
     spec["so3_from_uniforms"] = _array_function("so3_from_uniforms", [("u", (3,), None)])

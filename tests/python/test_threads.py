@@ -15,12 +15,15 @@ so a broken measurement fails rather than passes.
 
 from __future__ import annotations
 
+import os
+import subprocess
 import sys
 import threading
 import time
 
 import api_spec as A
 import chasles
+from chasles import _core
 import numpy as np
 import pytest
 
@@ -225,3 +228,132 @@ def test_a_long_call_lets_another_thread_run_all_along():
     assert steps >= max(100, baseline / 10), (
         f"{steps} steps in {seconds:.3f} s; in a sleep as long: {baseline}"
     )
+
+
+# ---- set_num_threads: a large batch split across threads inside the loop --------------
+
+ELEMENTWISE_GRAIN, MODEL_GRAIN = 1 << 14, 1 << 9  # bindings/parallel.hpp
+
+
+@pytest.fixture
+def set_threads():
+    """chasles.set_num_threads, the count restored after the test."""
+    before = chasles.get_num_threads()
+    yield chasles.set_num_threads
+    chasles.set_num_threads(before)
+
+
+def test_split_batches_are_bit_identical_and_start_threads(set_threads):
+    """Every array function, the objects' actions, Chain's kinematics and the
+    B-splines on 2 grains + 3 elements (uneven ranges), on 1, 2, 3 and 7
+    threads: the same bytes, and threads were started."""
+    work = calls(2 * ELEMENTWISE_GRAIN + 3, np.random.default_rng(7))
+    set_threads(1)
+    started = _core._threads_started()
+    reference = [f(*args).tobytes() for _, f, args in work]
+    assert _core._threads_started() == started  # one thread: none started
+    for n in (2, 3, 7):
+        set_threads(n)
+        for (label, f, args), want in zip(work, reference):
+            before = _core._threads_started()
+            assert f(*args).tobytes() == want, f"{label} on {n} threads"
+            assert _core._threads_started() > before, f"{label}: no thread started on {n}"
+
+
+def test_a_batch_below_two_grains_starts_no_thread(set_threads):
+    set_threads(2)
+    for size, grain in ((2 * ELEMENTWISE_GRAIN - 1, ELEMENTWISE_GRAIN), (2 * MODEL_GRAIN - 1, MODEL_GRAIN)):
+        w = np.zeros((size, 3))
+        before = _core._threads_started()
+        if grain == ELEMENTWISE_GRAIN:
+            chasles.so3_exp(w)
+        else:
+            chasles.Chain(np.array([[0.0, 0, 0, 0, 0, 1]]), np.eye(4)).forward(w[:, :1])
+        assert _core._threads_started() == before, size
+    before = _core._threads_started()
+    chasles.so3_exp(np.zeros((2 * ELEMENTWISE_GRAIN, 3)))
+    assert _core._threads_started() == before + 1  # 2 threads: the caller and one started
+
+
+def test_strided_operands_and_out_split_alike(set_threads):
+    """Non-contiguous operands, a broadcast operand and a strided out=: each
+    thread's range starts at its own offset of every operand."""
+    rng = np.random.default_rng(8)
+    n = 3 * ELEMENTWISE_GRAIN + 1
+    w = rng.normal(size=(2 * n, 3))[::2]
+    g = chasles.se3_exp(rng.normal(size=(n, 6)))
+    h = chasles.se3_exp(rng.normal(size=6))  # broadcast: outer stride 0
+    results = []
+    for k in (1, 2):
+        set_threads(k)
+        out = np.full((n, 4, 4, 2), np.nan)[..., 1]
+        chasles.se3_compose(np.swapaxes(np.swapaxes(g, 1, 2).copy(), 1, 2), h, out=out)
+        results.append((chasles.so3_exp(w).tobytes(), out.tobytes(), chasles.se3_act(h, w).tobytes()))
+    assert results[0] == results[1]
+
+
+def test_inverse_kinematics_and_dynamics_split_alike(set_threads):
+    """Chain's inverse kinematics (four results) and dynamics (a model of
+    inertias) on 2 model grains + 5 configurations."""
+    rng = np.random.default_rng(9)
+    screws = np.array(
+        [
+            [0.0, 0.0, 0.0, 0.0, 0.0, 1.0],
+            [-0.089, 0.0, 0.0, 0.0, 1.0, 0.0],
+            [-0.089, 0.0, 0.425, 0.0, 1.0, 0.0],
+            [-0.089, 0.0, 0.817, 0.0, 1.0, 0.0],
+            [-0.109, 0.817, 0.0, 0.0, 0.0, -1.0],
+            [0.006, 0.0, 0.817, 0.0, 1.0, 0.0],
+        ]
+    )
+    home = np.array([[-1.0, 0, 0, 0.817], [0, 0, 1, 0.191], [0, 1, 0, -0.006], [0, 0, 0, 1]])
+    # (mass, com, ixx, ixy, ixz, iyy, iyz, izz) per joint
+    inertias = np.array([[1.0 + i, 0.1 * i, 0.05, -0.02, 0.1, 0.0, 0.0, 0.2, 0.0, 0.3] for i in range(6)])
+    arm = chasles.Chain(screws, home, link_inertias=inertias)
+    n = 2 * MODEL_GRAIN + 5
+    q = rng.uniform(-np.pi, np.pi, (n, 6))
+    targets = arm.forward(q)
+    seeds = q + rng.uniform(-0.3, 0.3, (n, 6))
+    qd, qdd = rng.uniform(-2, 2, (2, n, 6))
+    outcomes = []
+    for k in (1, 2):
+        set_threads(k)
+        before = _core._threads_started()
+        ik = arm.inverse_kinematics(targets, seeds)
+        dyn = (arm.inverse_dynamics(q, qd, qdd), arm.mass_matrix(q), arm.forward_dynamics(q, qd, qdd))
+        assert (_core._threads_started() > before) == (k > 1)
+        outcomes.append([np.asarray(x).tobytes() for x in (*ik, *dyn)])
+    assert outcomes[0] == outcomes[1]
+    assert np.mean(ik.converged) > 0.99
+
+
+@pytest.mark.parametrize("n", [1, 2, 5, 1024, np.int64(3)])
+def test_set_and_get_num_threads(set_threads, n):
+    set_threads(n)
+    assert chasles.get_num_threads() == n and type(chasles.get_num_threads()) is int
+
+
+@pytest.mark.parametrize(
+    "n,error",
+    [(0, ValueError), (-1, ValueError), (1025, ValueError), (2**70, ValueError),
+     (2.0, TypeError), ("2", TypeError), (True, TypeError), (None, TypeError)],
+)
+def test_set_num_threads_refuses_what_is_not_a_thread_count(set_threads, n, error):
+    set_threads(3)
+    with pytest.raises(error, match=r"set_num_threads\(n\) must be an int from 1 to 1024, got"):
+        set_threads(n)
+    assert chasles.get_num_threads() == 3  # unchanged
+
+
+@pytest.mark.parametrize(
+    "value,expected,warns",
+    [("3", 3, False), (" 2 ", 2, False), ("", 1, False), ("0", 1, True), ("two", 1, True), ("1.5", 1, True)],
+)
+def test_the_environment_variable_sets_the_count_at_import(value, expected, warns):
+    env = dict(os.environ, CHASLES_NUM_THREADS=value)
+    r = subprocess.run(
+        [sys.executable, "-c", "import chasles; print(chasles.get_num_threads())"],
+        env=env, capture_output=True, text=True, timeout=120, check=True,
+    )
+    assert r.stdout.strip() == str(expected)
+    assert ("RuntimeWarning: CHASLES_NUM_THREADS must be an int from 1 to 1024" in r.stderr) == warns, r.stderr
