@@ -2,8 +2,11 @@
 # Runs every test of chasles on a fresh Debian/Ubuntu machine: installs what
 # it needs (apt-get for Eigen, GoogleTest, Google Benchmark, urdfdom for the
 # C++ URDF loader; pip for the Python side), then
-#   1. configures and builds the C++ tests, examples and benchmarks, and runs ctest
+#   1. configures and builds the C++ tests, examples and benchmarks (portable
+#      only: bench/report.py builds the -march=native ones), and runs ctest
 #      (the tests, the examples, and a millisecond smoke run of every benchmark);
+#      then the hardening block: the suites that reach memory under the
+#      sanitizers, and the fuzz targets (their fuzzing runs beside pytest);
 #   2. builds the Python wheel (pip wheel .: scikit-build-core, pybind11 and
 #      cmeel-eigen from PyPI) with the system's Eigen hidden from CMake, so
 #      that it takes Eigen from cmeel-eigen as on a machine without Eigen and
@@ -40,17 +43,31 @@ fi
 
 echo "== C++: configure, build, ctest"
 cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DCHASLES_BUILD_TESTS=ON -DCHASLES_BUILD_BENCH=ON \
-  -DCHASLES_BUILD_EXAMPLES=ON
+  -DCHASLES_BENCH_NATIVE=OFF -DCHASLES_BUILD_EXAMPLES=ON
 cmake --build "$BUILD_DIR" -j "$JOBS"
 ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"
 
-# ---- Hardening (C++): the C++ test suite under AddressSanitizer and
-# UndefinedBehaviorSanitizer (clang, build/sanitize, -O0 -g1: gcc took 7 CPU
-# minutes to build it at -O0, 11 at -O1 and 28 at -O2 -g; clang takes 4.7 at
-# -O0, and the tests run in 36 s), then the libFuzzer targets of tests/fuzz
+# ---- Hardening (C++): under AddressSanitizer and UndefinedBehaviorSanitizer
+# (clang, build/sanitize, -O0 -g1: gcc took 7 CPU minutes to build the
+# suites at -O0, 11 at -O1 and 28 at -O2 -g; clang takes 4.7 at -O0) the
+# suites that reach memory beyond fixed-size values: the URDF loader over
+# urdfdom's heap (LeakSanitizer found its shared_ptr cycles), printing,
+# arms of a run-time joint count, inverse kinematics and dynamics, splines
+# over caller storage, means over iterators, Eigen maps of any stride
+# (test_arguments), generators, non-finite and huge inputs (test_finite),
+# and the fuzzers' findings; with them the real-time exercise, compiled with
+# assertions on under the strict flags (chasles_strict_compile) and run, and
+# each header alone under clang's strict flags. The typed suites of
+# fixed-size math (group laws, accuracy, Jacobians, autodiff, ...) run in
+# the optimized g++ build above; their raw-input surface is the fuzz
+# targets', which run under the same sanitizers: building them here too cost
+# the suite 4 more CPU minutes. Then the libFuzzer targets of tests/fuzz
 # (clang, build/fuzz): their seed corpus replayed by ctest, and 20 s of
-# fuzzing per target (tests/fuzz/README.md). Self-contained: its own packages
-# and build directories.
+# fuzzing per target (tests/fuzz/README.md), in the background while pytest
+# runs (on one core most of the time) at the end.
+# Self-contained: its own packages and build directories.
+SANITIZED_SUITES="test_urdf;test_io;test_kinematics;test_inverse_kinematics;test_dynamics;test_spline;test_bspline"
+SANITIZED_SUITES+=";test_mean;test_arguments;test_random;test_finite;test_fuzz_regressions"
 need_fuzz_apt=()
 for pkg in clang libclang-rt-14-dev; do
   dpkg -s "$pkg" >/dev/null 2>&1 || need_fuzz_apt+=("$pkg")
@@ -63,15 +80,14 @@ if [ ${#need_fuzz_apt[@]} -gt 0 ]; then
 fi
 echo "== C++ under AddressSanitizer + UndefinedBehaviorSanitizer: configure, build, ctest"
 CXX=clang++ cmake -S "$ROOT" -B "$ROOT/build/sanitize" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O0 -g1" \
-  -DCHASLES_BUILD_TESTS=ON -DCHASLES_BUILD_BENCH=OFF -DCHASLES_SANITIZE=ON
+  -DCHASLES_BUILD_TESTS=ON -DCHASLES_BUILD_BENCH=OFF -DCHASLES_SANITIZE=ON "-DCHASLES_TEST_SUITES=$SANITIZED_SUITES"
 cmake --build "$ROOT/build/sanitize" -j "$JOBS"
 ctest --test-dir "$ROOT/build/sanitize" --output-on-failure -j "$JOBS"
-echo "== C++ fuzzing (libFuzzer, clang): seed corpus replay, then 20 s per target"
+echo "== C++ fuzzing (libFuzzer, clang): build, seed corpus replay (20 s per target run beside pytest)"
 CXX=clang++ cmake -S "$ROOT" -B "$ROOT/build/fuzz" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCHASLES_BUILD_FUZZ=ON
 cmake --build "$ROOT/build/fuzz" -j "$JOBS"
 ctest --test-dir "$ROOT/build/fuzz" --output-on-failure
-bash "$ROOT/tests/fuzz/run.sh" "$ROOT/build/fuzz" 20
-# ---- end of the hardening block
+# ---- end of the hardening block (its fuzzing runs beside pytest, below)
 
 echo "== Python: pip wheel . (scikit-build-core, pybind11, cmeel-eigen from PyPI) with the system's"
 echo "   Eigen hidden, installed into a fresh virtual environment with no compiler reachable,"
@@ -99,5 +115,20 @@ CC=/bin/false CXX=/bin/false "$VENV/bin/python" -m pip install --quiet --only-bi
 # CHASLES_URDF_DUMP: the C++ URDF loader's JSON dump (tests/cpp/urdf_dump.cpp,
 # built above), which tests/python/test_urdf_cpp.py compares with
 # Chain.from_urdf on the arms of example-robot-data (a Python package).
+# The fuzzing of the hardening block runs meanwhile, on the core pytest
+# leaves idle; its outcome is read after pytest.
+FUZZ_LOG="$ROOT/build/fuzz/run.log"
+bash "$ROOT/tests/fuzz/run.sh" "$ROOT/build/fuzz" 20 > "$FUZZ_LOG" 2>&1 &
+FUZZ_PID=$!
+trap 'kill "$FUZZ_PID" 2>/dev/null || true' EXIT
 (cd "$VENV" && OPENBLAS_NUM_THREADS=1 CHASLES_URDF_DUMP="$BUILD_DIR/tests/cpp/chasles_urdf_dump" \
   "$VENV/bin/python" -m pytest "$ROOT/tests/python" -p no:cacheprovider)
+
+echo "== C++ fuzzing: what it ran (tests/fuzz/run.sh, started above)"
+FUZZ_STATUS=0
+wait "$FUZZ_PID" || FUZZ_STATUS=$?
+cat "$FUZZ_LOG"
+if [ "$FUZZ_STATUS" -ne 0 ]; then
+  echo "error: fuzzing failed (exit $FUZZ_STATUS); see above" >&2
+  exit "$FUZZ_STATUS"
+fi
