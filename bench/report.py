@@ -31,8 +31,9 @@ ROOT = Path(__file__).resolve().parent.parent
 
 # op -> (Eigen baselines that do the same job, floor, target ns for double).
 CPP_OPS: dict[str, tuple[list[str], str | None, float | None]] = {
-    "SO3/exp": (["Eigen/AngleAxis_to_matrix", "Eigen/quaternion_exp_to_matrix"], "floor/sincos", 17),
-    "SO3/log": (["Eigen/AngleAxis_from_matrix"], "floor/atan2", 22),
+    "SO3/exp": (["Eigen/AngleAxis_to_matrix", "Eigen/quaternion_exp_to_matrix", "Eigen/quaternion_exp"],
+                "floor/sincos", 17),
+    "SO3/log": (["Eigen/AngleAxis_from_matrix", "Eigen/AngleAxis_from_quaternion"], "floor/atan2", 22),
     "SO3/compose": (["Eigen/quaternion_compose"], "floor/matmul_3x3_3x3", 4),
     "SO3/inverse": ([], None, None),
     "SO3/act": (["Eigen/quaternion_act"], "floor/matmul_3x3_3", 2.2),
