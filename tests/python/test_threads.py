@@ -29,6 +29,18 @@ import pytest
 
 ARRAY_FUNCTIONS = A.ARRAY_FUNCTIONS
 
+# A 6-joint arm: its screws as rows (v, w), unit axes.
+ARM_SCREWS = np.array(
+    [
+        [0.0, 0.0, 0.0, 0.0, 0.0, 1.0],
+        [-0.089, 0.0, 0.0, 0.0, 1.0, 0.0],
+        [-0.089, 0.0, 0.425, 0.0, 1.0, 0.0],
+        [-0.089, 0.0, 0.817, 0.0, 1.0, 0.0],
+        [-0.109, 0.817, 0.0, 0.0, 0.0, -1.0],
+        [0.006, 0.0, 0.817, 0.0, 1.0, 0.0],
+    ]
+)
+
 
 def test_the_array_functions_are_all_here():
     prefixes = ("so3_", "se3_")
@@ -68,18 +80,8 @@ def calls(n, rng):
         ("SE3.act_inv", chasles.SE3.act_inv, [g, points]),
         ("SO3.act", chasles.SO3.act, [g.rotation, points]),
     ]
-    # A 6-joint arm (rows (v, w), unit axes) and n joint configurations.
-    screws = np.array(
-        [
-            [0.0, 0.0, 0.0, 0.0, 0.0, 1.0],
-            [-0.089, 0.0, 0.0, 0.0, 1.0, 0.0],
-            [-0.089, 0.0, 0.425, 0.0, 1.0, 0.0],
-            [-0.089, 0.0, 0.817, 0.0, 1.0, 0.0],
-            [-0.109, 0.817, 0.0, 0.0, 0.0, -1.0],
-            [0.006, 0.0, 0.817, 0.0, 1.0, 0.0],
-        ]
-    )
-    arm = chasles.Chain(screws, np.eye(4))
+    # A 6-joint arm and n joint configurations.
+    arm = chasles.Chain(ARM_SCREWS, np.eye(4))
     thetas = rng.uniform(-np.pi, np.pi, size=(n, 6))
     thetas.flags.writeable = False
     for method in ("forward", "forward_body", "jacobian_space", "jacobian_body"):
@@ -296,20 +298,10 @@ def test_inverse_kinematics_and_dynamics_split_alike(set_threads):
     """Chain's inverse kinematics (four results) and dynamics (a model of
     inertias) on 2 model grains + 5 configurations."""
     rng = np.random.default_rng(9)
-    screws = np.array(
-        [
-            [0.0, 0.0, 0.0, 0.0, 0.0, 1.0],
-            [-0.089, 0.0, 0.0, 0.0, 1.0, 0.0],
-            [-0.089, 0.0, 0.425, 0.0, 1.0, 0.0],
-            [-0.089, 0.0, 0.817, 0.0, 1.0, 0.0],
-            [-0.109, 0.817, 0.0, 0.0, 0.0, -1.0],
-            [0.006, 0.0, 0.817, 0.0, 1.0, 0.0],
-        ]
-    )
     home = np.array([[-1.0, 0, 0, 0.817], [0, 0, 1, 0.191], [0, 1, 0, -0.006], [0, 0, 0, 1]])
     # (mass, com, ixx, ixy, ixz, iyy, iyz, izz) per joint
     inertias = np.array([[1.0 + i, 0.1 * i, 0.05, -0.02, 0.1, 0.0, 0.0, 0.2, 0.0, 0.3] for i in range(6)])
-    arm = chasles.Chain(screws, home, link_inertias=inertias)
+    arm = chasles.Chain(ARM_SCREWS, home, link_inertias=inertias)
     n = 2 * MODEL_GRAIN + 5
     q = rng.uniform(-np.pi, np.pi, (n, 6))
     targets = arm.forward(q)
