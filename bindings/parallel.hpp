@@ -17,8 +17,9 @@
 // percentile) on this project's 2-core machine while it compiled, so a
 // thread's share must take several times that. The elementwise
 // kernels take 3 to 60 ns per element: 2^14 elements (50 us to 1 ms) per
-// thread. The kernels over a chain's model (forward kinematics 0.1 us,
-// dynamics 1 us, inverse kinematics 10 us and more): 2^9 (50 us and more).
+// thread. The kernels over a chain's model (forward kinematics 0.2 us,
+// dynamics 0.4 to 1 us, inverse kinematics 10 us and more): 2^9 (100 us
+// and more).
 // A batch below two grains never starts a thread.
 #pragma once
 
