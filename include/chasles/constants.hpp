@@ -33,8 +33,9 @@ struct Thresholds;
 //   degree rule eps^(1/(k+1)) with k = 2. Above it the closed forms have no
 //   0/0 and lose no more than a few ulps (see docs of each closed form).
 //   Both sides are compared one ulp apart in tests/cpp/test_thresholds.cpp.
-//   Every caller compares the same quantity, theta^2 (or 4 tan^2(theta/2)
-//   in log, equal to theta^2 to within the series' own accuracy), never theta,
+//   Every caller compares the same quantity, theta^2 (or, in log,
+//   sin^2(theta) and, off SO(3), 4 tan^2(theta/2): equal to theta^2 to
+//   within the series' own accuracy), never theta,
 //   so that no square root of 0 is ever formed (its derivative is infinite).
 //
 // exp_polynomial_theta2: up to this theta^2, exp's coefficients A, B, C
@@ -48,6 +49,17 @@ struct Thresholds;
 // exp_polynomial_center: the polynomials are in t - 7, not t: centered
 //   near the top of the interval, where the coefficients multiply the
 //   largest matrices, their terms cancel least (series.hpp measures it).
+//
+// log_quaternion_norm2: the largest |u|^2 of the so(3) log's unnormalized
+//   quaternion u = K (K e_k) (detail::so3_log) that its rational atan takes
+//   as it is. A rotation has |u| = 16 |q_k| in [8, 16], so |u|^2 <= 256,
+//   and M clamped to [-2, 2] (the log's overflow path) gives |u|^2 < 3.5e4.
+//   The atan's homogeneous forms and their products (detail/series.hpp)
+//   grow as |u|^(2N'+1): finite up to |u|^2 = 2.26e8 in float (N' = 4) and
+//   1.26e36 in double (N' = 8) (tests/tools/fit_atan_rational.py bounds
+//   them). 1e6 is 3900 times a rotation's and 226 times below float's
+//   overflow. Past it (a matrix with entries past about 3) u is normalized
+//   first, on a cold path.
 //
 // rotation_tolerance: default for the checked constructors
 //   (`from_matrix`): the largest accepted defect max(|M^T M - I|_max,
@@ -78,6 +90,7 @@ struct Thresholds<float> {
   static constexpr float taylor_theta2 = 4.9215667e-03f;       // eps^(1/3)
   static constexpr float exp_polynomial_theta2 = 10.0f;        // past pi^2
   static constexpr float exp_polynomial_center = 7.0f;
+  static constexpr float log_quaternion_norm2 = 1e6f;
   static constexpr float rotation_tolerance = 3.4526698e-04f;  // eps^(1/2)
   static constexpr float huge_theta2 = 3.4e30f;                // max / 1e8
   static constexpr float tiny_norm2 = 1.0f / huge_theta2;
@@ -99,6 +112,7 @@ struct Thresholds<double> {
   static constexpr double taylor_theta2 = 6.0554544523933395e-06;      // eps^(1/3)
   static constexpr double exp_polynomial_theta2 = 10.0;                 // past pi^2
   static constexpr double exp_polynomial_center = 7.0;
+  static constexpr double log_quaternion_norm2 = 1e6;
   static constexpr double rotation_tolerance = 1.4901161193847656e-08;  // eps^(1/2)
   static constexpr double huge_theta2 = 1.7e300;                        // max / 1e8
   static constexpr double tiny_norm2 = 1.0 / huge_theta2;
@@ -122,6 +136,7 @@ struct Thresholds<long double> {
   static constexpr long double taylor_theta2 = 4.7683715820312500000e-07L;       // eps^(1/3)
   static constexpr long double exp_polynomial_theta2 = 0.0L;  // none: series and closed forms
   static constexpr long double exp_polynomial_center = 0.0L;
+  static constexpr long double log_quaternion_norm2 = 1e6L;
   static constexpr long double rotation_tolerance = 3.2927225399135962334e-10L;  // eps^(1/2)
   static constexpr long double huge_theta2 = 1.7e300L;  // as double: safe for both long double formats
   static constexpr long double tiny_norm2 = 1.0L / huge_theta2;

@@ -127,14 +127,26 @@ void constants_as_documented() {
               std::sqrt(ld(std::numeric_limits<T>::epsilon())));
 }
 
+/// "3900 times a rotation's (|u|^2 <= 256) and 226 times below float's
+/// overflow (2.26e8)", and above the clamped path's 3.5e4 (log_quaternion_norm2).
+template <typename T>
+void log_quaternion_norm2_as_documented() {
+  const ld c = chasles::Thresholds<T>::log_quaternion_norm2;
+  EXPECT_GE(c, 256 * 3900.0L);
+  EXPECT_GE(c, 3.5e4L);
+  EXPECT_LE(c, 2.26e8L / 226);
+}
+
 TEST(Constants, FloatAsDocumented) {
   constants_as_documented<float>();
+  log_quaternion_norm2_as_documented<float>();
   // "Chosen a factor 1e8 below the largest finite value".
   EXPECT_LE(chasles::Thresholds<float>::huge_theta2, std::numeric_limits<float>::max() / 1e8f);
   EXPECT_GE(chasles::Thresholds<float>::huge_theta2, std::numeric_limits<float>::max() / 1e9f);
 }
 TEST(Constants, DoubleAsDocumented) {
   constants_as_documented<double>();
+  log_quaternion_norm2_as_documented<double>();
   EXPECT_LE(chasles::Thresholds<double>::huge_theta2, std::numeric_limits<double>::max() / 1e8);
   EXPECT_GE(chasles::Thresholds<double>::huge_theta2, std::numeric_limits<double>::max() / 1e9);
 }
@@ -205,7 +217,7 @@ TEST(TaylorCutoff, ExpDouble) { exp_across_taylor_cutoff<double>(); }
 TEST(TaylorCutoff, ExpFloat) { exp_across_taylor_cutoff<float>(); }
 
 // ---------------------------------------------------------------------------
-// log: 4 tan^2(theta/2) one step either side of taylor_theta2, and the
+// log: sin^2(theta) one step either side of taylor_theta2, and the
 // switch of Shepperd's column from w to an axis component.
 
 /// Rotation matrices in T on both sides of a branch of the log: along the
@@ -302,14 +314,26 @@ bool log_w_column(const Mat3<T>& R) {
   return chasles::detail::HornMatrix<T>(R).largest_diagonal() == 0;
 }
 
-/// 4 tan^2(theta/2) = taylor_theta2.
+/// sin^2(theta) = taylor_theta2: a rotation's log takes the series on
+/// |vee(R - R^T) / 2|^2 = sin^2(theta) (detail::so3_log).
 template <typename T>
 ld series_cutoff_angle(const V3&) {
-  return 2 * std::atan(std::sqrt(ld(chasles::Thresholds<T>::taylor_theta2)) / 2);
+  return std::asin(std::sqrt(ld(chasles::Thresholds<T>::taylor_theta2)));
 }
 
 /// w^2 = max_i (n_i sin(theta/2))^2: theta = 2 atan(1 / max |n_i|).
 ld column_switch_angle(const V3& n) { return 2 * std::atan(1 / n.cwiseAbs().maxCoeff()); }
+
+/// theta < pi/2 (|u_v|^2 < u_w^2 in so3_log's quaternion u), where the
+/// rational atan (detail/series.hpp) switches from atan(|u_v| / u_w) to
+/// pi/2 - atan(u_w / |u_v|).
+template <typename T>
+bool log_acute(const Mat3<T>& R) {
+  const auto u = chasles::detail::quaternion_power_step(chasles::detail::HornMatrix<T>(R));
+  return u.x * u.x + u.y * u.y + u.z * u.z < u.w * u.w;
+}
+
+ld half_turn_angle(const V3&) { return kPi / 2; }
 
 TEST(TaylorCutoff, LogDouble) {
   log_across_branch<double>("log at taylor_theta2", series_cutoff_angle<double>, log_series_branch<double>);
@@ -323,6 +347,59 @@ TEST(ShepperdColumnSwitch, LogDouble) {
 TEST(ShepperdColumnSwitch, LogFloat) {
   log_across_branch<float>("log at the column switch", column_switch_angle, log_w_column<float>);
 }
+
+TEST(LogAcuteSwitch, Double) { log_across_branch<double>("log at theta = pi/2", half_turn_angle, log_acute<double>); }
+TEST(LogAcuteSwitch, Float) { log_across_branch<float>("log at theta = pi/2", half_turn_angle, log_acute<float>); }
+
+// ---------------------------------------------------------------------------
+// log at log_quaternion_norm2: past it so3_log normalizes its quaternion u
+// before the rational atan. M = c R for c > 0 scales u smoothly (as c^2 in
+// the power step's dominant terms), so the c either side of the threshold
+// give logs that must agree to a few ulps, each side computed its own way.
+// Far past it, and past overflow, the log stays finite and of angle <= pi.
+
+template <typename T>
+void log_across_quaternion_norm_cutoff() {
+  using SO3 = chasles::SO3<T>;
+  const T cutoff = chasles::Thresholds<T>::log_quaternion_norm2;
+  const auto u2_of = [](const Mat3<T>& M) {
+    const auto u = chasles::detail::quaternion_power_step(chasles::detail::HornMatrix<T>(M));
+    return u.w * u.w + u.x * u.x + u.y * u.y + u.z * u.z;
+  };
+  std::mt19937_64 rng(chasles_test::kSeed + 24);
+  Worst jump;
+  int pairs = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const Vec3<T> w = (chasles_test::random_unit<T>(rng) * T(0.1 + 3.0 * trial / 40)).eval();
+    const Mat3<T> R = chasles_ref::exp3(w.template cast<ld>()).template cast<T>();
+    // Bisect c (in T) for u2(c R) <= cutoff < u2(next c R).
+    T lo = T(1), hi = T(1e6);
+    if (!(u2_of(lo * R) <= cutoff) || !(u2_of(hi * R) > cutoff)) continue;
+    while (std::nextafter(lo, hi) != hi) {
+      const T mid = lo + (hi - lo) / 2;
+      if (mid == lo || mid == hi) break;
+      (u2_of(mid * R) <= cutoff ? lo : hi) = mid;
+    }
+    const Mat3<T> below = lo * R, above = hi * R;
+    if (!(u2_of(below) <= cutoff && u2_of(above) > cutoff)) continue;
+    ++pairs;
+    const Vec3<T> wb = SO3::from_matrix_unchecked(below).log(), wa = SO3::from_matrix_unchecked(above).log();
+    jump.update(ulps<T>(wa.template cast<ld>(), wb.template cast<ld>()), "w = " + str(w.template cast<ld>()));
+    // Far past the threshold and past overflow: finite, angle <= pi.
+    for (T c : {T(1e8), T(1e20), std::numeric_limits<T>::max() / T(4)}) {
+      const Vec3<T> wc = SO3::from_matrix_unchecked(Mat3<T>(c * R)).log();
+      EXPECT_TRUE(wc.allFinite()) << "c = " << c;
+      EXPECT_LE(ld(wc.norm()), kPi * (1 + 4 * eps<T>())) << "c = " << c;
+    }
+  }
+  std::printf("[ info     ] log at log_quaternion_norm2 %s: %d pairs of matrices straddling it\n", type_name<T>(),
+              pairs);
+  EXPECT_GE(pairs, 30);
+  report<T>("log at log_quaternion_norm2, jump between sides", jump);
+}
+
+TEST(LogQuaternionNormCutoff, Double) { log_across_quaternion_norm_cutoff<double>(); }
+TEST(LogQuaternionNormCutoff, Float) { log_across_quaternion_norm_cutoff<float>(); }
 
 // ---------------------------------------------------------------------------
 // exp at huge_theta2: past it the angle is not known to within a turn, so

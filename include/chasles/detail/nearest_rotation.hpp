@@ -97,8 +97,7 @@ struct HornMatrix {
 /// (w, x, y, z) of the rotation nearest to M, to O(d^2) for M off SO(3) by
 /// d (one power step from Shepperd's column; see so3_log), unnormalized.
 template <typename Scalar>
-inline Quaternion4<Scalar> quaternion_power_step(const Eigen::Matrix<Scalar, 3, 3>& M) noexcept {
-  const HornMatrix<Scalar> K(M);
+inline Quaternion4<Scalar> quaternion_power_step(const HornMatrix<Scalar>& K) noexcept {
   Scalar diagonal;
   return K.times(K.largest_column(diagonal));
 }
@@ -152,7 +151,7 @@ EIGEN_DONT_INLINE Quaternion4<Scalar> clamped_shepperd_quaternion(const Eigen::M
 /// finite for every finite M. Kept out of line: the cold path of so3_log.
 template <typename Scalar>
 EIGEN_DONT_INLINE Quaternion4<Scalar> clamped_quaternion_power_step(const Eigen::Matrix<Scalar, 3, 3>& M) noexcept {
-  return quaternion_power_step(clamped(M, Scalar(2)));
+  return quaternion_power_step(HornMatrix<Scalar>(clamped(M, Scalar(2))));
 }
 
 /// The unit quaternion (w, x, y, z) of the rotation nearest to M in the

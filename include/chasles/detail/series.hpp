@@ -60,6 +60,26 @@ inline V estrin(const X& x0, const Coef& coef) noexcept {
   return v[0];
 }
 
+/// The same on homogeneous forms: with x = X / Y, returns
+/// Y^(N' - 1) sum_i coef(i) x^i (N' = N rounded up to a power of two) from
+/// X and Y, never forming x: the pairs coef(2i) Y + coef(2i+1) X, then
+/// pairs of those with Y^2 and X^2, ...; an odd one out at a level is
+/// multiplied by that level's power of Y, as if paired with a zero. Two
+/// forms of the same N have the same factor Y^(N' - 1): their ratio is the
+/// ratio of the polynomials at x, for one division and no other.
+template <typename V, std::size_t N, typename X, typename Coef>
+inline V homogeneous_estrin(const X& x0, const X& y0, const Coef& coef) noexcept {
+  V v[N];
+  for (std::size_t i = 0; i < N; ++i) v[i] = coef(i);
+  X x = x0, y = y0;
+  for (std::size_t n = N; n > 1; n = (n + 1) / 2) {
+    for (std::size_t i = 0; 2 * i + 1 < n; ++i) v[i] = v[2 * i] * y + v[2 * i + 1] * x;
+    if (n % 2 == 1) v[n / 2] = v[n - 1] * y;
+    if (n > 2) x = x * x, y = y * y;
+  }
+  return v[0];
+}
+
 /// Polynomials for A, B and C in u = t - exp_polynomial_center, t =
 /// theta^2, on t in [0, exp_polynomial_theta2] (constants.hpp: 7, and 10,
 /// past pi^2), in place of sqrt, sincos and a divide: the near-minimax
@@ -193,6 +213,47 @@ inline Scalar arctan(const Scalar& x) noexcept {
     return atan2(x, Scalar(1));
   }
 }
+
+/// asin(x) / x as a series in x2 = x^2, for the so(3) log near the
+/// identity (x = sin(theta)): 1 + x^2/6 + 3 x^4/40 + 5 x^6/112 + ...
+template <typename Scalar>
+inline Scalar asin_over_x_series(const Scalar& x2) noexcept {
+  return Scalar(1) + x2 * (Scalar(1) / Scalar(6) + x2 * (Scalar(3) / Scalar(40)));
+}
+
+/// atan(x) / x = 1 - z h(z), z = x^2 in [0, 1], h = P / Q: the
+/// near-minimax rational fit of h (h(0) = 1/3, h(1) = 1 - pi/4) in
+/// relative error, computed in 50-digit arithmetic (a rational Remez
+/// exchange) and rounded to the type, for the so(3) log in place of a libm
+/// atan, a square root's divide and a second divide. Fitting h rather than
+/// atan(x)/x itself: z h is at most 0.215 of the 1 it is subtracted from, so
+/// the rounding of P and Q reaches the result damped fourfold (the direct
+/// fit, evaluated the same way, erred by 2.7 eps). Each N is the least
+/// whose fit error, so damped, is under 1% of an ulp.
+/// tests/tools/fit_atan_rational.py makes them and measures them, as
+/// so3_log evaluates them (homogeneous_estrin on the squares of the two
+/// sides of the half angle).
+template <typename Real>
+struct AtanRational {
+  static constexpr bool available = false;
+};
+
+template <>
+struct AtanRational<double> {
+  static constexpr bool available = true;
+  static constexpr double p[] = {0.33333333333333331,  0.81965905456958787,   0.72807838388838253,
+                                 0.28277567649728369,  0.045711446627230853,  0.0022768134950878097,
+                                 2.5189379962458495e-06};
+  static constexpr double q[] = {1.0,                 3.0589771637087613,   3.5910500213191527, 2.0253001625931484,
+                                 0.56022478166087497, 0.068498929980146187, 0.0026511682928634971};
+};
+
+template <>
+struct AtanRational<float> {
+  static constexpr bool available = true;
+  static constexpr float p[] = {0.333333343f, 0.352800846f, 0.0766717046f, 0.000502140261f};
+  static constexpr float q[] = {1.0f, 1.65840244f, 0.79648757f, 0.101966873f};
+};
 
 /// atan(x) / x as a series in x2 = x^2, for the so(3) log near the
 /// identity (x = tan(theta/2)): 1 - x^2/3 + x^4/5 - x^6/7 + ...
