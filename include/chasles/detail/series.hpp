@@ -175,8 +175,20 @@ inline ExpCoefficients<Scalar> exp_coefficients(const Scalar& theta2) noexcept {
   if constexpr (P::available) {
     if (theta2 <= ThresholdsOf<Scalar>::exp_polynomial_theta2) {
       constexpr std::size_t nab = std::extent<decltype(P::ab)>::value, nc = std::extent<decltype(P::c)>::value;
+      static_assert(nc <= nab, "C is evaluated beside A and B, padded to their degree");
       const Scalar u = theta2 - Scalar(ThresholdsOf<Scalar>::exp_polynomial_center);
-      if constexpr (std::is_floating_point<Scalar>::value) {
+      if constexpr (std::is_same<Scalar, float>::value) {
+        // A, B and C in three lanes of one 4-float vector (C padded with
+        // zero coefficients, which add exactly 0): one SSE operation per
+        // step for all three.
+        using Quad = Eigen::Array<float, 4, 1>;
+        const Quad abc = estrin<Quad, nab>(
+            u, [](std::size_t i) { return Quad(P::ab[i][0], P::ab[i][1], i < nc ? P::c[i] : 0.0f, 0.0f); });
+        k.a = abc[0];
+        k.b = abc[1];
+        k.c = abc[2];
+        return k;
+      } else if constexpr (std::is_floating_point<Scalar>::value) {
         // A and B in the two lanes of one vector: half the operations.
         using Pair = Eigen::Array<Scalar, 2, 1>;
         const Pair ab = estrin<Pair, nab>(u, [](std::size_t i) { return Pair(P::ab[i][0], P::ab[i][1]); });
