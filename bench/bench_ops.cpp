@@ -7,8 +7,12 @@
 //   build/bench/chasles_bench_portable --benchmark_repetitions=5
 //     --benchmark_report_aggregates_only=true   (one line)
 //
-// Names: <group>/<op>/<input>/<scalar>, e.g. SO3/log/near_pi/double.
+// Names: <group>/<op>/<input>/<scalar>, e.g. SO3/log/near_pi/double. The
+// exp and log kernels also report err_eps, their worst error on the very
+// inputs they are timed on, in eps of the scalar (add_measured).
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <random>
 #include <string>
@@ -23,6 +27,7 @@
 #include "chasles/dynamics.hpp"
 #include "chasles/kinematics.hpp"
 #include "support/arms.hpp"
+#include "support/reference.hpp"
 
 namespace {
 
@@ -75,6 +80,53 @@ template <typename In, typename Op>
 void add(const std::string& name, std::vector<In> in, Op op) {
   benchmark::RegisterBenchmark(name.c_str(), [in = std::move(in), op](benchmark::State& s) { run(s, in, op); });
 }
+
+/// As add, with the accuracy of op on exactly the inputs it is timed on:
+/// the worst of error(input, op(input)) against the long double reference
+/// (tests/cpp/support/reference.hpp), in eps of S, reported as the counter
+/// err_eps (bench/report.py prints it beside the time).
+template <typename S, typename In, typename Op, typename Error>
+void add_measured(const std::string& name, std::vector<In> in, Op op, Error error) {
+  long double worst = 0;
+  for (const In& x : in) worst = std::max(worst, error(x, op(x)));
+  const double err_eps = double(worst / std::numeric_limits<S>::epsilon());
+  benchmark::RegisterBenchmark(name.c_str(), [in = std::move(in), op, err_eps](benchmark::State& s) {
+    run(s, in, op);
+    s.counters["err_eps"] = err_eps;
+  });
+}
+
+/// The errors of the exp and log kernels, as test_accuracy.cpp defines them:
+/// rotations entrywise, rotation vectors absolutely, translations relative
+/// to their largest entry; in long double against the reference computed
+/// from the kernel's own (rounded) input.
+namespace error {
+using chasles_ref::ld;
+template <typename S>
+ld so3_exp(const Eigen::Matrix<S, 3, 1>& w, const chasles::SO3<S>& R) {
+  return (R.matrix().template cast<ld>() - chasles_ref::exp3(w.template cast<ld>())).cwiseAbs().maxCoeff();
+}
+template <typename S>
+ld so3_log(const chasles::SO3<S>& R, const Eigen::Matrix<S, 3, 1>& w) {
+  return (w.template cast<ld>() - chasles_ref::log3(R.matrix().template cast<ld>())).cwiseAbs().maxCoeff();
+}
+template <typename S>
+ld se3_exp(const Eigen::Matrix<S, 6, 1>& xi, const chasles::SE3<S>& g) {
+  const chasles_ref::M4 ref = chasles_ref::exp6(xi.template cast<ld>());
+  const chasles_ref::M4 got = g.matrix().template cast<ld>();
+  const ld rotation = (got.topLeftCorner<3, 3>() - ref.topLeftCorner<3, 3>()).cwiseAbs().maxCoeff();
+  const ld scale = std::max(ref.topRightCorner<3, 1>().cwiseAbs().maxCoeff(), ld(1e-300));
+  return std::max(rotation, (got.topRightCorner<3, 1>() - ref.topRightCorner<3, 1>()).cwiseAbs().maxCoeff() / scale);
+}
+template <typename S>
+ld se3_log(const chasles::SE3<S>& g, const Eigen::Matrix<S, 6, 1>& xi) {
+  const chasles_ref::V6 ref = chasles_ref::log6(g.matrix().template cast<ld>());
+  const chasles_ref::V6 got = xi.template cast<ld>();
+  const ld rotation = (got.tail<3>() - ref.tail<3>()).cwiseAbs().maxCoeff();
+  const ld scale = std::max(ref.head<3>().cwiseAbs().maxCoeff(), ld(1e-300));
+  return std::max(rotation, (got.head<3>() - ref.head<3>()).cwiseAbs().maxCoeff() / scale);
+}
+}  // namespace error
 
 
 /// Chain/<op>/<input>/<scalar> over joint vectors uniform in [-pi, pi].
@@ -230,10 +282,10 @@ void register_all(const std::string& sn) {
   // ---- SO3
   for (const std::string kind : {"generic", "tiny", "near_pi"}) {
     const auto ws = rotation_vectors<S>(kind, 1);
-    add("SO3/exp/" + kind + "/" + sn, ws, [](const V3& w) { return SO3<S>::exp(w); });
+    add_measured<S>("SO3/exp/" + kind + "/" + sn, ws, [](const V3& w) { return SO3<S>::exp(w); }, error::so3_exp<S>);
     std::vector<SO3<S>> Rs;
     for (const auto& w : ws) Rs.push_back(SO3<S>::exp(w));
-    add("SO3/log/" + kind + "/" + sn, Rs, [](const SO3<S>& R) { return R.log(); });
+    add_measured<S>("SO3/log/" + kind + "/" + sn, Rs, [](const SO3<S>& R) { return R.log(); }, error::so3_log<S>);
     // The speed issue's peers on every kind of input: Eigen's exp to a
     // quaternion (4 numbers out, no matrix) and its log from a stored
     // quaternion.
@@ -312,10 +364,12 @@ void register_all(const std::string& sn) {
   // ---- SE3
   for (const std::string kind : {"generic", "tiny", "near_pi"}) {
     const auto xs = twists<S>(kind, 3);
-    add("SE3/exp/" + kind + "/" + sn, xs, [](const Eigen::Matrix<S, 6, 1>& xi) { return SE3<S>::exp(xi); });
+    add_measured<S>(
+        "SE3/exp/" + kind + "/" + sn, xs, [](const Eigen::Matrix<S, 6, 1>& xi) { return SE3<S>::exp(xi); },
+        error::se3_exp<S>);
     std::vector<SE3<S>> gs;
     for (const auto& xi : xs) gs.push_back(SE3<S>::exp(xi));
-    add("SE3/log/" + kind + "/" + sn, gs, [](const SE3<S>& g) { return g.log(); });
+    add_measured<S>("SE3/log/" + kind + "/" + sn, gs, [](const SE3<S>& g) { return g.log(); }, error::se3_log<S>);
   }
   const auto xs = twists<S>("generic", 4);
   std::vector<SE3<S>> gs;

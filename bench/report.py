@@ -8,7 +8,10 @@
 C++: runs the Google Benchmark binaries (portable -O3 and -march=native) with
 repetitions and reports the median ns/op of every chasles operation beside
 the best Eigen baseline measured in the same run, the floor (one sincos, one
-atan2, a 3x3 product) and the target of the benchmark issue. Python: runs
+atan2, a 3x3 product) and the target of the benchmark issue; for exp and log,
+also the kernel's worst error on the inputs it was timed on (in eps of the
+scalar: rotation entries and rotation vectors absolute, translations
+relative), against the long double reference of the C++ tests. Python: runs
 bench/bench_python.py (per-call latency of the objects, per-element time of
 the array functions, against scipy, numpy, and pin / pytransform3d when
 installed). Latency: bench/latency.cpp times each of 1e6 calls on its own and
@@ -77,13 +80,16 @@ def run_cpp(build_dir: Path, repetitions: int, min_time: float) -> dict[str, dic
         for b in json.loads(out)["benchmarks"]:
             if b.get("aggregate_name") == "median":
                 medians[b["run_name"]] = b["real_time"] if b["time_unit"] == "ns" else float("nan")
+                if "err_eps" in b:  # the kernel's worst error on the same inputs (bench_ops.cpp, add_measured)
+                    medians["err_eps:" + b["run_name"]] = b["err_eps"]
         results[variant] = medians
     return results
 
 
 def cpp_table(medians: dict[str, float], scalar: str) -> str:
-    rows = ["| op | input | chasles ns | best Eigen peer | peer ns | ratio | floor ns | x floor | target ns |",
-            "| --- | --- | ---: | --- | ---: | ---: | ---: | ---: | ---: |"]
+    rows = ["| op | input | chasles ns | worst error (eps) | best Eigen peer | peer ns | ratio | floor ns | x floor | "
+            "target ns |",
+            "| --- | --- | ---: | ---: | --- | ---: | ---: | ---: | ---: | ---: |"]
     for op, (peers, floor, target) in CPP_OPS.items():
         for kind in ("generic", "tiny", "near_pi"):
             name = f"{op}/{kind}/{scalar}"
@@ -94,8 +100,10 @@ def cpp_table(medians: dict[str, float], scalar: str) -> str:
                           if f"{p}/{kind}/{scalar}" in medians]
             best = min(peer_times) if peer_times else None
             f = medians.get(f"{floor}/generic/{scalar}") if floor else None
-            rows.append("| {} | {} | {:.1f} | {} | {} | {} | {} | {} | {} |".format(
-                op, kind, t, best[1] if best else "", f"{best[0]:.1f}" if best else "",
+            err = medians.get("err_eps:" + name)
+            rows.append("| {} | {} | {:.1f} | {} | {} | {} | {} | {} | {} | {} |".format(
+                op, kind, t, f"{err:.2f}" if err is not None else "", best[1] if best else "",
+                f"{best[0]:.1f}" if best else "",
                 f"{t / best[0]:.2f}" if best else "", f"{f:.1f}" if f else "", f"{t / f:.1f}" if f else "",
                 (f"{target:g}" if target and scalar == "double" and kind == "generic" else "")))
     return "\n".join(rows)
