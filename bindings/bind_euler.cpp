@@ -174,7 +174,7 @@ void bind_euler(py::module_& m) {
   def_rpy_ufuncs<false>(m);
   def_rpy_ufuncs<true>(m);
 
-  auto so3 = py::reinterpret_borrow<py::class_<SO3d>>(m.attr("SO3"));
+  auto so3 = py::reinterpret_borrow<py::class_<SO3d, InlineHolder<SO3d>>>(m.attr("SO3"));
 
   so3.def_static(
       "from_euler",

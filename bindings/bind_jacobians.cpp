@@ -78,8 +78,8 @@ std::string doc_for(const char* fmt, const char* name) {
 }  // namespace
 
 void bind_jacobians(py::module_& m) {
-  auto so3 = py::reinterpret_borrow<py::class_<SO3d>>(m.attr("SO3"));
-  auto se3 = py::reinterpret_borrow<py::class_<SE3d>>(m.attr("SE3"));
+  auto so3 = py::reinterpret_borrow<py::class_<SO3d, InlineHolder<SO3d>>>(m.attr("SO3"));
+  auto se3 = py::reinterpret_borrow<py::class_<SE3d, InlineHolder<SE3d>>>(m.attr("SE3"));
 
   // The docstrings must outlive the module: pybind11 keeps the pointer.
   static const std::string so3_docs[4] = {doc_for(kSo3Doc, "right Jacobian J_r"), doc_for(kSo3Doc, "left Jacobian J_l"),

@@ -72,8 +72,8 @@ const char* const kSe3Batch =
 }  // namespace
 
 void bind_scipy(py::module_& m) {
-  auto so3 = py::reinterpret_borrow<py::class_<SO3d>>(m.attr("SO3"));
-  auto se3 = py::reinterpret_borrow<py::class_<SE3d>>(m.attr("SE3"));
+  auto so3 = py::reinterpret_borrow<py::class_<SO3d, InlineHolder<SO3d>>>(m.attr("SO3"));
+  auto se3 = py::reinterpret_borrow<py::class_<SE3d, InlineHolder<SE3d>>>(m.attr("SE3"));
 
   so3.def_static(
       "from_scipy",

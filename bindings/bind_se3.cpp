@@ -126,7 +126,8 @@ std::string explain_se3_refusal(const py::args& args, const py::kwargs& kwargs) 
 
 void bind_se3(py::module_& m) {
   const std::string doc = class_doc();
-  py::class_<SE3d> cls(m, "SE3", doc.c_str());
+  py::class_<SE3d, InlineHolder<SE3d>> cls(m, "SE3", doc.c_str());
+  hold_inline(cls);
   cls.attr("__array_ufunc__") = py::none();  // numpy defers operators to us
 
   cls.def(py::init([](Obj<SO3d> rotation, ArrayLike translation) {

@@ -57,7 +57,8 @@ std::string class_doc() { return std::string(kClassDoc) + kConventions; }
 
 void bind_so3(py::module_& m) {
   const std::string doc = class_doc();
-  py::class_<SO3d> cls(m, "SO3", doc.c_str());
+  py::class_<SO3d, InlineHolder<SO3d>> cls(m, "SO3", doc.c_str());
+  hold_inline(cls);
   cls.attr("__array_ufunc__") = py::none();  // numpy defers operators (2.0 * x, p @ R) to us
 
   cls.def(py::init<>(), R"doc(The identity rotation.

@@ -107,8 +107,8 @@ Returns:
         return chasles::so3_from_uniforms(Eigen::Matrix<T, 3, 1>(u)).matrix();
       });
 
-  auto so3 = py::reinterpret_borrow<py::class_<SO3d>>(m.attr("SO3"));
-  auto se3 = py::reinterpret_borrow<py::class_<SE3d>>(m.attr("SE3"));
+  auto so3 = py::reinterpret_borrow<py::class_<SO3d, InlineHolder<SO3d>>>(m.attr("SO3"));
+  auto se3 = py::reinterpret_borrow<py::class_<SE3d, InlineHolder<SE3d>>>(m.attr("SE3"));
   so3.def_static(
       "random",
       [](py::object rng) {

@@ -111,7 +111,7 @@ Example:
 /// Arithmetic, comparison, copy, pickle, __array__ and __repr__ of a
 /// 6-vector type (Twist or Wrench). `a` and `b` are the names of its halves.
 template <typename T>
-void bind_six_vector_protocols(py::class_<T>& cls, const char* cls_name, const char* a, const char* b) {
+void bind_six_vector_protocols(py::class_<T, InlineHolder<T>>& cls, const char* cls_name, const char* a, const char* b) {
   cls.attr("__array_ufunc__") = py::none();  // numpy defers 2.0 * x to x.__rmul__
   // Arithmetic keeps the invariant of the constructors: finite numbers only.
   const std::string add_what = std::string(cls_name) + " + " + cls_name;
@@ -279,7 +279,8 @@ Returns:
 
 void bind_twist(py::module_& m) {
   const std::string doc = std::string(kTwistDoc) + kConventions;
-  py::class_<Twistd> cls(m, "Twist", doc.c_str());
+  py::class_<Twistd, InlineHolder<Twistd>> cls(m, "Twist", doc.c_str());
+  hold_inline(cls);
   const auto zero3 = py::make_tuple(0.0, 0.0, 0.0);
 
   cls.def(py::init([](ArrayLike v, ArrayLike w) {
@@ -479,7 +480,8 @@ Returns:
 
 void bind_wrench(py::module_& m) {
   const std::string doc = std::string(kWrenchDoc) + kConventions;
-  py::class_<Wrenchd> cls(m, "Wrench", doc.c_str());
+  py::class_<Wrenchd, InlineHolder<Wrenchd>> cls(m, "Wrench", doc.c_str());
+  hold_inline(cls);
   const auto zero3 = py::make_tuple(0.0, 0.0, 0.0);
 
   cls.def(py::init([](ArrayLike f, ArrayLike tau) {
@@ -577,7 +579,7 @@ Example:
 /// SE3's actions on twists and wrenches, put before its action on points in
 /// the overload order (a Twist is array-like too, through __array__).
 void bind_se3_actions(py::module_& m) {
-  auto se3 = py::reinterpret_borrow<py::class_<SE3d>>(m.attr("SE3"));
+  auto se3 = py::reinterpret_borrow<py::class_<SE3d, InlineHolder<SE3d>>>(m.attr("SE3"));
   // Prepended in reverse: the final order is Twist, Wrench, points.
   se3.def(
       "act", [](Obj<SE3d> g, Obj<Wrenchd> F) { return g->act(*F); }, py::arg("wrench"), py::prepend(),
@@ -629,7 +631,7 @@ void bind_twist_wrench(py::module_& m) {
   bind_wrench(m);
 
   // Defined here because each needs the other class.
-  py::class_<Twistd>(py::reinterpret_borrow<py::class_<Twistd>>(m.attr("Twist")))
+  py::class_<Twistd, InlineHolder<Twistd>>(py::reinterpret_borrow<py::class_<Twistd, InlineHolder<Twistd>>>(m.attr("Twist")))
       .def("power", [](Obj<Twistd> V, Obj<Wrenchd> F) { return F->power(*V); }, py::arg("wrench"),
            R"doc(The power V . F = v.f + w.tau of this twist on a wrench (same frame).
 

@@ -51,6 +51,8 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include "instance.hpp"
+
 #if defined(__GNUC__) || defined(__clang__)
 #define CHASLES_PY_HIDDEN __attribute__((visibility("hidden")))  // as pybind11's own types
 #else

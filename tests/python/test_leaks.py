@@ -5,8 +5,10 @@ calls, and over 3e4 refused calls (error paths: every kind of refusal) and
 - tracemalloc: the Python heap, numpy's array buffers included (numpy
   reports them to tracemalloc), to the byte;
 - the resident set size from /proc/self/statm: everything, the C++ heap
-  included (pybind11 allocates every object's value with operator new,
-  which tracemalloc does not see).
+  included (a value made by __init__ or __setstate__, and every value of
+  the classes other than SO3, SE3, Twist and Wrench, is allocated by
+  pybind11 with operator new, which tracemalloc does not see; the values
+  those four classes return live inside their Python objects).
 
 The harness is checked before it is trusted: a Python list that keeps one
 small object per call, and a C buffer (malloc through ctypes) never freed,

@@ -12,6 +12,7 @@ import doctest
 import math
 import pickle
 import struct
+import sys
 
 import chasles
 import numpy as np
@@ -929,6 +930,37 @@ def test_python_subclasses_are_accepted():
     p = Pose(SO3(), [1.0, 2.0, 3.0])
     assert isinstance(p @ SE3(), SE3)
     assert np.array_equal(SE3() @ p @ [0.0, 0.0, 0.0], [1.0, 2.0, 3.0])
+
+
+@pytest.mark.parametrize("cls", [SO3, SE3, Twist, Wrench])
+def test_values_made_by_calls_and_by_pybind11_live_side_by_side(cls):
+    """A value returned by a call lives inside its Python object (its class's
+    instances are made large enough to hold it, bindings/instance.hpp); one
+    made by __init__, __setstate__ or a Python subclass lives where pybind11
+    puts it. Both kinds mix in every operation, survive their makers, and
+    are freed by the same deallocation (test_leaks counts the memory)."""
+    x = np.linspace(0.1, 0.6, 6)
+    made = {SO3: lambda: SO3.exp(x[:3]), SE3: lambda: SE3.exp(x)}.get(cls, lambda: cls(x[:3], x[3:]))()
+    value_bytes = {SO3: 72, SE3: 96, Twist: 48, Wrench: 48}[cls]
+    assert sys.getsizeof(made) >= value_bytes + 3 * 8  # object header, value pointer and holder, value
+    restored = cls.__new__(cls)
+    restored.__setstate__(made.__getstate__())  # pybind11's own path: the value on the heap
+
+    class Sub(cls):
+        pass
+
+    sub = Sub.__new__(Sub)
+    sub.__setstate__(made.__getstate__())
+    sub.note = "a Python attribute"  # the subclass's __dict__ lies past the enlarged instance
+    for x in (restored, sub, copy.copy(made), copy.deepcopy(made), pickle.loads(pickle.dumps(made))):
+        assert x == made and made == x
+    assert sub.note == "a Python attribute"
+    if cls in (SO3, SE3):
+        products = [a @ b.inverse() for a in (made, restored, sub) for b in (made, restored, sub)]
+        for g in products:
+            assert type(g) is cls and g.is_approx(cls.identity(), 1e-15)
+        del made, restored, sub
+        assert all(g.is_approx(cls.identity(), 1e-15) for g in products)  # the results own their values
 
 
 def test_is_approx_tolerances():
