@@ -46,8 +46,9 @@ fi
 # hardening block below says which and why), every other one here, with g++
 # at -O3. Building every suite in both builds cost the suite 4.5 more CPU
 # minutes for no further check: the optimized compile of every operation is
-# chasles_strict_compile's and the real-time exercise's (both here), and
-# the Python suite runs the same headers compiled by g++ -O3.
+# the real-time exercise's (chasles_realtime_exercise, which
+# chasles_strict_compile and the allocation test link, here), and the
+# Python suite runs the same headers compiled by g++ -O3.
 SANITIZED_SUITES="test_urdf;test_io;test_kinematics;test_inverse_kinematics;test_dynamics;test_spline;test_bspline"
 SANITIZED_SUITES+=";test_mean;test_arguments;test_random;test_finite;test_fuzz_regressions"
 OPTIMIZED_SUITES=""
@@ -75,10 +76,12 @@ ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"
 # over caller storage, means over iterators, Eigen maps of any stride
 # (test_arguments), generators, non-finite and huge inputs (test_finite),
 # and the fuzzers' findings; with them the real-time exercise, compiled with
-# assertions on under the strict flags (chasles_strict_compile) and run, and
-# each header alone under clang's strict flags. The typed suites of
-# fixed-size math (group laws, accuracy, Jacobians, autodiff, ...) run in
-# the optimized g++ build above; their raw-input surface is the fuzz
+# assertions on under the strict flags (chasles_realtime_exercise) and run
+# by chasles_strict_compile and by the allocation test (Eigen's no-malloc
+# check is an assertion: it runs here; the counting operator new, malloc
+# and realloc run in both builds), and each header alone under clang's strict flags. The typed
+# suites of fixed-size math (group laws, accuracy, Jacobians, autodiff, ...)
+# run in the optimized g++ build above; their raw-input surface is the fuzz
 # targets', which run under the same sanitizers: building them here too cost
 # the suite 4 more CPU minutes. Then the libFuzzer targets of tests/fuzz
 # (clang, build/fuzz): their seed corpus replayed by ctest, and 20 s of

@@ -4,8 +4,9 @@
 # -isystem (its own warnings are not ours): each header is self-contained,
 # and does not pull in <iostream>, whose static initializer a real-time
 # build may forbid. (Every operation of every header, for float, double and
-# an autodiff scalar, is compiled under the same flags by the target
-# chasles_strict_compile: tests/cpp/CMakeLists.txt.)
+# an autodiff scalar, is compiled under the same flags by the object
+# chasles_realtime_exercise, which chasles_strict_compile links:
+# tests/cpp/CMakeLists.txt.)
 # Run by ctest with -DCXX=... -DCOMPILER_ID=gcc|clang -DSOURCE_DIR=...
 # -DEIGEN_INCLUDE_DIRS=<dir>|<dir>... -DWORK_DIR=...
 include("${CMAKE_CURRENT_LIST_DIR}/strict_flags.cmake")

@@ -1,6 +1,8 @@
 // Calls every public operation of chasles once, for the real-time tests:
 // test_no_allocation.cpp runs it with allocation forbidden, strict_compile.cpp
-// compiles it with -fno-exceptions -fno-rtti -Wpedantic -Werror.
+// runs it for the three scalars. Both link its one compile, exercise_all.cpp
+// (the instantiations declared extern at the end of this file), built with
+// -fno-exceptions -fno-rtti -Wpedantic -Werror (tests/cpp/CMakeLists.txt).
 #pragma once
 
 #include <array>
@@ -8,6 +10,9 @@
 #include <cstddef>
 #include <random>
 #include <type_traits>
+
+#include <Eigen/Core>
+#include <unsupported/Eigen/AutoDiff>
 
 #include <chasles/chasles.hpp>
 
@@ -368,5 +373,14 @@ S exercise_all() noexcept {
   sum += from_chain.inverse_dynamics(thd, qdd, qddd, tip).sum() + from_chain.mass_matrix(thd).sum();
   return sum;
 }
+
+/// The autodiff scalar of the exercise.
+using AutoDiff = Eigen::AutoDiffScalar<Eigen::Matrix<double, 6, 1>>;
+
+// Instantiated once, in exercise_all.cpp: the files that include this one
+// do not compile the exercise again.
+extern template float exercise_all<float>() noexcept;
+extern template double exercise_all<double>() noexcept;
+extern template AutoDiff exercise_all<AutoDiff>() noexcept;
 
 }  // namespace chasles_test

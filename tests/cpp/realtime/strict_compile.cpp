@@ -1,9 +1,9 @@
-// Every header and every operation, for float, double and an autodiff
-// scalar, compiled with -fno-exceptions -fno-rtti and the warnings of
-// tests/cpp/strict_flags.cmake as errors (tests/cpp/CMakeLists.txt, and with
-// both GCC and Clang by strict_headers.cmake): a build that succeeds is the
-// test. The operator<< of every type too (io.hpp), outside exercise_all,
-// which the allocation test also runs.
+// Every header, and the operator<< of every type (io.hpp: outside
+// exercise_all, which the allocation test also runs), for float, double and
+// an autodiff scalar, compiled with -fno-exceptions -fno-rtti and the
+// warnings of tests/cpp/strict_flags.cmake as errors (tests/cpp/CMakeLists.txt):
+// a build that succeeds is the test. Every operation is compiled under the
+// same flags in exercise_all.cpp, which this program links and runs.
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
@@ -63,7 +63,7 @@ std::size_t print_all() {
 }  // namespace
 
 int main() {
-  using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, 6, 1>>;
+  using AD = chasles_test::AutoDiff;
   const double a = chasles_test::exercise_all<double>();
   const float b = chasles_test::exercise_all<float>();
   const AD c = chasles_test::exercise_all<AD>();
