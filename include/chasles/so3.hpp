@@ -51,13 +51,19 @@ struct So3Log {
 /// u fixed so that theta is in [0, pi]),
 ///   w = 2 atan2(|u_v|, u_w) u_v / |u_v|  = (2 / u_w) (atan(x) / x) u_v,
 ///   x = |u_v| / u_w = tan(theta / 2);
-/// near the identity (x^2 below the Taylor cutoff / 4, as theta^2 / 4 is)
-/// the second form with the series of atan(x)/x: no sqrt of 0, no 0/0. At
-/// exactly pi, u_w = 0 and either sign of u is the same rotation.
+/// for float and double atan comes from a rational fit (detail/series.hpp,
+/// AtanRational; the code says how), for long double from libm. A small
+/// angle that reaches this far (a matrix far from SO(3) with tr M <= 1:
+/// rotations near the identity take the skew path below) takes the second
+/// form with the series of atan(x)/x below the cutoff (x^2 below the
+/// cutoff / 4, as theta^2 / 4 is): no sqrt of 0, no 0/0. At exactly pi,
+/// u_w = 0 and either sign of u is the same rotation.
 /// Finite for every finite M: K (K e_k) and its squares below only
 /// overflow for entries of M far outside [-1, 1] (u grows as |M|^2, its
 /// squares as |M|^4: u itself may be finite while they are not); u is then
-/// recomputed from M clamped to [-2, 2].
+/// recomputed from M clamped to [-2, 2]. A finite u with |u|^2 past
+/// log_quaternion_norm2 (entries past about 3) is normalized, so that the
+/// rational atan's homogeneous forms cannot overflow.
 ///
 /// Near the identity no quaternion is needed. The skew part of a rotation
 /// is sin(theta) [n], so s = vee((M - M^T) / 2) = sin(theta) n and
