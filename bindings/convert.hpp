@@ -133,9 +133,7 @@ enum class InstanceState { other_type, uninitialized, initialized };
 
 template <typename T>
 InstanceState instance_state(py::handle h, const T** value) {
-  static PyTypeObject* const type =
-      reinterpret_cast<PyTypeObject*>(py::detail::get_type_handle(typeid(T), true).ptr());
-  if (!PyObject_TypeCheck(h.ptr(), type)) return InstanceState::other_type;
+  if (!PyObject_TypeCheck(h.ptr(), bound_type<T>())) return InstanceState::other_type;
   auto* inst = reinterpret_cast<py::detail::instance*>(h.ptr());
   const py::detail::value_and_holder vh = inst->get_value_and_holder();
   if (!vh.holder_constructed() || vh.value_ptr() == nullptr) return InstanceState::uninitialized;

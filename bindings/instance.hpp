@@ -69,6 +69,14 @@ using InlineHolder = std::unique_ptr<T, InlineDeleter<T>>;
 template <typename T>
 constexpr std::size_t kValueOffset = (sizeof(py::detail::instance) + 15) / 16 * 16;
 
+/// The Python type bound to T, looked up once (T must be bound before the
+/// first call).
+template <typename T>
+PyTypeObject* bound_type() {
+  static PyTypeObject* const type = reinterpret_cast<PyTypeObject*>(py::detail::get_type_handle(typeid(T), true).ptr());
+  return type;
+}
+
 /// Whether T's class has been given room for an inline value.
 template <typename T>
 bool& holds_inline() {
@@ -91,7 +99,7 @@ void hold_inline(py::class_<T, Extra...>& cls) {
 /// nullptr with a Python error set if allocation failed.
 template <typename T>
 PyObject* make_instance(T&& value) {
-  static PyTypeObject* const type = reinterpret_cast<PyTypeObject*>(py::detail::get_type_handle(typeid(T), true).ptr());
+  PyTypeObject* const type = bound_type<T>();
   PyObject* self = type->tp_alloc(type, 0);
   if (self == nullptr) return nullptr;
   auto* inst = reinterpret_cast<py::detail::instance*>(self);

@@ -82,8 +82,7 @@ inline So3Log<Scalar> so3_log(const Eigen::Matrix<Scalar, 3, 3>& M) noexcept {
   using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
   So3Log<Scalar> out;
   {
-    const Scalar half(0.5);
-    const Vector3 s(half * (M(2, 1) - M(1, 2)), half * (M(0, 2) - M(2, 0)), half * (M(1, 0) - M(0, 1)));
+    const Vector3 s = SO3<Scalar>::vee(M);  // the skew part, sin(theta) n
     const Scalar s2 = s.squaredNorm();
     if (s2 < ThresholdsOf<Scalar>::taylor_theta2 && M(0, 0) + M(1, 1) + M(2, 2) > Scalar(1)) {
       const Scalar f = asin_over_x_series(s2);
