@@ -5,6 +5,9 @@
 # message that matches every regular expression of its "// expect: <regex>"
 # lines. The first compile shows that each failure comes from its case only.
 # Run by ctest with -DCXX=... -DSOURCE=... -DSOURCE_DIR=... -DEIGEN_INCLUDE_DIRS=<dir>|<dir>...
+# A script (cmake -P) starts with no policy set, so an older CMake reads it
+# its old way (Debian's 3.25: while(TRUE) is false): the project's policies.
+cmake_minimum_required(VERSION 3.18)
 file(STRINGS "${SOURCE}" expect_lines REGEX "^// expect: ")
 if(NOT expect_lines)
   message(FATAL_ERROR "${SOURCE}: no \"// expect: <regex>\" line")

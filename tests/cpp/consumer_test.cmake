@@ -10,6 +10,9 @@
 #     exit with 0.
 # Everything is compiled with -Wall -Wextra -Werror -fno-exceptions, assertions on.
 # Run by ctest with -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DCXX=<the project's compiler> -DSANITIZE=ON|OFF
+# A script (cmake -P) starts with no policy set, so an older CMake reads it
+# its old way (Debian's 3.25: while(TRUE) is false): the project's policies.
+cmake_minimum_required(VERSION 3.18)
 file(REMOVE_RECURSE "${WORK_DIR}")
 set(SNIPPETS "${WORK_DIR}/snippets")
 file(MAKE_DIRECTORY "${SNIPPETS}")

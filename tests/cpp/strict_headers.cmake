@@ -9,6 +9,9 @@
 # tests/cpp/CMakeLists.txt.)
 # Run by ctest with -DCXX=... -DCOMPILER_ID=gcc|clang -DSOURCE_DIR=...
 # -DEIGEN_INCLUDE_DIRS=<dir>|<dir>... -DWORK_DIR=...
+# A script (cmake -P) starts with no policy set, so an older CMake reads it
+# its old way (Debian's 3.25: while(TRUE) is false): the project's policies.
+cmake_minimum_required(VERSION 3.18)
 include("${CMAKE_CURRENT_LIST_DIR}/strict_flags.cmake")
 set(flags -std=c++17 ${CHASLES_STRICT_FLAGS})
 if(COMPILER_ID STREQUAL "clang")
