@@ -114,6 +114,9 @@ echo "   Eigen hidden, installed into a fresh virtual environment with no compil
 echo "   pytest from outside the source tree"
 rm -rf "$VENV" "$WHEEL_DIR" "$WHEEL_BUILD_DIR"
 python3 -m venv "$VENV"
+# A venv gets the pip its Python bundles (Debian 12: pip 23.0, which has no
+# -C, the short form of --config-settings used below, added in pip 23.1).
+"$VENV/bin/python" -m pip install --quiet --upgrade pip
 # The system's Eigen (installed above for the C++ tests) is hidden from the
 # wheel's CMake: CMAKE_IGNORE_PATH makes find_package skip an Eigen3Config.cmake
 # in those directories, and only there, so CMakeLists.txt falls back on the
