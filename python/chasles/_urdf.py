@@ -62,20 +62,21 @@ _BYTES_TEXT_START = re.compile(b"(?:\xef\xbb\xbf)?[ \t\r\n\f\v]*(?=<)")
 # its one group: '' for a piece that does not nest (a comment, CDATA, a
 # processing instruction, another <!...> declaration, a self-closing start
 # tag: quoted attribute values may hold '>' and '/>'), '/' for an end tag,
-# and for any other start tag the first character of its name. Every
-# alternative either consumes up to its terminator or fails within the
-# piece (none crosses a '<' outside comments, CDATA and processing
-# instructions, and those run to their end or to the end of the text), so the
-# scan is linear. The scan never counts less than the parser's nesting over
-# the part of the text the parser accepts: what it misreads is markup that is
-# not well-formed, where the parser stops.
+# and for any other start tag the first character of its name. Linear time:
+# a comment, CDATA or an instruction runs to its end or to the end of the
+# text; a tag is matched up to the next '<' at most. Bounded memory: the
+# only repetition of a group is bounded (256 quoted values or '/' in a tag;
+# beyond, the tag counts as a start tag: one more, never one less). The scan
+# never counts less than the parser's nesting over the part of the text the
+# parser accepts: what it misreads is markup that is not well-formed, where
+# the parser stops.
 _MARKUP = re.compile(
     r"<(?:"
-    r"!--[^-]*(?:-(?!->)[^-]*)*(?:-->|\Z)"  # a comment
-    r"|!\[CDATA\[[^\]]*(?:\](?!\]>)[^\]]*)*(?:\]\]>|\Z)"  # CDATA
-    r"|\?[^?]*(?:\?(?!>)[^?]*)*(?:\?>|\Z)"  # a processing instruction
+    r"!--(?:.*?-->|.*)"  # a comment
+    r"|!\[CDATA\[(?:.*?\]\]>|.*)"  # CDATA
+    r"|\?(?:.*?\?>|.*)"  # a processing instruction
     r"|!"  # another declaration (the document type: see _depth_ok)
-    r"|[^<>\"'/!?][^<>\"'/]*(?:(?:/(?!>)|\"[^<\"]*\"|'[^<']*')[^<>\"'/]*)*/>"  # a self-closing tag
+    r"|[^<>\"'/!?][^<>\"'/]*(?:(?:/(?!>)|\"[^<\"]*\"|'[^<']*')[^<>\"'/]*){0,256}/>"  # a self-closing tag
     r"|(.)"  # '/': an end tag; anything else: a start tag
     r")",
     re.DOTALL,
@@ -118,16 +119,17 @@ def _depth_ok(text):
     """Whether the elements of the XML text nest at most MAX_DEPTH deep,
     before the parser sees the text: a linear scan of the markup (one regular
     expression, then a running sum of +1 per start tag and -1 per end tag,
-    whose maximum D is the deepest open element; a self-closing element may
-    sit one deeper). D > 64: refused; D < 64: accepted; D = 64, and a
+    whose maximum D bounds the nesting: it is the deepest open element, and a
+    self-closing one may sit one deeper). D < 64: accepted. D >= 64, and a
     document type declaration (which may declare entities whose text holds
-    elements, invisible to the scan; rare in URDF): measured by expat's
-    streaming events, which stop at depth 65."""
-    if "<!DOCTYPE" in text:
-        return _expat_depth_ok(text)
-    steps = map(_STEP.get, _MARKUP.findall(text), itertools.repeat(1))
-    deepest = max(itertools.accumulate(steps), default=0)
-    return deepest < MAX_DEPTH or (deepest == MAX_DEPTH and _expat_depth_ok(text))
+    elements, invisible to the scan; rare in URDF): measured exactly by
+    expat's streaming events, which stop at depth 65 (at once for a document
+    that nests deep)."""
+    if "<!DOCTYPE" not in text:
+        steps = map(_STEP.get, _MARKUP.findall(text), itertools.repeat(1))
+        if max(itertools.accumulate(steps), default=0) < MAX_DEPTH:
+            return True
+    return _expat_depth_ok(text)
 
 
 def _error(message):
@@ -178,18 +180,13 @@ def _pose(element, what):
     return T
 
 
-def _compose(T_parent, joint, name, child):
+def _compose(T_parent, joint, name):
     """The pose of a joint's child link at home: its parent's, T_parent,
-    composed with the joint's <origin>, refused when it overflows."""
+    composed with the joint's <origin>."""
     origin = joint.find("origin")
     if origin is None:
         return T_parent  # (poses are never changed in place)
-    what = f"joint {_q(name)}"
-    T = T_parent @ _pose(origin, what)
-    x, y, z = T[:3, 3].tolist()
-    if not (math.isfinite(x) and math.isfinite(y) and math.isfinite(z)):
-        raise _error(f"{what}: the pose of link {_q(child)} at home is not finite (overflow)")
-    return T
+    return T_parent @ _pose(origin, f"joint {_q(name)}")
 
 
 def _attribute(element, name, what, default=None):
@@ -442,7 +439,9 @@ def _chain_from_tree(root, tip_link, base_link):
             if child in visited:  # only through a loop (each link has one parent)
                 raise _error(f"a loop through link {_q(child)}")
             visited.add(child)
-            T_child = _compose(T_parent, joint, name, child)
+            # (a pose that overflows here matters only through the mass
+            # properties of the chain link, which are checked)
+            T_child = _compose(T_parent, joint, name)
             part = _inertial(links[child], T_child)
             if part is not None:
                 parts.append(part)
@@ -462,7 +461,9 @@ def _chain_from_tree(root, tip_link, base_link):
             raise _error(f"{what}: unknown joint type {kind!r}")
         if joint.find("mimic") is not None:
             raise _error(f"{what}: <mimic> joints are not supported")
-        T = _compose(T, joint, name, child)
+        T = _compose(T, joint, name)
+        if not _finite(T[:3, 3]):
+            raise _error(f"{what}: the pose of link {_q(child)} at home is not finite (overflow)")
         if kind in MOVING:
             axis_el = joint.find("axis")
             axis = np.array(

@@ -122,14 +122,9 @@ def cases():
         Case("nested 10,000 deep", nested(10_000, "<x></x>"), "c", deep),
         Case("nested 200,000 deep, unclosed", arm(c='<link name="c">' + "<x>" * 200_000), "c", deep),
         Case("nested 64 deep with attributes", nested(64, "<x a='>' b=\"/>\"></x>"), "c"),
-        Case(
-            "comments, CDATA and instructions do not nest",
-            arm(
-                c='<link name="c"><!-- ' + "<x>" * 100 + ' --><![CDATA[' + "<x>" * 100 + "]]><?pi "
-                + "<x>" * 100 + " ?></link>"
-            ),
-            "c",
-        ),
+        Case("comments and CDATA do not nest", nested(64, "<!-- " + "<x>" * 100 + " --><![CDATA[" + "<x>" * 100 + "]]>"), "c"),
+        # valid XML, which urdfdom's TinyXML2 misreads (a processing instruction ends at its first '>')
+        Case("processing instructions do not nest", nested(64, "<?pi " + "<x>" * 100 + " ?>"), "c", None, "either"),
         Case("self-closing tags at depth 64", nested(64, "<x/>" * 3), "c"),
         # "self-closing tags do not nest": whether one at depth 65 counts is left open
         Case("a self-closing tag at depth 65", nested(65, "<x/>"), "c", deep, "either"),
@@ -235,12 +230,19 @@ def cases():
             "c",
             "joint 'j2': the pose of link 'c' at home is not finite (overflow)",
         ),
+        # off the chain, a pose that overflows matters only through a mass there
         Case(
             "origin of 1e308 composed in a side branch",
+            arm(extra=link("d") + link("e", 1.0) + joint("jd", "fixed", "b", "d", xyz=f"0 {huge} 0")
+                + joint("je", "fixed", "d", "e", xyz=f"0 {huge} 0")),
+            "c",
+            "joint 'j1': the mass properties of the links it moves are not finite (overflow)",
+        ),
+        Case(
+            "origin of 1e308 composed in a massless side branch",
             arm(extra=link("d") + link("e") + joint("jd", "fixed", "b", "d", xyz=f"0 {huge} 0")
                 + joint("je", "fixed", "d", "e", xyz=f"0 {huge} 0")),
             "c",
-            "joint 'je': the pose of link 'e' at home is not finite (overflow)",
         ),
         Case("mass of 1e308", arm(c=link("c", huge)), "c"),
         Case(
