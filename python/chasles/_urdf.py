@@ -404,9 +404,9 @@ def _chain_from_tree(root, tip_link, base_link):
     roots = [name for name in links if name not in parent_joint]
     if base_link is None:
         if len(roots) != 1:
-            raise _error(
-                "the description has no root link (a loop)" if not roots else f"several root links {roots}: pass base_link"
-            )
+            if not roots:
+                raise _error("the description has no root link (a loop)")
+            raise _error(f"several root links {roots}: pass base_link")
         base_link = roots[0]
     # From the tip up to the base.
     path, link, seen = [], tip_link, set()

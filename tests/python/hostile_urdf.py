@@ -116,25 +116,30 @@ def cases():
 
     # depth: 64 loads, 65 is refused; markup that does not nest
     deep = "the XML nests elements more than 64 deep, the bound on a URDF description"
+    lots = "<x>" * 100
     out += [
         Case("nested 64 deep", nested(64, "<x></x>"), "c"),
         Case("nested 65 deep", nested(65, "<x></x>"), "c", deep),
         Case("nested 10,000 deep", nested(10_000, "<x></x>"), "c", deep),
         Case("nested 200,000 deep, unclosed", arm(c='<link name="c">' + "<x>" * 200_000), "c", deep),
         Case("nested 64 deep with attributes", nested(64, "<x a='>' b=\"/>\"></x>"), "c"),
-        Case("comments and CDATA do not nest", nested(64, "<!-- " + "<x>" * 100 + " --><![CDATA[" + "<x>" * 100 + "]]>"), "c"),
-        # valid XML, which urdfdom's TinyXML2 misreads (a processing instruction ends at its first '>')
-        Case("processing instructions do not nest", nested(64, "<?pi " + "<x>" * 100 + " ?>"), "c", None, "either"),
+        Case("comments and CDATA do not nest", nested(64, f"<!-- {lots} --><![CDATA[{lots}]]>"), "c"),
+        # valid XML, which urdfdom's TinyXML2 misreads (an instruction ends at its first '>')
+        Case("processing instructions do not nest", nested(64, f"<?pi {lots} ?>"), "c", None, "either"),
         Case("self-closing tags at depth 64", nested(64, "<x/>" * 3), "c"),
         # "self-closing tags do not nest": whether one at depth 65 counts is left open
         Case("a self-closing tag at depth 65", nested(65, "<x/>"), "c", deep, "either"),
-        Case("elements nested in links and joints are ignored", arm(c='<link name="c"><link name="zz"/><joint name="q"/></link>'), "c"),
+        Case(
+            "elements nested in links and joints are ignored",
+            arm(c='<link name="c"><link name="zz"/><joint name="q"/></link>'),
+            "c",
+        ),
     ]
 
     # byte-order mark and whitespace before the text
     out += [
         Case("byte-order mark", "\ufeff" + arm(), "c"),
-        Case("byte-order mark, whitespace, declaration", '\ufeff \n\t<?xml version="1.0" encoding="UTF-8"?>\n' + arm(), "c"),
+        Case("byte-order mark, whitespace, declaration", '\ufeff \n\t<?xml version="1.0"?>\n' + arm(), "c"),
         Case("whitespace before the text", "\n\n   " + arm(), "c"),
     ]
 
@@ -164,7 +169,8 @@ def cases():
 
     # negative masses: on the chain and in a link fixed to it
     out += [
-        Case("negative mass on the chain", arm(b=link("b", -1.5)), "c", "link 'b' <mass>: negative mass -1.5 (a mass is >= 0)"),
+        Case("negative mass on the chain", arm(b=link("b", -1.5)), "c",
+             "link 'b' <mass>: negative mass -1.5 (a mass is >= 0)"),
         Case(
             "negative mass in a fixed child",
             arm(extra=link("sensor", -1.5) + joint("s", "fixed", "b", "sensor", xyz="1 0 0")),
@@ -182,51 +188,65 @@ def cases():
     ]
 
     # non-finite numbers, each where it is read
+    def on_j1(**kw):
+        return arm(j1=joint("j1", kw.pop("kind", "revolute"), "a", "b", **kw))
+
+    def on_j2(**kw):
+        return arm(j2=joint("j2", kw.pop("kind", "revolute"), "b", "c", **kw))
+
+    def limit(lower="-1", upper="1", effort="1", velocity="1"):
+        return f'<limit lower="{lower}" upper="{upper}" effort="{effort}" velocity="{velocity}"/>'
+
+    finite = "expected finite numbers"
     for bad in ("nan", "inf", "-inf", "1e400"):
+        side = link("d", 1.0) + joint("jd", "fixed", "b", "d", xyz=f"{bad} 0 0")
         out += [
-            Case(f"{bad} origin xyz", arm(j2=joint("j2", "revolute", "b", "c", xyz=f"0 {bad} 0")), "c",
-                 "joint 'j2' <origin xyz>: expected finite numbers"),
-            Case(f"{bad} origin rpy", arm(j2=joint("j2", "revolute", "b", "c", rpy=f"{bad} 0 0")), "c",
-                 "joint 'j2' <origin rpy>: expected finite numbers"),
-            Case(f"{bad} axis", arm(j1=joint("j1", "revolute", "a", "b", axis=f"0 0 {bad}")), "c",
-                 "joint 'j1' <axis xyz>: expected finite numbers"),
-            Case(f"{bad} limit", arm(j1=joint("j1", "revolute", "a", "b", limit=f'<limit lower="-1" upper="{bad}" effort="1" velocity="1"/>')), "c",
-                 "joint 'j1' <limit>: expected finite numbers"),
-            Case(f"{bad} velocity", arm(j1=joint("j1", "revolute", "a", "b", limit=f'<limit lower="-1" upper="1" effort="1" velocity="{bad}"/>')), "c",
-                 "joint 'j1' <limit>: expected finite numbers"),
-            Case(f"{bad} mass", arm(b=link("b", bad)), "c", "link 'b' <mass>: expected finite numbers"),
-            Case(f"{bad} inertia", arm(b=link("b", 1.0, inertia=("0.1", "0", bad, "0.1", "0", "0.1"))), "c",
-                 "link 'b' <inertia>: expected finite numbers"),
+            Case(f"{bad} origin xyz", on_j2(xyz=f"0 {bad} 0"), "c", f"joint 'j2' <origin xyz>: {finite}"),
+            Case(f"{bad} origin rpy", on_j2(rpy=f"{bad} 0 0"), "c", f"joint 'j2' <origin rpy>: {finite}"),
+            Case(f"{bad} axis", on_j1(axis=f"0 0 {bad}"), "c", f"joint 'j1' <axis xyz>: {finite}"),
+            Case(f"{bad} limit", on_j1(limit=limit(upper=bad)), "c", f"joint 'j1' <limit>: {finite}"),
+            Case(f"{bad} velocity", on_j1(limit=limit(velocity=bad)), "c", f"joint 'j1' <limit>: {finite}"),
+            Case(f"{bad} mass", arm(b=link("b", bad)), "c", f"link 'b' <mass>: {finite}"),
+            Case(
+                f"{bad} inertia",
+                arm(b=link("b", 1.0, inertia=("0.1", "0", bad, "0.1", "0", "0.1"))),
+                "c",
+                f"link 'b' <inertia>: {finite}",
+            ),
             Case(f"{bad} inertial origin", arm(c=link("c", 1.0, xyz=f"{bad} 0 0")), "c",
-                 "link 'c' <inertial> <origin xyz>: expected finite numbers"),
+                 f"link 'c' <inertial> <origin xyz>: {finite}"),
             Case(f"{bad} inertial rpy", arm(c=link("c", 1.0, rpy=f"0 0 {bad}")), "c",
-                 "link 'c' <inertial> <origin rpy>: expected finite numbers"),
-            Case(f"{bad} origin in a side branch", arm(extra=link("d", 1.0) + joint("jd", "fixed", "b", "d", xyz=f"{bad} 0 0")), "c",
-                 "joint 'jd' <origin xyz>: expected finite numbers"),
+                 f"link 'c' <inertial> <origin rpy>: {finite}"),
+            Case(f"{bad} origin in a side branch", arm(extra=side), "c", f"joint 'jd' <origin xyz>: {finite}"),
         ]
 
     # limits
     out += [
-        Case("lower > upper", arm(j1=joint("j1", "revolute", "a", "b", limit='<limit lower="1" upper="0" effort="1" velocity="1"/>')),
-             "c", "joint 'j1' <limit>: lower 1 > upper 0"),
-        Case("lower > upper, fractions", arm(j1=joint("j1", "prismatic", "a", "b", limit='<limit lower="0.5" upper="0.25" effort="1" velocity="1"/>')),
-             "c", "joint 'j1' <limit>: lower 0.5 > upper 0.25"),
-        Case("negative velocity", arm(j1=joint("j1", "revolute", "a", "b", limit='<limit lower="-1" upper="1" effort="1" velocity="-1"/>')),
-             "c", "joint 'j1' <limit>: negative velocity -1"),
-        Case("negative effort", arm(j2=joint("j2", "continuous", "b", "c", limit='<limit effort="-1" velocity="1"/>')),
-             "c", "joint 'j2' <limit>: negative effort -1"),
-        Case("zero axis", arm(j1=joint("j1", "revolute", "a", "b", axis="0 0 0")), "c", "joint 'j1': <axis xyz> is zero"),
+        Case("lower > upper", on_j1(limit=limit("1", "0")), "c", "joint 'j1' <limit>: lower 1 > upper 0"),
+        Case("lower > upper, fractions", on_j1(kind="prismatic", limit=limit("0.5", "0.25")), "c",
+             "joint 'j1' <limit>: lower 0.5 > upper 0.25"),
+        Case("negative velocity", on_j1(limit=limit(velocity="-1")), "c", "joint 'j1' <limit>: negative velocity -1"),
+        Case("negative effort", on_j2(kind="continuous", limit='<limit effort="-1" velocity="1"/>'), "c",
+             "joint 'j2' <limit>: negative effort -1"),
+        Case("zero axis", on_j1(axis="0 0 0"), "c", "joint 'j1': <axis xyz> is zero"),
     ]
 
     # huge numbers: finite in the file, overflowing when combined
     huge = 1e308
     out += [
-        Case("axis of 1e308", arm(j1=joint("j1", "revolute", "a", "b", axis=f"{huge} {huge} 0")), "c"),
-        Case("tiny axis", arm(j1=joint("j1", "prismatic", "a", "b", axis="0 3e-320 4e-320")), "c"),
-        Case("origin of 1e308 once", arm(b=link("b"), c=link("c"), j1=joint("j1", "prismatic", "a", "b", xyz=f"{huge} 0 0")), "c"),
+        Case("axis of 1e308", on_j1(axis=f"{huge} {huge} 0"), "c"),
+        Case("tiny axis", on_j1(kind="prismatic", axis="0 3e-320 4e-320"), "c"),
+        Case(
+            "origin of 1e308 once",
+            arm(b=link("b"), c=link("c"), j1=joint("j1", "prismatic", "a", "b", xyz=f"{huge} 0 0")),
+            "c",
+        ),
         Case(
             "origin of 1e308 composed along the chain",
-            arm(j1=joint("j1", "prismatic", "a", "b", xyz=f"{huge} 0 0"), j2=joint("j2", "prismatic", "b", "c", xyz=f"{huge} 0 0")),
+            arm(
+                j1=joint("j1", "prismatic", "a", "b", xyz=f"{huge} 0 0"),
+                j2=joint("j2", "prismatic", "b", "c", xyz=f"{huge} 0 0"),
+            ),
             "c",
             "joint 'j2': the pose of link 'c' at home is not finite (overflow)",
         ),
@@ -256,8 +276,8 @@ def cases():
     # for each parser to refuse in its own words
     out += [
         Case("not well-formed", "<robot name='r'><link name='a'/>", "a", None, "refuse"),
-        Case("a number with an underscore", arm(j2=joint("j2", "revolute", "b", "c", xyz="0 1_0 0")), "c", None, "refuse"),
-        Case("two numbers for three", arm(j2=joint("j2", "revolute", "b", "c", xyz="0 1")), "c", None, "refuse"),
+        Case("a number with an underscore", on_j2(xyz="0 1_0 0"), "c", None, "refuse"),
+        Case("two numbers for three", on_j2(xyz="0 1"), "c", None, "refuse"),
         Case("an entity expanding to deep nesting",
              '<!DOCTYPE robot [<!ENTITY e "' + "<x>" * 70 + "</x>" * 70 + '">]>' + arm(c='<link name="c">&e;</link>'),
              "c", deep, "either"),  # urdfdom does not expand entities

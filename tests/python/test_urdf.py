@@ -388,7 +388,8 @@ def test_nesting_bound_is_64():
     assert Chain.from_urdf(hostile_urdf.nested(64, inner), "c").n_joints == 2
     # a tag of many attributes (the scan counts it as a start tag; the parser's
     # events tell, exactly, that it nests no deeper)
-    assert Chain.from_urdf(hostile_urdf.nested(64, "<x" + "".join(f" a{i}='/>'" for i in range(1000)) + "/>"), "c").n_joints == 2
+    many = "<x" + "".join(f" a{i}='/>'" for i in range(1000)) + "/>"
+    assert Chain.from_urdf(hostile_urdf.nested(64, many), "c").n_joints == 2
 
 
 def test_entities_count_in_the_nesting():
@@ -487,6 +488,7 @@ def test_a_file_that_is_not_utf8(tmp_path):
 def test_physically_impossible_inertias_are_not_refused():
     # the contract's decision: 48 link inertias of example-robot-data are not
     # positive semidefinite or violate the triangle inequality, and load
+    # (diag(0, 0, 0.003) as anymal's hatch; moments 1, 1, 3; a negative moment)
     for inertia in (("0", "0", "0", "0", "0", "0.003"), ("1", "0", "0", "1", "0", "3"), ("-0.1", "0", "0", "0.1", "0", "0.1")):
         arm = Chain.from_urdf(hostile_urdf.arm(c=hostile_urdf.link("c", 1.0, inertia=inertia)), "c")
         assert arm.link_inertias[1, 9] == float(inertia[5])
