@@ -336,7 +336,11 @@ def refusal(source, tip, base=None):
     return message[len(PREFIX) :]
 
 
-@pytest.mark.parametrize("name", [n for n, c in HOSTILE.items() if c.error is None and c.agree == "exact"])
+@pytest.mark.parametrize(
+    "name",
+    # (the side branches: test_long_side_branch_rides_on_its_link)
+    [n for n, c in HOSTILE.items() if c.error is None and c.agree == "exact" and not n.startswith("side branch")],
+)
 def test_hostile_descriptions_that_load(name):
     case = HOSTILE[name]
     arm = Chain.from_urdf(case.text, case.tip, case.base)
