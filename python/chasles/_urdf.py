@@ -14,61 +14,291 @@ joint position, translation xyz then rotation R = Rz(yaw) Ry(pitch) Rx(roll)
 (= the child link frame) and is normalized here; <limit> gives lower, upper
 (revolute, prismatic), velocity and effort. A continuous joint has no
 position limits (-inf, inf).
+
+Hostile input (the contract shared with the C++ loader, src/urdf.cpp: the
+same files load in both or are refused by both with the same text after the
+prefixes "Chain.from_urdf: " and "chain_from_urdf: "):
+
+- The source is XML text when, after an optional byte-order mark and
+  whitespace, it starts with '<'; otherwise it is a path, which must name a
+  regular file of at most 64 MiB (read with that bound: never more than
+  64 MiB + 1 bytes); text longer than 64 MiB is refused too.
+- Before the XML parser sees the document, a linear scan refuses elements
+  nested more than 64 deep (a URDF nests about 6 deep).
+- The link tree is walked with an explicit stack, never by recursion.
+- Every number is checked where it is read and where numbers are combined
+  (poses composed along the chain, masses summed), each refusal naming the
+  joint or link; the Chain constructor's validation comes last, its
+  refusal named after the joint.
+- Not refused (a decision): physically impossible inertias (not positive
+  semidefinite, or violating the triangle inequality). 48 of the 1,985 link
+  inertias of example-robot-data are such (tiago's antennas have an
+  eigenvalue at -39% of the trace, anymal's hatch is diag(0, 0, 0.003),
+  icub's legs have entries of 1e-18 with negative eigenvalues), and those
+  robots must load.
 """
 
 from __future__ import annotations
 
+import itertools
 import math
 import os
+import re
+import stat
 import xml.etree.ElementTree as ET
 
 import numpy as np
+import pyexpat
 
 from . import _core
 
 MOVING = ("revolute", "continuous", "prismatic")
 
+MAX_BYTES = 64 * 1024 * 1024  # the bound on a description, file or text (64 MiB)
+MAX_DEPTH = 64  # the bound on element nesting (a URDF nests about 6 deep)
+
+_TOO_LARGE = "the description is larger than 64 MiB, the bound on a URDF description"
+_TOO_DEEP = "the XML nests elements more than 64 deep, the bound on a URDF description"
+
+# XML text: an optional byte-order mark, whitespace, then '<'.
+_TEXT_START = re.compile("\ufeff?[ \t\r\n\f\v]*(?=<)")
+_BYTES_TEXT_START = re.compile(b"(?:\xef\xbb\xbf)?[ \t\r\n\f\v]*(?=<)")
+
+# The depth scan: each match is one piece of markup, which findall reports by
+# its one group: '' for a piece that does not nest (a comment, CDATA, a
+# processing instruction, another <!...> declaration, a self-closing start
+# tag: quoted attribute values may hold '>' and '/>'), '/' for an end tag,
+# and for any other start tag the first character of its name. Linear time:
+# a comment, CDATA or an instruction runs to its end or to the end of the
+# text; a tag is matched up to the next '<' at most. Bounded memory: the
+# only repetition of a group is bounded (256 quoted values or '/' in a tag;
+# beyond, the tag counts as a start tag: one more, never one less). The scan
+# never counts less than the parser's nesting over the part of the text the
+# parser accepts: what it misreads is markup that is not well-formed, where
+# the parser stops.
+_MARKUP = re.compile(
+    r"<(?:"
+    r"!--(?:.*?-->|.*)"  # a comment
+    r"|!\[CDATA\[(?:.*?\]\]>|.*)"  # CDATA
+    r"|\?(?:.*?\?>|.*)"  # a processing instruction
+    r"|!"  # another declaration (the document type: see _depth_ok)
+    r"|[^<>\"'/!?][^<>\"'/]*(?:(?:/(?!>)|\"[^<\"]*\"|'[^<']*')[^<>\"'/]*){0,256}/>"  # a self-closing tag
+    r"|(.)"  # '/': an end tag; anything else: a start tag
+    r")",
+    re.DOTALL,
+)
+_STEP = {"": 0, "/": -1}
+
+
+class _TooDeep(Exception):
+    pass
+
+
+def _expat_depth_ok(text):
+    """The nesting as the parser sees it, with the entities a document type
+    declares expanded: expat's streaming events, stopped at depth 65."""
+    parser = pyexpat.ParserCreate()
+    depth = 0
+
+    def start(name, attributes):
+        nonlocal depth
+        depth += 1
+        if depth > MAX_DEPTH:
+            raise _TooDeep
+
+    def end(name):
+        nonlocal depth
+        depth -= 1
+
+    parser.StartElementHandler = start
+    parser.EndElementHandler = end
+    try:
+        parser.Parse(text, True)
+    except _TooDeep:
+        return False
+    except pyexpat.ExpatError:
+        pass  # not well-formed: the parser refuses it with its own reason
+    return True
+
+
+def _depth_ok(text):
+    """Whether the elements of the XML text nest at most MAX_DEPTH deep,
+    before the parser sees the text: a linear scan of the markup (one regular
+    expression, then a running sum of +1 per start tag and -1 per end tag,
+    whose maximum D bounds the nesting: it is the deepest open element, and a
+    self-closing one may sit one deeper). D < 64: accepted. D >= 64, and a
+    document type declaration (which may declare entities whose text holds
+    elements, invisible to the scan; rare in URDF): measured exactly by
+    expat's streaming events, which stop at depth 65 (at once for a document
+    that nests deep)."""
+    if "<!DOCTYPE" not in text:
+        steps = map(_STEP.get, _MARKUP.findall(text), itertools.repeat(1))
+        if max(itertools.accumulate(steps), default=0) < MAX_DEPTH:
+            return True
+    return _expat_depth_ok(text)
+
+
+def _error(message):
+    return ValueError("Chain.from_urdf: " + message)
+
+
+def _q(name):
+    """A name as the messages quote it (as the C++ loader does)."""
+    return f"'{name}'"
+
+
+def _number(x):
+    """A number as the messages print it: the shortest text that reads back
+    as the same float (repr), without a trailing '.0' (-1.5, 1, 1e-05)."""
+    text = repr(float(x))
+    return text[:-2] if text.endswith(".0") else text
+
 
 def _floats(text, count, what):
+    parts = text.split()
     try:
-        values = [float(x) for x in text.split()]
+        # float() also reads '1_0' and other scripts' digits: refused here as in XML
+        if len(parts) != count or not text.isascii() or "_" in text:
+            raise ValueError
+        values = [float(x) for x in parts]
     except ValueError:
-        raise ValueError(f"Chain.from_urdf: {what}: expected {count} numbers, got {text!r}") from None
-    if len(values) != count or not all(math.isfinite(x) for x in values):
-        raise ValueError(f"Chain.from_urdf: {what}: expected {count} finite numbers, got {text!r}")
-    return np.array(values)
+        raise _error(f"{what}: expected {count} numbers, got {text!r}") from None
+    if not all(map(math.isfinite, values)):
+        raise _error(f"{what}: expected finite numbers")
+    return values
+
+
+_IDENTITY = np.eye(4)
 
 
 def _pose(element, what):
     """The 4x4 pose of an <origin> element (identity when it is None)."""
-    T = np.eye(4)
+    T = _IDENTITY.copy()
     if element is None:
         return T
-    T[:3, 3] = _floats(element.get("xyz", "0 0 0"), 3, f"{what} <origin xyz>")
-    rpy = _floats(element.get("rpy", "0 0 0"), 3, f"{what} <origin rpy>")
-    T[:3, :3] = _core.SO3.from_rpy(rpy).as_matrix()
+    xyz, rpy = element.get("xyz"), element.get("rpy")
+    if xyz is not None:
+        T[:3, 3] = _floats(xyz, 3, f"{what} <origin xyz>")
+    if rpy is not None:
+        rpy = _floats(rpy, 3, f"{what} <origin rpy>")
+        if rpy[0] or rpy[1] or rpy[2]:
+            T[:3, :3] = _core.SO3.from_rpy(rpy).as_matrix()
     return T
+
+
+def _compose(T_parent, joint, name):
+    """The pose of a joint's child link at home: its parent's, T_parent,
+    composed with the joint's <origin>."""
+    origin = joint.find("origin")
+    if origin is None:
+        return T_parent  # (poses are never changed in place)
+    return T_parent @ _pose(origin, f"joint {_q(name)}")
 
 
 def _attribute(element, name, what, default=None):
     text = element.get(name)
     if text is None:
         if default is None:
-            raise ValueError(f"Chain.from_urdf: {what}: missing attribute {name!r}")
+            raise _error(f"{what}: missing attribute {name!r}")
         return default
-    return _floats(text, 1, f"{what} {name}")[0]
+    try:
+        if not text.isascii() or "_" in text:
+            raise ValueError
+        value = float(text)
+    except ValueError:
+        raise _error(f"{what} {name}: expected a number, got {text!r}") from None
+    if not math.isfinite(value):
+        raise _error(f"{what}: expected finite numbers")
+    return value
+
+
+def _read_file(path):
+    """The text of the file at path (str or bytes): a regular file of at
+    most MAX_BYTES, read with that bound, in UTF-8."""
+    shown = _q(os.fsdecode(path))
+    flags = os.O_RDONLY | getattr(os, "O_BINARY", 0) | getattr(os, "O_CLOEXEC", 0)
+    # O_NONBLOCK: opening a FIFO does not wait for a writer (it is refused below)
+    try:
+        fd = os.open(path, flags | getattr(os, "O_NONBLOCK", 0))
+    except (OSError, ValueError):  # ValueError: a NUL character in the path
+        try:
+            mode = os.stat(path).st_mode
+        except (OSError, ValueError):
+            mode = None
+        if mode is not None and stat.S_ISDIR(mode):
+            raise _error(f"{shown} is a directory, not a URDF file") from None
+        if mode is not None and not stat.S_ISREG(mode):  # a socket cannot be opened
+            raise _error(f"{shown} is not a regular file") from None
+        raise _error(f"cannot open the file {shown}") from None
+    try:
+        info = os.fstat(fd)
+        if stat.S_ISDIR(info.st_mode):
+            raise _error(f"{shown} is a directory, not a URDF file")
+        if not stat.S_ISREG(info.st_mode):
+            raise _error(f"{shown} is not a regular file")
+        if info.st_size > MAX_BYTES:
+            raise _error(f"{shown} is larger than 64 MiB, the bound on a URDF description")
+        # The size fstat gives, plus one byte to see the end (the file may
+        # change meanwhile: then pieces, never beyond MAX_BYTES + 1 bytes).
+        chunks, total, want = [], 0, info.st_size + 1
+        while total <= MAX_BYTES:
+            chunk = os.read(fd, min(max(want - total, 1 << 16), MAX_BYTES + 1 - total))
+            if not chunk:
+                break
+            chunks.append(chunk)
+            total += len(chunk)
+    finally:
+        os.close(fd)
+    if total > MAX_BYTES:
+        raise _error(f"{shown} is larger than 64 MiB, the bound on a URDF description")
+    data = chunks[0] if len(chunks) == 1 else b"".join(chunks)
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as e:
+        raise _error(f"{shown} is not UTF-8 text (byte {e.start}: {e.reason})") from None
+
+
+def _text(source):
+    """The XML text of the source (str), its byte-order mark and leading
+    whitespace removed: the text itself, or the content of the file it names."""
+    if isinstance(source, os.PathLike):
+        text = _read_file(os.fspath(source))
+    elif isinstance(source, str):
+        start = _TEXT_START.match(source)
+        if start is None:
+            text = _read_file(source)
+        else:
+            if len(source) > MAX_BYTES or (
+                len(source) > MAX_BYTES // 4
+                and not source.isascii()
+                and len(source.encode("utf-8", "surrogatepass")) > MAX_BYTES
+            ):
+                raise _error(_TOO_LARGE)
+            return source[start.end() :] if start.end() else source
+    elif isinstance(source, (bytes, bytearray)):
+        source = bytes(source)
+        if _BYTES_TEXT_START.match(source) is None:
+            text = _read_file(source)
+        else:
+            if len(source) > MAX_BYTES:
+                raise _error(_TOO_LARGE)
+            try:
+                text = source.decode("utf-8")
+            except UnicodeDecodeError as e:
+                raise _error(f"the description is not UTF-8 text (byte {e.start}: {e.reason})") from None
+    else:
+        raise TypeError(
+            "Chain.from_urdf(source): expected a path or the XML text (a str, UTF-8 bytes or an os.PathLike), "
+            f"got {type(source).__name__}"
+        )
+    start = _TEXT_START.match(text)
+    return text[start.end() :] if start is not None and start.end() else text
 
 
 def _read(source):
-    if isinstance(source, os.PathLike) or (isinstance(source, str) and not source.lstrip().startswith("<")):
-        with open(source, encoding="utf-8") as f:
-            text = f.read()
-    elif isinstance(source, (str, bytes)):
-        text = source
-    else:
-        raise TypeError(
-            f"Chain.from_urdf(source): expected a path or the XML text, got {type(source).__name__}"
-        )
+    text = _text(source)
+    if not _depth_ok(text):
+        raise _error(_TOO_DEEP)
     try:
         root = ET.fromstring(text)
     except ET.ParseError as e:
@@ -84,16 +314,17 @@ def _inertial(link, T_link):
     inertial = link.find("inertial")
     if inertial is None:
         return None
-    what = f"link {link.get('name')!r}"
+    what = f"link {_q(link.get('name'))}"
     mass_el = inertial.find("mass")
     mass = 0.0 if mass_el is None else _attribute(mass_el, "value", f"{what} <mass>")
-    T = T_link @ _pose(inertial.find("origin"), what)
+    if mass < 0:
+        raise _error(f"{what} <mass>: negative mass {_number(mass)} (a mass is >= 0)")
+    T = T_link @ _pose(inertial.find("origin"), f"{what} <inertial>")
     I_el = inertial.find("inertia")
     I = np.zeros((3, 3))
     if I_el is not None:
         ixx, ixy, ixz, iyy, iyz, izz = (
-            _attribute(I_el, k, f"{what} <inertia>", 0.0)
-            for k in ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")
+            _attribute(I_el, k, f"{what} <inertia>", 0.0) for k in ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")
         )
         I = np.array([[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]])
     R = T[:3, :3]
@@ -115,31 +346,62 @@ def _merge(parts):
     return mass, com, inertia
 
 
+def _finite(values):
+    return bool(np.isfinite(values).all())
+
+
+def _chain(path_names, screws, home, **kwargs):
+    """The Chain constructor, its refusal (which names joints by index)
+    restated with the joint's name."""
+    try:
+        return _core.Chain(np.array(screws), home, **kwargs)
+    except ValueError as e:
+        match = re.match(r"Chain\([^)]*\): (?:joint (\d+)(?:: | ))?(.*)", str(e), re.DOTALL)
+        index = int(match.group(1)) if match and match.group(1) else len(path_names) - 1
+        reason = match.group(2) if match else str(e)
+        reason = reason.split("; these rows read as")[0].split("; the table reads as")[0]
+        raise _error(f"joint {_q(path_names[index])}: {reason}") from None
+
+
 def chain_from_urdf(source, tip_link, base_link=None):
     root = _read(source)
+    with np.errstate(over="ignore", invalid="ignore"):  # overflow is checked for, and refused by name
+        return _chain_from_tree(root, tip_link, base_link)
+
+
+def _chain_from_tree(root, tip_link, base_link):
     links = {}
-    for link in root.findall("link"):
+    for link in root.iterfind("link"):
         name = link.get("name")
         if name is None:
-            raise ValueError("Chain.from_urdf: a <link> without a name")
+            raise _error("a <link> without a name")
+        if name in links:
+            raise _error(f"duplicate link name {_q(name)}")
         links[name] = link
-    parent_joint = {}  # child link -> its joint element
-    for joint in root.findall("joint"):
+    parent_joint = {}  # child link -> (its joint element, the joint's name, the parent link)
+    children = {}  # link -> [(joint element, joint name, child link)] in document order
+    joint_names = set()
+    for joint in root.iterfind("joint"):
         name = joint.get("name")
-        what = f"joint {name!r}"
+        if name is None:
+            raise _error("a <joint> without a name")
+        if name in joint_names:
+            raise _error(f"duplicate joint name {_q(name)}")
+        joint_names.add(name)
         parent, child = joint.find("parent"), joint.find("child")
-        if parent is None or child is None or parent.get("link") is None or child.get("link") is None:
-            raise ValueError(f"Chain.from_urdf: {what}: expected <parent link=...> and <child link=...>")
-        for end in (parent.get("link"), child.get("link")):
-            if end not in links:
-                raise ValueError(f"Chain.from_urdf: {what} names a missing link {end!r}")
-        c = child.get("link")
+        p = None if parent is None else parent.get("link")
+        c = None if child is None else child.get("link")
+        if p is None or c is None:
+            raise _error(f"joint {_q(name)}: expected <parent link=...> and <child link=...>")
+        if p not in links or c not in links:
+            raise _error(f"joint {_q(name)} names a missing link {_q(p if p not in links else c)}")
         if c in parent_joint:
-            raise ValueError(
-                f"Chain.from_urdf: link {c!r} is the child of joints {parent_joint[c].get('name')!r} "
-                f"and {name!r}: a loop (URDF describes trees)"
+            raise _error(
+                f"link {_q(c)} is the child of joints {_q(parent_joint[c][1])} and {_q(name)}: "
+                "a loop (URDF describes trees)"
             )
-        parent_joint[c] = joint
+        parent_joint[c] = (joint, name, p)
+        children.setdefault(p, []).append((joint, name, c))
     for label, link in (("tip_link", tip_link), ("base_link", base_link)):
         if link is not None and not isinstance(link, str):
             raise TypeError(f"Chain.from_urdf({label}): expected a link name (str), got {type(link).__name__}")
@@ -148,85 +410,104 @@ def chain_from_urdf(source, tip_link, base_link=None):
     roots = [name for name in links if name not in parent_joint]
     if base_link is None:
         if len(roots) != 1:
-            raise ValueError(
-                "Chain.from_urdf: the description has no root link (a loop)"
-                if not roots
-                else f"Chain.from_urdf: several root links {roots}: pass base_link"
-            )
+            if not roots:
+                raise _error("the description has no root link (a loop)")
+            raise _error(f"several root links {roots}: pass base_link")
         base_link = roots[0]
     # From the tip up to the base.
     path, link, seen = [], tip_link, set()
     while link != base_link:
         if link in seen:
-            raise ValueError(f"Chain.from_urdf: a loop through link {link!r}")
+            raise _error(f"a loop through link {_q(link)}")
         seen.add(link)
-        joint = parent_joint.get(link)
-        if joint is None:
-            raise ValueError(
-                f"Chain.from_urdf: tip_link {tip_link!r} is not below base_link {base_link!r}"
-            )
-        path.append(joint)
-        link = joint.find("parent").get("link")
+        if link not in parent_joint:
+            raise _error(f"tip_link {_q(tip_link)} is not below base_link {_q(base_link)}")
+        joint, name, parent = parent_joint[link]
+        path.append((joint, name, link))
+        link = parent
     path.reverse()
     # Links hanging off the chain (side branches, and what is below the tip)
     # ride rigidly on the chain link they hang from: fixed joints as they
     # are, moving joints off the chain at zero (as Pinocchio's
     # buildReducedModel at the neutral configuration).
-    children = {}
-    for joint in root.findall("joint"):
-        children.setdefault(joint.find("parent").get("link"), []).append(joint)
-    on_path = {base_link} | {joint.find("child").get("link") for joint in path}
+    on_path = {base_link} | {child for _, _, child in path}
 
-    def hanging_parts(link, T_link):
-        parts = []
-        for joint in children.get(link, []):
-            child = joint.find("child").get("link")
+    def hanging_parts(link, T_link, parts):
+        """Appends the parts of the links below link that are off the chain,
+        depth first in document order, with an explicit stack (a branch may
+        be tens of thousands of links long)."""
+        stack = [(joint, name, child, T_link) for joint, name, child in reversed(children.get(link, ()))]
+        visited = set()
+        while stack:
+            joint, name, child, T_parent = stack.pop()
             if child in on_path:
                 continue
-            T_child = T_link @ _pose(joint.find("origin"), f"joint {joint.get('name')!r}")
+            if child in visited:  # only through a loop (each link has one parent)
+                raise _error(f"a loop through link {_q(child)}")
+            visited.add(child)
+            # (a pose that overflows here matters only through the mass
+            # properties of the chain link, which are checked)
+            T_child = _compose(T_parent, joint, name)
             part = _inertial(links[child], T_child)
             if part is not None:
                 parts.append(part)
-            parts += hanging_parts(child, T_child)
-        return parts
+            below = children.get(child)
+            if below:
+                stack.extend((j, n, c, T_child) for j, n, c in reversed(below))
 
     screws, types, names, lower, upper, velocity, effort = [], [], [], [], [], [], []
     bodies = []  # per moving joint, the (mass, com, inertia) of the links it moves
     T = np.eye(4)
-    for joint in path:
-        name, kind = joint.get("name"), joint.get("type")
-        what = f"joint {name!r}"
+    for joint, name, child in path:
+        kind = joint.get("type")
+        what = f"joint {_q(name)}"
         if kind in ("floating", "planar"):
-            raise ValueError(
-                f"Chain.from_urdf: {what} is {kind}: a serial chain has joints of one degree of freedom"
-            )
+            raise _error(f"{what} is {kind}: a serial chain has joints of one degree of freedom")
         if kind not in MOVING + ("fixed",):
-            raise ValueError(f"Chain.from_urdf: {what}: unknown joint type {kind!r}")
+            raise _error(f"{what}: unknown joint type {kind!r}")
         if joint.find("mimic") is not None:
-            raise ValueError(f"Chain.from_urdf: {what}: <mimic> joints are not supported")
-        T = T @ _pose(joint.find("origin"), what)
+            raise _error(f"{what}: <mimic> joints are not supported")
+        T = _compose(T, joint, name)
+        if not _finite(T[:3, 3]):
+            raise _error(f"{what}: the pose of link {_q(child)} at home is not finite (overflow)")
         if kind in MOVING:
             axis_el = joint.find("axis")
-            axis = _floats(axis_el.get("xyz", "1 0 0"), 3, f"{what} <axis xyz>") if axis_el is not None else np.array([1.0, 0, 0])
-            norm = np.linalg.norm(axis)
-            if not norm > 0:
-                raise ValueError(f"Chain.from_urdf: {what}: <axis xyz> is zero")
-            w = T[:3, :3] @ (axis / norm)
+            axis = np.array(
+                _floats(axis_el.get("xyz", "1 0 0"), 3, f"{what} <axis xyz>") if axis_el is not None else [1.0, 0, 0]
+            )
+            # a direction: scaled by its largest component first, so that
+            # (1e308, 1e308, 0) is normalized without overflow
+            largest = np.abs(axis).max()
+            if not largest > 0:
+                raise _error(f"{what}: <axis xyz> is zero")
+            axis = axis / largest
+            w = T[:3, :3] @ (axis / np.linalg.norm(axis))
             w /= np.linalg.norm(w)
             if kind == "prismatic":
-                screws.append(np.concatenate([w, np.zeros(3)]))
+                screw = np.concatenate([w, np.zeros(3)])
             else:
-                screws.append(np.concatenate([-np.cross(w, T[:3, 3]), w]))
+                screw = np.concatenate([-np.cross(w, T[:3, 3]), w])
+            if not _finite(screw):
+                raise _error(f"{what}: its screw at home is not finite (overflow)")
+            screws.append(screw)
             limit = joint.find("limit")
-            if kind == "continuous":
-                lo, hi = -math.inf, math.inf
-            elif limit is None:
-                raise ValueError(f"Chain.from_urdf: {what}: a {kind} joint needs a <limit>")
-            else:
+            if kind != "continuous" and limit is None:
+                raise _error(f"{what}: a {kind} joint needs a <limit>")
+            if limit is not None:
                 lo = _attribute(limit, "lower", f"{what} <limit>", 0.0)
                 hi = _attribute(limit, "upper", f"{what} <limit>", 0.0)
-            vel = math.inf if limit is None else _attribute(limit, "velocity", f"{what} <limit>", math.inf)
-            eff = math.inf if limit is None else _attribute(limit, "effort", f"{what} <limit>", math.inf)
+                vel = _attribute(limit, "velocity", f"{what} <limit>", math.inf)
+                eff = _attribute(limit, "effort", f"{what} <limit>", math.inf)
+                if kind != "continuous" and lo > hi:
+                    raise _error(f"{what} <limit>: lower {_number(lo)} > upper {_number(hi)}")
+                if vel < 0:
+                    raise _error(f"{what} <limit>: negative velocity {_number(vel)}")
+                if eff < 0:
+                    raise _error(f"{what} <limit>: negative effort {_number(eff)}")
+            else:
+                vel = eff = math.inf
+            if kind == "continuous":
+                lo, hi = -math.inf, math.inf
             types.append(kind)
             names.append(name)
             lower.append(lo)
@@ -235,21 +516,21 @@ def chain_from_urdf(source, tip_link, base_link=None):
             effort.append(eff)
             bodies.append([])
         if bodies:  # links before the first moving joint belong to the base
-            child = joint.find("child").get("link")
             part = _inertial(links[child], T)
             if part is not None:
                 bodies[-1].append(part)
-            bodies[-1] += hanging_parts(child, T)
+            hanging_parts(child, T, bodies[-1])
     if not screws:
-        raise ValueError(
-            f"Chain.from_urdf: no revolute, continuous or prismatic joint from {base_link!r} to {tip_link!r}"
-        )
+        raise _error(f"no revolute, continuous or prismatic joint from {_q(base_link)} to {_q(tip_link)}")
     inertias = np.zeros((len(bodies), 10))
     for i, parts in enumerate(bodies):
         m, c, I = _merge(parts) if parts else (0.0, np.zeros(3), np.zeros((3, 3)))
         inertias[i] = [m, *c, I[0, 0], I[0, 1], I[0, 2], I[1, 1], I[1, 2], I[2, 2]]
-    return _core.Chain(
-        np.array(screws),
+        if not _finite(inertias[i]):
+            raise _error(f"joint {_q(names[i])}: the mass properties of the links it moves are not finite (overflow)")
+    return _chain(
+        names,
+        screws,
         T,
         joint_types=types,
         names=names,

@@ -7,12 +7,15 @@ descriptions a serial chain cannot be made of (small URDF strings here)."""
 
 import importlib.metadata
 import math
+import os
 import xml.etree.ElementTree as ET
+from pathlib import Path
 
+import hostile_urdf
 import numpy as np
 import pytest
 
-from chasles import Chain
+from chasles import Chain, _urdf
 
 # (file name under robots/, tip link, base link or None)
 ARMS = {
@@ -316,3 +319,180 @@ def test_source_may_be_a_path(tmp_path):
     assert Chain.from_urdf(p, "c") == Chain.from_urdf(str(p), "c") == Chain.from_urdf(urdf(GOOD), "c")
     with pytest.raises(TypeError, match="expected a path or the XML text"):
         Chain.from_urdf(3.0, "c")
+
+
+# ---- hostile input (the contract shared with the C++ loader; the cases are in hostile_urdf.py) ----
+
+PREFIX = "Chain.from_urdf: "
+HOSTILE = {case.name: case for case in hostile_urdf.cases()}
+
+
+def refusal(source, tip, base=None):
+    """The text after the prefix of the loader's refusal."""
+    with pytest.raises(ValueError) as info:
+        Chain.from_urdf(source, tip, base)
+    message = str(info.value)
+    assert message.startswith(PREFIX), message
+    return message[len(PREFIX) :]
+
+
+@pytest.mark.parametrize(
+    "name",
+    # (the side branches: test_long_side_branch_rides_on_its_link)
+    [n for n, c in HOSTILE.items() if c.error is None and c.agree == "exact" and not n.startswith("side branch")],
+)
+def test_hostile_descriptions_that_load(name):
+    case = HOSTILE[name]
+    arm = Chain.from_urdf(case.text, case.tip, case.base)
+    assert arm.n_joints >= 1
+    assert np.isfinite(arm.screws).all() and np.isfinite(arm.link_inertias).all()
+
+
+@pytest.mark.parametrize("name", [n for n, c in HOSTILE.items() if c.error is not None])
+def test_hostile_descriptions_refused_with_the_contracts_text(name):
+    case = HOSTILE[name]
+    text = refusal(case.text, case.tip, case.base)
+    if case.agree == "prefix":
+        assert text.startswith(case.error), text
+    else:
+        assert text == case.error
+
+
+@pytest.mark.parametrize("n", [1000, 25_000])
+def test_long_side_branch_rides_on_its_link(n, tmp_path):
+    # b (1 kg, com 0.1 m along x) carries a branch of n fixed links 1 mm apart,
+    # the last of 1 kg: n mm above b's frame, which is 0.5 m above the base
+    text = hostile_urdf.side_branch(n)
+    path = tmp_path / "branch.urdf"
+    path.write_text(text)
+    for source in (text, path):
+        arm = Chain.from_urdf(source, "c")
+        m, *com = arm.link_inertias[0, :4]
+        assert m == 2.0
+        np.testing.assert_allclose(com, [0.05, 0, 0.5 + n * 0.001 / 2], rtol=1e-12, atol=1e-15)
+
+
+def test_a_side_branch_of_25000_links_is_a_few_megabytes():
+    assert 2_000_000 < len(hostile_urdf.side_branch(25_000)) < 4_000_000
+
+
+def test_nesting_bound_is_64():
+    assert Chain.from_urdf(hostile_urdf.nested(64), "c").n_joints == 2
+    deep = "the XML nests elements more than 64 deep, the bound on a URDF description"
+    assert refusal(hostile_urdf.nested(65), "c") == deep
+    # deeper than the parser's own recursion could go, closed or not
+    assert refusal(hostile_urdf.nested(100_000), "c") == deep
+    assert refusal('<robot name="r"><link name="c">' + "<x>" * 1_000_000, "c") == deep
+    # self-closing elements at 64 load; one at 65 is an element 65 deep
+    assert Chain.from_urdf(hostile_urdf.nested(64, "<x/><x a='/>'/>"), "c").n_joints == 2
+    assert refusal(hostile_urdf.nested(65, "<x/>"), "c") == deep
+    # markup that does not nest: comments, CDATA, instructions, quoted '>' and '/>'
+    lots = "<x>" * 100
+    inner = f"<!-- {lots} --><![CDATA[{lots}]]><?pi {lots} ?><x a='>' b=\"/>\"></x>"
+    assert Chain.from_urdf(hostile_urdf.nested(64, inner), "c").n_joints == 2
+    # a tag of many attributes (the scan counts it as a start tag; the parser's
+    # events tell, exactly, that it nests no deeper)
+    many = "<x" + "".join(f" a{i}='/>'" for i in range(1000)) + "/>"
+    assert Chain.from_urdf(hostile_urdf.nested(64, many), "c").n_joints == 2
+
+
+def test_entities_count_in_the_nesting():
+    # expat expands the entities a document type declares: what it would
+    # build is measured, not the text
+    deep = "the XML nests elements more than 64 deep, the bound on a URDF description"
+    assert refusal(HOSTILE["an entity expanding to deep nesting"].text, "c") == deep
+    shallow = '<!DOCTYPE robot [<!ENTITY e "<x><x></x></x>">]>' + hostile_urdf.arm(c='<link name="c">&e;</link>')
+    assert Chain.from_urdf(shallow, "c").n_joints == 2
+
+
+def test_the_depth_scan_is_linear_on_unterminated_markup():
+    # each of these would cost a quadratic time to a scan that looks for the
+    # end of each piece of markup from each '<', or memory per repetition to
+    # a regular expression that repeats a group without bound; here they are
+    # a few MB each (refused as not well-formed XML: only that they finish is
+    # asserted)
+    for piece in ("<!--", "<![CDATA[", "<?", "<a x='", '<a x="', "<a ", "<a/", "<", "<a x=''"):
+        with pytest.raises(ValueError):
+            Chain.from_urdf("<robot>" + piece * 300_000, "c")
+
+
+def test_numbers_are_printed_shortest_without_a_trailing_zero():
+    case = HOSTILE["negative integer mass"]
+    assert refusal(case.text, "c") == "link 'c' <mass>: negative mass -2 (a mass is >= 0)"
+    case = HOSTILE["tiny negative mass"]
+    assert refusal(case.text, "c") == "link 'c' <mass>: negative mass -1e-300 (a mass is >= 0)"
+
+
+def test_huge_axis_and_origin():
+    arm = Chain.from_urdf(HOSTILE["axis of 1e308"].text, "c")
+    np.testing.assert_allclose(arm.screws[0, 3:], [2**-0.5, 2**-0.5, 0], rtol=0, atol=1e-16)
+    arm = Chain.from_urdf(HOSTILE["tiny axis"].text, "c")  # subnormal components: scaled before the norm
+    np.testing.assert_allclose(arm.screws[0, :3], [0, 0.6, 0.8], rtol=0, atol=1e-16)
+    arm = Chain.from_urdf(HOSTILE["origin of 1e308 once"].text, "c")
+    assert np.asarray(arm.home)[0, 3] == 1e308 + 0.3
+
+
+def test_chain_validation_names_the_joint(monkeypatch):
+    # the Chain constructor refuses by joint index: restated with the name
+    real = _urdf._core.Chain
+
+    def upper_below_lower(screws, home, **kw):
+        kw["upper"] = [kw["upper"][0], kw["lower"][1] - 1]
+        return real(screws, home, **kw)
+
+    monkeypatch.setattr(_urdf._core, "Chain", upper_below_lower)
+    text = refusal(hostile_urdf.arm(), "c")
+    assert text.startswith("joint 'j2': expected lower <= upper"), text
+    assert "Chain(" not in text and "joint 1" not in text
+
+
+def test_text_or_path(tmp_path):
+    text = hostile_urdf.arm()
+    assert Chain.from_urdf("\ufeff \n" + text, "c") == Chain.from_urdf(text, "c")
+    assert Chain.from_urdf(b"\xef\xbb\xbf\n" + text.encode(), "c") == Chain.from_urdf(text, "c")
+    path = tmp_path / "arm.urdf"
+    path.write_bytes(b"\xef\xbb\xbf\n" + text.encode())
+    for source in (path, str(path), os.fsencode(path)):
+        assert Chain.from_urdf(source, "c") == Chain.from_urdf(text, "c")
+    # a path whose file name starts with a byte-order mark is still a path
+    odd = tmp_path / "\ufeffarm.urdf"
+    odd.write_text(text)
+    assert Chain.from_urdf(str(odd), "c") == Chain.from_urdf(text, "c")
+
+
+@pytest.mark.parametrize("kind", ["missing file", "directory", "larger than 64 MiB", "empty path", "/dev/zero", "FIFO"])
+def test_sources_that_are_not_urdf_files(kind, tmp_path):
+    cases = {name: (path, error) for name, path, error in hostile_urdf.path_cases(tmp_path)}
+    if kind not in cases:
+        pytest.skip(f"no {kind} on this system")
+    path, error = cases[kind]
+    assert refusal(path, "c") == error
+    if path:
+        assert refusal(Path(path), "c") == error
+
+
+def test_text_larger_than_64_mib():
+    head = '<robot name="r"><link name="c"/>'
+    text = head + " " * (64 * 1024 * 1024 + 1 - len(head) - len("</robot>")) + "</robot>"
+    assert len(text) == 64 * 1024 * 1024 + 1
+    too_large = "the description is larger than 64 MiB, the bound on a URDF description"
+    assert refusal(text, "c") == too_large
+    assert refusal(text.encode(), "c") == too_large
+    # the bound is on the UTF-8 bytes: 'é' is two
+    accented = head + "é" * (32 * 1024 * 1024) + "</robot>"
+    assert refusal(accented, "c") == too_large
+
+
+def test_a_file_that_is_not_utf8(tmp_path):
+    path = tmp_path / "latin1.urdf"
+    path.write_bytes(hostile_urdf.arm(extra="<!-- caf\xe9 -->").encode("latin-1"))
+    assert refusal(path, "c").startswith(f"'{path}' is not UTF-8 text")
+
+
+def test_physically_impossible_inertias_are_not_refused():
+    # the contract's decision: 48 link inertias of example-robot-data are not
+    # positive semidefinite or violate the triangle inequality, and load
+    # (diag(0, 0, 0.003) as anymal's hatch; moments 1, 1, 3; a negative moment)
+    for inertia in (("0", "0", "0", "0", "0", "0.003"), ("1", "0", "0", "1", "0", "3"), ("-0.1", "0", "0", "0.1", "0", "0.1")):
+        arm = Chain.from_urdf(hostile_urdf.arm(c=hostile_urdf.link("c", 1.0, inertia=inertia)), "c")
+        assert arm.link_inertias[1, 9] == float(inertia[5])
