@@ -445,9 +445,9 @@ def _chain_from_tree(root, tip_link, base_link):
             if child in visited:  # only through a loop (each link has one parent)
                 raise _error(f"a loop through link {_q(child)}")
             visited.add(child)
-            # (a pose that overflows here matters only through the mass
-            # properties of the chain link, which are checked)
             T_child = _compose(T_parent, joint, name)
+            if not _finite(T_child[:3, 3]):  # massless or not: a hostile number, refused where it overflows
+                raise _error(f"joint {_q(name)}: the pose of link {_q(child)} at home is not finite (overflow)")
             part = _inertial(links[child], T_child)
             if part is not None:
                 parts.append(part)

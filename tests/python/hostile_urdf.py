@@ -256,13 +256,14 @@ def cases():
             arm(extra=link("d") + link("e", 1.0) + joint("jd", "fixed", "b", "d", xyz=f"0 {huge} 0")
                 + joint("je", "fixed", "d", "e", xyz=f"0 {huge} 0")),
             "c",
-            "joint 'j1': the mass properties of the links it moves are not finite (overflow)",
+            "joint 'je': the pose of link 'e' at home is not finite (overflow)",
         ),
         Case(
             "origin of 1e308 composed in a massless side branch",
             arm(extra=link("d") + link("e") + joint("jd", "fixed", "b", "d", xyz=f"0 {huge} 0")
                 + joint("je", "fixed", "d", "e", xyz=f"0 {huge} 0")),
             "c",
+            "joint 'je': the pose of link 'e' at home is not finite (overflow)",
         ),
         Case("mass of 1e308", arm(c=link("c", huge)), "c"),
         Case(
