@@ -26,8 +26,9 @@ prefixes "Chain.from_urdf: " and "chain_from_urdf: "):
 - Before the XML parser sees the document, a linear scan refuses elements
   nested more than 64 deep (a URDF nests about 6 deep).
 - The link tree is walked with an explicit stack, never by recursion.
-- Every number is checked where it is read and where numbers are combined
-  (poses composed along the chain, masses summed), each refusal naming the
+- Every number of every <link> and <joint> is checked, on the chain or not
+  (finite; masses >= 0), and so are the numbers combined (poses composed
+  from the root, masses summed), each refusal naming the
   joint or link; the Chain constructor's validation comes last, its
   refusal named after the joint.
 - Not refused (a decision): physically impossible inertias (not positive
@@ -369,6 +370,43 @@ def chain_from_urdf(source, tip_link, base_link=None):
         return _chain_from_tree(root, tip_link, base_link)
 
 
+def _check_numbers(element, what):
+    """Refuses a non-finite or negative-mass number anywhere in a <link> or
+    <joint>, on the chain or not (as the C++ loader does: a hostile number is
+    refused wherever it is, not only where this chain reads it)."""
+    if element.tag == "link":
+        inertial = element.find("inertial")
+        if inertial is None:
+            return
+        origin = inertial.find("origin")
+        if origin is not None:
+            for key in ("xyz", "rpy"):
+                if origin.get(key) is not None:
+                    _floats(origin.get(key), 3, f"{what} <inertial> <origin {key}>")
+        mass_el = inertial.find("mass")
+        if mass_el is not None:
+            mass = _attribute(mass_el, "value", f"{what} <mass>")
+            if mass < 0:
+                raise _error(f"{what} <mass>: negative mass {_number(mass)} (a mass is >= 0)")
+        inertia = inertial.find("inertia")
+        if inertia is not None:
+            for key in ("ixx", "ixy", "ixz", "iyy", "iyz", "izz"):
+                _attribute(inertia, key, f"{what} <inertia>", 0.0)
+        return
+    origin = element.find("origin")
+    if origin is not None:
+        for key in ("xyz", "rpy"):
+            if origin.get(key) is not None:
+                _floats(origin.get(key), 3, f"{what} <origin {key}>")
+    axis = element.find("axis")
+    if axis is not None and axis.get("xyz") is not None:
+        _floats(axis.get("xyz"), 3, f"{what} <axis xyz>")
+    limit = element.find("limit")
+    if limit is not None:
+        for key in ("lower", "upper", "velocity", "effort"):
+            _attribute(limit, key, f"{what} <limit>", 0.0)
+
+
 def _chain_from_tree(root, tip_link, base_link):
     links = {}
     for link in root.iterfind("link"):
@@ -377,6 +415,7 @@ def _chain_from_tree(root, tip_link, base_link):
             raise _error("a <link> without a name")
         if name in links:
             raise _error(f"duplicate link name {_q(name)}")
+        _check_numbers(link, f"link {_q(name)}")
         links[name] = link
     parent_joint = {}  # child link -> (its joint element, the joint's name, the parent link)
     children = {}  # link -> [(joint element, joint name, child link)] in document order
@@ -388,6 +427,7 @@ def _chain_from_tree(root, tip_link, base_link):
         if name in joint_names:
             raise _error(f"duplicate joint name {_q(name)}")
         joint_names.add(name)
+        _check_numbers(joint, f"joint {_q(name)}")
         parent, child = joint.find("parent"), joint.find("child")
         p = None if parent is None else parent.get("link")
         c = None if child is None else child.get("link")

@@ -274,6 +274,22 @@ def cases():
         ),
     ]
 
+    # hostile numbers off the chain: refused wherever they are
+    off = joint("jz", "fixed", "a", "z")
+    out += [
+        Case("negative mass on the base link", arm(a=link("a", -1.0)), "c",
+             "link 'a' <mass>: negative mass -1 (a mass is >= 0)"),
+        Case("NaN mass on a link off the chain", arm(extra=link("z", "nan") + off), "c",
+             "link 'z' <mass>: expected finite numbers"),
+        Case("infinite origin on a joint off the chain",
+             arm(extra=link("z") + joint("jz", "fixed", "a", "z", xyz="0 inf 0")), "c",
+             "joint 'jz' <origin xyz>: expected finite numbers"),
+        Case("NaN limit on a joint below the tip",
+             arm(extra=link("z") + joint("jz", "revolute", "c", "z", limit='<limit lower="nan" upper="1" '
+                                          'effort="1" velocity="1"/>')), "c",
+             "joint 'jz' <limit>: expected finite numbers"),
+    ]
+
     # for each parser to refuse in its own words
     out += [
         Case("not well-formed", "<robot name='r'><link name='a'/>", "a", None, "refuse"),
