@@ -407,6 +407,35 @@ def _check_numbers(element, what):
             _attribute(limit, key, f"{what} <limit>", 0.0)
 
 
+_LINK_NUMBERS = {"origin": ("xyz", "rpy"), "mass": ("value",), "inertia": ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")}
+_JOINT_NUMBERS = {"origin": ("xyz", "rpy"), "axis": ("xyz",), "limit": ("lower", "upper", "velocity", "effort")}
+
+
+def _numbers_plainly_fine(elements, numbers):
+    """Whether every number _check_numbers reads in these elements (the
+    children of each named in `numbers`, with their attributes) is a finite
+    ASCII float and every mass is >= 0: one pass with no call per number (a
+    URDF has hundreds), so that the common case costs little; on False,
+    _check_numbers finds the element and says what."""
+    texts, masses = [], []
+    for element in elements:
+        for child in element:
+            keys = numbers.get(child.tag)
+            if keys is None:
+                continue
+            get = child.get
+            texts.extend(t for t in map(get, keys) if t is not None)
+            if child.tag == "mass":
+                masses.append(get("value") or "0")
+    joined = " ".join(texts)
+    if not joined.isascii() or "_" in joined:
+        return False
+    try:
+        return all(map(math.isfinite, map(float, joined.split()))) and min(map(float, masses), default=0) >= 0
+    except ValueError:
+        return False
+
+
 def _chain_from_tree(root, tip_link, base_link):
     links = {}
     for link in root.iterfind("link"):
@@ -415,8 +444,11 @@ def _chain_from_tree(root, tip_link, base_link):
             raise _error("a <link> without a name")
         if name in links:
             raise _error(f"duplicate link name {_q(name)}")
-        _check_numbers(link, f"link {_q(name)}")
         links[name] = link
+    inertials = (i for i in map(lambda link: link.find("inertial"), links.values()) if i is not None)
+    if not _numbers_plainly_fine(inertials, _LINK_NUMBERS):
+        for name, link in links.items():
+            _check_numbers(link, f"link {_q(name)}")
     parent_joint = {}  # child link -> (its joint element, the joint's name, the parent link)
     children = {}  # link -> [(joint element, joint name, child link)] in document order
     joint_names = set()
@@ -427,7 +459,6 @@ def _chain_from_tree(root, tip_link, base_link):
         if name in joint_names:
             raise _error(f"duplicate joint name {_q(name)}")
         joint_names.add(name)
-        _check_numbers(joint, f"joint {_q(name)}")
         parent, child = joint.find("parent"), joint.find("child")
         p = None if parent is None else parent.get("link")
         c = None if child is None else child.get("link")
@@ -442,6 +473,9 @@ def _chain_from_tree(root, tip_link, base_link):
             )
         parent_joint[c] = (joint, name, p)
         children.setdefault(p, []).append((joint, name, c))
+    if not _numbers_plainly_fine((joint for joint, _, _ in parent_joint.values()), _JOINT_NUMBERS):
+        for joint in root.iterfind("joint"):
+            _check_numbers(joint, f"joint {_q(joint.get('name'))}")
     for label, link in (("tip_link", tip_link), ("base_link", base_link)):
         if link is not None and not isinstance(link, str):
             raise TypeError(f"Chain.from_urdf({label}): expected a link name (str), got {type(link).__name__}")
