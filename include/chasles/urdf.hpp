@@ -41,6 +41,7 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -73,6 +74,29 @@ struct UrdfDescription {
 /// exception of urdfdom or of an allocation becomes `error`).
 UrdfDescription read_urdf(const std::string& xml_or_path, const std::string& tip_link,
                           const std::string& base_link) noexcept;
+
+/// What Chain::validate() found, in words (the joint is named by the caller).
+inline const char* urdf_check_reason(ChainStatus status) noexcept {
+  switch (status) {
+    case ChainStatus::revolute_axis_not_unit: return "its axis is not a unit vector (not finite in this scalar type?)";
+    case ChainStatus::revolute_pitch_not_zero: return "its screw has a pitch (not finite in this scalar type?)";
+    case ChainStatus::prismatic_rotates: return "a prismatic joint whose screw rotates";
+    case ChainStatus::prismatic_axis_not_unit: return "its axis is not a unit vector (not finite in this scalar type?)";
+    case ChainStatus::position_limits_invalid: return "its position limits are invalid (lower > upper or NaN)";
+    case ChainStatus::velocity_or_effort_limit_invalid: return "its velocity or effort limit is negative or NaN";
+    case ChainStatus::gravity_not_finite: return "gravity is not finite";
+    case ChainStatus::link_inertia_invalid:
+      return "the mass properties of the links it moves are not finite (overflow)";
+    default: return "the chain does not validate";
+  }
+}
+
+/// Whether x is finite (false for NaN).
+template <typename Scalar>
+bool urdf_finite(const Scalar& x) noexcept {
+  using std::abs;
+  return abs(x) <= Scalar(std::numeric_limits<RealOf<Scalar>>::max());
+}
 
 }  // namespace detail
 
@@ -141,10 +165,31 @@ UrdfChain<Scalar, MaxJoints> chain_from_urdf(const std::string& xml_or_path, con
     p(r) = Scalar(d.home(r, 3));
     for (Eigen::Index c = 0; c < 3; ++c) R(r, c) = Scalar(d.home(r, c));
   }
+  const std::string last = "chain_from_urdf: joint '" + d.names[static_cast<std::size_t>(n - 1)] + "'";
+  // Finite in double, the home pose may overflow Scalar (float).
+  bool finite = true;
+  for (Eigen::Index r = 0; r < 3; ++r) {
+    finite = finite && detail::urdf_finite(p(r));
+    for (Eigen::Index c = 0; c < 3; ++c) finite = finite && detail::urdf_finite(R(r, c));
+  }
+  if (!finite) {
+    out.error = last + ": the pose of link '" + tip_link + "' at home is not finite (overflow)";
+    return out;
+  }
   // The full constructor projects the home pose onto SE(3) (a product of
   // URDF transforms is a rigid motion up to a few eps).
-  out.chain.emplace(S, SE3<Scalar>(SO3<Scalar>::from_matrix_unchecked(R), p), types, lower, upper, velocity, effort,
-                    SE3<Scalar>(), SE3<Scalar>(), ChainType::default_gravity(), inertias);
+  ChainType chain(S, SE3<Scalar>(SO3<Scalar>::from_matrix_unchecked(R), p), types, lower, upper, velocity, effort,
+                  SE3<Scalar>(), SE3<Scalar>(), ChainType::default_gravity(), inertias);
+  // Last, the chain's own validation (what read_urdf checked in double,
+  // and what does not survive the conversion to Scalar).
+  const ChainCheck check = chain.validate();
+  if (!check) {
+    out.error = check.joint >= 0 ? "chain_from_urdf: joint '" + d.names[static_cast<std::size_t>(check.joint)] + "': "
+                                 : std::string("chain_from_urdf: ");
+    out.error += detail::urdf_check_reason(check.status);
+    return out;
+  }
+  out.chain.emplace(chain);
   out.joint_names = std::move(d.names);
   return out;
 }
