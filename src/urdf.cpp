@@ -31,19 +31,20 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <deque>
 #include <exception>
 #include <limits>
-#include <map>
 #include <memory>
 #include <mutex>
-#include <set>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <thread>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -119,21 +120,21 @@ std::string read_source(const std::string& source) {
 
 // ---- 2. The scan.
 
-/// An element the loader reads itself: its attributes, entities decoded.
+/// An attribute: its name and value, views of the text (or, for a value
+/// with entities, of its decoded copy in Scan::decoded).
+using Attribute = std::pair<std::string_view, std::string_view>;
+
+/// An element the loader reads itself: whether there is one, and its
+/// attributes (Scan::attributes[first, first + count)).
 struct Element {
   bool present = false;
-  std::vector<std::pair<std::string, std::string>> attributes;
-  const std::string* get(const char* name) const {
-    for (const auto& a : attributes)
-      if (a.first == name) return &a.second;
-    return nullptr;
-  }
+  std::uint32_t first = 0, count = 0;
 };
 
 /// A <link> of the <robot>: its name and its first <inertial>'s first
 /// <origin>, <mass> and <inertia> (urdfdom reads the first of each).
 struct ScannedLink {
-  std::string name;
+  std::string_view name;
   bool inertial = false;
   Element origin, mass, inertia;
 };
@@ -141,16 +142,36 @@ struct ScannedLink {
 /// A <joint> of the <robot>: its name and its first <origin>, <axis>,
 /// <limit>, <parent> and <child>.
 struct ScannedJoint {
-  std::string name;
+  std::string_view name;
   Element origin, axis, limit, parent, child;
 };
 
 struct Scan {
   std::vector<ScannedLink> links;
   std::vector<ScannedJoint> joints;
+  std::vector<Attribute> attributes;
+  std::deque<std::string> decoded;  // the values written with entities, decoded (stable addresses)
+
+  /// The value of the attribute `name` of e, if it has one.
+  const std::string_view* get(const Element& e, std::string_view name) const {
+    for (std::uint32_t k = e.first; k < e.first + e.count; ++k)
+      if (attributes[k].first == name) return &attributes[k].second;
+    return nullptr;
+  }
 };
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
+
+/// The characters that end a tag's name (blanks, '>', '/', '<') and an
+/// attribute's name (also '=' and quotes), one table lookup per character.
+struct Stops {
+  bool name[256] = {}, attribute[256] = {};
+  constexpr Stops() {
+    for (const char c : {' ', '\t', '\r', '\n', '>', '/', '<'}) name[static_cast<unsigned char>(c)] = true;
+    for (const char c : {' ', '\t', '\r', '\n', '>', '/', '=', '"', '\''}) attribute[static_cast<unsigned char>(c)] = true;
+  }
+};
+constexpr Stops kStops{};
 
 /// What an XML parser makes of an attribute value: the five named entities
 /// and character references decoded (anything else is kept as written: it
@@ -218,30 +239,34 @@ Scan scan(const std::string& text) {
   // The role of each open element (only the first kMaxDepth are ever open).
   Role roles[kMaxDepth + 1] = {};
   bool seen_robot = false;
-  auto find = [&](const char* from, const char* what) -> const char* {
-    const std::string_view rest(from, static_cast<std::size_t>(end - from));
-    const std::size_t at = rest.find(what);
-    return at == std::string_view::npos ? end : from + at + std::strlen(what);
+  auto find = [&](const char* from, const char* what) -> const char* {  // past `what`, or end
+    const std::size_t n = std::strlen(what);
+    for (;;) {
+      from = static_cast<const char*>(std::memchr(from, what[0], static_cast<std::size_t>(end - from)));
+      if (!from || static_cast<std::size_t>(end - from) < n) return end;
+      if (std::memcmp(from, what, n) == 0) return from + n;
+      ++from;
+    }
   };
   while (p < end) {
     p = static_cast<const char*>(std::memchr(p, '<', static_cast<std::size_t>(end - p)));
     if (!p) break;
-    const std::string_view at(p, static_cast<std::size_t>(end - p));
-    if (at.compare(0, 4, "<!--") == 0) {
+    const std::size_t left = static_cast<std::size_t>(end - p);
+    const unsigned char next = left >= 2 ? static_cast<unsigned char>(p[1]) : 0;
+    if (next == '!' && left >= 4 && p[2] == '-' && p[3] == '-') {
       p = find(p + 4, "-->");
       continue;
     }
-    if (at.compare(0, 9, "<![CDATA[") == 0) {
+    if (next == '!' && left >= 9 && std::memcmp(p, "<![CDATA[", 9) == 0) {
       p = find(p + 9, "]]>");
       continue;
     }
-    if (at.size() >= 2 && (at[1] == '?' || at[1] == '!' || at[1] == '/')) {
+    if (next == '?' || next == '!' || next == '/') {
       // a declaration, processing instruction or DOCTYPE; or an end tag
-      if (at[1] == '/' && depth > 0) --depth;
+      if (next == '/' && depth > 0) --depth;
       p = find(p + 2, ">");
       continue;
     }
-    const unsigned char next = at.size() >= 2 ? static_cast<unsigned char>(at[1]) : 0;
     if (!(((next | 0x20) >= 'a' && (next | 0x20) <= 'z') || next == '_' || next == ':' || next >= 0x80)) {
       p = find(p + 1, ">");  // not a tag: the parser skips it to its '>'
       continue;
@@ -249,7 +274,7 @@ Scan scan(const std::string& text) {
     // A start tag: its name, attributes, and '>' or "/>".
     ++p;
     const char* name_begin = p;
-    while (p < end && !is_blank(*p) && *p != '>' && *p != '/' && *p != '<') ++p;
+    while (p < end && !kStops.name[static_cast<unsigned char>(*p)]) ++p;
     const std::string_view name(name_begin, static_cast<std::size_t>(p - name_begin));
     if (depth + 1 > kMaxDepth)
       fail("the XML nests elements more than " + std::to_string(kMaxDepth) +
@@ -286,7 +311,10 @@ Scan scan(const std::string& text) {
                                    : nullptr;
     }
     if (element && element->present) element = nullptr;  // urdfdom reads the first
-    if (element) element->present = true;
+    if (element) {
+      element->present = true;
+      element->first = static_cast<std::uint32_t>(out.attributes.size());
+    }
     const bool named = role == Role::link || role == Role::joint;
     // Attributes: name, '=', a quoted value; anything else is skipped up to
     // the tag's end (the parser refuses such a tag).
@@ -309,7 +337,7 @@ Scan scan(const std::string& text) {
         continue;
       }
       const char* attribute_begin = p;
-      while (p < end && !is_blank(*p) && *p != '=' && *p != '>' && *p != '/' && *p != '"' && *p != '\'') ++p;
+      while (p < end && !kStops.attribute[static_cast<unsigned char>(*p)]) ++p;
       const std::string_view attribute(attribute_begin, static_cast<std::size_t>(p - attribute_begin));
       if (attribute.empty()) {  // a stray '/' or '='
         ++p;
@@ -327,14 +355,20 @@ Scan scan(const std::string& text) {
       }
       const std::string_view value(p + 1, static_cast<std::size_t>(close - p - 1));
       p = close + 1;
-      if (element)
-        element->attributes.emplace_back(std::string(attribute), decode(value));
-      else if (named && attribute == "name") {
-        std::string decoded = decode(value);
-        if (role == Role::link)
-          out.links.back().name = std::move(decoded);
-        else
-          out.joints.back().name = std::move(decoded);
+      if (element || (named && attribute == "name")) {
+        std::string_view decoded = value;
+        if (value.find('&') != std::string_view::npos) {
+          out.decoded.push_back(decode(value));
+          decoded = out.decoded.back();
+        }
+        if (element) {
+          out.attributes.emplace_back(attribute, decoded);
+          ++element->count;
+        } else if (role == Role::link) {
+          out.links.back().name = decoded;
+        } else {
+          out.joints.back().name = decoded;
+        }
       }
     }
     if (!self_closing) roles[depth++] = role;
@@ -359,31 +393,38 @@ bool parse_number(std::string_view s, double& x) {
 }
 
 /// Three numbers separated by blanks.
-bool parse_vector(const std::string& s, Vector3& v) {
+bool parse_vector(std::string_view s, Vector3& v) {
   std::size_t k = 0, i = 0;
   while (true) {
     while (i < s.size() && is_blank(s[i])) ++i;
     if (i == s.size()) break;
     std::size_t j = i;
     while (j < s.size() && !is_blank(s[j])) ++j;
-    if (k == 3 || !parse_number(std::string_view(s).substr(i, j - i), v(static_cast<Eigen::Index>(k)))) return false;
+    if (k == 3 || !parse_number(s.substr(i, j - i), v(static_cast<Eigen::Index>(k)))) return false;
     ++k;
     i = j;
   }
   return k == 3;
 }
 
+/// "link 'L'" or "joint 'J'" and what follows, for a message (built only
+/// on a refusal).
+std::string named(const char* kind, std::string_view name, const char* rest = "") {
+  return std::string(kind) + " '" + std::string(name) + "'" + rest;
+}
+
 /// The 4x4 pose of an <origin> (identity without one): translation xyz,
 /// rotation R = Rz(yaw) Ry(pitch) Rx(roll) from rpy, through urdfdom's own
 /// quaternion (urdf::Rotation::setFromRPY), as urdfdom reads it.
-Matrix4 origin_pose(const Element& origin, const std::string& what) {
+Matrix4 origin_pose(const Scan& s, const Element& origin, const char* kind, std::string_view name,
+                    const char* inertial) {
   Matrix4 T = Matrix4::Identity();
   if (!origin.present) return T;
   Vector3 xyz = Vector3::Zero(), rpy = Vector3::Zero();
-  if (const std::string* s = origin.get("xyz"))
-    if (!parse_vector(*s, xyz)) fail(what + " <origin xyz>: expected finite numbers");
-  if (const std::string* s = origin.get("rpy"))
-    if (!parse_vector(*s, rpy)) fail(what + " <origin rpy>: expected finite numbers");
+  if (const std::string_view* v = s.get(origin, "xyz"))
+    if (!parse_vector(*v, xyz)) fail(named(kind, name, inertial) + " <origin xyz>: expected finite numbers");
+  if (const std::string_view* v = s.get(origin, "rpy"))
+    if (!parse_vector(*v, rpy)) fail(named(kind, name, inertial) + " <origin rpy>: expected finite numbers");
   urdf::Rotation q;
   q.setFromRPY(rpy.x(), rpy.y(), rpy.z());
   T.topLeftCorner<3, 3>() = Eigen::Quaterniond(q.w, q.x, q.y, q.z).toRotationMatrix();
@@ -399,67 +440,88 @@ struct Inertial {
   Matrix3 inertia;  // in the <inertial> frame
 };
 
+/// The links' inertials by link name (views of the scan's names); a link
+/// without <inertial> maps to nothing.
+struct Inertials {
+  std::unordered_map<std::string_view, std::size_t> index;  // link name -> its entry in `of`, or npos
+  std::vector<Inertial> of;
+  const Inertial* find(std::string_view link) const {
+    const auto it = index.find(link);
+    return it == index.end() || it->second == std::string_view::npos ? nullptr : &of[it->second];
+  }
+};
+
 /// The checks of the contract on every link's <inertial> and every
 /// joint's numbers, duplicate names, and loops (a link that is the child
 /// of two joints, or a cycle of joints): what urdfdom would read silently
-/// wrong, refuse with another text, or keep as a reference cycle.
-std::unordered_map<std::string, Inertial> check(const Scan& s) {
-  std::unordered_map<std::string, Inertial> inertials;
-  std::set<std::string_view> names;
+/// wrong, refuse with another text, or keep as a reference cycle. Returns
+/// the links' inertials.
+Inertials check(const Scan& s) {
+  Inertials inertials;
+  inertials.index.reserve(s.links.size());
   for (const ScannedLink& link : s.links) {
-    if (!names.insert(link.name).second) fail("duplicate link name " + quoted(link.name));
+    const auto [entry, inserted] = inertials.index.emplace(link.name, std::string_view::npos);
+    if (!inserted) fail("duplicate link name " + quoted(std::string(link.name)));
     if (!link.inertial) continue;
-    const std::string what = "link " + quoted(link.name);
-    Inertial in{0.0, origin_pose(link.origin, what + " <inertial>"), Matrix3::Zero()};
-    const std::string* mass = link.mass.get("value");
-    if (!mass || !parse_number(*mass, in.mass)) fail(what + " <mass>: expected finite numbers");
-    if (in.mass < 0) fail(what + " <mass>: negative mass " + shortest(in.mass) + " (a mass is >= 0)");
+    Inertial in{0.0, origin_pose(s, link.origin, "link", link.name, " <inertial>"), Matrix3::Zero()};
+    const std::string_view* mass = s.get(link.mass, "value");
+    if (!mass || !parse_number(*mass, in.mass)) fail(named("link", link.name, " <mass>: expected finite numbers"));
+    if (in.mass < 0) fail(named("link", link.name, " <mass>: negative mass ") + shortest(in.mass) + " (a mass is >= 0)");
     double I[6];
     static const char* const kNames[6] = {"ixx", "ixy", "ixz", "iyy", "iyz", "izz"};
     for (int k = 0; k < 6; ++k) {
-      const std::string* v = link.inertia.get(kNames[k]);
-      if (!v || !parse_number(*v, I[k])) fail(what + " <inertia>: expected finite numbers");
+      const std::string_view* v = s.get(link.inertia, kNames[k]);
+      if (!v || !parse_number(*v, I[k])) fail(named("link", link.name, " <inertia>: expected finite numbers"));
     }
     in.inertia << I[0], I[1], I[2], I[1], I[3], I[4], I[2], I[4], I[5];
-    inertials.emplace(link.name, in);
+    entry->second = inertials.of.size();
+    inertials.of.push_back(in);
   }
-  names.clear();
-  std::unordered_map<std::string_view, const ScannedJoint*> parent_of;  // child link -> its joint
-  for (const ScannedJoint& joint : s.joints) {
-    if (!names.insert(joint.name).second) fail("duplicate joint name " + quoted(joint.name));
-    const std::string what = "joint " + quoted(joint.name);
-    origin_pose(joint.origin, what);
+  std::unordered_set<std::string_view> names;
+  names.reserve(s.joints.size());
+  // child link -> the joint (its index in s.joints) whose child it is
+  std::unordered_map<std::string_view, std::size_t> parent_of;
+  parent_of.reserve(s.joints.size());
+  for (std::size_t j = 0; j < s.joints.size(); ++j) {
+    const ScannedJoint& joint = s.joints[j];
+    if (!names.insert(joint.name).second) fail("duplicate joint name " + quoted(std::string(joint.name)));
     Vector3 v;
-    if (const std::string* xyz = joint.axis.get("xyz"))
-      if (!parse_vector(*xyz, v)) fail(what + " <axis xyz>: expected finite numbers");
-    for (const auto& [attribute, value] : joint.limit.attributes) {
+    for (const char* attribute : {"xyz", "rpy"})  // (urdfdom's pose is the one used)
+      if (const std::string_view* value = s.get(joint.origin, attribute))
+        if (!parse_vector(*value, v))
+          fail(named("joint", joint.name, " <origin ") + attribute + ">: expected finite numbers");
+    if (const std::string_view* xyz = s.get(joint.axis, "xyz"))
+      if (!parse_vector(*xyz, v)) fail(named("joint", joint.name, " <axis xyz>: expected finite numbers"));
+    for (std::uint32_t k = joint.limit.first; k < joint.limit.first + joint.limit.count; ++k) {
+      const auto& [attribute, value] = s.attributes[k];
       double x;
       if ((attribute == "lower" || attribute == "upper" || attribute == "velocity" || attribute == "effort") &&
           !parse_number(value, x))
-        fail(what + " <limit>: expected finite numbers");
+        fail(named("joint", joint.name, " <limit>: expected finite numbers"));
     }
-    const std::string* child = joint.child.get("link");
-    if (!child || !joint.parent.get("link")) continue;  // urdfdom refuses it
-    const auto [it, inserted] = parent_of.emplace(*child, &joint);
+    const std::string_view* child = s.get(joint.child, "link");
+    if (!child || !s.get(joint.parent, "link")) continue;  // urdfdom refuses it
+    const auto [it, inserted] = parent_of.emplace(*child, j);
     if (!inserted)
-      fail("link " + quoted(*child) + " is the child of joints " + quoted(it->second->name) + " and " +
-           quoted(joint.name) + ": a loop (URDF describes trees)");
+      fail(named("link", *child, " is the child of joints ") + quoted(std::string(s.joints[it->second].name)) +
+           " and " + quoted(std::string(joint.name)) + ": a loop (URDF describes trees)");
   }
-  // Each link has one parent at most: a loop is a walk up from a link that
-  // comes back to a link of the same walk. Each link is walked once.
-  std::unordered_map<std::string_view, std::size_t> walked;  // link -> the walk that saw it
+  // Each link has one parent joint at most: a loop is a walk up from a
+  // joint that comes back to a joint of the same walk. Each joint is walked
+  // once (walked[j]: the walk that saw joint j).
+  std::vector<std::size_t> walked(s.joints.size(), std::string_view::npos);
   for (std::size_t w = 0; w < s.joints.size(); ++w) {
-    const std::string* start = s.joints[w].child.get("link");
-    if (!start || !s.joints[w].parent.get("link")) continue;
-    for (std::string_view link = *start;;) {
-      const auto [seen, inserted] = walked.emplace(link, w);
-      if (!inserted) {
-        if (seen->second == w) fail("a loop through link " + quoted(std::string(link)));
+    for (std::size_t j = w;;) {
+      const std::string_view* parent = s.get(s.joints[j].parent, "link");
+      if (!parent || !s.get(s.joints[j].child, "link")) break;
+      if (walked[j] != std::string_view::npos) {
+        if (walked[j] == w) fail("a loop through link " + quoted(std::string(*s.get(s.joints[j].child, "link"))));
         break;
       }
-      const auto up = parent_of.find(link);
+      walked[j] = w;
+      const auto up = parent_of.find(*parent);
       if (up == parent_of.end()) break;
-      link = *up->second->parent.get("link");
+      j = up->second;
     }
   }
   return inertials;
@@ -582,44 +644,42 @@ Matrix4 pose(const urdf::Pose& p) {
 
 UrdfDescription read(const std::string& source, const std::string& tip_link, const std::string& base_link_in) {
   const std::string text = read_source(source);
-  const std::unordered_map<std::string, Inertial> inertials = check(scan(text));
+  const Scan scanned = scan(text);
+  const Inertials inertials = check(scanned);
   urdf::ModelInterfaceSharedPtr model;
   const ReleaseCycles release{model};
   model = parse(text);
 
-  // check() refused a link that is the child of two joints; the parents here
-  // are the same, as urdfdom read them.
-  std::map<std::string, std::string> parent_joint;
-  for (const auto& [name, joint] : model->joints_) parent_joint.emplace(joint->child_link_name, name);
-  if (!model->getLink(tip_link))
+  const urdf::LinkConstSharedPtr tip = model->getLink(tip_link);
+  if (!tip)
     throw std::runtime_error("chain_from_urdf(tip_link): no link named " + quoted(tip_link) + " in the description");
   if (!base_link_in.empty() && !model->getLink(base_link_in))
     throw std::runtime_error("chain_from_urdf(base_link): no link named " + quoted(base_link_in) +
                              " in the description");
   const std::string base_link = base_link_in.empty() ? model->getRoot()->name : base_link_in;
 
-  // From the tip up to the base.
+  // From the tip up to the base, by each link's parent joint (check()
+  // refused a link that is the child of two joints, and loops: the walk
+  // ends at the root; the bound on its length is a defence).
   std::vector<urdf::JointConstSharedPtr> path;
-  std::set<std::string> seen;
-  for (std::string link = tip_link; link != base_link;) {
-    if (!seen.insert(link).second) fail("a loop through link " + quoted(link));
-    const auto it = parent_joint.find(link);
-    if (it == parent_joint.end())
+  for (const urdf::Link* link = tip.get(); link->name != base_link;) {
+    if (!link->parent_joint || path.size() > model->joints_.size())
       fail("tip_link " + quoted(tip_link) + " is not below base_link " + quoted(base_link));
-    const urdf::JointConstSharedPtr joint = model->getJoint(it->second);
-    path.push_back(joint);
-    link = joint->parent_link_name;
+    path.push_back(link->parent_joint);
+    const urdf::LinkConstSharedPtr parent = model->getLink(link->parent_joint->parent_link_name);
+    if (!parent) fail("tip_link " + quoted(tip_link) + " is not below base_link " + quoted(base_link));
+    link = parent.get();
   }
   std::reverse(path.begin(), path.end());
-  std::set<std::string> on_path{base_link};
+  std::unordered_set<std::string_view> on_path{base_link};
   for (const auto& joint : path) on_path.insert(joint->child_link_name);
 
   // A link's <inertial> in the base frame at home (T_link: the link frame
   // there), as the scan read it.
   auto add_inertial = [&](const std::string& link, const Matrix4& T_link, std::vector<Part>& parts) {
-    const auto it = inertials.find(link);
-    if (it == inertials.end()) return;
-    const Inertial& in = it->second;
+    const Inertial* found = inertials.find(link);
+    if (!found) return;
+    const Inertial& in = *found;
     const Matrix4 T = T_link * in.origin;
     const Matrix3 R = T.topLeftCorner<3, 3>();
     parts.push_back({in.mass, T.topRightCorner<3, 1>(), R * in.inertia * R.transpose()});
