@@ -8,7 +8,8 @@
 //  1. read_source: XML text or a file path, bounded to 64 MiB.
 //  2. scan: one linear pass over the text, before any parser sees it: the
 //     element depth (bounded to 64: urdfdom's XML parser recurses once per
-//     level and takes quadratic time), and what the loader checks itself in
+//     level and takes quadratic time) and the attributes of an element
+//     (bounded to 256: quadratic time too), and what the loader checks itself in
 //     the links' <inertial> and the joints' <origin>, <axis>, <limit>,
 //     <parent>, <child>. urdfdom does not report everything it cannot read
 //     in what it returns (a <mass value="nan"/> is logged, and the link kept
@@ -66,6 +67,11 @@ using Vector3 = Eigen::Vector3d;
 /// robot > link > visual > geometry > mesh).
 constexpr std::size_t kMaxBytes = std::size_t{64} << 20;
 constexpr int kMaxDepth = 64;
+/// And the attributes of one element (a URDF element has at most 10 or
+/// so): urdfdom's XML parser (TinyXML) checks each new attribute against
+/// the element's others, quadratic time: 20,000 attributes (200 kB) took
+/// 1.7 s of CPU, the 270,000 of a 2.7 MB element would take minutes.
+constexpr int kMaxAttributes = 256;
 
 [[noreturn]] void fail(const std::string& message) { throw std::runtime_error("chain_from_urdf: " + message); }
 
@@ -162,13 +168,56 @@ struct Scan {
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
+/// White space between a tag's parts, as urdfdom's XML parser (TinyXML)
+/// reads it: also form feed and vertical tab.
+bool is_space(char c) { return is_blank(c) || c == '\f' || c == '\v'; }
+
+/// Where the text stops being UTF-8 (its size if it is). The XML parser
+/// reads a byte that starts a multi-byte character together with the bytes
+/// after it, whatever they are: in text that is not UTF-8, it would read a
+/// '<' or a quote as part of a character where the scan sees markup, and
+/// the two would see different elements.
+std::size_t utf8_end(const std::string& t) {
+  const auto* b = reinterpret_cast<const unsigned char*>(t.data());
+  const std::size_t n = t.size();
+  std::size_t i = 0;
+  while (i < n) {
+    const unsigned c = b[i];
+    if (c < 0x80) {
+      ++i;
+      continue;
+    }
+    std::size_t len = 0;
+    unsigned lo = 0x80, hi = 0xBF;  // the second byte's range
+    if (c >= 0xC2 && c <= 0xDF) {
+      len = 2;
+    } else if (c >= 0xE0 && c <= 0xEF) {
+      len = 3;
+      if (c == 0xE0) lo = 0xA0;
+      if (c == 0xED) hi = 0x9F;
+    } else if (c >= 0xF0 && c <= 0xF4) {
+      len = 4;
+      if (c == 0xF0) lo = 0x90;
+      if (c == 0xF4) hi = 0x8F;
+    } else {
+      return i;
+    }
+    if (n - i < len || b[i + 1] < lo || b[i + 1] > hi) return i;
+    for (std::size_t k = 2; k < len; ++k)
+      if (b[i + k] < 0x80 || b[i + k] > 0xBF) return i;
+    i += len;
+  }
+  return n;
+}
+
 /// The characters that end a tag's name (blanks, '>', '/', '<') and an
 /// attribute's name (also '=' and quotes), one table lookup per character.
 struct Stops {
   bool name[256] = {}, attribute[256] = {};
   constexpr Stops() {
-    for (const char c : {' ', '\t', '\r', '\n', '>', '/', '<'}) name[static_cast<unsigned char>(c)] = true;
-    for (const char c : {' ', '\t', '\r', '\n', '>', '/', '=', '"', '\''}) attribute[static_cast<unsigned char>(c)] = true;
+    for (const char c : {' ', '\t', '\r', '\n', '\f', '\v', '>', '/', '<'}) name[static_cast<unsigned char>(c)] = true;
+    for (const char c : {' ', '\t', '\r', '\n', '\f', '\v', '>', '/', '=', '"', '\''})
+      attribute[static_cast<unsigned char>(c)] = true;
   }
 };
 constexpr Stops kStops{};
@@ -231,6 +280,9 @@ enum class Role { none, robot, link, inertial, link_origin, mass, inertia, joint
 /// where the parser resumes, so that no element the parser sees is hidden
 /// from the count.
 Scan scan(const std::string& text) {
+  const std::size_t utf8 = utf8_end(text);
+  if (utf8 != text.size())
+    fail("the description is not UTF-8 text (byte " + std::to_string(utf8) + " of the text)");
   Scan out;
   const char* const begin = text.data();
   const char* const end = begin + text.size();
@@ -319,8 +371,9 @@ Scan scan(const std::string& text) {
     // Attributes: name, '=', a quoted value; anything else is skipped up to
     // the tag's end (the parser refuses such a tag).
     bool self_closing = false;
+    int attributes = 0;
     while (p < end) {
-      while (p < end && is_blank(*p)) ++p;
+      while (p < end && is_space(*p)) ++p;
       if (p == end) break;
       if (*p == '>') {
         ++p;
@@ -343,18 +396,29 @@ Scan scan(const std::string& text) {
         ++p;
         continue;
       }
-      while (p < end && is_blank(*p)) ++p;
+      if (++attributes > kMaxAttributes)
+        fail("an element has more than " + std::to_string(kMaxAttributes) +
+             " attributes, the bound on a URDF description");
+      while (p < end && is_space(*p)) ++p;
       if (p == end || *p != '=') continue;
       ++p;
-      while (p < end && is_blank(*p)) ++p;
-      if (p == end || (*p != '"' && *p != '\'')) continue;
-      const char* close = static_cast<const char*>(std::memchr(p + 1, *p, static_cast<std::size_t>(end - p - 1)));
-      if (!close) {
-        p = end;
-        break;
+      while (p < end && is_space(*p)) ++p;
+      std::string_view value;
+      if (p < end && (*p == '"' || *p == '\'')) {
+        const char* close = static_cast<const char*>(std::memchr(p + 1, *p, static_cast<std::size_t>(end - p - 1)));
+        if (!close) {
+          p = end;
+          break;
+        }
+        value = std::string_view(p + 1, static_cast<std::size_t>(close - p - 1));
+        p = close + 1;
+      } else {
+        // Without quotes, as the parser reads it: up to a space, '/' or '>'
+        // (with a quote in it, the parser refuses the document).
+        const char* value_begin = p;
+        while (p < end && !is_space(*p) && *p != '/' && *p != '>' && *p != '"' && *p != '\'') ++p;
+        value = std::string_view(value_begin, static_cast<std::size_t>(p - value_begin));
       }
-      const std::string_view value(p + 1, static_cast<std::size_t>(close - p - 1));
-      p = close + 1;
       if (element || (named && attribute == "name")) {
         std::string_view decoded = value;
         if (value.find('&') != std::string_view::npos) {

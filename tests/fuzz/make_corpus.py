@@ -402,6 +402,18 @@ def urdf_seeds():
                 + urdf_joint("j1", "revolute", "a", "b", '<axis xyz="0&#x20;0 1"/>' + LIMIT)
             ),
         ),
+        # found by fuzzing: a byte 0xD4 makes the XML parser read the '<' after
+        # it as part of a character, so it saw a joint (a self-loop) that
+        # the scan did not: urdfdom built a reference cycle and leaked it
+        "found_leak_not_utf8": urdf_seed(
+            "a",
+            b'<?xml version="1.0"?>\n<robot name="r">\n<link name="a"/>'
+            + b"\xd4" * 29
+            + b'<link name=2b"/><link name="c"/><link name="d"/><joint name="j1" type="fixed"><parent link="a"/><child link="a"/></joint>\n</robot>\n',
+        ),
+        "unquoted_cycle": urdf_seed(
+            "a", urdf_text(abcd + '<joint name="j1" type="fixed"><parent link=a/><child link=a/></joint>')
+        ),
     }
     return seeds
 
