@@ -5,7 +5,7 @@
 // Python package: pip download example-robot-data, then unzip it and find
 // ur5_robot.urdf under cmeel.prefix/share):
 //
-//   CHASLES_BENCH_URDF=path/ur5_robot.urdf CHASLES_BENCH_URDF_TIP=tool0 \
+//   CHASLES_BENCH_URDF=path/ur5_robot.urdf CHASLES_BENCH_URDF_TIP=tool0
 //     build/bench/chasles_bench_urdf --benchmark_repetitions=5
 //
 // Without CHASLES_BENCH_URDF, that benchmark is skipped (not registered).
