@@ -182,6 +182,14 @@ std::size_t utf8_end(const std::string& t) {
   const std::size_t n = t.size();
   std::size_t i = 0;
   while (i < n) {
+    if (n - i >= 8) {  // eight ASCII bytes at a time
+      std::uint64_t word;
+      std::memcpy(&word, b + i, 8);
+      if (!(word & 0x8080808080808080ull)) {
+        i += 8;
+        continue;
+      }
+    }
     const unsigned c = b[i];
     if (c < 0x80) {
       ++i;
