@@ -529,6 +529,20 @@ struct Inertials {
 /// wrong, refuse with another text, or keep as a reference cycle. Returns
 /// the links' inertials.
 Inertials check(const Scan& s) {
+  // A name with a character reference the scan did not decode (one above
+  // 0x7F, which the XML parser decodes differently with and without an XML
+  // declaration): the scan could not tell which names are the same.
+  auto plain = [](std::string_view name, const char* what) {
+    if (name.find("&#") != std::string_view::npos)
+      fail(std::string(what) + " " + quoted(std::string(name)) +
+           ": a character reference (&#...;) in a name is not supported");
+  };
+  for (const ScannedLink& link : s.links) plain(link.name, "link");
+  for (const ScannedJoint& joint : s.joints) {
+    plain(joint.name, "joint");
+    for (const Element* e : {&joint.parent, &joint.child})
+      if (const std::string_view* link = s.get(*e, "link")) plain(*link, "link");
+  }
   Inertials inertials;
   inertials.index.reserve(s.links.size());
   for (const ScannedLink& link : s.links) {

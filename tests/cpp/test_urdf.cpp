@@ -400,6 +400,12 @@ TEST(UrdfHostile, CyclicDescriptionsAreRefusedWithoutLeaks) {
                        joint("j1", "fixed", "a", "a", "") + "</robot>",
                    "a", "the description is not UTF-8 text (byte 53 of the text)");
   }
+  // names are compared as the parser decodes them
+  expect_refused(urdf(R"(<joint name="j1" type="fixed"><parent link="&#97;"/><child link="a"/></joint>)", abc), "a",
+                 "a loop through link 'a'");
+  expect_refused(urdf(R"(<joint name="j1" type="fixed"><parent link="&#233;"/><child link="&#xE9;"/></joint>)",
+                      abc + R"(<link name="&#233;"/>)"),
+                 "a", "link '&#233;': a character reference (&#...;) in a name is not supported");
   // UTF-8 text loads
   const Result utf8 = chasles::chain_from_urdf<double, 8>(
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?><!-- \xC3\xA9l\xC3\xA8ve \xE2\x86\x92 \xF0\x9F\xA4\x96 -->" + urdf(kGood), "c");
