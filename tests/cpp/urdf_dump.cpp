@@ -9,7 +9,11 @@
 //  "lower", "upper", "velocity_limits", "effort_limits": n each,
 //  "link_inertias": n x 10 (m, c, Ixx, Ixy, Ixz, Iyy, Iyz, Izz)}, numbers to
 // 17 significant digits, infinities as Infinity (Python's json reads them).
-// On failure: the error on stderr, exit status 1.
+// On a refusal: nothing on stdout; on stderr the loader's error text as it
+// is (UrdfChain::error: "chain_from_urdf: " then the reason, the same text
+// as the Python loader's after "Chain.from_urdf: "; for an unknown tip or
+// base link "chain_from_urdf(tip_link): ..." or "chain_from_urdf(base_link):
+// ...") and a newline; exit status 1. Exit status 2: wrong arguments.
 #include <chasles/urdf.hpp>
 
 #include <cmath>

@@ -277,6 +277,147 @@ def robot_seeds(ty):
     return seeds
 
 
+# ---- fuzz_urdf: the tip link's name, a newline, then URDF text (see the
+# top of fuzz_urdf.cpp): a valid arm and the hostile descriptions of
+# tests/cpp/test_urdf.cpp (UrdfHostile), each a few kB at most.
+
+ARM = ROOT.parent.parent.parent / "examples" / "data" / "three_joint_arm.urdf"
+LIMIT = '<limit lower="-1" upper="1" effort="1" velocity="1"/>'
+INERTIA = '<inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/>'
+
+
+def urdf_link(name, mass=None, origin=""):
+    if mass is None:
+        return f'<link name="{name}"/>'
+    return f'<link name="{name}"><inertial>{origin}<mass value="{mass}"/>{INERTIA}</inertial></link>'
+
+
+def urdf_joint(name, kind, parent, child, extra='<axis xyz="0 0 1"/>' + LIMIT):
+    return f'<joint name="{name}" type="{kind}"><parent link="{parent}"/><child link="{child}"/>{extra}</joint>'
+
+
+def urdf_text(body):
+    return f'<?xml version="1.0"?>\n<robot name="r">\n{body}\n</robot>\n'
+
+
+def urdf_seed(tip, text):
+    return tip.encode() + b"\n" + (text if isinstance(text, bytes) else text.encode())
+
+
+def urdf_seeds():
+    abcd = "".join(urdf_link(n) for n in "abcd")
+    two = urdf_link("a") + urdf_link("b", 1.0)
+    big = '<origin xyz="1e308 0 0"/><axis xyz="0 0 1"/>' + LIMIT
+    seeds = {
+        "three_joint_arm": urdf_seed("tool", ARM.read_bytes()),
+        "bom_text": urdf_seed("b", b"\xef\xbb\xbf " + urdf_text(two + urdf_joint("j1", "revolute", "a", "b")).encode()),
+        # 65 levels: refused by the pre-scan; 64: urdfdom's to judge
+        "deep_65": urdf_seed("a", "<robot>" + "<x>" * 64 + "</x>" * 64 + "</robot>"),
+        "deep_64": urdf_seed("a", "<robot>" + "<x>" * 63 + "</x>" * 63 + "</robot>"),
+        "deep_hidden_in_pi": urdf_seed("a", "<robot><?pi >" + "<x>" * 70 + "?></robot>"),
+        "side_branch_50": urdf_seed(
+            "b",
+            urdf_text(
+                two
+                + "".join(urdf_link(f"s{k}", 0.5 if k % 10 == 0 else None) for k in range(50))
+                + urdf_joint("j1", "revolute", "a", "b")
+                + "".join(
+                    urdf_joint(f"f{k}", "fixed", f"s{k - 1}" if k else "b", f"s{k}", '<origin xyz="0.001 0 0"/>')
+                    for k in range(50)
+                )
+            ),
+        ),
+        "cycle_two": urdf_seed(
+            "a", urdf_text(abcd + urdf_joint("j1", "fixed", "a", "b", "") + urdf_joint("j2", "fixed", "b", "a", ""))
+        ),
+        "cycle_three": urdf_seed(
+            "a",
+            urdf_text(
+                abcd
+                + urdf_joint("j1", "fixed", "a", "b", "")
+                + urdf_joint("j2", "fixed", "b", "c", "")
+                + urdf_joint("j3", "fixed", "c", "a", "")
+            ),
+        ),
+        "cycle_self": urdf_seed("a", urdf_text(abcd + urdf_joint("j1", "fixed", "a", "a", ""))),
+        "two_parents": urdf_seed(
+            "d",
+            urdf_text(
+                abcd
+                + urdf_joint("j1", "revolute", "a", "b")
+                + urdf_joint("j2", "revolute", "a", "c")
+                + urdf_joint("j3", "fixed", "b", "d", "")
+                + urdf_joint("j4", "fixed", "c", "d", "")
+            ),
+        ),
+        "huge_axis": urdf_seed("b", urdf_text(two + urdf_joint("j1", "revolute", "a", "b", '<axis xyz="1e308 1e308 0"/>' + LIMIT))),
+        "huge_origins": urdf_seed(
+            "c",
+            urdf_text(
+                two + urdf_link("c") + urdf_joint("j1", "revolute", "a", "b", big) + urdf_joint("j2", "revolute", "b", "c", big)
+            ),
+        ),
+        "huge_masses": urdf_seed(
+            "b",
+            urdf_text(
+                urdf_link("a")
+                + urdf_link("b", 1e308)
+                + urdf_link("c", 1e308)
+                + urdf_joint("j1", "revolute", "a", "b")
+                + urdf_joint("f", "fixed", "b", "c", "")
+            ),
+        ),
+        "huge_mass_float": urdf_seed("b", urdf_text(urdf_link("a") + urdf_link("b", 1e300) + urdf_joint("j1", "revolute", "a", "b"))),
+        "nan_mass": urdf_seed("b", urdf_text(urdf_link("a") + urdf_link("b", "nan") + urdf_joint("j1", "revolute", "a", "b"))),
+        "negative_mass": urdf_seed(
+            "b",
+            urdf_text(
+                urdf_link("a")
+                + urdf_link("b", 2.0)
+                + urdf_link("c", -1.5)
+                + urdf_joint("j1", "revolute", "a", "b")
+                + urdf_joint("f", "fixed", "b", "c", "")
+            ),
+        ),
+        "limits_reversed": urdf_seed(
+            "b",
+            urdf_text(two + urdf_joint("j1", "revolute", "a", "b", '<limit lower="1" upper="0" effort="1" velocity="1"/>')),
+        ),
+        "negative_velocity": urdf_seed(
+            "b",
+            urdf_text(two + urdf_joint("j1", "prismatic", "a", "b", '<limit lower="0" upper="1" effort="1" velocity="-1"/>')),
+        ),
+        "duplicate_link": urdf_seed("b", urdf_text(two + urdf_link("b") + urdf_joint("j1", "revolute", "a", "b"))),
+        "duplicate_joint": urdf_seed(
+            "c",
+            urdf_text(
+                two + urdf_link("c") + urdf_joint("j1", "revolute", "a", "b") + urdf_joint("j1", "continuous", "b", "c")
+            ),
+        ),
+        "entities": urdf_seed(
+            "b",
+            urdf_text(
+                urdf_link("a")
+                + '<link name="b"><inertial><mass value="&#49;.5"/>' + INERTIA + "</inertial></link>"
+                + urdf_joint("j1", "revolute", "a", "b", '<axis xyz="0&#x20;0 1"/>' + LIMIT)
+            ),
+        ),
+        # found by fuzzing: a byte 0xD4 makes the XML parser read the '<' after
+        # it as part of a character, so it saw a joint (a self-loop) that
+        # the scan did not: urdfdom built a reference cycle and leaked it
+        "found_leak_not_utf8": urdf_seed(
+            "a",
+            b'<?xml version="1.0"?>\n<robot name="r">\n<link name="a"/>'
+            + b"\xd4" * 29
+            + b'<link name=2b"/><link name="c"/><link name="d"/><joint name="j1" type="fixed"><parent link="a"/><child link="a"/></joint>\n</robot>\n',
+        ),
+        "unquoted_cycle": urdf_seed(
+            "a", urdf_text(abcd + '<joint name="j1" type="fixed"><parent link=a/><child link=a/></joint>')
+        ),
+    }
+    return seeds
+
+
 def main():
     makers = {"fuzz_so3": so3_seeds, "fuzz_matrix": matrix_seeds, "fuzz_se3": se3_seeds, "fuzz_robot": robot_seeds}
     for target, make in makers.items():
@@ -288,6 +429,12 @@ def main():
                 (folder / f"{ty}_{name}").write_bytes(data)
                 count += 1
         print(f"{target}: {count} seeds in {folder.relative_to(ROOT.parent.parent.parent)}")
+    folder = ROOT / "fuzz_urdf"
+    folder.mkdir(parents=True, exist_ok=True)
+    seeds = urdf_seeds()
+    for name, data in seeds.items():
+        (folder / name).write_bytes(data)
+    print(f"fuzz_urdf: {len(seeds)} seeds in {folder.relative_to(ROOT.parent.parent.parent)}")
 
 
 if __name__ == "__main__":
