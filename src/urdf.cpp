@@ -450,10 +450,42 @@ Scan scan(const std::string& text) {
 
 // ---- 3. The checks on what the scan read.
 
+/// For a number that from_chars read whole but found out of range: whether
+/// it underflows (nearer to 0 than half the smallest subnormal) rather than
+/// overflows, from the decimal exponent of its first nonzero digit (negative
+/// only for a magnitude below 1; overflow needs one above 308).
+bool underflows(std::string_view s) {
+  if (!s.empty() && s.front() == '-') s.remove_prefix(1);
+  // the first nonzero digit, the k-th digit of the mantissa, stands at the
+  // place 10^(int_digits - 1 - k)
+  long long int_digits = 0, k = -1, digits = 0;
+  bool point = false;
+  std::size_t i = 0;
+  for (; i < s.size() && s[i] != 'e' && s[i] != 'E'; ++i) {
+    if (s[i] == '.') {
+      point = true;
+      continue;
+    }
+    if (!point) ++int_digits;
+    if (k < 0 && s[i] != '0') k = digits;
+    ++digits;
+  }
+  if (k < 0) return true;  // all zeros (from_chars reads them; not reached)
+  long long exponent = 0;
+  bool negative = false;
+  if (i < s.size()) {
+    ++i;
+    if (i < s.size() && (s[i] == '-' || s[i] == '+')) negative = s[i++] == '-';
+    for (; i < s.size() && exponent < 1000000; ++i) exponent = 10 * exponent + (s[i] - '0');
+  }
+  return int_digits - 1 - k + (negative ? -exponent : exponent) < 0;
+}
+
 /// A number as urdfdom and the XML specification write it (optional sign,
 /// digits, fraction, exponent), with surrounding blanks; false for anything
 /// else, and for NaN, infinities and overflow ("1e400"): they are not
-/// finite numbers.
+/// finite numbers. A number too small for a double ("1e-400") reads as a
+/// zero of its sign, as the nearest double (Python's float reads it so).
 bool parse_number(std::string_view s, double& x) {
   while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
   while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
@@ -461,7 +493,12 @@ bool parse_number(std::string_view s, double& x) {
   if (s.empty() || !((s.front() >= '0' && s.front() <= '9') || s.front() == '.' || s.front() == '-'))
     return false;
   const auto r = std::from_chars(s.data(), s.data() + s.size(), x, std::chars_format::general);
-  return r.ec == std::errc() && r.ptr == s.data() + s.size() && std::isfinite(x);
+  if (r.ptr != s.data() + s.size()) return false;
+  if (r.ec == std::errc::result_out_of_range && underflows(s)) {
+    x = s.front() == '-' ? -0.0 : 0.0;
+    return true;
+  }
+  return r.ec == std::errc() && std::isfinite(x);
 }
 
 /// Three numbers separated by blanks.

@@ -421,6 +421,16 @@ TEST(UrdfHostile, NumbersThatAreNotFiniteOrOverflowAreRefused) {
   expect_refused(one(R"(<origin xyz="nan 0 0"/>)" + limit), "b", "joint 'j1' <origin xyz>: expected finite numbers");
   expect_refused(one(R"(<origin rpy="0 inf 0"/>)" + limit), "b", "joint 'j1' <origin rpy>: expected finite numbers");
   expect_refused(one(R"(<origin xyz="1e400 0 0"/>)" + limit), "b", "joint 'j1' <origin xyz>: expected finite numbers");
+  expect_refused(one(R"(<origin xyz="1)" + std::string(400, '0') + R"(e-50 0 0"/>)" + limit), "b",
+                 "joint 'j1' <origin xyz>: expected finite numbers");
+  {  // too small for a double: its nearest double, a zero of its sign (as Python's float reads it)
+    const auto r = chasles::chain_from_urdf<double, 8>(one(R"(<origin xyz="1e-400 -1e-400 0.001e-398"/>)" + limit), "b");
+    ASSERT_TRUE(r) << r.error;
+    EXPECT_EQ(r.chain->home().translation(), Eigen::Vector3d::Zero());
+    const auto s = chasles::chain_from_urdf<double, 8>(one(R"(<origin xyz="100e-402 4.9e-324 0"/>)" + limit), "b");
+    ASSERT_TRUE(s) << s.error;
+    EXPECT_EQ(s.chain->home().translation(), Eigen::Vector3d(0, 4.9e-324, 0));
+  }
   expect_refused(one(R"(<axis xyz="0 nan 1"/>)" + limit), "b", "joint 'j1' <axis xyz>: expected finite numbers");
   expect_refused(one(R"(<limit lower="-1" upper="nan" effort="1" velocity="1"/>)"), "b",
                  "joint 'j1' <limit>: expected finite numbers");

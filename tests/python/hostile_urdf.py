@@ -198,6 +198,15 @@ def cases():
         return f'<limit lower="{lower}" upper="{upper}" effort="{effort}" velocity="{velocity}"/>'
 
     finite = "expected finite numbers"
+    # too small for a double: the nearest double, zero; too large: refused
+    out += [
+        Case("1e-400 in an origin and a mass (zero)", arm(b=link("b", "1e-400"), j2=joint(
+            "j2", "revolute", "b", "c", xyz="0.3 -1e-400 0", axis="0 1 0")), "c"),
+        Case("100e-402 and 0.001e-398 (zero)", arm(j2=joint("j2", "revolute", "b", "c", xyz="0.3 100e-402 0.001e-398",
+                                                           axis="0 1 0")), "c"),
+        Case("1000...0e-50 (400 digits) overflows", on_j2(xyz="0 1" + "0" * 400 + "e-50 0"), "c",
+             f"joint 'j2' <origin xyz>: {finite}"),
+    ]
     for bad in ("nan", "inf", "-inf", "1e400"):
         side = link("d", 1.0) + joint("jd", "fixed", "b", "d", xyz=f"{bad} 0 0")
         out += [
