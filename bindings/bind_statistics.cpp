@@ -211,10 +211,11 @@ py::tuple mean_of(const py::array_t<double, py::array::c_style | py::array::forc
     py::gil_scoped_release release;
     if (geodesic) {
       r = chasles::geodesic_mean(X.begin(), X.end(), w, max_iterations);
-    } else if (chasles::mean_weights_valid(X.begin(), X.end(), w)) {
-      r.mean = chasles::chordal_mean(X.begin(), X.end(), w);
     } else {
-      r.weights_valid = false;
+      r.mean = chasles::chordal_mean(X.begin(), X.end(), w);
+      // weights that are not valid give the identity: only then is there something to ask
+      if (r.mean.matrix() == Eigen::Matrix<double, D, D>::Identity())
+        r.weights_valid = chasles::mean_weights_valid(X.begin(), X.end(), w);
     }
   }
   if (!r.weights_valid)

@@ -189,6 +189,27 @@ def judge_fixed_array(value, label, shapes, finite):
 
 
 @dataclass
+class GroupMatrix(Array):
+    """The mean of so3_gaussian / se3_gaussian: a finite (3, 3) rotation or
+    (4, 4) rigid motion (an SO3 or SE3 through np.asarray), checked as
+    SO3.from_matrix / SE3.from_matrix check one (rotation defect and bottom
+    row within sqrt(eps))."""
+
+    def judge(self, value):
+        verdict = super().judge(value)
+        if not isinstance(verdict, Accepted):
+            return verdict
+        m = verdict.value
+        defect = _rotation_defect(m[:3, :3])
+        if m.shape == (4, 4):
+            defect = max(defect, float(np.abs(m[3] - [0.0, 0.0, 0.0, 1.0]).max()))
+        if not defect <= 1.4901161193847656e-08:
+            what = "not a rotation matrix" if m.shape == (3, 3) else "not a rigid motion"
+            return Refused(ValueError, (self.label, what))
+        return verdict
+
+
+@dataclass
 class TwistOr(Array):
     """SE3.exp's argument: a Twist, or an array-like of shape (6,)."""
 
@@ -1498,7 +1519,7 @@ def _build_spec():
         spec[name] = Entry(
             [
                 [
-                    Array(f"{name}(mean)", (k, k), valid=lambda G=group: np.asarray(GOOD[G]())),
+                    GroupMatrix(f"{name}(mean)", (k, k), valid=lambda G=group: np.asarray(GOOD[G]())),
                     Anything("cov", 0.01 * np.eye(n)),
                     Size(f"{name}(n)"),
                     Rng(f"{name}(rng)"),
