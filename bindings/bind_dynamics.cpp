@@ -387,7 +387,8 @@ Returns:
   def_array_dtype(cls);
   cls.def("__copy__", [](Obj<InertiaD> I) { return *I; });
   cls.def("__deepcopy__", [](Obj<InertiaD> I, const py::object&) { return *I; }, py::arg("memo"));
-  // The state: m, c (3), I_c row by row (9).
+  // The state: m, c (3), I_c row by row (9); rebuilt by the constructor's
+  // checks, the numbers kept as they are.
   cls.def(py::pickle(
       [](Obj<InertiaD> I) {
         py::tuple t(13);
@@ -405,7 +406,9 @@ Returns:
         read_state(t, 0, 1, &mass, "SpatialInertia");
         read_state(t, 1, 3, c.data(), "SpatialInertia");
         read_state(t, 4, 9, I.data(), "SpatialInertia");
-        return InertiaD(mass, c, I);
+        // The constructor's checks and errors (a pickle is data from outside).
+        return checked_inertia(py::float_(mass), vec_out<3>(c), mat_out<3, 3>(Matrix3(I)),
+                               "SpatialInertia.__setstate__");
       }));
   add_reduce(cls);
 }

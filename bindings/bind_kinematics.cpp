@@ -442,6 +442,19 @@ py::array vector_out(const ChainD::JointVector& v) {
   return std::move(out);
 }
 
+/// make(), its ValueError or TypeError (the constructor's, for a state that
+/// does not make a valid chain) prefixed with "Chain.__setstate__: ".
+template <typename Make>
+PyChain setstate_checked(Make make) {
+  try {
+    return make();
+  } catch (py::value_error& e) {
+    throw py::value_error(std::string("Chain.__setstate__: ") + e.what());
+  } catch (py::type_error& e) {
+    throw py::type_error(std::string("Chain.__setstate__: ") + e.what());
+  }
+}
+
 /// Whether c has no model beyond its screws and home (see the state below).
 bool is_plain(const PyChain& c) {
   const auto identity = [](const SE3d& g) {
@@ -1268,8 +1281,9 @@ Example:
   // prismatic), lower, upper, velocity and effort limits (4 n), base and
   // tool as given (12 each, as home), gravity (3): 11 n + 39 floats. names:
   // None or a tuple of n str. inertias: None or a tuple of 10 n floats. The
-  // chain is rebuilt from them by the same arithmetic (and checked again),
-  // so bit for bit.
+  // chain is rebuilt from them by the same arithmetic, so bit for bit, and
+  // checked as the constructor checks its arguments (both states: a pickle
+  // is data from outside), its error prefixed with "Chain.__setstate__: ".
   cls.def(py::pickle(
       [](Obj<PyChain> c_) -> py::tuple {
         const PyChain& c = *c_;
@@ -1335,8 +1349,19 @@ Example:
           Vector3 p;
           read_state(t, 6 * n, 9, R.data(), "Chain");
           read_state(t, 6 * n + 9, 3, p.data(), "Chain");
-          const SE3d M(chasles::SO3d::from_matrix_unchecked(R), p);
-          return PyChain(ChainD(S, M, ChainD::HomeAsGiven()), S, M, SE3d(), SE3d());
+          return setstate_checked([&] {
+            // The constructor's checks; the home pose kept as it is (not projected).
+            require_finite(S, "Chain(screws)");
+            Matrix4 H = Matrix4::Identity();
+            H.topLeftCorner<3, 3>() = R;
+            H.topRightCorner<3, 1>() = p;
+            home_pose(mat_out<4, 4>(H));  // raises the constructor's error for a home that is not a rigid motion
+            const SE3d M(chasles::SO3d::from_matrix_unchecked(R), p);
+            PyChain c(ChainD(S, M, ChainD::HomeAsGiven()), S, M, SE3d(), SE3d());
+            if (const chasles::ChainCheck check = c.validate(); !check)
+              raise_invalid(c, check, S, types_of(py::none(), S), true);
+            return c;
+          });
         }
         const py::tuple outer = py::reinterpret_borrow<py::tuple>(state);
         const py::object numbers = outer[0], names = outer[1], inertias = outer[2];
@@ -1380,8 +1405,10 @@ Example:
           read_state(py::reinterpret_borrow<py::tuple>(inertias), 0, 10 * n, array_data(a), "Chain");
           inertia_array = std::move(a);
         }
-        return make_chain(S, home, types, names, lims[0], lims[1], lims[2], lims[3], base, tool, vec_out<3>(g),
-                          inertia_array);
+        return setstate_checked([&] {
+          return make_chain(S, home, types, names, lims[0], lims[1], lims[2], lims[3], base, tool, vec_out<3>(g),
+                            inertia_array);
+        });
       }));
   add_reduce(cls);
 }

@@ -105,20 +105,23 @@ std::string explain_se3_refusal(const py::args& args, const py::kwargs& kwargs) 
   return msg + ". SO3.exp(w), SO3.from_quat(quat) and SO3.from_matrix(matrix) make one; " + usage + ".";
 }
 
-[[noreturn]] void raise_not_rigid(const Matrix4& M, double tol) {
+/// The error of SE3.from_matrix (and of SE3.__setstate__, which has no tol
+/// to pass).
+[[noreturn]] void raise_not_rigid(const Matrix4& M, double tol, const char* fn = "SE3.from_matrix",
+                                  bool tol_argument = true) {
   const double rot = SO3d::rotation_defect(M.topLeftCorner<3, 3>());
   const double det = M.topLeftCorner<3, 3>().determinant();
   double row = 0.0;
   for (int j = 0; j < 4; ++j) row = std::max(row, std::abs(M(3, j) - (j == 3 ? 1.0 : 0.0)));
-  std::string msg = "SE3.from_matrix: not a rigid motion: the top-left 3x3 block has rotation defect "
+  std::string msg = std::string(fn) + ": not a rigid motion: the top-left 3x3 block has rotation defect "
                     "max(|R^T R - I|, |det R - 1|) = " +
                     short_float(rot) + " (det R = " + det_string(det) +
                     ") and the bottom row differs from (0, 0, 0, 1) by " + short_float(row) + "; tol = " +
                     short_float(tol) + ". ";
   if (det < 0) msg += "A negative determinant is a reflection, not a rotation. ";
   if (row > tol) msg += "A rigid motion's bottom row is exactly (0, 0, 0, 1). ";
-  msg += "Use SE3.from_matrix_projected(matrix) for the nearest rotation (it ignores the bottom row), or pass a "
-         "larger tol.";
+  msg += std::string("Use SE3.from_matrix_projected(matrix) for the nearest rotation (it ignores the bottom row)") +
+         (tol_argument ? ", or pass a larger tol." : ".");
   raise_value_error(msg);
 }
 
@@ -552,6 +555,15 @@ Returns:
         Vector3 p;
         read_state(t, 0, 9, R.data(), "SE3");
         read_state(t, 9, 3, p.data(), "SE3");
+        // Checked as SE3.from_matrix checks the matrix (a pickle is data from outside).
+        require_finite(R, "SE3.__setstate__");
+        require_finite(p, "SE3.__setstate__");
+        if (!SO3d::from_matrix(R, kRotationTolerance)) {
+          Matrix4 M = Matrix4::Identity();
+          M.topLeftCorner<3, 3>() = R;
+          M.topRightCorner<3, 1>() = p;
+          raise_not_rigid(M, kRotationTolerance, "SE3.__setstate__", false);
+        }
         return SE3d(SO3d::from_matrix_unchecked(R), p);
       }));
   add_reduce(cls);

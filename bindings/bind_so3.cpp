@@ -41,15 +41,17 @@ Example:
 
 std::string class_doc() { return std::string(kClassDoc) + kConventions; }
 
-/// The error of SO3.from_matrix: what is wrong, by how much, and what to do.
-[[noreturn]] void raise_not_rotation(const Matrix3& M, double tol, const char* fn) {
+/// The error of SO3.from_matrix (and of SO3.__setstate__, which has no tol
+/// to pass): what is wrong, by how much, and what to do.
+[[noreturn]] void raise_not_rotation(const Matrix3& M, double tol, const char* fn, bool tol_argument = true) {
   const double defect = SO3d::rotation_defect(M);
   const double det = M.determinant();
   std::string msg = std::string(fn) + ": not a rotation matrix: its rotation defect max(|M^T M - I|, |det M - 1|) is " +
                     short_float(defect) + " (det M = " + det_string(det) + "), above tol = " + short_float(tol) +
                     ". ";
   if (det < 0) msg += "A negative determinant is a reflection, not a rotation. ";
-  msg += "Use SO3.from_matrix_projected(matrix) for the nearest rotation, or pass a larger tol.";
+  msg += std::string("Use SO3.from_matrix_projected(matrix) for the nearest rotation") +
+         (tol_argument ? ", or pass a larger tol." : ".");
   raise_value_error(msg);
 }
 
@@ -503,11 +505,16 @@ Returns:
   def_array_dtype(cls);  // float64, for numpy's and scipy's dtype discovery (convert.hpp)
   cls.def("__copy__", [](Obj<SO3d> R) { return *R; });
   cls.def("__deepcopy__", [](Obj<SO3d> R, const py::object&) { return *R; }, py::arg("memo"));
+  // The state: the matrix row by row, checked as SO3.from_matrix checks one
+  // (a pickle is data from outside: one that is not a rotation is refused).
   cls.def(py::pickle([](Obj<SO3d> R) { return float_tuple(R->matrix()); },
                      [](const py::object& state) {
                        const py::tuple t = state_tuple(state, 9, "SO3");
                        Eigen::Matrix<double, 3, 3, Eigen::RowMajor> M;
                        read_state(t, 0, 9, M.data(), "SO3");
+                       require_finite(M, "SO3.__setstate__");
+                       if (!SO3d::from_matrix(M, kRotationTolerance))
+                         raise_not_rotation(M, kRotationTolerance, "SO3.__setstate__", false);
                        return SO3d::from_matrix_unchecked(M);
                      }));
   add_reduce(cls);

@@ -161,15 +161,29 @@ Example:
 )doc");
 }
 
+std::string shape_of(const py::array& a) {
+  return shape_string(reinterpret_cast<const Py_intptr_t*>(a.shape()), static_cast<int>(a.ndim()));
+}
+
 /// The mean of N elements stored as (N, D, D) row-major float64 and N
-/// weights, already checked by the Python caller (python/chasles/_mean.py):
-/// (matrix, iterations, converged). A reduction over the batch axis, so not
-/// a gufunc: the elements are copied into a vector, then the C++ mean runs
-/// without the GIL.
+/// weights, checked by the Python caller (python/chasles/_mean.py) and again
+/// here for what this function reads: the shapes (the elements' N and the
+/// weights' must agree, or the loops would read past the weights), the
+/// rotations and the weights (finite, >= 0, not all 0, as the C++ mean
+/// reports them): (matrix, iterations, converged). A reduction over the
+/// batch axis, so not a gufunc: the elements are copied into a vector, then
+/// the C++ mean runs without the GIL.
 template <typename Group, int D>
 py::tuple mean_of(const py::array_t<double, py::array::c_style | py::array::forcecast>& elements,
                   const py::array_t<double, py::array::c_style | py::array::forcecast>& weights, bool geodesic,
                   int max_iterations) {
+  const char* const name = D == 3 ? "_so3_mean" : "_se3_mean";
+  if (elements.ndim() != 3 || elements.shape(1) != D || elements.shape(2) != D || elements.shape(0) < 1 ||
+      weights.ndim() != 1 || weights.shape(0) != elements.shape(0)) {
+    const std::string d = std::to_string(D);
+    throw py::value_error(std::string(name) + "(matrices, weights): expected shapes (N, " + d + ", " + d +
+                          ") with N >= 1 and (N,), got " + shape_of(elements) + " and " + shape_of(weights));
+  }
   const py::ssize_t n = elements.shape(0);
   std::vector<Group> X;
   X.reserve(static_cast<std::size_t>(n));
@@ -192,15 +206,20 @@ py::tuple mean_of(const py::array_t<double, py::array::c_style | py::array::forc
     X.push_back(Group::from_matrix_unchecked(Eigen::Matrix<double, D, D>(M)));
   }
   const double* w = weights.data();
-  chasles::MeanResult<Group> r{Group(), 0, true};
+  chasles::MeanResult<Group> r{Group(), 0, true, true};
   {
     py::gil_scoped_release release;
     if (geodesic) {
       r = chasles::geodesic_mean(X.begin(), X.end(), w, max_iterations);
     } else {
       r.mean = chasles::chordal_mean(X.begin(), X.end(), w);
+      // weights that are not valid give the identity: only then is there something to ask
+      if (r.mean.matrix() == Eigen::Matrix<double, D, D>::Identity())
+        r.weights_valid = chasles::mean_weights_valid(X.begin(), X.end(), w);
     }
   }
+  if (!r.weights_valid)
+    throw py::value_error(std::string(name) + "(weights): expected finite weights >= 0, not all 0");
   return py::make_tuple(mat_out<D, D>(Eigen::Matrix<double, D, D>(r.mean.matrix())), r.iterations, r.converged);
 }
 

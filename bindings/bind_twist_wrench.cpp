@@ -180,11 +180,15 @@ Returns:
   def_array_dtype(cls);  // float64, for numpy's and scipy's dtype discovery (convert.hpp)
   cls.def("__copy__", [](Obj<T> x) { return *x; });
   cls.def("__deepcopy__", [](Obj<T> x, const py::object&) { return *x; }, py::arg("memo"));
+  // The state: the 6-vector, finite as the constructor takes it (a pickle
+  // is data from outside).
+  const std::string setstate = name + ".__setstate__";
   cls.def(py::pickle([](Obj<T> x) { return float_tuple(x->vector()); },
-                     [name](const py::object& state) {
+                     [name, setstate](const py::object& state) {
                        const py::tuple t = state_tuple(state, 6, name.c_str());
                        Vector6 v;
                        read_state(t, 0, 6, v.data(), name.c_str());
+                       require_finite(v, setstate.c_str());
                        return T(v);
                      }));
   add_reduce(cls);
@@ -267,6 +271,11 @@ Returns:
         const py::tuple t = state_tuple(state, 8, "Screw");
         double v[8];
         read_state(t, 0, 8, v, "Screw");
+        // The constructor's checks (a pickle is data from outside).
+        require_finite(Vector3(v[0], v[1], v[2]), "Screw.__setstate__(point)");
+        require_finite(Vector3(v[3], v[4], v[5]), "Screw.__setstate__(direction)");
+        to_pitch(py::float_(v[6]), "Screw.__setstate__(pitch)");
+        require_finite(v[7], "Screw.__setstate__(magnitude)");
         Screwd s;
         s.point = Vector3(v[0], v[1], v[2]);
         s.direction = Vector3(v[3], v[4], v[5]);

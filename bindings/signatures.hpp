@@ -23,6 +23,11 @@
 //   instance with an index into a table) that hands the record over: one
 //   direct call more per call, no lookup.
 //
+// The trampoline of a class's __init__ and __setstate__ also refuses a call
+// on an object that holds a value already (TypeError): the classes are
+// values, and pybind11 would otherwise ignore the call (an object its
+// __init__ made) or replace the value in place (one a call made).
+//
 // The parameters come from pybind11's record: positional-only where
 // pybind11 matches by position alone (pybind11's self of a method without
 // py::arg, py::pos_only, unnamed arguments), keyword-only after py::kw_only,
@@ -239,6 +244,7 @@ struct Finished {
   PyMethodDef def{};
   PyObject* record = nullptr;   ///< pybind11's function record (a strong reference)
   Dispatcher dispatch = nullptr;  ///< pybind11's dispatcher
+  PyTypeObject* constructs = nullptr;  ///< for __init__ and __setstate__: their class (else null)
 };
 
 inline constexpr std::size_t kMaxFunctions = 1024;
@@ -248,9 +254,37 @@ inline constexpr std::size_t kMaxFunctions = 1024;
 inline std::array<Finished, kMaxFunctions> finished_table{};
 inline std::size_t finished_count = 0;
 
+/// Whether self, an instance of the bound class `type`, holds a value
+/// already (its __init__ or __setstate__ ran, or a call made it).
+inline bool holds_value(PyObject* self, PyTypeObject* type) {
+  if (!PyObject_TypeCheck(self, type)) return false;  // pybind11's dispatcher refuses it
+  auto* inst = reinterpret_cast<detail::instance*>(self);
+  for (const auto& vh : detail::values_and_holders(inst))
+    if (vh.holder_constructed()) return true;
+  return false;
+}
+
+/// The TypeError of __init__ or __setstate__ called again on a live object
+/// (nullptr, the error set).
+/// pybind11 ignores such a call for an object its own __init__ made (and
+/// returns None), and runs it for one a call made (bindings/instance.hpp),
+/// replacing the value of an object that may be shared: the classes are
+/// values, a new one is made instead.
+inline PyObject* refuse_initialized(PyObject* self, const char* method) {
+  const char* full = Py_TYPE(self)->tp_name;  // "chasles._core.SE3"
+  const char* dot = std::strrchr(full, '.');
+  const std::string name = dot ? dot + 1 : full;
+  const std::string msg = name + "." + method + ": the " + name +
+                          " is already initialized; its value does not change (make a new " + name + " instead)";
+  PyErr_SetString(PyExc_TypeError, msg.c_str());
+  return nullptr;
+}
+
 template <std::size_t I>
 PyObject* trampoline(PyObject* /*module*/, PyObject* const* args, Py_ssize_t nargs, PyObject* kwnames) {
   const Finished& f = finished_table[I];
+  if (f.constructs != nullptr && nargs > 0 && holds_value(args[0], f.constructs))
+    return refuse_initialized(args[0], f.def.ml_name);
   return f.dispatch(f.record, args, static_cast<size_t>(nargs), kwnames);
 }
 
@@ -295,6 +329,8 @@ inline void finish(py::handle func, const std::string& name, py::handle module) 
   entry.def.ml_meth = reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(kTrampolines[count]));
   entry.def.ml_flags = f->m_ml->ml_flags;
   entry.def.ml_doc = strdup(text.c_str());
+  if (head->is_constructor && head->scope && PyType_Check(head->scope.ptr()))
+    entry.constructs = reinterpret_cast<PyTypeObject*>(head->scope.ptr());
   Py_INCREF(module.ptr());
   f->m_self = module.ptr();
   f->m_ml = &entry.def;

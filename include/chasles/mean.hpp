@@ -19,10 +19,28 @@
 // Ranges are given by forward iterators over SO3<Scalar> or SE3<Scalar>
 // (arrays, std::array, std::vector: any container the caller owns), and
 // weights by a forward iterator over Scalar, or none (all 1). Nothing is
-// allocated; the cost is bounded by max_iterations passes over the range.
+// allocated; the cost is bounded by max_iterations passes over the range,
+// and two more.
+//
+// Scale: both means are invariant to the scale of the weights, over the
+// whole range of Scalar. The weights are divided by the largest one
+// (u_i = w_i / w_max in [0, 1], to an ulp), so that neither
+// weights near the largest finite Scalar (whose sum overflows) nor
+// subnormal ones (whose products with the matrices underflow) change the
+// mean: both give the mean of the same weights scaled to 1. The translations
+// are averaged per axis k as c_k sum_i u_i (p_ik / c_k) / sum_i u_i with
+// c_k = max_i |p_ik| where the plain sum could overflow (N c_k above the
+// largest finite Scalar): each term is at most u_i, so the sum cannot
+// overflow however large the translations (two poses at x = 1e308 average
+// to 1e308).
+//
+// Weights: finite and >= 0, not all 0 (mean_weights_valid). Others (a
+// negative, NaN or infinite weight, all weights 0, an empty range) give the
+// identity, and geodesic_mean reports them (weights_valid = false).
 #pragma once
 
 #include <iterator>
+#include <limits>
 #include <type_traits>
 
 #include <Eigen/Core>
@@ -39,8 +57,9 @@ namespace chasles {
 template <typename Group>
 struct MeanResult {
   Group mean;
-  int iterations;  ///< Newton steps taken (0 for the chordal mean)
-  bool converged;  ///< the last step was within the tolerance (always true for the chordal mean)
+  int iterations;      ///< Newton steps taken (0 for the chordal mean)
+  bool converged;      ///< the last step was within the tolerance (always true for the chordal mean)
+  bool weights_valid;  ///< the weights were valid (mean_weights_valid); if not, mean is the identity
 };
 
 namespace detail {
@@ -95,25 +114,140 @@ inline Eigen::Matrix<Scalar, 6, 6> left_jacobian_inverse(const SE3<Scalar>* /*ta
   return se3_left_jacobian_inverse(e);
 }
 
-}  // namespace detail
+/// What the means divide by (see the file comment): the largest weight
+/// (0 when the weights are not valid: a negative, NaN or infinite one, all
+/// 0, or no element) and its inverse when that is a normal number (the
+/// weights are then multiplied by it, within an ulp of the quotient;
+/// otherwise, for the largest weights and for subnormal ones, 0: they are
+/// divided); and per axis c_k, the largest |translation|, when the sum of
+/// the translations could overflow (n max_i |p_ik| above the largest finite
+/// Scalar), else 1 (and always for SO3), so that translations of common size
+/// are averaged as sum_i u_i p_i / sum_i u_i, without a division per element.
+template <typename Scalar>
+struct MeanScales {
+  Scalar weight;
+  Scalar inverse_weight;
+  Eigen::Matrix<Scalar, 3, 1> translation;
+  bool scales_translations;
+};
 
-/// The chordal mean of [first, last) with weights w (see the file comment).
-/// An empty range, or weights summing to 0, give the identity.
+/// w / s.weight: the weight u in [0, 1] (the largest 1), to an ulp.
+template <typename Scalar>
+inline Scalar scaled_weight(const Scalar& w, const MeanScales<Scalar>& s) noexcept {
+  return s.inverse_weight > Scalar(0) ? Scalar(w * s.inverse_weight) : Scalar(w / s.weight);
+}
+
 template <typename Iterator, typename WeightIterator>
-inline detail::GroupOf<Iterator> chordal_mean(Iterator first, Iterator last, WeightIterator w) noexcept {
-  using Group = detail::GroupOf<Iterator>;
+inline MeanScales<typename GroupOf<Iterator>::Scalar> mean_scales(Iterator first, Iterator last,
+                                                                  WeightIterator w) noexcept {
+  using std::abs;
+  using Group = GroupOf<Iterator>;
   using Scalar = typename Group::Scalar;
+  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
+  constexpr bool translations = std::is_same<Group, SE3<Scalar>>::value;
+  MeanScales<Scalar> s{Scalar(0), Scalar(0), Vector3::Ones(), false};
+  Vector3 c = Vector3::Zero();
+  Scalar n(0);
+  for (; first != last; ++first, ++w) {
+    const Scalar wi = *w;
+    if (!(wi >= Scalar(0)) || !is_finite(wi)) {  // not valid (NaN fails >= 0)
+      s.weight = Scalar(0);
+      return s;
+    }
+    if (wi > s.weight) s.weight = wi;
+    n += Scalar(1);
+    if constexpr (translations) {
+      const Vector3& p = (*first).translation();
+      for (int k = 0; k < 3; ++k)
+        if (abs(p[k]) > c[k]) c[k] = abs(p[k]);
+    }
+  }
+  if (!(s.weight > Scalar(0))) return s;
+  using Real = RealOf<Scalar>;
+  const Scalar inverse = Scalar(1) / s.weight;
+  // a normal inverse is within an ulp; a subnormal or infinite one is not
+  if (inverse >= Scalar(std::numeric_limits<Real>::min()) && is_finite(inverse)) s.inverse_weight = inverse;
+  const Scalar safe = Scalar(Eigen::NumTraits<Real>::highest()) / n;  // |sum_i u_i p_ik| <= n max_i |p_ik|
+  for (int k = 0; k < 3; ++k)
+    if (c[k] > safe) s.scales_translations = true;
+  if (s.scales_translations)
+    for (int k = 0; k < 3; ++k) s.translation[k] = c[k] > Scalar(0) ? c[k] : Scalar(1);
+  return s;
+}
+
+/// The chordal mean with the weights u_i = w_i / s.weight (see the file
+/// comment); s from mean_scales, valid.
+template <typename Iterator, typename WeightIterator>
+inline GroupOf<Iterator> chordal_scaled(Iterator first, Iterator last, WeightIterator w,
+                                        const MeanScales<typename GroupOf<Iterator>::Scalar>& s) noexcept {
+  using Group = GroupOf<Iterator>;
+  using Scalar = typename Group::Scalar;
+  constexpr bool translations = std::is_same<Group, SE3<Scalar>>::value;
   Eigen::Matrix<Scalar, 3, 3> sum = Eigen::Matrix<Scalar, 3, 3>::Zero();
   Eigen::Matrix<Scalar, 3, 1> p = Eigen::Matrix<Scalar, 3, 1>::Zero();
   Scalar total(0);
   for (; first != last; ++first, ++w) {
-    const Scalar wi = *w;
-    sum += wi * detail::rotation_matrix(*first);
-    p += wi * detail::translation_of(*first);
-    total += wi;
+    const Scalar ui = scaled_weight(Scalar(*w), s);  // in [0, 1]
+    sum += ui * rotation_matrix(*first);
+    if constexpr (translations) {
+      if (s.scales_translations) {
+        p += ui * translation_of(*first).cwiseQuotient(s.translation);  // each |.| <= ui
+      } else {
+        p += ui * translation_of(*first);
+      }
+    }
+    total += ui;  // at least about 1: the largest weight gives 1
   }
-  if (!(total > Scalar(0))) return Group();
-  return detail::chordal(static_cast<const Group*>(nullptr), sum, Eigen::Matrix<Scalar, 3, 1>(p / total));
+  // mean p_k = c_k sum_i u_i (p_ik / c_k) / sum_i u_i, with |sum_i u_i (p_ik / c_k)| <= sum_i u_i
+  const Eigen::Matrix<Scalar, 3, 1> mean_p = (p / total).cwiseProduct(s.translation);
+  return chordal(static_cast<const Group*>(nullptr), sum, mean_p);
+}
+
+}  // namespace detail
+
+/// Whether the weights of [first, last) are valid for a mean: each finite
+/// and >= 0, at least one > 0 (so the range is not empty).
+template <typename Iterator, typename WeightIterator>
+inline bool mean_weights_valid(Iterator first, Iterator last, WeightIterator w) noexcept {
+  using Scalar = typename detail::GroupOf<Iterator>::Scalar;
+  return detail::mean_scales(first, last, w).weight > Scalar(0);
+}
+
+/// The chordal mean of [first, last) with weights w (see the file comment),
+/// unchanged by a scale of the weights. Weights that are not valid
+/// (mean_weights_valid) give the identity.
+template <typename Iterator, typename WeightIterator>
+inline detail::GroupOf<Iterator> chordal_mean(Iterator first, Iterator last, WeightIterator w) noexcept {
+  using std::sqrt;
+  using Group = detail::GroupOf<Iterator>;
+  using Scalar = typename Group::Scalar;
+  using Real = RealOf<Scalar>;
+  // One pass with the weights as given, which is the mean when its sums
+  // neither overflowed nor became NaN (they are then finite) nor lost digits
+  // to underflow (the largest weight is at least sqrt of the smallest normal
+  // Scalar: what the products lose below that is far under an ulp of the
+  // sum of the weights); otherwise (or for a NaN or infinite weight, all
+  // weights 0, no element) a second pass with the weights and translations
+  // scaled, after mean_scales has checked the weights.
+  Eigen::Matrix<Scalar, 3, 3> sum = Eigen::Matrix<Scalar, 3, 3>::Zero();
+  Eigen::Matrix<Scalar, 3, 1> p = Eigen::Matrix<Scalar, 3, 1>::Zero();
+  Scalar total(0), largest(0), smallest(0);
+  WeightIterator wk = w;
+  for (Iterator it = first; it != last; ++it, ++wk) {
+    const Scalar wi = *wk;
+    largest = wi > largest ? wi : largest;  // selects, not branches (a NaN is neither)
+    smallest = wi < smallest ? wi : smallest;
+    sum += wi * detail::rotation_matrix(*it);
+    if constexpr (std::is_same<Group, SE3<Scalar>>::value) p += wi * detail::translation_of(*it);
+    total += wi;  // not finite once a weight is NaN or infinite
+  }
+  if (!(smallest >= Scalar(0))) return Group();  // a negative weight
+  if (largest >= sqrt(Scalar(std::numeric_limits<Real>::min())) && detail::is_finite(total) &&
+      detail::all_finite(sum) && detail::all_finite(p))
+    return detail::chordal(static_cast<const Group*>(nullptr), sum, Eigen::Matrix<Scalar, 3, 1>(p / total));
+  const detail::MeanScales<Scalar> s = detail::mean_scales(first, last, w);
+  if (!(s.weight > Scalar(0))) return Group();
+  return detail::chordal_scaled(first, last, w, s);
 }
 
 /// The chordal mean with all weights 1.
@@ -137,7 +271,9 @@ inline detail::GroupOf<Iterator> chordal_mean(Iterator first, Iterator last) noe
 /// |delta| <= mean_step_tolerance (1 + rms of |e_i|) (constants.hpp), after
 /// applying that step, or after max_iterations steps (converged = false).
 /// A singular Newton system (spread near pi) falls back to the gradient
-/// step. An empty range, or weights summing to 0, give the identity.
+/// step. The weights enter as w_i / max_j w_j (see the file comment), so
+/// the mean is unchanged by their scale. Weights that are not valid
+/// (mean_weights_valid) give {identity, 0, false, false}.
 template <typename Iterator, typename WeightIterator>
 inline MeanResult<detail::GroupOf<Iterator>> geodesic_mean(
     Iterator first, Iterator last, WeightIterator w,
@@ -148,7 +284,9 @@ inline MeanResult<detail::GroupOf<Iterator>> geodesic_mean(
   constexpr int n = Group::DoF;
   using Tangent = Eigen::Matrix<Scalar, n, 1>;
   using Jacobian = Eigen::Matrix<Scalar, n, n>;
-  Group M = chordal_mean(first, last, w);
+  const detail::MeanScales<Scalar> s = detail::mean_scales(first, last, w);
+  if (!(s.weight > Scalar(0))) return {Group(), 0, false, false};
+  Group M = detail::chordal_scaled(first, last, w, s);
   for (int k = 1; k <= max_iterations; ++k) {
     Tangent g = Tangent::Zero();
     Jacobian A = Jacobian::Zero();
@@ -156,21 +294,20 @@ inline MeanResult<detail::GroupOf<Iterator>> geodesic_mean(
     WeightIterator wk = w;
     const Group Minv = M.inverse();
     for (Iterator it = first; it != last; ++it, ++wk) {
-      const Scalar wi = *wk;
+      const Scalar ui = detail::scaled_weight(Scalar(*wk), s);  // in [0, 1]
       const Tangent e = (Minv * (*it)).log();
-      g += wi * e;
-      A += wi * detail::left_jacobian_inverse(static_cast<const Group*>(nullptr), e);
-      r2 += wi * e.squaredNorm();
-      total += wi;
+      g += ui * e;
+      A += ui * detail::left_jacobian_inverse(static_cast<const Group*>(nullptr), e);
+      r2 += ui * e.squaredNorm();
+      total += ui;  // at least about 1
     }
-    if (!(total > Scalar(0))) return {Group(), k, false};
     Tangent delta = A.partialPivLu().solve(g);
     if (!detail::all_finite(delta)) delta = g / total;  // singular system: the gradient step
     M = M * Group::exp(delta);
     const Scalar tol = Scalar(ThresholdsOf<Scalar>::mean_step_tolerance) * (Scalar(1) + sqrt(r2 / total));
-    if (delta.squaredNorm() <= tol * tol) return {M, k, true};
+    if (delta.squaredNorm() <= tol * tol) return {M, k, true, true};
   }
-  return {M, max_iterations, false};
+  return {M, max_iterations, false, true};
 }
 
 /// The geodesic mean with all weights 1.

@@ -22,6 +22,21 @@ from chasles._random import _asarray
 METHODS = ("geodesic", "chordal")
 
 
+def _check_weights(name: str, w: np.ndarray) -> None:
+    """Weights of a mean: finite, >= 0, not all 0 (their scale does not
+    matter: the C++ mean divides them by the largest, chasles/mean.hpp)."""
+    bad = ~np.isfinite(w)
+    if bad.any():
+        i = int(np.argmax(bad))
+        raise ValueError(f"{name}(weights): expected finite weights, got weights[{i}] = {float(w[i])!r}")
+    negative = w < 0
+    if negative.any():
+        i = int(np.argmax(negative))
+        raise ValueError(f"{name}(weights): expected weights >= 0, got weights[{i}] = {float(w[i])!r}")
+    if not w.max() > 0:
+        raise ValueError(f"{name}(weights): expected at least one weight > 0, got all {w.shape[0]} weights 0")
+
+
 def _mean(name: str, core: int, matrices: ArrayLike, weights: Optional[ArrayLike], method: Any,
           max_iterations: Any, reduce) -> np.ndarray:
     if not isinstance(method, str) or method not in METHODS:
@@ -43,8 +58,7 @@ def _mean(name: str, core: int, matrices: ArrayLike, weights: Optional[ArrayLike
         w = np.ascontiguousarray(_asarray(weights, f"{name}(weights)"), dtype=np.float64)
         if w.shape != (n,):
             raise ValueError(f"{name}(weights): expected shape ({n},), got {w.shape}")
-        if not np.all(np.isfinite(w)) or np.any(w < 0) or not w.sum() > 0:
-            raise ValueError(f"{name}(weights): expected finite weights >= 0 with a positive sum, got {w!r}")
+        _check_weights(name, w)
     mean, iterations, converged = reduce(X, w, method == "geodesic", int(max_iterations))
     if not converged:
         warnings.warn(
@@ -76,8 +90,9 @@ def so3_mean(matrices: ArrayLike, weights: Optional[ArrayLike] = None, method: s
         matrices: array_like of shape (N, 3, 3), N >= 1: rotation matrices
             (a ValueError names the first whose defect exceeds sqrt(eps),
             as SO3.from_matrix).
-        weights: array_like of shape (N,), finite, >= 0, with a positive
-            sum; None for equal weights.
+        weights: array_like of shape (N,), finite, >= 0, not all 0; None
+            for equal weights. Their scale does not matter (w and 1e300 w,
+            or subnormal w, give the same mean).
         method: "geodesic" or "chordal".
         max_iterations: the bound on the Newton steps (geodesic).
 
@@ -111,8 +126,9 @@ def se3_mean(matrices: ArrayLike, weights: Optional[ArrayLike] = None, method: s
         matrices: array_like of shape (N, 4, 4), N >= 1: homogeneous matrices
             (a ValueError names the first whose rotation block's defect
             exceeds sqrt(eps)).
-        weights: array_like of shape (N,), finite, >= 0, with a positive
-            sum; None for equal weights.
+        weights: array_like of shape (N,), finite, >= 0, not all 0; None
+            for equal weights. Their scale does not matter (w and 1e300 w,
+            or subnormal w, give the same mean).
         method: "geodesic" or "chordal".
         max_iterations: the bound on the Newton steps (geodesic).
 

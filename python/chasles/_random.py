@@ -96,6 +96,23 @@ def _matrix(a: ArrayLike, shape: tuple, what: str) -> np.ndarray:
     return m
 
 
+def _group_element(a: ArrayLike, group: Any, what: str) -> np.ndarray:
+    """A finite (3, 3) rotation or (4, 4) rigid motion, checked as
+    ``SO3.from_matrix`` / ``SE3.from_matrix`` check one (their tolerance,
+    sqrt(eps) on the rotation defect max(|R^T R - I|, |det R - 1|) and on the
+    bottom row); the refusal is theirs, naming ``what``."""
+    n = 3 if group is _core.SO3 else 4
+    m = _matrix(a, (n, n), what)
+    try:
+        group.from_matrix(m)
+    except ValueError as e:
+        text = str(e)
+        prefix = f"{group.__name__}.from_matrix: "
+        text = text[len(prefix):] if text.startswith(prefix) else text
+        raise ValueError(f"{what}: {text.replace(', or pass a larger tol.', '.')}") from None
+    return m
+
+
 def _covariance_factor(cov: ArrayLike, n: int, name: str) -> np.ndarray:
     """L with L L^T = cov: the Cholesky factor, or for a positive
     semidefinite cov that is singular, V sqrt(lambda) from its eigenvectors."""
@@ -202,7 +219,9 @@ def so3_gaussian(mean: ArrayLike, cov: ArrayLike, n: Size = None, rng: Any = Non
     convention, so that log(mean^-1 R) has the covariance ``cov``.
 
     Args:
-        mean: array_like of shape (3, 3) or an SO3: the mean rotation.
+        mean: array_like of shape (3, 3) or an SO3: the mean rotation,
+            checked as ``SO3.from_matrix`` checks one (a ValueError if its
+            rotation defect exceeds sqrt(eps)).
         cov: array_like of shape (3, 3): the covariance of the rotation
             vector, symmetric positive semidefinite (radians^2).
         n: None for one rotation, an int or a tuple for a batch.
@@ -216,7 +235,7 @@ def so3_gaussian(mean: ArrayLike, cov: ArrayLike, n: Size = None, rng: Any = Non
         >>> chasles.so3_gaussian(np.eye(3), 0.01 * np.eye(3), 5, rng=0).shape
         (5, 3, 3)
     """
-    R0 = _matrix(mean, (3, 3), "so3_gaussian(mean)")
+    R0 = _group_element(mean, _core.SO3, "so3_gaussian(mean)")
     L = _covariance_factor(cov, 3, "so3_gaussian")
     shape = _batch(n, "so3_gaussian")
     z = _generator(rng, "so3_gaussian").standard_normal(shape + (3,))
@@ -232,7 +251,10 @@ def se3_gaussian(mean: ArrayLike, cov: ArrayLike, n: Size = None, rng: Any = Non
     covariance ``cov``.
 
     Args:
-        mean: array_like of shape (4, 4) or an SE3: the mean pose.
+        mean: array_like of shape (4, 4) or an SE3: the mean pose, checked
+            as ``SE3.from_matrix`` checks one (a ValueError if its rotation
+            block's defect, or its bottom row's distance to (0, 0, 0, 1),
+            exceeds sqrt(eps)).
         cov: array_like of shape (6, 6): the covariance of the twist (v, w),
             linear part first, symmetric positive semidefinite.
         n: None for one pose, an int or a tuple for a batch.
@@ -246,7 +268,7 @@ def se3_gaussian(mean: ArrayLike, cov: ArrayLike, n: Size = None, rng: Any = Non
         >>> chasles.se3_gaussian(np.eye(4), 0.01 * np.eye(6), 5, rng=0).shape
         (5, 4, 4)
     """
-    g0 = _matrix(mean, (4, 4), "se3_gaussian(mean)")
+    g0 = _group_element(mean, _core.SE3, "se3_gaussian(mean)")
     L = _covariance_factor(cov, 6, "se3_gaussian")
     shape = _batch(n, "se3_gaussian")
     z = _generator(rng, "se3_gaussian").standard_normal(shape + (6,))

@@ -86,6 +86,21 @@ class _Spline:
         self._t, self._keys, self._coefficients = t, k, coefficients
         self._ends = ends
 
+    def __setstate__(self, state: Any) -> None:
+        """Unpickling: the spline is fitted again from the pickled times, keys
+        and ends, through the constructor's checks (a pickle is data from
+        outside: times that are not finite or do not increase, keys that are
+        not rotations, are refused); the fit gives the same numbers bit for
+        bit."""
+        name = self._name
+        if not isinstance(state, dict) or not {"_t", "_keys", "_ends"} <= state.keys():
+            raise ValueError(f"{name}.__setstate__: expected a dict of the times '_t', the keys '_keys' and "
+                             f"the ends '_ends', got {type(state).__name__}")
+        try:
+            self._fit(state["_t"], state["_keys"], state["_ends"])
+        except (TypeError, ValueError) as e:
+            raise type(e)(f"{name}.__setstate__: {e}") from None
+
     def _evaluate(self, t: ArrayLike, order: int) -> Any:
         a = _asarray(t, f"{self._name}(t)")
         a = np.asarray(a, dtype=np.float64)

@@ -2,10 +2,14 @@
 // is invariant on both sides, converges in a few Newton steps at a 1 rad
 // spread; the chordal mean is the nearest rotation to the weighted sum of
 // matrices (the quaternion eigenvector mean, checked against a long double
-// eigen solver).
+// eigen solver). Both are unchanged by the scale of the weights (from the
+// largest finite number to subnormals), a mean of translations near the
+// largest finite number does not overflow, and weights that are not valid
+// (negative, NaN, infinite, all 0) are reported.
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <random>
 #include <string>
 #include <type_traits>
@@ -151,6 +155,94 @@ TYPED_TEST(Mean, IterationBoundIsKeptAndReported) {
   EXPECT_TRUE(s.converged);
   EXPECT_EQ(s.iterations, 1);
   EXPECT_TRUE(s.mean.is_approx(SO3<S>(), S(0)));
+}
+
+// ---- the scale of the weights and of the translations, and invalid weights --------------
+
+/// Two rotations about z, 0.2 and 0.6 rad: every mean of equal weights is 0.4 rad about z.
+template <typename S>
+std::array<SO3<S>, 2> two_rotations() {
+  return {SO3<S>::exp(Eigen::Matrix<S, 3, 1>(S(0), S(0), S(0.2))),
+          SO3<S>::exp(Eigen::Matrix<S, 3, 1>(S(0), S(0), S(0.6)))};
+}
+
+TYPED_TEST(Mean, MeansAreUnchangedByTheScaleOfTheWeights) {
+  // Weights at the largest finite number (their sum overflows) and at the
+  // smallest subnormal (their products with the matrices underflow) give
+  // the mean of the same weights scaled to 1, to rounding.
+  using S = TypeParam;
+  const S big = std::numeric_limits<S>::max(), tiny = std::numeric_limits<S>::denorm_min();
+  const S tol = S(4) * std::numeric_limits<S>::epsilon();
+  const auto X = two_rotations<S>();
+  const std::array<S, 2> unit{S(1), S(1)}, three_one{S(3), S(1)};
+  const SO3<S> chordal = chasles::chordal_mean(X.begin(), X.end(), unit.begin());
+  const SO3<S> geodesic = chasles::geodesic_mean(X.begin(), X.end(), unit.begin()).mean;
+  EXPECT_NEAR(double(chordal.log()[2]), 0.4, double(tol));
+  EXPECT_NEAR(double(geodesic.log()[2]), 0.4, double(tol));
+  const SO3<S> chordal31 = chasles::chordal_mean(X.begin(), X.end(), three_one.begin());
+  const SO3<S> geodesic31 = chasles::geodesic_mean(X.begin(), X.end(), three_one.begin()).mean;
+  for (const S scale : {big, tiny}) {
+    const std::array<S, 2> w{scale, scale};
+    EXPECT_TRUE(chasles::chordal_mean(X.begin(), X.end(), w.begin()).is_approx(chordal, tol)) << scale;
+    const auto r = chasles::geodesic_mean(X.begin(), X.end(), w.begin());
+    EXPECT_TRUE(r.converged && r.weights_valid);
+    EXPECT_TRUE(r.mean.is_approx(geodesic, tol)) << scale;
+  }
+  // Uneven weights: 3:1 at the top of the range and among subnormals.
+  for (const std::array<S, 2>& w : {std::array<S, 2>{big, big / S(3)}, std::array<S, 2>{S(3) * tiny, tiny}}) {
+    EXPECT_TRUE(chasles::chordal_mean(X.begin(), X.end(), w.begin()).is_approx(chordal31, tol));
+    EXPECT_TRUE(chasles::geodesic_mean(X.begin(), X.end(), w.begin()).mean.is_approx(geodesic31, tol));
+  }
+}
+
+TYPED_TEST(Mean, TranslationMeansDoNotOverflow) {
+  // Two poses at x = the largest finite number: their mean is there, not
+  // inf (chordal) or NaN (geodesic); at x = -max and max it is 0.
+  using S = TypeParam;
+  const S big = std::numeric_limits<S>::max();
+  const auto R = two_rotations<S>();
+  const std::array<SE3<S>, 2> X{SE3<S>(R[0], Eigen::Matrix<S, 3, 1>(big, S(0), S(1))),
+                                SE3<S>(R[1], Eigen::Matrix<S, 3, 1>(big, S(0), S(3)))};
+  const S tol = S(4) * std::numeric_limits<S>::epsilon();
+  const std::array<S, 2> w{big, big};
+  const std::array<SE3<S>, 3> means{chasles::chordal_mean(X.begin(), X.end()),
+                                    chasles::chordal_mean(X.begin(), X.end(), w.begin()),
+                                    chasles::geodesic_mean(X.begin(), X.end()).mean};
+  for (const SE3<S>& m : means) {
+    EXPECT_EQ(m.translation()[0], big);
+    EXPECT_EQ(m.translation()[1], S(0));
+    EXPECT_NEAR(double(m.translation()[2]), 2.0, double(tol));
+    EXPECT_NEAR(double(m.rotation().log()[2]), 0.4, double(tol));
+  }
+  const std::array<SE3<S>, 2> apart{SE3<S>(R[0], Eigen::Matrix<S, 3, 1>(-big, S(0), S(0))),
+                                    SE3<S>(R[0], Eigen::Matrix<S, 3, 1>(big, S(0), S(0)))};
+  EXPECT_EQ(chasles::chordal_mean(apart.begin(), apart.end()).translation(), (Eigen::Matrix<S, 3, 1>::Zero()));
+}
+
+TYPED_TEST(Mean, InvalidWeightsAreReported) {
+  // A negative, NaN or infinite weight, all weights 0 or no element: not a
+  // mean. mean_weights_valid says so, geodesic_mean reports it
+  // (weights_valid false, 0 iterations, not converged), both give the identity.
+  using S = TypeParam;
+  const auto X = two_rotations<S>();
+  const S nan = std::numeric_limits<S>::quiet_NaN(), inf = std::numeric_limits<S>::infinity();
+  for (const std::array<S, 2>& w : {std::array<S, 2>{S(-1), S(2)}, std::array<S, 2>{nan, S(1)},
+                                    std::array<S, 2>{S(1), inf}, std::array<S, 2>{S(0), S(0)},
+                                    std::array<S, 2>{S(2), -std::numeric_limits<S>::denorm_min()}}) {
+    EXPECT_FALSE(chasles::mean_weights_valid(X.begin(), X.end(), w.begin())) << w[0] << " " << w[1];
+    EXPECT_TRUE(chasles::chordal_mean(X.begin(), X.end(), w.begin()).is_approx(SO3<S>(), S(0)));
+    const auto r = chasles::geodesic_mean(X.begin(), X.end(), w.begin());
+    EXPECT_FALSE(r.weights_valid);
+    EXPECT_FALSE(r.converged);
+    EXPECT_EQ(r.iterations, 0);
+    EXPECT_TRUE(r.mean.is_approx(SO3<S>(), S(0)));
+  }
+  EXPECT_FALSE(chasles::geodesic_mean(X.begin(), X.begin()).weights_valid);  // no element
+  const std::array<S, 2> zero_one{S(0), S(1)};
+  EXPECT_TRUE(chasles::mean_weights_valid(X.begin(), X.end(), zero_one.begin()));
+  const auto r = chasles::geodesic_mean(X.begin(), X.end(), zero_one.begin());
+  EXPECT_TRUE(r.weights_valid && r.converged);
+  EXPECT_TRUE(r.mean.is_approx(X[1], S(4) * std::numeric_limits<S>::epsilon()));
 }
 
 }  // namespace

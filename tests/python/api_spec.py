@@ -189,6 +189,27 @@ def judge_fixed_array(value, label, shapes, finite):
 
 
 @dataclass
+class GroupMatrix(Array):
+    """The mean of so3_gaussian / se3_gaussian: a finite (3, 3) rotation or
+    (4, 4) rigid motion (an SO3 or SE3 through np.asarray), checked as
+    SO3.from_matrix / SE3.from_matrix check one (rotation defect and bottom
+    row within sqrt(eps))."""
+
+    def judge(self, value):
+        verdict = super().judge(value)
+        if not isinstance(verdict, Accepted):
+            return verdict
+        m = verdict.value
+        defect = _rotation_defect(m[:3, :3])
+        if m.shape == (4, 4):
+            defect = max(defect, float(np.abs(m[3] - [0.0, 0.0, 0.0, 1.0]).max()))
+        if not defect <= 1.4901161193847656e-08:
+            what = "not a rotation matrix" if m.shape == (3, 3) else "not a rigid motion"
+            return Refused(ValueError, (self.label, what))
+        return verdict
+
+
+@dataclass
 class TwistOr(Array):
     """SE3.exp's argument: a Twist, or an array-like of shape (6,)."""
 
@@ -632,12 +653,47 @@ class RotationalInertia(Arg):
         return verdict
 
 
+def _rotation_defect(R):
+    """max(|R^T R - I|, |det R - 1|), inf for a matrix that is not finite."""
+    R = np.asarray(R, dtype=np.float64)
+    if not np.all(np.isfinite(R)):
+        return math.inf
+    with np.errstate(all="ignore"):
+        return float(max(np.abs(R.T @ R - np.eye(3)).max(), abs(np.linalg.det(R) - 1.0)))
+
+
+def _valid_state(cls_name, state):
+    """Whether a tuple of floats of the right size is a state the class's
+    constructor would take (its checks: finite numbers, rotations within
+    sqrt(eps), a screw pitch that is not NaN or -inf, a rigid body's inertia,
+    a chain's screws that match their inferred types)."""
+    x = np.array(state, dtype=np.float64)
+    tol = 1.4901161193847656e-08
+    if cls_name == "Screw":
+        return bool(np.all(np.isfinite(x[[0, 1, 2, 3, 4, 5, 7]]))) and not (math.isnan(x[6]) or x[6] == -math.inf)
+    if not np.all(np.isfinite(x)):
+        return False
+    if cls_name in ("SO3", "SE3"):
+        return _rotation_defect(x[:9].reshape(3, 3)) <= tol
+    if cls_name == "SpatialInertia":
+        return x[0] > 0 and isinstance(RotationalInertia("I").judge(x[4:].reshape(3, 3)), Accepted)
+    if cls_name == "Chain":
+        n = (len(x) - 12) // 6
+        return _rotation_defect(x[6 * n : 6 * n + 9].reshape(3, 3)) <= tol and isinstance(
+            ScrewRows("S").judge(x[: 6 * n].reshape(n, 6)), Accepted
+        )
+    return True  # Twist, Wrench: finite
+
+
 @dataclass
 class State(Arg):
-    """A pickled state: a tuple of Python floats, of one of `sizes`."""
+    """A pickled state: a tuple of Python floats, of one of `sizes`, that
+    the class's constructor would take (`cls_name`, _valid_state): otherwise
+    ValueError naming the class's __setstate__."""
 
     sizes: tuple = (9,)
     valid: Callable[[], Any] | None = None
+    cls_name: str = ""
 
     def good(self):
         return self.valid()
@@ -647,6 +703,8 @@ class State(Arg):
             return Refused(ValueError, ("__setstate__", "tuple of"))
         if not all(isinstance(x, float) for x in value):
             return Refused(TypeError, ("__setstate__", "floats"))
+        if self.cls_name and not _valid_state(self.cls_name, value):
+            return Refused(ValueError, (f"{self.cls_name}.__setstate__",))
         return Accepted(tuple(float(x) for x in value))
 
 
@@ -977,7 +1035,7 @@ def _protocols(cls, n_state):
         f"{name}.__deepcopy__": _method(cls, "__deepcopy__", Anything("memo", {})),
         f"{name}.__getstate__": _method(cls, "__getstate__"),
         f"{name}.__setstate__": Entry(
-            [[State("state", tuple(n_state), lambda: GOOD[cls]().__getstate__())]],
+            [[State("state", tuple(n_state), lambda: GOOD[cls]().__getstate__(), name)]],
             call=lambda s: _setstate(cls, s),
             passes_arguments=False,
         ),
@@ -1461,7 +1519,7 @@ def _build_spec():
         spec[name] = Entry(
             [
                 [
-                    Array(f"{name}(mean)", (k, k), valid=lambda G=group: np.asarray(GOOD[G]())),
+                    GroupMatrix(f"{name}(mean)", (k, k), valid=lambda G=group: np.asarray(GOOD[G]())),
                     Anything("cov", 0.01 * np.eye(n)),
                     Size(f"{name}(n)"),
                     Rng(f"{name}(rng)"),

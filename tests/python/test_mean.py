@@ -121,3 +121,104 @@ def test_se3_chordal_mean_is_scipys_rigid_transform_mean():
     w = np.random.default_rng(11).uniform(0.5, 1.5, 50)
     theirs = transform.RigidTransform.from_matrix(G).mean(weights=w).as_matrix()
     np.testing.assert_allclose(chasles.se3_mean(G, w, method="chordal"), theirs, atol=1e-13)
+
+
+# ---- the scale of the weights and of the translations, invalid weights, the private cores ----
+
+TWO = chasles.so3_exp([[0.0, 0.0, 0.2], [0.0, 0.0, 0.6]])
+TINY = 5e-324  # the smallest subnormal
+BIG = np.finfo(np.float64).max
+
+
+@pytest.mark.parametrize("method", ["geodesic", "chordal"])
+@pytest.mark.parametrize(
+    "weights, reference",
+    [([BIG, BIG], [1.0, 1.0]), ([1e308, 1e308], [1.0, 1.0]), ([TINY, TINY], [1.0, 1.0]),
+     ([1e-310, 1e-310], [1.0, 1.0]), ([BIG, BIG / 3], [3.0, 1.0]), ([3 * TINY, TINY], [3.0, 1.0])],
+)  # fmt: skip
+def test_means_are_unchanged_by_the_scale_of_the_weights(method, weights, reference):
+    """Weights whose sum overflows, or whose products with the matrices
+    underflow, give the mean of the same weights scaled to 1 (to rounding),
+    for rotations and for poses; and no warning (the suite turns warnings
+    into errors)."""
+    expected = chasles.so3_mean(TWO, reference, method)
+    np.testing.assert_allclose(chasles.so3_mean(TWO, weights, method), expected, rtol=0, atol=4e-16)
+    if weights[0] == weights[1]:
+        np.testing.assert_allclose(chasles.so3_log(expected), [0.0, 0.0, 0.4], rtol=0, atol=4e-16)
+    G = np.stack([np.eye(4), np.eye(4)])
+    G[:, :3, :3] = TWO
+    G[:, :3, 3] = [[1.0, 2.0, 3.0], [-1.0, 0.5, 7.0]]
+    np.testing.assert_allclose(
+        chasles.se3_mean(G, weights, method), chasles.se3_mean(G, reference, method), rtol=0, atol=4e-15
+    )
+
+
+@pytest.mark.parametrize("method", ["geodesic", "chordal"])
+def test_a_mean_of_translations_near_the_largest_float_does_not_overflow(method):
+    """Two poses at x = 1e308 (and at the largest finite float) average to
+    that x, finite, not inf (chordal) or NaN (geodesic); at -x and x to 0."""
+    for x in (1e308, BIG):
+        G = np.stack([np.eye(4), np.eye(4)])
+        G[:, :3, :3] = TWO
+        G[:, :3, 3] = [[x, 0.0, 1.0], [x, 0.0, 3.0]]
+        for weights in (None, [BIG, BIG]):
+            M = chasles.se3_mean(G, weights, method)
+            assert M[0, 3] == x
+            np.testing.assert_allclose(M[1:3, 3], [0.0, 2.0], rtol=0, atol=1e-15)
+            np.testing.assert_allclose(chasles.so3_log(M[:3, :3]), [0.0, 0.0, 0.4], rtol=0, atol=4e-16)
+    G = np.stack([np.eye(4), np.eye(4)])
+    G[:, 0, 3] = [-BIG, BIG]
+    np.testing.assert_array_equal(chasles.se3_mean(G, method="chordal")[:3, 3], [0.0, 0.0, 0.0])
+
+
+@pytest.mark.parametrize("function", [chasles.so3_mean, chasles.se3_mean], ids=lambda f: f.__name__)
+@pytest.mark.parametrize(
+    "weights, fragment",
+    [([-1.0, 2.0], "expected weights >= 0, got weights[0] = -1.0"),
+     ([1.0, -5e-324], "expected weights >= 0, got weights[1] = -5e-324"),
+     ([np.nan, 1.0], "expected finite weights, got weights[0] = nan"),
+     ([1.0, np.inf], "expected finite weights, got weights[1] = inf"),
+     ([0.0, 0.0], "expected at least one weight > 0, got all 2 weights 0")],
+)  # fmt: skip
+def test_invalid_weights_are_refused_and_say_which(function, weights, fragment):
+    X = TWO if function is chasles.so3_mean else np.stack([np.eye(4), np.eye(4)])
+    for method in ("geodesic", "chordal"):
+        with pytest.raises(ValueError) as e:
+            function(X, weights, method)
+        assert str(e.value) == f"{function.__name__}(weights): {fragment}"
+
+
+@pytest.mark.parametrize(
+    "core, matrices, weights, shapes",
+    [("_so3_mean", np.repeat(np.eye(3)[None], 1000, axis=0), np.ones(1), "(1000, 3, 3) and (1,)"),
+     ("_so3_mean", np.eye(3)[None], np.ones(1000), "(1, 3, 3) and (1000,)"),
+     ("_so3_mean", np.repeat(np.eye(4)[None], 2, axis=0), np.ones(2), "(2, 4, 4) and (2,)"),
+     ("_so3_mean", np.eye(3), np.ones(3), "(3, 3) and (3,)"),
+     ("_so3_mean", np.zeros((0, 3, 3)), np.ones(0), "(0, 3, 3) and (0,)"),
+     ("_so3_mean", np.eye(3)[None], np.ones((1, 1)), "(1, 3, 3) and (1, 1)"),
+     ("_se3_mean", np.repeat(np.eye(4)[None], 1000, axis=0), np.ones(2), "(1000, 4, 4) and (2,)"),
+     ("_se3_mean", np.repeat(np.eye(3)[None], 2, axis=0), np.ones(2), "(2, 3, 3) and (2,)"),
+     ("_se3_mean", np.eye(4)[None], 1.0, "(1, 4, 4) and ()")],
+)  # fmt: skip
+def test_the_private_cores_check_the_shapes_they_read(core, matrices, weights, shapes):
+    """_so3_mean and _se3_mean read N elements and N weights: shapes that do
+    not agree are a ValueError naming the function and the shapes (they read
+    past the weights' buffer before)."""
+    n = 3 if core == "_so3_mean" else 4
+    with pytest.raises(ValueError) as e:
+        getattr(chasles._core, core)(matrices, weights, True, 20)
+    assert str(e.value) == (
+        f"{core}(matrices, weights): expected shapes (N, {n}, {n}) with N >= 1 and (N,), got {shapes}"
+    )
+
+
+@pytest.mark.parametrize("core", ["_so3_mean", "_se3_mean"])
+@pytest.mark.parametrize(
+    "weights", [[-1.0, 2.0], [2.0, -1.0], [np.nan, 1.0], [1.0, np.nan], [0.0, 0.0], [np.inf, 1.0], [1.0, np.inf]]
+)
+@pytest.mark.parametrize("geodesic", [True, False])
+def test_the_private_cores_refuse_the_weights_the_cpp_mean_reports(core, weights, geodesic):
+    n = 3 if core == "_so3_mean" else 4
+    X = np.repeat(np.eye(n)[None], 2, axis=0)
+    with pytest.raises(ValueError, match=rf"^{core}\(weights\): expected finite weights >= 0, not all 0$"):
+        getattr(chasles._core, core)(X, np.array(weights), geodesic, 20)

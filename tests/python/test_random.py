@@ -185,3 +185,45 @@ def test_bad_arguments_name_the_function(call, error, fragment):
     with pytest.raises(error) as e:
         call()
     assert fragment in str(e.value)
+
+
+@pytest.mark.parametrize(
+    "call, fragments",
+    [
+        (lambda: chasles.so3_gaussian(2 * np.eye(3), 0.01 * np.eye(3), 4, rng=0),
+         ["so3_gaussian(mean): not a rotation matrix", "is 7 (det M = 8)", "tol = 1.49e-08",
+          "SO3.from_matrix_projected"]),
+        (lambda: chasles.so3_gaussian(np.diag([1.0, 1.0, -1.0]), 0.01 * np.eye(3)),
+         ["so3_gaussian(mean): not a rotation matrix", "reflection"]),
+        (lambda: chasles.so3_gaussian(np.diag([1.0, 1.0, 1.0 + 1e-7]), 0.01 * np.eye(3)),
+         ["so3_gaussian(mean): not a rotation matrix", "2e-07"]),
+        (lambda: chasles.se3_gaussian(np.diag([2.0, 2.0, 2.0, 1.0]), 0.01 * np.eye(6)),
+         ["se3_gaussian(mean): not a rigid motion", "det R = 8", "SE3.from_matrix_projected"]),
+        (lambda: chasles.se3_gaussian(np.diag([1.0, 1.0, 1.0, 2.0]), 0.01 * np.eye(6)),
+         ["se3_gaussian(mean): not a rigid motion", "bottom row differs from (0, 0, 0, 1) by 1"]),
+    ],
+)  # fmt: skip
+def test_gaussians_refuse_a_mean_that_is_not_a_group_element(call, fragments):
+    """The mean is checked as SO3.from_matrix / SE3.from_matrix check a
+    matrix (the library's tolerance, sqrt(eps)): a mean of 2 I gave samples
+    of determinant 8."""
+    with pytest.raises(ValueError) as e:
+        call()
+    for fragment in fragments:
+        assert fragment in str(e.value)
+    assert "from_matrix:" not in str(e.value) and "larger tol" not in str(e.value)
+
+
+def test_gaussians_take_a_mean_within_the_tolerance_as_it_is():
+    near = np.diag([1.0, 1.0, 1.0 + 1e-9])  # defect 2e-9 <= sqrt(eps)
+    cov = 0.01 * np.eye(3)
+    z = np.random.default_rng(1).standard_normal((3, 3))
+    np.testing.assert_array_equal(
+        chasles.so3_gaussian(near, cov, 3, rng=1),
+        chasles.so3_compose(near, chasles.so3_exp(z @ np.linalg.cholesky(cov).T)),
+    )
+    g = chasles.SE3.exp([1.0, 2.0, 3.0, 0.1, 0.2, 0.3])
+    cov6 = 0.01 * np.eye(6)
+    np.testing.assert_array_equal(
+        chasles.se3_gaussian(g, cov6, 2, rng=3), chasles.se3_gaussian(g.as_matrix(), cov6, 2, rng=3)
+    )
