@@ -140,11 +140,24 @@ class _BSpline:
         return self.__copy__()
 
 
-def _evaluation(evaluate: Any, order: int, name: str, doc: str) -> Any:
+_CLASSES: dict[str, type] = {}  # "SO3" / "SE3": the class, once defined
+
+
+def _self(self: Any, group: str, member: str) -> Any:
+    """self, when it is a B-spline of `group` (TypeError otherwise, as a method of a bound class)."""
+    cls = _CLASSES[group]
+    if not isinstance(self, cls):
+        raise TypeError(f"{cls.__name__}.{member}: expected a {cls.__name__} as self, got {type(self).__name__}")
+    return self
+
+
+def _evaluation(group: str, order: int, name: str, doc: str) -> Any:
     """The method `name` of a B-spline class: the element (order 0) or a rate (1, 2)."""
+    evaluate = getattr(_core, f"_{group.lower()}_bspline_evaluate")
 
     def method(self: _BSpline, t: ArrayLike) -> np.ndarray:
-        return evaluate(self._start_time, self._spacing, self._control, t, order)
+        s = _self(self, group, name)
+        return evaluate(s._start_time, s._spacing, s._control, t, order)
 
     method.__name__ = name
     method.__qualname__ = name
@@ -158,9 +171,8 @@ def _methods(group: str) -> tuple[Any, Any, Any]:
     core, k = ("3, 3", "3") if so3 else ("4, 4", "6")
     what = "the rotation matrices" if so3 else "the homogeneous matrices"
     velocity = "the angular velocity w in the body frame" if so3 else "the body twist (v, w), linear part first"
-    evaluate = getattr(_core, f"_{group.lower()}_bspline_evaluate")
     return (
-        _evaluation(evaluate, 0, "__call__", f"""The elements X(t).
+        _evaluation(group, 0, "__call__", f"""The elements X(t).
 
 Args:
     {_TIMES}
@@ -170,7 +182,7 @@ Returns:
 
 {_RAISES}
 """),
-        _evaluation(evaluate, 1, "body_velocity", f"""The body velocity (X^-1 X')^vee at the times t, per unit of time.
+        _evaluation(group, 1, "body_velocity", f"""The body velocity (X^-1 X')^vee at the times t, per unit of time.
 
 omega_j = Ad_{{A_j^-1}} omega_{{j-1}} + B_j' d_j over the factors A_j = exp(B_j d_j).
 
@@ -182,7 +194,7 @@ Returns:
 
 {_RAISES}
 """),
-        _evaluation(evaluate, 2, "body_acceleration", f"""The body acceleration, the time derivative of body_velocity, at the times t.
+        _evaluation(group, 2, "body_acceleration", f"""The body acceleration, the time derivative of body_velocity, at the times t.
 
 omega_j' = Ad_{{A_j^-1}} omega_{{j-1}}' + B_j'' d_j + [omega_j, B_j' d_j].
 
@@ -197,34 +209,36 @@ Returns:
     )
 
 
-def _get_start_time(self: _BSpline) -> float:
-    """float: t0, the start of the first segment."""
-    return self._start_time
+def _properties(group: str) -> tuple[property, property, property, property, Any]:
+    """start_time, spacing, end_time, control and __repr__ of the B-spline on `group`."""
+    k = 3 if group == "SO3" else 4
 
+    def start_time(self: _BSpline) -> float:
+        """float: t0, the start of the first segment."""
+        return _self(self, group, "start_time")._start_time
 
-def _get_spacing(self: _BSpline) -> float:
-    """float: dt, the time between knots."""
-    return self._spacing
+    def spacing(self: _BSpline) -> float:
+        """float: dt, the time between knots."""
+        return _self(self, group, "spacing")._spacing
 
+    def end_time(self: _BSpline) -> float:
+        """float: t0 + (N - 3) dt, the last valid time."""
+        s = _self(self, group, "end_time")
+        return s._start_time + float(s._control.shape[0] - 3) * s._spacing
 
-def _get_end_time(self: _BSpline) -> float:
-    """float: t0 + (N - 3) dt, the last valid time."""
-    return self._start_time + float(self._control.shape[0] - 3) * self._spacing
-
-
-def _control_property(k: int) -> property:
     def control(self: _BSpline) -> np.ndarray:
-        return self._control.copy()
+        return _self(self, group, "control")._control.copy()
 
     control.__doc__ = f"numpy.ndarray: shape (N, {k}, {k}), the control elements (a copy)."
-    return property(control)
 
+    def __repr__(self: _BSpline) -> str:
+        s = _self(self, group, "__repr__")
+        if "_control" not in s.__dict__:
+            return f"<uninitialized {type(s).__name__}>"
+        return (f"{type(s)._name}(start_time={s._start_time!r}, spacing={s._spacing!r}, "
+                f"n_control={s._control.shape[0]})")
 
-def _repr(self: _BSpline) -> str:
-    if "_control" not in self.__dict__:
-        return f"<uninitialized {type(self).__name__}>"
-    return (f"{type(self)._name}(start_time={self._start_time!r}, spacing={self._spacing!r}, "
-            f"n_control={self._control.shape[0]})")
+    return property(start_time), property(spacing), property(end_time), property(control), __repr__
 
 
 class SO3BSpline(_BSpline):
@@ -237,11 +251,7 @@ class SO3BSpline(_BSpline):
 
     __init__.__doc__ = _init_doc("SO3")
     __call__, body_velocity, body_acceleration = _methods("SO3")
-    start_time = property(_get_start_time)
-    spacing = property(_get_spacing)
-    end_time = property(_get_end_time)
-    control = _control_property(3)
-    __repr__ = _repr
+    start_time, spacing, end_time, control, __repr__ = _properties("SO3")
 
 
 class SE3BSpline(_BSpline):
@@ -254,8 +264,7 @@ class SE3BSpline(_BSpline):
 
     __init__.__doc__ = _init_doc("SE3")
     __call__, body_velocity, body_acceleration = _methods("SE3")
-    start_time = property(_get_start_time)
-    spacing = property(_get_spacing)
-    end_time = property(_get_end_time)
-    control = _control_property(4)
-    __repr__ = _repr
+    start_time, spacing, end_time, control, __repr__ = _properties("SE3")
+
+
+_CLASSES.update(SO3=SO3BSpline, SE3=SE3BSpline)
