@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Python benchmarks of chasles beside the peers a Python user has, in one run.
 
-    python bench/bench_python.py [--repeats 7] [--sizes 100000 1000000]
+    python bench/bench_python.py [--repeats 7] [--sizes 100000 1000000] [--splines-only]
 
 Needs chasles (pip install .) and numpy; scipy, pin (Pinocchio),
 pytransform3d and modern_robotics are measured when installed and skipped
@@ -263,12 +263,48 @@ def threads_table(rep: int) -> None:
     print()
 
 
+def spline_keys_table(rep: int, keys: list[int]) -> None:
+    """One evaluation (one time per call) of each spline against its number of
+    keys / control elements: a binary search plus O(1) work, flat in N."""
+    print(f"### Python spline evaluation, one time per call, against the number of keys (us, median of {rep})\n")
+    print("| op | " + " | ".join(f"{n:.0e} keys" for n in keys) + " |")
+    print("| --- |" + " ---: |" * len(keys))
+    rng = np.random.default_rng(11)
+    rows: dict[str, list[str]] = {}
+    for n in keys:
+        t = np.cumsum(rng.uniform(0.3, 1.0, n))
+        steps = rng.normal(scale=0.35, size=(n, 6))
+        R = chasles.so3_exp(np.cumsum(steps[:, 3:], axis=0))
+        G = chasles.se3_exp(np.cumsum(steps, axis=0))
+        s3, s6 = chasles.SO3Spline(t, R), chasles.SE3Spline(t, G)
+        b3, b6 = chasles.SO3BSpline(0.0, 1.0, R), chasles.SE3BSpline(0.0, 1.0, G)
+        x, xb = float(t[n // 3] + 0.1), (n - 3) / 3 + 0.1
+        for op, fn in (
+            ("SO3Spline(t)", lambda: s3(x)),
+            ("SO3Spline.body_acceleration(t)", lambda: s3.body_acceleration(x)),
+            ("SE3Spline(t)", lambda: s6(x)),
+            ("SE3Spline.body_acceleration(t)", lambda: s6.body_acceleration(x)),
+            ("SO3BSpline(t)", lambda: b3(xb)),
+            ("SE3BSpline.body_acceleration(t)", lambda: b6.body_acceleration(xb)),
+        ):
+            rows.setdefault(op, []).append(fig(median_time(fn, rep) * 1e6))
+    for op, cells in rows.items():
+        print(f"| {op} | " + " | ".join(cells) + " |")
+    print()
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--repeats", type=int, default=7)
     ap.add_argument("--sizes", type=int, nargs="+", default=[100_000, 1_000_000])
+    ap.add_argument("--spline-keys", type=int, nargs="+", default=[10, 1_000, 100_000, 1_000_000],
+                    help="the numbers of keys of the spline evaluation table")
+    ap.add_argument("--splines-only", action="store_true", help="only the spline evaluation table")
     args = ap.parse_args()
     rep = args.repeats
+    if args.splines_only:
+        spline_keys_table(rep, args.spline_keys)
+        return 0
 
     scipy_rot = optional("scipy.spatial.transform")
     Rotation = getattr(scipy_rot, "Rotation", None)
@@ -516,6 +552,8 @@ def main() -> int:
         ratio = f"{ours / peer:.2f}" if ours and peer else ""
         print(f"| {op} | {fig(ours * 1e6)} | {fig(peer * 1e6) if peer else ''} | {ratio} |")
     print()
+
+    spline_keys_table(rep, args.spline_keys)
 
     # ---- threads and kinematics ----------------------------------------------
     threads_table(rep)

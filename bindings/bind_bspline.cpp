@@ -1,9 +1,17 @@
-// chasles._core: classes SO3BSpline and SE3BSpline over
-// chasles::CubicBSplineView (include/chasles/bspline.hpp): the uniform
-// cumulative cubic B-spline on SO(3) and SE(3). The classes hold the start
-// time, the spacing and the control elements as an (N, D, D) array; the
-// private gufuncs evaluate them at times (the broadcast operand), registered
-// by def_ufunc (ufunc.hpp) with the spline as the model of those three:
+// chasles._core: the private functions behind chasles.SO3BSpline and
+// chasles.SE3BSpline (python/chasles/_bspline.py) over
+// chasles::cubic_bspline_locate and the segment functions of
+// include/chasles/bspline.hpp: the uniform cumulative cubic B-spline on
+// SO(3) and SE(3). The Python classes hold the start time, the spacing and
+// the control elements as an (N, D, D) array:
+//
+//   _so3_bspline_new(start_time, spacing, control)  the constructor's checks: (t0, dt, the (N, 3, 3) array)
+//   _so3_bspline_evaluate(t0, dt, control, t, order) the methods: times checked, then the gufunc
+//
+// and the private gufuncs evaluate them at times (the broadcast operand),
+// registered by def_ufunc (ufunc.hpp) with the spline as the model of those
+// three operands (a view of the control array: an evaluation reads the four
+// control elements of its segment, O(1) whatever N):
 //
 //   _so3_bspline        (),(),(n,3,3),()->(3,3)             the element
 //   _so3_bspline_rates  (),(),(n,3,3),()->(3,3),(3),(3)     and its body velocity, acceleration
@@ -11,6 +19,8 @@
 //   _se3_bspline_rates  (),(),(n,4,4),()->(4,4),(6),(6)
 #include <chasles/bspline.hpp>
 
+#include <array>
+#include <climits>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -30,9 +40,9 @@ namespace {
 using chasles::SE3d;
 using chasles::SO3d;
 
-/// The Python class's value: the two times and its own copy of the control
-/// elements, as the (N, D, D) float64 array (read-only) that the private
-/// gufuncs take as an operand.
+/// A spline's numbers, as the Python class holds them: the two times and
+/// its own copy of the control elements, the (N, D, D) float64 array
+/// (read-only) that the private gufuncs take as an operand.
 template <typename Group>
 struct BSpline {
   double start_time = 0, spacing = 1;
@@ -150,31 +160,36 @@ py::array control_array(const std::vector<Group>& control) {
   return std::move(out);
 }
 
-/// The spline of the gufuncs' operands start_time, spacing and control, in
-/// storage of its own (the C++ spline views an array of elements); valid
-/// when N >= 4 and the spacing is finite and > 0 (NaN results otherwise).
-template <typename Group>
+/// The spline of the gufuncs' operands start_time, spacing and control: the
+/// two times and the map of the control array (numpy's memory, with its
+/// strides), read where an evaluation needs it; valid when N >= 4 and the
+/// spacing is finite and > 0 (NaN results otherwise).
+template <typename Group, typename Control>
 struct BSplineModel {
   double start_time, spacing;
-  std::vector<Group> control;
+  Control control;
 
   bool valid() const noexcept {
     return control.size() >= 4 && spacing > 0 && spacing <= std::numeric_limits<double>::max();
   }
-  chasles::CubicBSplineView<Group> view() const noexcept {
-    return {control.data(), static_cast<std::ptrdiff_t>(control.size()), start_time, spacing};
+  /// The segment of t and its four control elements (the view's time
+  /// convention: clamped to [start_time, end_time]).
+  chasles::BSplineTime<double> locate(double t, std::array<Group, 4>& four) const noexcept {
+    constexpr int n = Names<Group>::rows;
+    const chasles::BSplineTime<double> at =
+        chasles::cubic_bspline_locate<double>(static_cast<std::ptrdiff_t>(control.size()), start_time, spacing, t);
+    for (std::size_t j = 0; j < 4; ++j)
+      four[j] = Group::from_matrix_unchecked(
+          Eigen::Matrix<double, n, n>(control[static_cast<Eigen::Index>(at.segment) + static_cast<Eigen::Index>(j)]));
+    return at;
   }
 };
 
 template <typename Group>
 struct BSplineOf {
   template <typename Control>
-  BSplineModel<Group> operator()(double start_time, double spacing, const Control& control) const noexcept {
-    constexpr int n = Names<Group>::rows;
-    BSplineModel<Group> m{start_time, spacing, {}};
-    for (Eigen::Index i = 0; i < control.size(); ++i)
-      m.control.push_back(Group::from_matrix_unchecked(Eigen::Matrix<double, n, n>(control[i])));
-    return m;
+  BSplineModel<Group, Control> operator()(double start_time, double spacing, const Control& control) const noexcept {
+    return {start_time, spacing, control};
   }
 };
 
@@ -187,9 +202,12 @@ Eigen::Matrix<double, Names<Group>::rows, Names<Group>::rows> nan_matrix() {
 /// The element at t (clamped to [start_time, end_time]; the methods check).
 template <typename Group>
 struct Element {
-  Eigen::Matrix<double, Names<Group>::rows, Names<Group>::rows> operator()(const BSplineModel<Group>& m,
-                                                                           double t) const noexcept {
-    return m.valid() ? m.view()(t).matrix() : nan_matrix<Group>();
+  template <typename Model>
+  Eigen::Matrix<double, Names<Group>::rows, Names<Group>::rows> operator()(const Model& m, double t) const noexcept {
+    if (!m.valid()) return nan_matrix<Group>();
+    std::array<Group, 4> four;
+    const chasles::BSplineTime<double> at = m.locate(t, four);
+    return chasles::cubic_bspline_segment(four.data(), at.u).matrix();
   }
 };
 
@@ -197,13 +215,16 @@ struct Element {
 template <typename Group>
 struct Rates {
   using Tangent = Eigen::Matrix<double, Names<Group>::dof, 1>;
+  template <typename Model>
   std::tuple<Eigen::Matrix<double, Names<Group>::rows, Names<Group>::rows>, Tangent, Tangent> operator()(
-      const BSplineModel<Group>& m, double t) const noexcept {
+      const Model& m, double t) const noexcept {
     if (!m.valid()) {
       const Tangent nan = Tangent::Constant(std::numeric_limits<double>::quiet_NaN());
       return {nan_matrix<Group>(), nan, nan};
     }
-    const chasles::BSplinePoint<Group> p = m.view().evaluate(t);
+    std::array<Group, 4> four;
+    const chasles::BSplineTime<double> at = m.locate(t, four);
+    const chasles::BSplinePoint<Group> p = chasles::cubic_bspline_segment_derivatives(four.data(), at.u, m.spacing);
     return {p.value.matrix(), p.velocity, p.acceleration};
   }
 };
@@ -228,104 +249,50 @@ py::object times_operand(const BSpline<Group>& s, py::handle t, const char* what
   return std::move(times);
 }
 
+/// The control operand of _so3_bspline_evaluate (the Python class's own
+/// array, made by _so3_bspline_new): checked before it is read, so that the
+/// private function given another array raises instead of reading past it.
 template <typename Group>
-std::string class_doc() {
-  const bool so3 = Names<Group>::rows == 3;
-  const std::string G = Names<Group>::element, N = Names<Group>::cls;
-  const std::string m = so3 ? "3, 3" : "4, 4", k = so3 ? "3" : "6";
-  return "The uniform cumulative cubic B-spline on " + std::string(so3 ? "SO(3)" : "SE(3)") +
-         " (Kim, Kim and Shin 1995;\nLovegrove, Patron-Perez and Sibley 2013), "
-         "the curve of continuous-time\nestimation, with analytic body velocity and acceleration (Sommer et al.\n"
-         "2020, \"Efficient derivative computation for cumulative B-splines on Lie\ngroups\").\n\n"
-         "Control elements X_0 .. X_{N-1} (N >= 4), start time t0 and knot spacing dt.\n"
-         "At t = t0 + (i + u) dt, u in [0, 1], segment i uses X_i .. X_{i+3}:\n\n"
-         "    X(t) = X_i exp(B1(u) d_1) exp(B2(u) d_2) exp(B3(u) d_3),\n"
-         "    d_j = log(X_{i+j-1}^-1 X_{i+j}),\n"
-         "    B1 = (5 + 3u - 3u^2 + u^3)/6, B2 = (1 + 3u + 3u^2 - 2u^3)/6, B3 = u^3/6.\n\n"
-         "The curve is C2 and smooths rather than interpolates: it does not pass\n"
-         "through the control elements. It is defined on [start_time, end_time],\n"
-         "end_time = t0 + (N - 3) dt; other times are a ValueError (NaN gives NaN).\n"
-         "Body velocity (X^-1 X')^vee and body acceleration, its time derivative,\n"
-         "come from the recursion over the three factors, not from differences;\n" +
-         (so3 ? "they are angular velocities w (rad per unit of time)."
-              : "twists (v, w), linear part first (Murray, Li and Sastry).") +
-         "\n\nEvaluation takes a time or an array of times of any shape and runs one\n"
-         "C++ loop over them with the GIL released. Values are float64.\n\n"
-         "Example:\n"
-         "    >>> control = [" + G + ".exp([0.0, 0.0, 0.1 * k]" + (so3 ? "" : " + [0.0] * 3") +
-         ") for k in range(6)]\n"
-         "    >>> spline = " + N + "(0.0, 0.5, control)\n"
-         "    >>> spline.end_time\n"
-         "    1.5\n"
-         "    >>> spline([0.0, 0.7]).shape\n"
-         "    (2, " + m + ")\n"
-         "    >>> np.round(spline.body_velocity(0.7), 12) + 0.0\n"
-         "    array([" + (so3 ? "0. , 0. , 0.2" : "0. , 0. , 0.2, 0. , 0. , 0. ") + "])\n";
+void check_control(const py::array& control, const char* function) {
+  constexpr int rows = Names<Group>::rows;
+  if (control.ndim() != 3 || control.shape(0) < 4 || control.shape(1) != rows || control.shape(2) != rows ||
+      !control.dtype().is(py::dtype::of<double>())) {
+    raise_value_error(std::string(function) + ": expected control of shape (n, " + std::to_string(rows) + ", " +
+                      std::to_string(rows) + "), n >= 4, float64, got " +
+                      shape_string(control.shape(), static_cast<int>(control.ndim())) + " " +
+                      std::string(py::str(control.dtype())));
+  }
 }
 
 template <typename Group>
 void bind_one(py::module_& m) {
-  using S = BSpline<Group>;
   constexpr int rows = Names<Group>::rows;
-  const bool so3 = rows == 3;
-  static const std::string doc = class_doc<Group>();
-  py::class_<S> cls(m, Names<Group>::cls, doc.c_str());
-  cls.attr("__array_ufunc__") = py::none();
+  const std::string lower = rows == 3 ? "so3" : "se3";
+  static const std::string new_name = "_" + lower + "_bspline_new", evaluate_name = "_" + lower + "_bspline_evaluate";
+  const std::string what = rows == 3 ? "rotations" : "rigid motions";
 
-  static const std::string init_doc =
-      std::string("A spline from its start time, knot spacing and control elements.\n\nArgs:\n"
-                  "    start_time: t0, finite.\n"
-                  "    spacing: dt > 0, finite, the time between knots.\n"
-                  "    control: N >= 4 control elements: a sequence of ") +
-      Names<Group>::element + ", or an array-like of\n        shape (N, " + std::to_string(rows) + ", " +
-      std::to_string(rows) + ") of " + (so3 ? "rotation matrices" : "rigid motions [[R, p], [0, 0, 0, 1]]") +
-      " (checked as\n        " + Names<Group>::element +
-      ".from_matrix does; a float32 array with float32's tolerance,\n        3.5e-4, then projected to "
-      "the nearest rotation). The spline keeps\n        its own float64 copy.\n\n"
-      "Raises:\n"
-      "    ValueError: fewer than 4 control elements, a wrong shape, a matrix\n"
-      "        that is not " + (so3 ? "a rotation" : "a rigid motion") +
-      ", a start time that is not finite or a spacing that\n        is not finite and > 0.\n"
-      "    TypeError: a sequence holding something other than " + Names<Group>::element + ".\n";
-  cls.def(py::init([](RealLike start_time, RealLike spacing, ArrayLike control) {
-            S s;
-            s.start_time = to_finite_real(start_time.obj, label<Group>("start_time").c_str());
-            s.spacing = to_finite_real(spacing.obj, label<Group>("spacing").c_str());
-            if (!(s.spacing > 0))
-              raise_value_error(label<Group>("spacing") + ": expected a positive spacing (> 0), got " + float_repr(s.spacing));
-            s.control = control_array(control_of<Group>(control.obj));
-            return s;
-          }),
-          py::arg("start_time"), py::arg("spacing"), py::arg("control"), init_doc.c_str());
+  m.def(
+      new_name.c_str(),
+      [](RealLike start_time, RealLike spacing, ArrayLike control) {
+        BSpline<Group> s;
+        s.start_time = to_finite_real(start_time.obj, label<Group>("start_time").c_str());
+        s.spacing = to_finite_real(spacing.obj, label<Group>("spacing").c_str());
+        if (!(s.spacing > 0))
+          raise_value_error(label<Group>("spacing") + ": expected a positive spacing (> 0), got " + float_repr(s.spacing));
+        s.control = control_array(control_of<Group>(control.obj));
+        return py::make_tuple(s.start_time, s.spacing, s.control);
+      },
+      py::arg("start_time"), py::arg("spacing"), py::arg("control"),
+      (std::string("The checked arguments of ") + Names<Group>::cls +
+       "(start_time, spacing, control): (start_time, spacing, the control elements as a new read-only (N, " +
+       std::to_string(rows) + ", " + std::to_string(rows) + ") float64 array of " + what + "), or the " +
+       Names<Group>::cls + " constructor's ValueError / TypeError. A private function of chasles." +
+       Names<Group>::cls + " (python/chasles/_bspline.py).")
+          .c_str());
 
-  static const std::string call_what = std::string(Names<Group>::cls) + "(t)";
-  static const std::string vel_what = std::string(Names<Group>::cls) + ".body_velocity(t)";
-  static const std::string acc_what = std::string(Names<Group>::cls) + ".body_acceleration(t)";
-  static const std::string call_doc =
-      std::string("The elements X(t).\n\nArgs:\n"
-                  "    t: a time or an array_like of times of any shape, in [start_time, end_time].\n\n"
-                  "Returns:\n    numpy.ndarray: shape t.shape + (") +
-      std::to_string(rows) + ", " + std::to_string(rows) + "), the " +
-      (so3 ? "rotation matrices" : "homogeneous matrices") +
-      ".\n\nRaises:\n    ValueError: a time outside [start_time, end_time].\n    TypeError: times that are not real numbers.\n";
-  const std::string k = so3 ? "3" : "6";
-  static const std::string vel_doc =
-      "The body velocity (X^-1 X')^vee at the times t, per unit of time.\n\n"
-      "omega_j = Ad_{A_j^-1} omega_{j-1} + B_j' d_j over the factors A_j = exp(B_j d_j).\n\n"
-      "Args:\n    t: a time or an array_like of times of any shape, in [start_time, end_time].\n\n"
-      "Returns:\n    numpy.ndarray: shape t.shape + (" + k + ",), " +
-      (so3 ? "the angular velocity w in the body frame." : "the body twist (v, w), linear part first.") +
-      "\n\nRaises:\n    ValueError: a time outside [start_time, end_time].\n    TypeError: times that are not real numbers.\n";
-  static const std::string acc_doc =
-      "The body acceleration, the time derivative of body_velocity, at the times t.\n\n"
-      "omega_j' = Ad_{A_j^-1} omega_{j-1}' + B_j'' d_j + [omega_j, B_j' d_j].\n\n"
-      "Args:\n    t: a time or an array_like of times of any shape, in [start_time, end_time].\n\n"
-      "Returns:\n    numpy.ndarray: shape t.shape + (" + k + ",), per unit of time squared.\n\n"
-      "Raises:\n    ValueError: a time outside [start_time, end_time].\n    TypeError: times that are not real numbers.\n";
   using ufunc::Core;
   using Control = Core<ufunc::upto<ufunc::unbounded>, rows, rows>;
   constexpr int dof = Names<Group>::dof;
-  const std::string lower = so3 ? "so3" : "se3";
   static const std::string element_name = "_" + lower + "_bspline", rates_name = "_" + lower + "_bspline_rates";
   const std::string operands = std::string("\n\nOperands (float64): start_time (), spacing () > 0, control (n, ") +
                                std::to_string(rows) + ", " + std::to_string(rows) +
@@ -339,40 +306,37 @@ void bind_one(py::module_& m) {
                        ufunc::Float64>(m, rates_name.c_str(), "start_time, spacing, control, t",
                                        "The spline's element, body velocity and body acceleration at t." + operands,
                                        ufunc::model<3>(BSplineOf<Group>()), Rates<Group>());
-  /// The method `what` at t: the element (order 0) or a rate (1, 2).
-  const auto evaluate = [](const py::object& u, const S& s, py::handle t, const std::string& what,
+  // The labels of the methods' errors, by order.
+  static const std::string whats[3] = {std::string(Names<Group>::cls) + "(t)",
+                                       std::string(Names<Group>::cls) + ".body_velocity(t)",
+                                       std::string(Names<Group>::cls) + ".body_acceleration(t)"};
+  m.def(
+      evaluate_name.c_str(),
+      [u_element, u_rates](double start_time, double spacing, const py::array& control, ArrayLike t,
                            int order) -> Returns<py::array> {
-    const py::object times = times_operand(s, t, what.c_str());
-    const py::float_ t0(s.start_time), dt(s.spacing);
-    const py::object r = call_ufunc<4>(u.ptr(), what.c_str(), {t0.ptr(), dt.ptr(), s.control.ptr(), times.ptr()});
-    return {order == 0 ? r : py::object(py::tuple(r)[static_cast<std::size_t>(order)])};
-  };
-  cls.def(
-      "__call__", [u_element, evaluate](Obj<S> s, ArrayLike t) { return evaluate(u_element, *s, t.obj, call_what, 0); },
-      py::arg("t"), call_doc.c_str());
-  cls.def(
-      "body_velocity", [u_rates, evaluate](Obj<S> s, ArrayLike t) { return evaluate(u_rates, *s, t.obj, vel_what, 1); },
-      py::arg("t"), vel_doc.c_str());
-  cls.def(
-      "body_acceleration",
-      [u_rates, evaluate](Obj<S> s, ArrayLike t) { return evaluate(u_rates, *s, t.obj, acc_what, 2); }, py::arg("t"),
-      acc_doc.c_str());
-  cls.def_property_readonly(
-      "start_time", [](Obj<S> s) { return s->start_time; }, "float: t0, the start of the first segment.");
-  cls.def_property_readonly(
-      "spacing", [](Obj<S> s) { return s->spacing; }, "float: dt, the time between knots.");
-  cls.def_property_readonly(
-      "end_time", [](Obj<S> s) { return s->end_time(); }, "float: t0 + (N - 3) dt, the last valid time.");
-  static const std::string control_doc = "numpy.ndarray: shape (N, " + std::to_string(rows) + ", " +
-                                         std::to_string(rows) + "), the control elements (a copy).";
-  cls.def_property_readonly(
-      "control",
-      [](Obj<S> s) { return Returns<py::array_t<double>>{s->control.attr("copy")()}; },
-      control_doc.c_str());
-  def_repr(cls, [](const S& s) {
-    return std::string(Names<Group>::cls) + "(start_time=" + float_repr(s.start_time) +
-           ", spacing=" + float_repr(s.spacing) + ", n_control=" + std::to_string(s.control.shape(0)) + ")";
-  });
+        if (order < 0 || order > 2)
+          raise_value_error(evaluate_name + ": expected order 0, 1 or 2, got " + std::to_string(order));
+        check_control<Group>(control, evaluate_name.c_str());
+        if (!(std::isfinite(start_time) && spacing > 0 && spacing <= std::numeric_limits<double>::max()))
+          raise_value_error(evaluate_name + ": expected a finite start_time and a finite spacing > 0, got " +
+                            float_repr(start_time) + " and " + float_repr(spacing));
+        const std::string& what = whats[order];
+        BSpline<Group> s;
+        s.start_time = start_time;
+        s.spacing = spacing;
+        s.control = control;
+        const py::object times = times_operand(s, t.obj, what.c_str());
+        const py::float_ t0(start_time), dt(spacing);
+        const py::object u = order == 0 ? u_element : u_rates;
+        const py::object r = call_ufunc<4>(u.ptr(), what.c_str(), {t0.ptr(), dt.ptr(), control.ptr(), times.ptr()});
+        return {order == 0 ? r : py::object(py::tuple(r)[static_cast<std::size_t>(order)])};
+      },
+      py::arg("start_time"), py::arg("spacing"), py::arg("control"), py::arg("t"), py::arg("order"),
+      (std::string("The methods of ") + Names<Group>::cls +
+       " at the times t: the elements (order 0), body velocities (1) or body accelerations (2) of the spline of "
+       "start_time, spacing and control (from " + new_name + "), the times checked to lie in [start_time, "
+       "end_time]. A private function of chasles." + Names<Group>::cls + " (python/chasles/_bspline.py).")
+          .c_str());
 }
 
 }  // namespace

@@ -167,6 +167,28 @@ struct BSplineTime {
   Scalar u;
 };
 
+/// The segment (in [0, count - 4]) and u in [0, 1] of time t on a uniform
+/// cubic B-spline of `count` >= 4 control elements, start time t0 and knot
+/// spacing dt > 0, clamped to [t0, t0 + (count - 3) dt] (CubicBSplineView's
+/// time convention): O(1), one division. A NaN time gives segment 0 and a
+/// NaN u.
+template <typename Scalar>
+inline BSplineTime<Scalar> cubic_bspline_locate(std::ptrdiff_t count, const Scalar& t0, const Scalar& dt,
+                                                const Scalar& t) noexcept {
+  using Real = RealOf<Scalar>;
+  const std::ptrdiff_t last = count - 4;
+  const Scalar s = (t - t0) / dt;  // knot units from the start
+  const Real r = detail::real_value(s), n = Real(last + 1);
+  if (r > Real(0) && r < n) {
+    std::ptrdiff_t i = static_cast<std::ptrdiff_t>(r);  // floor, r > 0
+    if (i > last) i = last;
+    return {i, s - Scalar(Real(i))};
+  }
+  if (r >= n) return {last, Scalar(1)};
+  if (r <= Real(0)) return {0, Scalar(0)};
+  return {0, s};  // NaN
+}
+
 /// A uniform cumulative cubic B-spline over the caller's control elements,
 /// a view: it stores a pointer to them, their count and the two times, and
 /// neither copies nor allocates (the elements must outlive it).
@@ -210,19 +232,7 @@ class CubicBSplineView {
   }
 
   /// The segment and u of time t, clamped to [start_time(), end_time()].
-  BSplineTime<Scalar> locate(const Scalar& t) const noexcept {
-    const std::ptrdiff_t last = count_ - 4;
-    const Scalar s = (t - t0_) / dt_;  // knot units from the start
-    const Real r = detail::real_value(s), n = Real(last + 1);
-    if (r > Real(0) && r < n) {
-      std::ptrdiff_t i = static_cast<std::ptrdiff_t>(r);  // floor, r > 0
-      if (i > last) i = last;
-      return {i, s - Scalar(Real(i))};
-    }
-    if (r >= n) return {last, Scalar(1)};
-    if (r <= Real(0)) return {0, Scalar(0)};
-    return {0, s};  // NaN
-  }
+  BSplineTime<Scalar> locate(const Scalar& t) const noexcept { return cubic_bspline_locate(count_, t0_, dt_, t); }
 
   const Group* control() const noexcept { return control_; }
   std::ptrdiff_t size() const noexcept { return count_; }

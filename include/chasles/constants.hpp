@@ -102,6 +102,9 @@ struct Thresholds<float> {
   static constexpr float spline_series_theta2 = 4.0f;
   static constexpr float spline_step_tolerance = 6.4e-06f;  // eps^(3/4)
   static constexpr int spline_max_iterations = 30;
+  static constexpr float spline_min_step = 1e-6f;
+  static constexpr float spline_max_step = 1e6f;
+  static constexpr float spline_max_extrapolation = 100.0f;
   static constexpr float screw_tolerance = 3.4526698e-04f;  // eps^(1/2)
   static constexpr float inertia_tolerance = 3.4526698e-04f;  // eps^(1/2)
 };
@@ -124,6 +127,9 @@ struct Thresholds<double> {
   static constexpr double spline_series_theta2 = 4.0;
   static constexpr double spline_step_tolerance = 1.8189894035458565e-12;  // eps^(3/4)
   static constexpr int spline_max_iterations = 30;
+  static constexpr double spline_min_step = 1e-100;
+  static constexpr double spline_max_step = 1e100;
+  static constexpr double spline_max_extrapolation = 1e6;
   static constexpr double screw_tolerance = 1.4901161193847656e-08;  // eps^(1/2)
   static constexpr double inertia_tolerance = 1.4901161193847656e-08;  // eps^(1/2)
 };
@@ -148,6 +154,9 @@ struct Thresholds<long double> {
   static constexpr long double spline_series_theta2 = 4.0L;
   static constexpr long double spline_step_tolerance = 5.9749283938523554e-15L;  // eps^(3/4)
   static constexpr int spline_max_iterations = 30;
+  static constexpr long double spline_min_step = 1e-100L;  // as double: safe for both long double formats
+  static constexpr long double spline_max_step = 1e100L;
+  static constexpr long double spline_max_extrapolation = 1e6L;
   static constexpr long double screw_tolerance = 3.2927225399135962334e-10L;  // eps^(1/2)
   static constexpr long double inertia_tolerance = 3.2927225399135962334e-10L;  // eps^(1/2)
 };
@@ -202,8 +211,12 @@ struct Thresholds<long double> {
 //   series has no 0/0, so autodiff derivatives are exact at 0.
 //
 // spline_step_tolerance: the spline fit's fixed point (spline.hpp) stops
-//   after a step with |dw_j| <= tol (1 + |w_j|) for every rate component
-//   (scipy's RotationSpline makes the same test with 1e-9). eps^(3/4): the
+//   after a step with |dw_j| <= tol (W + |w_j|) for every rate component,
+//   W the largest chord rate component |D_i|_inf / h_i (the scale of the
+//   rates, so that the test does not depend on the unit of time: with 1 in
+//   place of W, steps of 1e100 stopped after one iteration, their rates
+//   ~1e-100 far below the tolerance; scipy's RotationSpline tests
+//   |dw| <= 1e-9 (1 + |w|)). eps^(3/4): the
 //   iteration converges linearly, so the error left after such a step is
 //   that step times q / (1 - q), q the contraction factor; a tolerance near
 //   eps could be missed forever by the rounding of the block solve (a few
@@ -216,6 +229,31 @@ struct Thresholds<long double> {
 //   sigma 0.5 to 0.8 at most 23, and one natural-end fit with steps of
 //   2.7 rad at 7 rad/s did not converge in 30 (reported not_converged;
 //   the Python classes raise). Keys on one screw motion take 1 or 2.
+//
+// spline_min_step, spline_max_step: the key time steps h = t_{i+1} - t_i a
+//   spline fit accepts (fit_spline reports step_out_of_range otherwise). The
+//   cubics' coefficients are per unit of time: c1 ~ D/h, c2 ~ D/h^2,
+//   c3 ~ D/h^3 for a step D = log(X_i^-1 X_{i+1}), the fit's equations hold
+//   6 D/h^2 and the body acceleration is ~ D/h^2. With h in [1e-100, 1e100]
+//   (double) h^3 and 1/h^3 lie within [1e-300, 1e300], the normal range with
+//   a margin of 1e8 for |D| (a step of 1e8 in translation, or 1e-8 before c3
+//   becomes subnormal at the largest h); at h = 1e-160 c3 ~ 1e480 overflows
+//   and the accelerations ~ 1e320 with it, at h = 1e200 h^2 overflows in the
+//   fit and c2, c3 underflow to zero. float: [1e-6, 1e6] (its range is
+//   1e-38 to 3e38: h^3 and D/h^2 stay within 1e18 of 1 and the products of
+//   the rates in spline_body_rates, of order |r|^2 |r'|, stay finite with
+//   spline_max_extrapolation below). long double: as double.
+//
+// spline_max_extrapolation: outside [t_0, t_{N-1}] the first / last
+//   segment's cubic continues up to this many segment lengths h from the
+//   end key (t_0 - K h_0 and t_{N-1} + K h_{N-2}); farther, the spline holds
+//   the element, velocity and acceleration it has there (Spline::offset).
+//   The cubic grows as tau^3: unbounded, r(tau) overflowed at t = 1e110 and
+//   the results were NaN. At K = 1e6 (double) |r| ~ K^3 |D| = 1e18 |D|, the
+//   rotation angle's ulp is already ~100 rad (the element carries no more
+//   information farther out), and the products of spline_body_rates (of
+//   order |r|^2 |r'| ~ K^8 |D|^3 / h for the smallest step) stay below
+//   1e200. float: 100 (|r| ~ 1e6 |D|, products below 1e30).
 //
 // screw_tolerance: Chain::validate() (kinematics.hpp) accepts a revolute
 //   joint's angular part w with | |w| - 1 | <= tol and |w . v| <= tol (1 + |v|)

@@ -32,7 +32,9 @@
 // block-tridiagonal in the w_i with a right-hand side that depends on w
 // through n only: the blocks are factored once (block Thomas algorithm) and
 // the fixed point w <- solve(g - n(w)) is iterated from w_i = chord rates
-// until a step |dw| <= spline_step_tolerance (1 + |w|) componentwise, at most
+// until a step |dw| <= spline_step_tolerance (W + |w|) componentwise (W the
+// largest chord rate |D_i|_inf / h_i: the test does not depend on the unit of
+// time, so steps of 1e-100 and 1e100 converge as steps of 1 do), at most
 // spline_max_iterations times (constants.hpp). Two keys give the geodesic at
 // constant velocity; keys on one screw motion exp(t xi) give exactly that
 // motion (V = xi, V' = 0), whatever the times (as long as each step's angle
@@ -47,12 +49,23 @@
 // (std::vector::reserve, static arrays) and the Python binding into its own
 // vectors, and nothing here allocates. Fitting costs O(N) per iteration
 // (D x D blocks, D = 3 or 6), evaluation O(log N) (binary search) plus one exp.
+// The evaluation's parts are free functions too (spline_segment_index,
+// spline_offset, spline_segment_element, spline_segment_sample), for storage
+// that is not three arrays of these types (the Python binding reads numpy's).
+//
+// Time steps: fit_spline takes steps h_i in [spline_min_step,
+// spline_max_step] (constants.hpp: [1e-100, 1e100] in double), where the
+// coefficients per unit of time (c3 ~ D/h^3) and the accelerations
+// (~ D/h^2) are within the floating-point range; others are reported
+// (step_out_of_range). Extrapolation: outside [t_0, t_{N-1}] the first /
+// last segment's cubic continues, up to spline_max_extrapolation (1e6 in
+// double) segment lengths from the end key; farther, the spline holds what
+// it has there (the cubic grows as tau^3 and would overflow: NaN).
 //
 // Every function is noexcept and allocation-free; Scalar may be float, double
 // or an Eigen::AutoDiffScalar (derivatives through the fit and the evaluation).
 #pragma once
 
-#include <algorithm>
 #include <limits>
 
 #include <Eigen/Core>
@@ -60,6 +73,7 @@
 
 #include "chasles/constants.hpp"
 #include "chasles/detail/approx.hpp"
+#include "chasles/detail/assert.hpp"
 #include "chasles/jacobians.hpp"
 #include "chasles/se3.hpp"
 #include "chasles/so3.hpp"
@@ -77,6 +91,7 @@ enum class SplineStatus {
   ok,                    ///< fitted; the iteration converged
   too_few_keys,          ///< N < 2
   times_not_increasing,  ///< some t_{i+1} - t_i is not > 0 and finite (or a time is NaN)
+  step_out_of_range,     ///< some t_{i+1} - t_i is outside [spline_min_step, spline_max_step] (constants.hpp)
   not_converged,         ///< the fixed point did not converge in spline_max_iterations (coefficients are the last iterate)
 };
 
@@ -273,7 +288,8 @@ inline void spline_body_rates(const Eigen::Matrix<typename Group::Scalar, Group:
 /// Fits the interpolating C2 spline through (times[i], keys[i]), i < n: writes the n - 1
 /// segments' cubics into `segments`, using `work` (n entries) as scratch. Nothing is
 /// allocated; the cost is O(n) per iteration, at most spline_max_iterations iterations.
-/// On too_few_keys / times_not_increasing nothing is written to `segments`.
+/// On too_few_keys / times_not_increasing / step_out_of_range nothing is written to
+/// `segments` (times_not_increasing is reported before step_out_of_range, whatever the order of the steps).
 template <typename Group>
 inline SplineFit fit_spline(int n, const typename Group::Scalar* times, const Group* keys,
                             SplineSegment<Group>* segments, SplineWork<Group>* work,
@@ -289,13 +305,24 @@ inline SplineFit fit_spline(int n, const typename Group::Scalar* times, const Gr
     if (!(h > Scalar(0)) || !(h < Scalar(std::numeric_limits<RealOf<Scalar>>::infinity())))
       return {SplineStatus::times_not_increasing, 0};
   }
+  for (int i = 0; i + 1 < n; ++i) {
+    // c3 ~ D/h^3 and the accelerations ~ D/h^2 must be representable (constants.hpp).
+    const Scalar h = times[i + 1] - times[i];
+    if (h < Scalar(ThresholdsOf<Scalar>::spline_min_step) || h > Scalar(ThresholdsOf<Scalar>::spline_max_step))
+      return {SplineStatus::step_out_of_range, 0};
+  }
   const Matrix I = Matrix::Identity();
   const bool natural = ends == SplineEnds::natural;
+  Scalar rate_scale(0);  // W, the largest chord rate component: the scale of the rates
   for (int i = 0; i + 1 < n; ++i) {
     const Scalar h = times[i + 1] - times[i];
     work[i].delta = (keys[i].inverse() * keys[i + 1]).log();
     work[i].jr_inv = detail::spline_jr_inv(tag, work[i].delta);
     work[i].rate = work[i].delta / h;  // the chord rates start the iteration
+    for (int j = 0; j < Group::DoF; ++j) {
+      using std::abs;
+      if (abs(work[i].rate[j]) > rate_scale) rate_scale = abs(work[i].rate[j]);
+    }
   }
   work[n - 1].delta.setZero();
   work[n - 1].jr_inv = I;
@@ -356,7 +383,7 @@ inline SplineFit fit_spline(int n, const typename Group::Scalar* times, const Gr
       if (i < n - 1) w -= work[i].upper * work[i + 1].rate;
       for (int j = 0; j < Group::DoF; ++j) {
         using std::abs;
-        if (!(abs(w[j] - work[i].rate[j]) <= tol * (Scalar(1) + abs(w[j])))) converged = false;
+        if (!(abs(w[j] - work[i].rate[j]) <= tol * (rate_scale + abs(w[j])))) converged = false;
       }
       work[i].rate = w;
     }
@@ -374,10 +401,70 @@ inline SplineFit fit_spline(int n, const typename Group::Scalar* times, const Gr
   return {converged ? SplineStatus::ok : SplineStatus::not_converged, iterations};
 }
 
+/// The segment of time t among n >= 2 increasing key times: the largest i <= n - 2 with
+/// times[i] <= t (0 before times[0]; n - 2 for a NaN t). `times` is anything indexed by
+/// times[i] (a pointer, an Eigen vector or map). A binary search: O(log n) reads.
+template <typename Times, typename Scalar>
+inline int spline_segment_index(int n, const Times& times, const Scalar& t) noexcept {
+  // std::upper_bound over times[1 .. n-2]: the first j with t < times[j], minus one.
+  int first = 1, count = n - 2;
+  while (count > 0) {
+    const int half = count / 2;
+    if (!(t < times[first + half])) {
+      first += half + 1;
+      count -= half + 1;
+    } else {
+      count = half;
+    }
+  }
+  return first - 1;
+}
+
+/// The offset tau = t - t_i of time t on the segment [t_i, t_{i+1}] (h = t_{i+1} - t_i), held
+/// to [-K h, (1 + K) h], K = spline_max_extrapolation: past the ends of a spline the cubic
+/// continues K segment lengths (the offset from the end key is at most K h; it grows as tau^3
+/// and would overflow: NaN), then the spline holds. Within the segment it is t - t_i. NaN
+/// stays NaN. The subtraction t - t_i may overflow to +-inf (t = 1e308, t_i = -1e308): held.
+template <typename Scalar>
+inline Scalar spline_offset(const Scalar& t, const Scalar& t_i, const Scalar& t_next) noexcept {
+  Scalar tau = t - t_i;
+  const Scalar h = t_next - t_i;
+  const Scalar K(ThresholdsOf<Scalar>::spline_max_extrapolation);
+  if (tau < -K * h) tau = -K * h;
+  if (tau > (K + Scalar(1)) * h) tau = (K + Scalar(1)) * h;
+  return tau;
+}
+
+/// The element key exp(r(tau)) of a segment with cubic c and start key `key`, at offset tau.
+template <typename Group>
+inline Group spline_segment_element(const Group& key, const SplineSegment<Group>& c,
+                                    const typename Group::Scalar& tau) noexcept {
+  using Tangent = Eigen::Matrix<typename Group::Scalar, Group::DoF, 1>;
+  return key * Group::exp(Tangent(((c.c3 * tau + c.c2) * tau + c.c1) * tau));
+}
+
+/// Element, body velocity and body acceleration of a segment with cubic c and start key
+/// `key`, at offset tau: key exp(r), V = Jr(r) r', V' = Jr(r) r'' + (d/dt Jr(r)) r'.
+template <typename Group>
+inline SplineSample<Group> spline_segment_sample(const Group& key, const SplineSegment<Group>& c,
+                                                 const typename Group::Scalar& tau) noexcept {
+  using Scalar = typename Group::Scalar;
+  using Tangent = Eigen::Matrix<Scalar, Group::DoF, 1>;
+  const Tangent r = ((c.c3 * tau + c.c2) * tau + c.c1) * tau;
+  const Tangent r1 = (Scalar(3) * tau * c.c3 + Scalar(2) * c.c2) * tau + c.c1;
+  const Tangent r2 = Scalar(6) * tau * c.c3 + Scalar(2) * c.c2;
+  SplineSample<Group> out{key * Group::exp(r), Tangent(), Tangent()};
+  spline_body_rates<Group>(r, r1, r2, out.velocity, out.acceleration);
+  return out;
+}
+
 /// A fitted spline: a view over the caller's n times, n keys and n - 1 segments
 /// (filled by fit_spline). Evaluation is noexcept, allocation-free and O(log n).
 /// Outside [t_0, t_{n-1}] the first / last segment's cubic continues (as scipy's
-/// RotationSpline, whose PPoly extrapolates).
+/// RotationSpline, whose PPoly extrapolates) up to spline_max_extrapolation segment
+/// lengths from the end key, and holds farther (spline_offset).
+/// Precondition (the caller's, asserted with eigen_assert): n >= 2 and the three
+/// pointers non-null (a fit with fewer than two keys reports too_few_keys).
 template <typename Group>
 class Spline {
  public:
@@ -385,40 +472,34 @@ class Spline {
   using Tangent = Eigen::Matrix<Scalar, Group::DoF, 1>;
 
   Spline(int n, const Scalar* times, const Group* keys, const SplineSegment<Group>* segments) noexcept
-      : n_(n), times_(times), keys_(keys), segments_(segments) {}
+      : n_(n), times_(times), keys_(keys), segments_(segments) {
+    CHASLES_ASSERT(n >= 2 && times != nullptr && keys != nullptr && segments != nullptr);
+  }
 
   int size() const noexcept { return n_; }
 
   /// The segment holding t: the largest i <= n - 2 with t_i <= t (0 before t_0); a NaN time gives NaN results.
-  int segment(const Scalar& t) const noexcept {
-    const Scalar* it = std::upper_bound(times_ + 1, times_ + n_ - 1, t);
-    return static_cast<int>(it - times_) - 1;
-  }
+  int segment(const Scalar& t) const noexcept { return spline_segment_index(n_, times_, t); }
+
+  /// The offset of t on segment i, t - t_i, held past the ends (spline_offset).
+  Scalar offset(int i, const Scalar& t) const noexcept { return spline_offset(t, times_[i], times_[i + 1]); }
 
   /// Element, body velocity and body acceleration of segment i at tau = t - t_i
   /// (for one-sided limits at a key: segment k - 1 at tau = h_{k-1}, segment k at 0).
   SplineSample<Group> sample(int i, const Scalar& tau) const noexcept {
-    const SplineSegment<Group>& c = segments_[i];
-    const Tangent r = ((c.c3 * tau + c.c2) * tau + c.c1) * tau;
-    const Tangent r1 = (Scalar(3) * tau * c.c3 + Scalar(2) * c.c2) * tau + c.c1;
-    const Tangent r2 = Scalar(6) * tau * c.c3 + Scalar(2) * c.c2;
-    SplineSample<Group> out{keys_[i] * Group::exp(r), Tangent(), Tangent()};
-    spline_body_rates<Group>(r, r1, r2, out.velocity, out.acceleration);
-    return out;
+    return spline_segment_sample(keys_[i], segments_[i], tau);
   }
 
   /// The element alone at time t (no rates): X_i exp(r(t - t_i)).
   Group element(const Scalar& t) const noexcept {
     const int i = segment(t);
-    const Scalar tau = t - times_[i];
-    const SplineSegment<Group>& c = segments_[i];
-    return keys_[i] * Group::exp(Tangent(((c.c3 * tau + c.c2) * tau + c.c1) * tau));
+    return spline_segment_element(keys_[i], segments_[i], offset(i, t));
   }
 
   /// Element, body velocity and body acceleration at time t.
   SplineSample<Group> operator()(const Scalar& t) const noexcept {
     const int i = segment(t);
-    return sample(i, t - times_[i]);
+    return sample(i, offset(i, t));
   }
 
  private:

@@ -7,7 +7,7 @@ import numpy
 import numpy.dtypes
 import numpy.typing
 import typing
-__all__: list[str] = ['Chain', 'SE3', 'SE3BSpline', 'SO3', 'SO3BSpline', 'Screw', 'SpatialInertia', 'Twist', 'Wrench', 'act_jacobians', 'between', 'between_jacobians', 'compose_jacobians', 'get_num_threads', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'lminus_jacobians', 'log_jacobian', 'lplus', 'lplus_jacobians', 'rminus', 'rminus_jacobians', 'rplus', 'rplus_jacobians', 'se3_act', 'se3_act_jacobian', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_distance', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_vee', 'set_num_threads', 'so3_act', 'so3_act_jacobian', 'so3_angle', 'so3_compose', 'so3_distance', 'so3_exp', 'so3_from_uniforms', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee']
+__all__: list[str] = ['Chain', 'SE3', 'SO3', 'Screw', 'SpatialInertia', 'Twist', 'Wrench', 'act_jacobians', 'between', 'between_jacobians', 'compose_jacobians', 'get_num_threads', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'lminus_jacobians', 'log_jacobian', 'lplus', 'lplus_jacobians', 'rminus', 'rminus_jacobians', 'rplus', 'rplus_jacobians', 'se3_act', 'se3_act_jacobian', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_distance', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_vee', 'set_num_threads', 'so3_act', 'so3_act_jacobian', 'so3_angle', 'so3_compose', 'so3_distance', 'so3_exp', 'so3_from_uniforms', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee']
 class SO3:
     """
     A rotation of R^3: an element of SO(3), stored as its 3x3 matrix (float64).
@@ -2641,252 +2641,14 @@ class Chain:
         """
         numpy.ndarray: shape (n,), the velocity limits (inf where none; a copy).
         """
-class SO3BSpline:
+def _se3_bspline_evaluate(start_time: typing.SupportsFloat | typing.SupportsIndex, spacing: typing.SupportsFloat | typing.SupportsIndex, control: numpy.ndarray, t: numpy.typing.ArrayLike, order: typing.SupportsInt | typing.SupportsIndex) -> numpy.ndarray:
     """
-    The uniform cumulative cubic B-spline on SO(3) (Kim, Kim and Shin 1995;
-    Lovegrove, Patron-Perez and Sibley 2013), the curve of continuous-time
-    estimation, with analytic body velocity and acceleration (Sommer et al.
-    2020, "Efficient derivative computation for cumulative B-splines on Lie
-    groups").
-    
-    Control elements X_0 .. X_{N-1} (N >= 4), start time t0 and knot spacing dt.
-    At t = t0 + (i + u) dt, u in [0, 1], segment i uses X_i .. X_{i+3}:
-    
-        X(t) = X_i exp(B1(u) d_1) exp(B2(u) d_2) exp(B3(u) d_3),
-        d_j = log(X_{i+j-1}^-1 X_{i+j}),
-        B1 = (5 + 3u - 3u^2 + u^3)/6, B2 = (1 + 3u + 3u^2 - 2u^3)/6, B3 = u^3/6.
-    
-    The curve is C2 and smooths rather than interpolates: it does not pass
-    through the control elements. It is defined on [start_time, end_time],
-    end_time = t0 + (N - 3) dt; other times are a ValueError (NaN gives NaN).
-    Body velocity (X^-1 X')^vee and body acceleration, its time derivative,
-    come from the recursion over the three factors, not from differences;
-    they are angular velocities w (rad per unit of time).
-    
-    Evaluation takes a time or an array of times of any shape and runs one
-    C++ loop over them with the GIL released. Values are float64.
-    
-    Example:
-        >>> control = [SO3.exp([0.0, 0.0, 0.1 * k]) for k in range(6)]
-        >>> spline = SO3BSpline(0.0, 0.5, control)
-        >>> spline.end_time
-        1.5
-        >>> spline([0.0, 0.7]).shape
-        (2, 3, 3)
-        >>> np.round(spline.body_velocity(0.7), 12) + 0.0
-        array([0. , 0. , 0.2])
+    The methods of SE3BSpline at the times t: the elements (order 0), body velocities (1) or body accelerations (2) of the spline of start_time, spacing and control (from _se3_bspline_new), the times checked to lie in [start_time, end_time]. A private function of chasles.SE3BSpline (python/chasles/_bspline.py).
     """
-    __array_ufunc__ = None
-    def __call__(self, t: numpy.typing.ArrayLike) -> numpy.ndarray:
-        """
-        The elements X(t).
-        
-        Args:
-            t: a time or an array_like of times of any shape, in [start_time, end_time].
-        
-        Returns:
-            numpy.ndarray: shape t.shape + (3, 3), the rotation matrices.
-        
-        Raises:
-            ValueError: a time outside [start_time, end_time].
-            TypeError: times that are not real numbers.
-        """
-    def __init__(self, start_time: float, spacing: float, control: numpy.typing.ArrayLike) -> None:
-        """
-        A spline from its start time, knot spacing and control elements.
-        
-        Args:
-            start_time: t0, finite.
-            spacing: dt > 0, finite, the time between knots.
-            control: N >= 4 control elements: a sequence of SO3, or an array-like of
-                shape (N, 3, 3) of rotation matrices (checked as
-                SO3.from_matrix does; a float32 array with float32's tolerance,
-                3.5e-4, then projected to the nearest rotation). The spline keeps
-                its own float64 copy.
-        
-        Raises:
-            ValueError: fewer than 4 control elements, a wrong shape, a matrix
-                that is not a rotation, a start time that is not finite or a spacing that
-                is not finite and > 0.
-            TypeError: a sequence holding something other than SO3.
-        """
-    def __repr__(self) -> str:
-        ...
-    def body_acceleration(self, t: numpy.typing.ArrayLike) -> numpy.ndarray:
-        """
-        The body acceleration, the time derivative of body_velocity, at the times t.
-        
-        omega_j' = Ad_{A_j^-1} omega_{j-1}' + B_j'' d_j + [omega_j, B_j' d_j].
-        
-        Args:
-            t: a time or an array_like of times of any shape, in [start_time, end_time].
-        
-        Returns:
-            numpy.ndarray: shape t.shape + (3,), per unit of time squared.
-        
-        Raises:
-            ValueError: a time outside [start_time, end_time].
-            TypeError: times that are not real numbers.
-        """
-    def body_velocity(self, t: numpy.typing.ArrayLike) -> numpy.ndarray:
-        """
-        The body velocity (X^-1 X')^vee at the times t, per unit of time.
-        
-        omega_j = Ad_{A_j^-1} omega_{j-1} + B_j' d_j over the factors A_j = exp(B_j d_j).
-        
-        Args:
-            t: a time or an array_like of times of any shape, in [start_time, end_time].
-        
-        Returns:
-            numpy.ndarray: shape t.shape + (3,), the angular velocity w in the body frame.
-        
-        Raises:
-            ValueError: a time outside [start_time, end_time].
-            TypeError: times that are not real numbers.
-        """
-    @property
-    def control(self) -> numpy.typing.NDArray[numpy.float64]:
-        """
-        numpy.ndarray: shape (N, 3, 3), the control elements (a copy).
-        """
-    @property
-    def end_time(self) -> float:
-        """
-        float: t0 + (N - 3) dt, the last valid time.
-        """
-    @property
-    def spacing(self) -> float:
-        """
-        float: dt, the time between knots.
-        """
-    @property
-    def start_time(self) -> float:
-        """
-        float: t0, the start of the first segment.
-        """
-class SE3BSpline:
+def _se3_bspline_new(start_time: float, spacing: float, control: numpy.typing.ArrayLike) -> tuple[float, float, numpy.ndarray]:
     """
-    The uniform cumulative cubic B-spline on SE(3) (Kim, Kim and Shin 1995;
-    Lovegrove, Patron-Perez and Sibley 2013), the curve of continuous-time
-    estimation, with analytic body velocity and acceleration (Sommer et al.
-    2020, "Efficient derivative computation for cumulative B-splines on Lie
-    groups").
-    
-    Control elements X_0 .. X_{N-1} (N >= 4), start time t0 and knot spacing dt.
-    At t = t0 + (i + u) dt, u in [0, 1], segment i uses X_i .. X_{i+3}:
-    
-        X(t) = X_i exp(B1(u) d_1) exp(B2(u) d_2) exp(B3(u) d_3),
-        d_j = log(X_{i+j-1}^-1 X_{i+j}),
-        B1 = (5 + 3u - 3u^2 + u^3)/6, B2 = (1 + 3u + 3u^2 - 2u^3)/6, B3 = u^3/6.
-    
-    The curve is C2 and smooths rather than interpolates: it does not pass
-    through the control elements. It is defined on [start_time, end_time],
-    end_time = t0 + (N - 3) dt; other times are a ValueError (NaN gives NaN).
-    Body velocity (X^-1 X')^vee and body acceleration, its time derivative,
-    come from the recursion over the three factors, not from differences;
-    twists (v, w), linear part first (Murray, Li and Sastry).
-    
-    Evaluation takes a time or an array of times of any shape and runs one
-    C++ loop over them with the GIL released. Values are float64.
-    
-    Example:
-        >>> control = [SE3.exp([0.0, 0.0, 0.1 * k] + [0.0] * 3) for k in range(6)]
-        >>> spline = SE3BSpline(0.0, 0.5, control)
-        >>> spline.end_time
-        1.5
-        >>> spline([0.0, 0.7]).shape
-        (2, 4, 4)
-        >>> np.round(spline.body_velocity(0.7), 12) + 0.0
-        array([0. , 0. , 0.2, 0. , 0. , 0. ])
+    The checked arguments of SE3BSpline(start_time, spacing, control): (start_time, spacing, the control elements as a new read-only (N, 4, 4) float64 array of rigid motions), or the SE3BSpline constructor's ValueError / TypeError. A private function of chasles.SE3BSpline (python/chasles/_bspline.py).
     """
-    __array_ufunc__ = None
-    def __call__(self, t: numpy.typing.ArrayLike) -> numpy.ndarray:
-        """
-        The elements X(t).
-        
-        Args:
-            t: a time or an array_like of times of any shape, in [start_time, end_time].
-        
-        Returns:
-            numpy.ndarray: shape t.shape + (4, 4), the homogeneous matrices.
-        
-        Raises:
-            ValueError: a time outside [start_time, end_time].
-            TypeError: times that are not real numbers.
-        """
-    def __init__(self, start_time: float, spacing: float, control: numpy.typing.ArrayLike) -> None:
-        """
-        A spline from its start time, knot spacing and control elements.
-        
-        Args:
-            start_time: t0, finite.
-            spacing: dt > 0, finite, the time between knots.
-            control: N >= 4 control elements: a sequence of SE3, or an array-like of
-                shape (N, 4, 4) of rigid motions [[R, p], [0, 0, 0, 1]] (checked as
-                SE3.from_matrix does; a float32 array with float32's tolerance,
-                3.5e-4, then projected to the nearest rotation). The spline keeps
-                its own float64 copy.
-        
-        Raises:
-            ValueError: fewer than 4 control elements, a wrong shape, a matrix
-                that is not a rigid motion, a start time that is not finite or a spacing that
-                is not finite and > 0.
-            TypeError: a sequence holding something other than SE3.
-        """
-    def __repr__(self) -> str:
-        ...
-    def body_acceleration(self, t: numpy.typing.ArrayLike) -> numpy.ndarray:
-        """
-        The body acceleration, the time derivative of body_velocity, at the times t.
-        
-        omega_j' = Ad_{A_j^-1} omega_{j-1}' + B_j'' d_j + [omega_j, B_j' d_j].
-        
-        Args:
-            t: a time or an array_like of times of any shape, in [start_time, end_time].
-        
-        Returns:
-            numpy.ndarray: shape t.shape + (6,), per unit of time squared.
-        
-        Raises:
-            ValueError: a time outside [start_time, end_time].
-            TypeError: times that are not real numbers.
-        """
-    def body_velocity(self, t: numpy.typing.ArrayLike) -> numpy.ndarray:
-        """
-        The body velocity (X^-1 X')^vee at the times t, per unit of time.
-        
-        omega_j = Ad_{A_j^-1} omega_{j-1} + B_j' d_j over the factors A_j = exp(B_j d_j).
-        
-        Args:
-            t: a time or an array_like of times of any shape, in [start_time, end_time].
-        
-        Returns:
-            numpy.ndarray: shape t.shape + (6,), the body twist (v, w), linear part first.
-        
-        Raises:
-            ValueError: a time outside [start_time, end_time].
-            TypeError: times that are not real numbers.
-        """
-    @property
-    def control(self) -> numpy.typing.NDArray[numpy.float64]:
-        """
-        numpy.ndarray: shape (N, 4, 4), the control elements (a copy).
-        """
-    @property
-    def end_time(self) -> float:
-        """
-        float: t0 + (N - 3) dt, the last valid time.
-        """
-    @property
-    def spacing(self) -> float:
-        """
-        float: dt, the time between knots.
-        """
-    @property
-    def start_time(self) -> float:
-        """
-        float: t0, the start of the first segment.
-        """
 def _se3_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], geodesic: bool, max_iterations: typing.SupportsInt | typing.SupportsIndex) -> tuple:
     """
     The C++ mean behind chasles.se3_mean, on checked (N, 4, 4) float64 poses and (N,) weights: (mean, iterations, converged).
@@ -2894,6 +2656,14 @@ def _se3_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64],
 def _se3_spline_fit(times: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], keys: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], natural: bool) -> numpy.ndarray:
     """
     The coefficients (n, 18) of the spline through checked (n,) float64 times and (n, 4, 4) poses (row i: c1, c2, c3 of segment i; the last row zero).
+    """
+def _so3_bspline_evaluate(start_time: typing.SupportsFloat | typing.SupportsIndex, spacing: typing.SupportsFloat | typing.SupportsIndex, control: numpy.ndarray, t: numpy.typing.ArrayLike, order: typing.SupportsInt | typing.SupportsIndex) -> numpy.ndarray:
+    """
+    The methods of SO3BSpline at the times t: the elements (order 0), body velocities (1) or body accelerations (2) of the spline of start_time, spacing and control (from _so3_bspline_new), the times checked to lie in [start_time, end_time]. A private function of chasles.SO3BSpline (python/chasles/_bspline.py).
+    """
+def _so3_bspline_new(start_time: float, spacing: float, control: numpy.typing.ArrayLike) -> tuple[float, float, numpy.ndarray]:
+    """
+    The checked arguments of SO3BSpline(start_time, spacing, control): (start_time, spacing, the control elements as a new read-only (N, 3, 3) float64 array of rotations), or the SO3BSpline constructor's ValueError / TypeError. A private function of chasles.SO3BSpline (python/chasles/_bspline.py).
     """
 def _so3_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], geodesic: bool, max_iterations: typing.SupportsInt | typing.SupportsIndex) -> tuple:
     """

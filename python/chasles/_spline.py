@@ -6,7 +6,14 @@ spline's numbers as arrays (times, keys, the coefficients of each segment's
 cubic, computed once by the private fit) and evaluate it with the private
 gufuncs ``_so3_spline`` / ``_so3_spline_rates`` (``_se3_...``), whose
 operands are those arrays and the times: numpy broadcasts the times and
-runs the loop without the GIL. Everything is float64.
+runs the loop without the GIL. An evaluation is a binary search over the
+times plus O(1) work: its cost does not grow with the number of keys (the
+gufuncs read the arrays in place; nothing is copied or checked per call
+but the times t). Everything is float64.
+
+A spline is an immutable value: ``__init__`` runs once; it pickles (every
+protocol) and copies as its constructor's arguments (times, keys, ends),
+and unpickling fits again, after the constructor's checks.
 """
 
 from __future__ import annotations
@@ -36,7 +43,15 @@ _MATH = """
     scipy's ``RotationSpline``, which this spline then equals. Two keys give
     the geodesic at constant velocity; keys on one screw motion exp(t xi)
     give that motion. Outside [t_0, t_{N-1}] the first / last segment's cubic
-    continues (as scipy's). Everything is computed in float64.
+    continues (as scipy's) up to 1e6 segment lengths from the end key
+    (before t_0 - 1e6 (t_1 - t_0), after t_{N-1} + 1e6 (t_{N-1} - t_{N-2}));
+    farther, for any finite t, the spline holds the element, velocity and
+    acceleration it has there (the cubic grows as tau^3 and would leave
+    float64's range). The time steps t_{i+1} - t_i must lie in
+    [1e-100, 1e100], where the cubics' coefficients per unit of time
+    (~ step / h^3) and the accelerations (~ step / h^2) stay within
+    float64's range (a ValueError names the step otherwise). Everything is
+    computed in float64.
 """
 
 
@@ -65,6 +80,14 @@ def _keys(keys: ArrayLike, n: int, core: int, name: str, what: str) -> np.ndarra
     return k
 
 
+_STATE = ("_t", "_keys", "_coefficients", "_ends")
+
+
+def _spline_from(cls: type, times: np.ndarray, keys: np.ndarray, ends: str) -> Any:
+    """A spline of class cls fitted through times and keys (unpickling, copies)."""
+    return cls(times, keys, ends=ends)
+
+
 class _Spline:
     _name = ""
     _what = ""
@@ -76,6 +99,9 @@ class _Spline:
 
     def _fit(self, times: ArrayLike, keys: ArrayLike, ends: str) -> None:
         name = self._name
+        if "_coefficients" in self.__dict__:
+            raise TypeError(f"{name}.__init__: the spline is already initialized (splines are immutable; "
+                            f"make a new {name})")
         if not isinstance(ends, str) or ends not in ENDS:
             raise ValueError(f"{name}(ends): expected 'natural' or 'chord', got {ends!r}")
         t = _times(times, name)
@@ -86,8 +112,28 @@ class _Spline:
         self._t, self._keys, self._coefficients = t, k, coefficients
         self._ends = ends
 
+    def __getattr__(self, name: str) -> Any:
+        # Only reached when an attribute is missing: the state of an object
+        # made by __new__ alone, whose __init__ has not run.
+        if name in _STATE:
+            raise TypeError(f"{type(self).__name__} object is not initialized: it was made by __new__ alone, "
+                            f"without __init__")
+        raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        """Pickle support (every protocol) and copy: the constructor's arguments."""
+        return (_spline_from, (type(self), self._t, self._keys, self._ends))
+
+    def __copy__(self) -> Any:
+        return _spline_from(type(self), self._t, self._keys, self._ends)
+
+    def __deepcopy__(self, memo: dict[int, Any]) -> Any:
+        return self.__copy__()
+
     def __setstate__(self, state: Any) -> None:
-        """Unpickling: the spline is fitted again from the pickled times, keys
+        """Unpickling a state written by chasles 0.1.0 (whose pickles held the
+        object's dict; pickles now hold the constructor's arguments, __reduce__):
+        the spline is fitted again from the pickled times, keys
         and ends, through the constructor's checks (a pickle is data from
         outside: times that are not finite or do not increase, keys that are
         not rotations, are refused); the fit gives the same numbers bit for
@@ -134,6 +180,8 @@ class _Spline:
         return self._evaluate(t, 2)
 
     def __repr__(self) -> str:
+        if "_coefficients" not in self.__dict__:
+            return f"<uninitialized {type(self).__name__}>"
         return (f"{self._name}(N={len(self)}, times=[{float(self._t[0])!r}, ..., {float(self._t[-1])!r}], "
                 f"ends={self._ends!r})")
 
@@ -142,7 +190,8 @@ class SO3Spline(_Spline):
     __doc__ = """Interpolating C2 spline through key rotations (scipy's ``RotationSpline``).
 
     Args:
-        times: (N,) strictly increasing finite key times, N >= 2.
+        times: (N,) strictly increasing finite key times, N >= 2, steps
+            between 1e-100 and 1e100.
         rotations: (N, 3, 3) rotation matrices, or a sequence of N ``SO3``.
         ends: ``"natural"`` (zero angular acceleration at both ends, the
             default) or ``"chord"`` (scipy's end rates).
@@ -216,7 +265,8 @@ class SE3Spline(_Spline):
     __doc__ = """Interpolating C2 spline through key poses.
 
     Args:
-        times: (N,) strictly increasing finite key times, N >= 2.
+        times: (N,) strictly increasing finite key times, N >= 2, steps
+            between 1e-100 and 1e100.
         poses: (N, 4, 4) rigid motions [[R, p], [0, 0, 0, 1]], or a sequence
             of N ``SE3``.
         ends: ``"natural"`` (zero body acceleration at both ends, the

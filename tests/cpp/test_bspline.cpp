@@ -422,3 +422,30 @@ TEST(BSplineAutodiff, SE3RatesAreTheDerivativesInTime) {
 }
 
 }  // namespace
+
+// ---- hostile input ------------------------------------------------------------------
+
+// cubic_bspline_locate, the view's locate as a free function (the Python binding reads its four
+// control elements where numpy holds them): O(1), the same segment and u as the view; times far
+// outside, up to the largest finite ones, clamp to the ends (t - t0 may overflow to +-inf).
+TYPED_TEST(BSpline, LocateIsTheViewsAndClampsEveryFiniteTime) {
+  using G = TypeParam;
+  using S = typename G::Scalar;
+  const std::vector<G> control = random_control<G>(9, 0.8, 41);
+  const S t0 = S(-3), dt = S(0.25);
+  const CubicBSplineView<G> view(control.data(), 9, t0, dt);
+  const S big = std::numeric_limits<S>::max();
+  for (const S t : {S(-3), S(-2.9), S(-2), S(-1.5), S(-1.4), big, -big, S(1e30), S(-1e30)}) {
+    const chasles::BSplineTime<S> a = chasles::cubic_bspline_locate<S>(9, t0, dt, t), b = view.locate(t);
+    EXPECT_EQ(a.segment, b.segment) << t;
+    EXPECT_EQ(a.u, b.u) << t;
+    const BSplinePoint<G> p = view.evaluate(t);
+    EXPECT_TRUE(GroupOf<G>::matrix(p.value).allFinite() && p.velocity.allFinite() && p.acceleration.allFinite()) << t;
+  }
+  const CubicBSplineView<G> far(control.data(), 9, -big, S(1));
+  EXPECT_EQ(far.locate(big).segment, 5);  // t - t0 = inf: the last segment, u = 1
+  EXPECT_EQ(far.locate(big).u, S(1));
+  EXPECT_EQ(view.locate(big).segment, 5);
+  EXPECT_EQ(view.locate(-big).segment, 0);
+  EXPECT_EQ(view.locate(-big).u, S(0));
+}

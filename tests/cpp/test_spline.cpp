@@ -6,6 +6,7 @@
 // SO3 spline; the Jacobian coefficients agree on both sides of their series
 // cutoff and with long double; autodiff through the evaluation gives the
 // velocity; bad inputs are reported.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -363,3 +364,136 @@ TEST(SplineAutodiff, TimeDerivativeOfTheElementIsTheBodyVelocity) {
 }
 
 }  // namespace
+
+// ---- hostile input ------------------------------------------------------------------
+
+// The segment search is std::upper_bound's over the interior times (a binary search, O(log n)), for
+// pointers and for strided Eigen maps (the binding's view of numpy's memory): at the keys, between,
+// before, after and NaN.
+TEST(SplineSegmentIndex, IsUpperBoundOverTheInteriorTimes) {
+  std::mt19937_64 gen(5);
+  for (const int n : {2, 3, 4, 7, 64, 1000}) {
+    const std::vector<double> t = random_times<double>(gen, n);
+    std::vector<double> strided(2 * static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) strided[2 * static_cast<std::size_t>(i)] = t[static_cast<std::size_t>(i)];
+    const Eigen::Map<const Eigen::VectorXd, Eigen::Unaligned, Eigen::InnerStride<2>> map(strided.data(), n);
+    std::vector<double> probes{t.front() - 5, t.back() + 5, -1e300, 1e300};
+    for (int i = 0; i < n; ++i) {
+      probes.push_back(t[static_cast<std::size_t>(i)]);
+      probes.push_back(std::nextafter(t[static_cast<std::size_t>(i)], -1e9));
+      probes.push_back(t[static_cast<std::size_t>(i)] + 0.1);
+    }
+    for (const double x : probes) {
+      const int want = static_cast<int>(std::upper_bound(t.data() + 1, t.data() + n - 1, x) - t.data()) - 1;
+      EXPECT_EQ(chasles::spline_segment_index(n, t.data(), x), want) << n << " " << x;
+      EXPECT_EQ(chasles::spline_segment_index(n, map, x), want) << n << " " << x;
+    }
+    EXPECT_EQ(chasles::spline_segment_index(n, t.data(), std::numeric_limits<double>::quiet_NaN()), n - 2);
+  }
+}
+
+// A view over fewer than two keys has no segment: the constructor asserts (eigen_assert; the tests
+// keep assertions on) instead of reading segment 0 of an empty array.
+TEST(SplineDeathTest, ViewOverFewerThanTwoKeysAsserts) {
+  const std::vector<double> t{0.0};
+  const std::vector<SO3<double>> k(1);
+  const SplineSegment<SO3<double>>* none = nullptr;
+  EXPECT_DEATH((void)Spline<SO3<double>>(1, t.data(), k.data(), none).element(0.5), "");
+  EXPECT_DEATH((void)Spline<SO3<double>>(0, nullptr, nullptr, none)(0.5), "");
+  std::vector<SplineSegment<SO3<double>>> seg(1);
+  std::vector<SplineWork<SO3<double>>> work(1);
+  EXPECT_EQ(fit_spline(1, t.data(), k.data(), seg.data(), work.data()).status, SplineStatus::too_few_keys);
+  EXPECT_EQ(fit_spline(0, t.data(), k.data(), seg.data(), work.data()).status, SplineStatus::too_few_keys);
+}
+
+// Steps whose cubic coefficients (~D/h^3) or accelerations (~D/h^2) leave the floating-point range are
+// reported as such (step_out_of_range), after an unsorted time anywhere; the steps at the bounds of
+// constants.hpp are fitted and pass through the keys, with the velocity of the geodesic between two.
+template <typename S, template <typename> class G>
+void check_step_range() {
+  using Group = G<S>;
+  using T = chasles::Thresholds<S>;
+  std::mt19937_64 gen(8);
+  const std::vector<Group> keys = cast_all<S>(random_walk<G<double>>(gen, 4));
+  const S lo = T::spline_min_step, hi = T::spline_max_step;
+  for (const S h : {S(lo / 10), S(hi * 10), std::numeric_limits<S>::denorm_min(), std::numeric_limits<S>::max() / 4}) {
+    const Fitted<Group> f({S(0), h, S(2) * h, S(3) * h}, keys);
+    EXPECT_EQ(f.fit.status, SplineStatus::step_out_of_range) << h;
+  }
+  const Fitted<Group> unsorted({S(0), lo / 10, S(-1), S(1)}, keys);  // a tiny step, then a step back
+  EXPECT_EQ(unsorted.fit.status, SplineStatus::times_not_increasing);
+  for (const S h : {S(lo * S(1.5)), S(hi / S(1.5))}) {  // within the bounds after the rounding of 2 h, 3 h
+    const Fitted<Group> f({S(0), h, S(2) * h, S(3) * h}, keys);
+    ASSERT_EQ(f.fit.status, SplineStatus::ok) << h;
+    const Spline<Group> s = f.spline();
+    const double tol = 64 * std::numeric_limits<S>::epsilon();
+    for (int i = 0; i < 4; ++i) EXPECT_LT(distance(s.element(f.times[static_cast<std::size_t>(i)]), keys[static_cast<std::size_t>(i)]), tol) << h;
+    for (int i = 0; i < 3; ++i) {
+      const SplineSample<Group> x = s(f.times[static_cast<std::size_t>(i)] + h / S(2));
+      ASSERT_TRUE(x.element.matrix().allFinite() && x.velocity.allFinite() && x.acceleration.allFinite()) << h;
+      // rates of order |D| / h and |D| / h^2: the step's log over h, to the fit's accuracy
+      const auto D = (keys[static_cast<std::size_t>(i)].inverse() * keys[static_cast<std::size_t>(i) + 1]).log();
+      EXPECT_LT(static_cast<double>((x.velocity * h).norm()), 10 * static_cast<double>(D.norm()) + 1) << h;
+    }
+  }
+  const Fitted<Group> two({S(0), lo}, {keys[0], keys[1]});
+  ASSERT_EQ(two.fit.status, SplineStatus::ok);
+  const auto D = (keys[0].inverse() * keys[1]).log();
+  const SplineSample<Group> mid = two.spline()(lo / S(2));
+  EXPECT_LT(static_cast<double>((mid.velocity * lo - D).norm()), 1e3 * std::numeric_limits<S>::epsilon() * (1 + static_cast<double>(D.norm())));
+}
+TYPED_TEST(SplineTest, TimeStepsOutsideTheRangeAreReported) {
+  check_step_range<TypeParam, SO3>();
+  check_step_range<TypeParam, SE3>();
+}
+
+// Outside the keys the end segment's cubic continues to spline_max_extrapolation segment lengths from
+// the end key, then holds: for every finite t the element is a group element and the rates are finite
+// (the cubic at t = 1e110 overflowed: NaN).
+template <typename S, template <typename> class G>
+void check_extrapolation() {
+  using Group = G<S>;
+  std::mt19937_64 gen(9);
+  const Fitted<Group> f(random_times<S>(gen, 5), cast_all<S>(random_walk<G<double>>(gen, 5)));
+  ASSERT_EQ(f.fit.status, SplineStatus::ok);
+  const Spline<Group> s = f.spline();
+  const S K = chasles::Thresholds<S>::spline_max_extrapolation;
+  const S t0 = f.times.front(), t1 = f.times[1], tl = f.times.back(), tp = f.times[3];
+  // within the range of the cubic: the cubic itself (sample at the raw offset)
+  for (const S x : {S(tl + (tl - tp)), S(tl + S(10) * (tl - tp))}) {
+    const SplineSample<Group> a = s(x), b = s.sample(3, x - tp);
+    EXPECT_EQ(a.element.matrix(), b.element.matrix()) << x;
+    EXPECT_EQ(a.velocity, b.velocity) << x;
+  }
+  const SplineSample<Group> last = s.sample(3, (K + S(1)) * (tl - tp)), first = s.sample(0, -K * (t1 - t0));
+  ASSERT_TRUE(last.element.matrix().allFinite() && last.velocity.allFinite() && last.acceleration.allFinite());
+  ASSERT_TRUE(first.element.matrix().allFinite() && first.velocity.allFinite() && first.acceleration.allFinite());
+  const S big = std::numeric_limits<S>::max();
+  for (const S x : {S(1e30), S(big / 2), big, S(tl + S(2) * K * (tl - tp))}) {
+    const SplineSample<Group> a = s(x);
+    EXPECT_EQ(a.element.matrix(), last.element.matrix()) << x;
+    EXPECT_EQ(a.velocity, last.velocity) << x;
+    EXPECT_EQ(a.acceleration, last.acceleration) << x;
+    EXPECT_EQ(s.element(x).matrix(), last.element.matrix()) << x;
+    const SplineSample<Group> b = s(-x);
+    EXPECT_EQ(b.element.matrix(), first.element.matrix()) << x;
+    EXPECT_EQ(b.acceleration, first.acceleration) << x;
+  }
+  const Eigen::Matrix<S, 3, 3> R = last.element.matrix().template topLeftCorner<3, 3>();
+  EXPECT_LT(static_cast<double>((R.transpose() * R - Eigen::Matrix<S, 3, 3>::Identity()).norm()), 1e3 * std::numeric_limits<S>::epsilon());
+  const SplineSample<Group> nan = s(std::numeric_limits<S>::quiet_NaN());
+  EXPECT_TRUE(nan.velocity.hasNaN());
+}
+TYPED_TEST(SplineTest, ExtrapolationHoldsPastItsBoundForEveryFiniteTime) {
+  check_extrapolation<TypeParam, SO3>();
+  check_extrapolation<TypeParam, SE3>();
+}
+TEST(SplineExtrapolation, DoubleAtTheTimesOfTheReport) {
+  std::mt19937_64 gen(10);
+  const Fitted<SE3<double>> f(random_times<double>(gen, 3), random_walk<SE3<double>>(gen, 3));
+  const Spline<SE3<double>> s = f.spline();
+  for (const double x : {1e110, -1e110, 1e200, 1e308}) {
+    const SplineSample<SE3<double>> a = s(x);
+    EXPECT_TRUE(a.element.matrix().allFinite() && a.velocity.allFinite() && a.acceleration.allFinite()) << x;
+  }
+}

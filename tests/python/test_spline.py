@@ -7,13 +7,18 @@ bad inputs."""
 
 from __future__ import annotations
 
+import copy
+import pickle
+import re
+import time
+
 import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
 import chasles
-from chasles import SE3Spline, SO3Spline
+from chasles import SE3Spline, SO3Spline, _core
 
 transform = pytest.importorskip("scipy.spatial.transform")
 Rotation, RotationSpline = transform.Rotation, transform.RotationSpline
@@ -293,3 +298,168 @@ def test_bad_inputs_other():
         s.body_velocity([0.5, np.nan])
     with pytest.raises(TypeError, match=r"SE3Spline\(t\): expected real numbers \(float64\), got NoneType"):
         s(None)
+
+
+# ---- hostile input ------------------------------------------------------------------
+
+
+def best_time(f, repeats=7):
+    """The best of `repeats` timings of one call of f, in seconds."""
+    f()
+    out = []
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        f()
+        out.append(time.perf_counter() - t0)
+    return min(out)
+
+
+@pytest.mark.parametrize("group", [3, 4])
+def test_one_evaluation_does_not_grow_with_the_number_of_keys(group):
+    """An evaluation is a binary search plus O(1) work: at 2 10^5 keys it costs
+    what it costs at 10 (it copied the 2 10^5 keys per call: ~20 ms, 1000 times
+    more). The bound, 20 times, leaves room for a loaded machine and the
+    cache misses of the search."""
+    rng = np.random.default_rng(30)
+    costs = []
+    for n in (10, 200_000):
+        t = np.cumsum(rng.uniform(0.3, 1.0, n))
+        steps = rng.normal(scale=0.3, size=(n, 6))
+        if group == 3:
+            spline = SO3Spline(t, chasles.so3_exp(np.cumsum(steps[:, 3:], axis=0)))
+        else:
+            spline = SE3Spline(t, chasles.se3_exp(np.cumsum(steps, axis=0)))
+        x = float(t[n // 2] + 0.1)
+        costs.append(min(best_time(lambda: spline(x)), best_time(lambda: spline.body_acceleration(x))))
+    assert costs[1] < 20 * costs[0], costs
+
+
+def test_private_gufuncs_read_the_arrays_in_place():
+    """10^9 keys as broadcast views (no memory behind them): an evaluation reads
+    the key times of its binary search and one key, it does not copy the 10^9."""
+    n = 10**9
+    times = np.broadcast_to(np.array(0.0), (n,))
+    keys = np.broadcast_to(np.eye(3), (n, 3, 3))
+    coefficients = np.broadcast_to(np.zeros(9), (n, 9))
+    np.testing.assert_array_equal(_core._so3_spline(times, keys, coefficients, 5.5), np.eye(3))
+    g = _core._se3_spline_rates(times, np.broadcast_to(np.eye(4), (n, 4, 4)), np.broadcast_to(np.zeros(18), (n, 18)), 1.0)
+    np.testing.assert_array_equal(g[0], np.eye(4))
+
+
+@pytest.mark.parametrize("fit, k", [("_so3_spline_fit", 3), ("_se3_spline_fit", 4)])
+def test_private_fits_refuse_inconsistent_operands(fit, k):
+    """n is the times' length: keys of another length (or shape) are refused, not read past their end."""
+    f = getattr(_core, fit)
+    eye = np.eye(k)
+    for times, keys in (
+        (np.arange(5.0), np.broadcast_to(eye, (3, k, k))),  # fewer keys than times
+        (np.arange(2.0), np.broadcast_to(eye, (3, k, k))),
+        (np.arange(5.0), eye),  # one matrix
+        (np.arange(5.0), np.zeros((5, k + 1, k + 1))),
+        (np.arange(5.0), np.zeros(5 * k * k)),
+        (np.arange(6.0).reshape(2, 3), np.broadcast_to(eye, (2, k, k))),
+        (np.arange(1.0), np.broadcast_to(eye, (1, k, k))),
+    ):
+        shapes = rf"got times {re.escape(str(times.shape))} and keys {re.escape(str(keys.shape))}"
+        with pytest.raises(ValueError, match=rf"{fit}: expected times of shape \(n,\) and keys of shape \(n, {k}, {k}\).*{shapes}"):
+            f(times, np.ascontiguousarray(keys), True)
+
+
+@pytest.mark.parametrize("cls, k", [(SO3Spline, 3), (SE3Spline, 4)])
+@pytest.mark.parametrize("h", [1e-160, 1e200, 1e-101])
+def test_steps_beyond_the_range_are_refused_naming_the_step(cls, k, h):
+    keys = np.stack([np.eye(k)] * 4)
+    with pytest.raises(ValueError, match=rf"{cls.__name__}\(times\): expected time steps between 1e-100 and 1e\+100 "
+                                         rf".*got times\[1\] - times\[0\] = {re.escape(repr(h))}"):
+        cls(np.array([0.0, 1.0, 2.0, 3.0]) * h, keys)
+
+
+@pytest.mark.parametrize("group", [3, 4])
+def test_steps_at_the_ends_of_the_range_are_fitted(group):
+    rng = np.random.default_rng(31)
+    keys = random_rotations(rng, 4) if group == 3 else random_poses(rng, 4)
+    cls = SO3Spline if group == 3 else SE3Spline
+    for h in (1.5e-100, 1e100 / 1.5):
+        t = np.arange(4.0) * h
+        s = cls(t, keys)
+        assert np.allclose(s(t), keys, rtol=0, atol=1e-12)
+        v, a = s.body_velocity(t + h / 2), s.body_acceleration(t + h / 2)
+        assert np.isfinite(v).all() and np.isfinite(a).all()
+        # the rates scale as 1/h and 1/h^2: the same spline in units of h
+        unit = cls(np.arange(4.0), keys)
+        assert np.allclose(v * h, unit.body_velocity(np.arange(4.0) + 0.5), rtol=1e-9, atol=1e-9)
+        assert np.allclose(a * h * h, unit.body_acceleration(np.arange(4.0) + 0.5), rtol=1e-9, atol=1e-9)
+
+
+@pytest.mark.parametrize("group", [3, 4])
+def test_extrapolation_is_finite_for_every_finite_time(group):
+    """The cubic continues 1e6 segment lengths past the end keys, then holds: at
+    t = 1e110 the element is a rotation (it was NaN) and the rates are finite."""
+    rng = np.random.default_rng(32)
+    s = make(group, rng, 5)
+    t = s.times
+    far = np.array([1e110, -1e110, 1e300, -1e300, np.finfo(float).max, -np.finfo(float).max])
+    g, v, a = s(far), s.body_velocity(far), s.body_acceleration(far)
+    assert np.isfinite(g).all() and np.isfinite(v).all() and np.isfinite(a).all()
+    R = g[..., :3, :3]
+    assert np.allclose(R @ np.swapaxes(R, -1, -2), np.eye(3), rtol=0, atol=1e-9)
+    # beyond the bound: the values at the bound
+    hold_after = t[-1] + 1e6 * (t[-1] - t[-2])
+    hold_before = t[0] - 1e6 * (t[1] - t[0])
+    np.testing.assert_array_equal(g[0], s(2 * hold_after))
+    np.testing.assert_array_equal(v[1], s.body_velocity(2 * hold_before - t[0]))
+    # within it the cubic continues (the spline moves on), continuous with the last segment
+    x = t[-1] + np.array([1e-9, 1.0, 1.5]) * (t[-1] - t[-2])
+    assert not np.array_equal(s(x[1]), s(x[2]))
+    assert np.allclose(s(x[0]), s(t[-1]), rtol=0, atol=1e-7)
+
+
+@pytest.mark.parametrize("cls", [SO3Spline, SE3Spline])
+def test_init_again_is_refused(cls):
+    rng = np.random.default_rng(33)
+    s = make(3 if cls is SO3Spline else 4, rng, 4)
+    before = s(s.times)
+    with pytest.raises(TypeError, match=rf"{cls.__name__}.__init__: the spline is already initialized"):
+        s.__init__(s.times[:2], (s.rotations if cls is SO3Spline else s.poses)[:2])
+    assert len(s) == 4
+    np.testing.assert_array_equal(s(s.times), before)
+    blank = cls.__new__(cls)
+    with pytest.raises(TypeError, match=rf"{cls.__name__} object is not initialized"):
+        blank(0.5)
+    assert repr(blank) == f"<uninitialized {cls.__name__}>"
+
+
+@pytest.mark.parametrize("ends", ["natural", "chord"])
+@pytest.mark.parametrize("group", [3, 4])
+def test_pickle_and_copy_bit_for_bit(group, ends):
+    rng = np.random.default_rng(34)
+    s = make(group, rng, 6, ends=ends)
+    t = np.concatenate([s.times, rng.uniform(s.times[0] - 1, s.times[-1] + 1, 20)])
+    want = [s(t), s.body_velocity(t), s.body_acceleration(t)]
+    copies = [pickle.loads(pickle.dumps(s, protocol=p)) for p in range(pickle.HIGHEST_PROTOCOL + 1)]
+    copies += [copy.copy(s), copy.deepcopy(s)]
+    for c in copies:
+        assert type(c) is type(s) and c is not s and c.ends == ends
+        np.testing.assert_array_equal(c.times, s.times)
+        for got, w in zip([c(t), c.body_velocity(t), c.body_acceleration(t)], want):
+            assert got.tobytes() == w.tobytes()
+
+
+@pytest.mark.parametrize("cls", [SO3Spline, SE3Spline])
+def test_tampered_pickles_are_refused_by_the_constructors_checks(cls):
+    rng = np.random.default_rng(35)
+    s = make(3 if cls is SO3Spline else 4, rng, 4)
+    for attribute, value, match in (
+        ("_t", s.times[::-1].copy(), "strictly increasing"),
+        ("_t", np.array([0.0, np.nan, 2.0, 3.0]), "finite"),
+        ("_keys", np.full_like(s._keys, np.nan), "finite"),
+        ("_keys", 2 * s._keys, "is not a"),
+        ("_keys", s._keys[:3].copy(), "one per time"),
+        ("_ends", "clamped", "natural"),
+    ):
+        bad = copy.copy(s)
+        bad.__dict__[attribute] = value
+        for protocol in (0, pickle.HIGHEST_PROTOCOL):
+            data = pickle.dumps(bad, protocol=protocol)
+            with pytest.raises(ValueError, match=match):
+                pickle.loads(data)

@@ -1,0 +1,270 @@
+"""The uniform cumulative cubic B-splines on SO(3) and SE(3).
+
+The checks and the evaluation are C++ (include/chasles/bspline.hpp, through
+bindings/bind_bspline.cpp): these classes hold the start time, the spacing
+and the checked control elements (a read-only (N, k, k) float64 array made
+by the private ``_so3_bspline_new`` / ``_se3_bspline_new``, which raise the
+constructor's errors), and evaluate them with the private
+``_so3_bspline_evaluate`` / ``_se3_bspline_evaluate`` (the times checked to
+lie in [start_time, end_time], then one gufunc loop without the GIL, each
+evaluation O(1) whatever N). They are values: immutable (``__init__`` runs
+once), pickled by ``__reduce__`` as the constructor's arguments (every
+protocol; unpickling runs the constructor's checks), copied the same way.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from chasles import _core
+
+_STATE = ("_start_time", "_spacing", "_control")
+
+
+def _class_doc(group: str, name: str) -> str:
+    so3 = group == "SO3"
+    m, k = ("3, 3", "3") if so3 else ("4, 4", "6")
+    rates = ("they are angular velocities w (rad per unit of time)." if so3
+             else "twists (v, w), linear part first (Murray, Li and Sastry).")
+    example_w = "" if so3 else " + [0.0] * 3"
+    velocity = "0. , 0. , 0.2" if so3 else "0. , 0. , 0.2, 0. , 0. , 0. "
+    return f"""The uniform cumulative cubic B-spline on {"SO(3)" if so3 else "SE(3)"} (Kim, Kim and Shin 1995;
+Lovegrove, Patron-Perez and Sibley 2013), the curve of continuous-time
+estimation, with analytic body velocity and acceleration (Sommer et al.
+2020, "Efficient derivative computation for cumulative B-splines on Lie
+groups").
+
+Control elements X_0 .. X_{{N-1}} (N >= 4), start time t0 and knot spacing dt.
+At t = t0 + (i + u) dt, u in [0, 1], segment i uses X_i .. X_{{i+3}}:
+
+    X(t) = X_i exp(B1(u) d_1) exp(B2(u) d_2) exp(B3(u) d_3),
+    d_j = log(X_{{i+j-1}}^-1 X_{{i+j}}),
+    B1 = (5 + 3u - 3u^2 + u^3)/6, B2 = (1 + 3u + 3u^2 - 2u^3)/6, B3 = u^3/6.
+
+The curve is C2 and smooths rather than interpolates: it does not pass
+through the control elements. It is defined on [start_time, end_time],
+end_time = t0 + (N - 3) dt; other times are a ValueError (NaN gives NaN).
+Body velocity (X^-1 X')^vee and body acceleration, its time derivative,
+come from the recursion over the three factors, not from differences;
+{rates}
+
+Evaluation takes a time or an array of times of any shape and runs one
+C++ loop over them with the GIL released, O(1) per time whatever N.
+Values are float64. A spline is an immutable value: it pickles (every
+protocol) and copies as its constructor's arguments, and unpickling runs
+the constructor's checks.
+
+Example:
+    >>> control = [{group}.exp([0.0, 0.0, 0.1 * k]{example_w}) for k in range(6)]
+    >>> spline = {name}(0.0, 0.5, control)
+    >>> spline.end_time
+    1.5
+    >>> spline([0.0, 0.7]).shape
+    (2, {m})
+    >>> np.round(spline.body_velocity(0.7), 12) + 0.0
+    array([{velocity}])
+"""
+
+
+def _init_doc(group: str) -> str:
+    so3 = group == "SO3"
+    k = "3" if so3 else "4"
+    return f"""A spline from its start time, knot spacing and control elements.
+
+Args:
+    start_time: t0, finite.
+    spacing: dt > 0, finite, the time between knots.
+    control: N >= 4 control elements: a sequence of {group}, or an array-like of
+        shape (N, {k}, {k}) of {"rotation matrices" if so3 else "rigid motions [[R, p], [0, 0, 0, 1]]"} (checked as
+        {group}.from_matrix does; a float32 array with float32's tolerance,
+        3.5e-4, then projected to the nearest rotation). The spline keeps
+        its own float64 copy.
+
+Raises:
+    ValueError: fewer than 4 control elements, a wrong shape, a matrix
+        that is not {"a rotation" if so3 else "a rigid motion"}, a start time that is not finite or a spacing that
+        is not finite and > 0.
+    TypeError: a sequence holding something other than {group}; __init__
+        called again on a spline (splines are immutable).
+"""
+
+
+_TIMES = "t: a time or an array_like of times of any shape, in [start_time, end_time]."
+_RAISES = """Raises:
+    ValueError: a time outside [start_time, end_time].
+    TypeError: times that are not real numbers."""
+
+
+class _BSpline:
+    """What SO3BSpline and SE3BSpline share: the state, immutability, pickling
+    and copying (the members the API lists are defined by each class)."""
+
+    _name = ""
+    _new = ""  # the private C++ constructor (in chasles._core)
+    __array_ufunc__ = None  # numpy defers to the spline (no ufunc on a spline)
+
+    _start_time: float
+    _spacing: float
+    _control: np.ndarray
+
+    def _init(self, start_time: Any, spacing: Any, control: Any) -> None:
+        if "_control" in self.__dict__:
+            raise TypeError(f"{self._name}.__init__: the spline is already initialized (splines are immutable; "
+                            f"make a new {self._name})")
+        if isinstance(control, (list, tuple)) and control and isinstance(control[0], _BSpline):
+            group = self._name[:3]
+            raise TypeError(f"{self._name}(control): element 0 is a {type(control[0]).__name__}, expected an {group} "
+                            f"(a sequence of them, or an array of matrices)")
+        start, step, array = getattr(_core, self._new)(start_time, spacing, control)
+        self._start_time, self._spacing, self._control = start, step, array
+
+    def __getattr__(self, name: str) -> Any:
+        # Only reached when an attribute is missing: the state of an object
+        # made by __new__ alone, whose __init__ has not run.
+        if name in _STATE:
+            raise TypeError(f"{type(self).__name__} object is not initialized: it was made by __new__ alone, "
+                            f"without __init__")
+        raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        """Pickle support (every protocol) and copy: the constructor's arguments."""
+        return (type(self), (self._start_time, self._spacing, self._control))
+
+    def __copy__(self) -> _BSpline:
+        return self.__reduce__()[0](*self.__reduce__()[1])
+
+    def __deepcopy__(self, memo: dict[int, Any]) -> _BSpline:
+        return self.__copy__()
+
+
+_CLASSES: dict[str, type] = {}  # "SO3" / "SE3": the class, once defined
+
+
+def _self(self: Any, group: str, member: str) -> Any:
+    """self, when it is a B-spline of `group` (TypeError otherwise, as a method of a bound class)."""
+    cls = _CLASSES[group]
+    if not isinstance(self, cls):
+        raise TypeError(f"{cls.__name__}.{member}: expected a {cls.__name__} as self, got {type(self).__name__}")
+    return self
+
+
+def _evaluation(group: str, order: int, name: str, doc: str) -> Any:
+    """The method `name` of a B-spline class: the element (order 0) or a rate (1, 2)."""
+    evaluate = getattr(_core, f"_{group.lower()}_bspline_evaluate")
+
+    def method(self: _BSpline, t: ArrayLike) -> np.ndarray:
+        s = _self(self, group, name)
+        return evaluate(s._start_time, s._spacing, s._control, t, order)
+
+    method.__name__ = name
+    method.__qualname__ = name
+    method.__doc__ = doc
+    return method
+
+
+def _methods(group: str) -> tuple[Any, Any, Any]:
+    """__call__, body_velocity and body_acceleration of the B-spline on `group`."""
+    so3 = group == "SO3"
+    core, k = ("3, 3", "3") if so3 else ("4, 4", "6")
+    what = "the rotation matrices" if so3 else "the homogeneous matrices"
+    velocity = "the angular velocity w in the body frame" if so3 else "the body twist (v, w), linear part first"
+    return (
+        _evaluation(group, 0, "__call__", f"""The elements X(t).
+
+Args:
+    {_TIMES}
+
+Returns:
+    numpy.ndarray: shape t.shape + ({core}), {what}.
+
+{_RAISES}
+"""),
+        _evaluation(group, 1, "body_velocity", f"""The body velocity (X^-1 X')^vee at the times t, per unit of time.
+
+omega_j = Ad_{{A_j^-1}} omega_{{j-1}} + B_j' d_j over the factors A_j = exp(B_j d_j).
+
+Args:
+    {_TIMES}
+
+Returns:
+    numpy.ndarray: shape t.shape + ({k},), {velocity}.
+
+{_RAISES}
+"""),
+        _evaluation(group, 2, "body_acceleration", f"""The body acceleration, the time derivative of body_velocity, at the times t.
+
+omega_j' = Ad_{{A_j^-1}} omega_{{j-1}}' + B_j'' d_j + [omega_j, B_j' d_j].
+
+Args:
+    {_TIMES}
+
+Returns:
+    numpy.ndarray: shape t.shape + ({k},), per unit of time squared.
+
+{_RAISES}
+"""),
+    )
+
+
+def _properties(group: str) -> tuple[property, property, property, property, Any]:
+    """start_time, spacing, end_time, control and __repr__ of the B-spline on `group`."""
+    k = 3 if group == "SO3" else 4
+
+    def start_time(self: _BSpline) -> float:
+        """float: t0, the start of the first segment."""
+        return _self(self, group, "start_time")._start_time
+
+    def spacing(self: _BSpline) -> float:
+        """float: dt, the time between knots."""
+        return _self(self, group, "spacing")._spacing
+
+    def end_time(self: _BSpline) -> float:
+        """float: t0 + (N - 3) dt, the last valid time."""
+        s = _self(self, group, "end_time")
+        return s._start_time + float(s._control.shape[0] - 3) * s._spacing
+
+    def control(self: _BSpline) -> np.ndarray:
+        return _self(self, group, "control")._control.copy()
+
+    control.__doc__ = f"numpy.ndarray: shape (N, {k}, {k}), the control elements (a copy)."
+
+    def __repr__(self: _BSpline) -> str:
+        s = _self(self, group, "__repr__")
+        if "_control" not in s.__dict__:
+            return f"<uninitialized {type(s).__name__}>"
+        return (f"{type(s)._name}(start_time={s._start_time!r}, spacing={s._spacing!r}, "
+                f"n_control={s._control.shape[0]})")
+
+    return property(start_time), property(spacing), property(end_time), property(control), __repr__
+
+
+class SO3BSpline(_BSpline):
+    __doc__ = _class_doc("SO3", "SO3BSpline")
+    _name = "SO3BSpline"
+    _new = "_so3_bspline_new"
+
+    def __init__(self, start_time: float, spacing: float, control: ArrayLike) -> None:
+        self._init(start_time, spacing, control)
+
+    __init__.__doc__ = _init_doc("SO3")
+    __call__, body_velocity, body_acceleration = _methods("SO3")
+    start_time, spacing, end_time, control, __repr__ = _properties("SO3")
+
+
+class SE3BSpline(_BSpline):
+    __doc__ = _class_doc("SE3", "SE3BSpline")
+    _name = "SE3BSpline"
+    _new = "_se3_bspline_new"
+
+    def __init__(self, start_time: float, spacing: float, control: ArrayLike) -> None:
+        self._init(start_time, spacing, control)
+
+    __init__.__doc__ = _init_doc("SE3")
+    __call__, body_velocity, body_acceleration = _methods("SE3")
+    start_time, spacing, end_time, control, __repr__ = _properties("SE3")
+
+
+_CLASSES.update(SO3=SO3BSpline, SE3=SE3BSpline)
