@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <string>
+#include <tuple>
 
 #include "bindings.hpp"
 #include "conventions.hpp"
@@ -46,6 +47,11 @@ energy is 1/2 V^T G V:
 where the order is (w, v); Pinocchio's ``Inertia`` in the order (v, w)). The
 same body described in frame a, given in frame b: ``I.transform(g_ab)``, with
 c_a = R c_b + p, I_a = R I_c R^T and G_a = Ad_g^-T G_b Ad_g^-1.
+
+The constructor accepts only inertias that a rigid body has. Chain's
+link_inertias and Chain.from_urdf accept any (real robot descriptions have
+some that break the triangle inequality); Chain.forward_dynamics raises
+where they leave the mass matrix not positive definite.
 
 Example:
     >>> body = SpatialInertia(2.0, [0.0, 0.0, 0.5], np.diag([0.1, 0.1, 0.02]))
@@ -133,10 +139,14 @@ struct InverseDynamics {
     return d.inverse_dynamics(Joints(q), Joints(qd), Joints(qdd), Wrenchd(Vector6(tip)));
   }
 };
+/// (qdd, joint): the accelerations (NaN where M(q) is not positive
+/// definite) and the joint of the failed pivot (-1 when none).
 struct ForwardDynamics {
   template <typename Q, typename Qd, typename Tau, typename F>
-  Joints operator()(const DynD& d, const Q& q, const Qd& qd, const Tau& tau, const F& tip) const noexcept {
-    return d.forward_dynamics(Joints(q), Joints(qd), Joints(tau), Wrenchd(Vector6(tip)));
+  std::tuple<Joints, int> operator()(const DynD& d, const Q& q, const Qd& qd, const Tau& tau, const F& tip) const
+      noexcept {
+    const auto r = d.forward_dynamics(Joints(q), Joints(qd), Joints(tau), Wrenchd(Vector6(tip)));
+    return {r.qdd, static_cast<int>(r.joint)};
   }
 };
 struct MassMatrix {
@@ -206,9 +216,14 @@ Returns:
     q, qd, tau: (n,), joint positions, velocities and forces.)doc" + kTip + R"doc(
 
 Returns:
-    numpy.ndarray: (..., n), the joint accelerations.)doc" + kPrivate;
-  // (n,6),(4,4),(n,6,6),(3),(n),(n),(n),(6)->(n)
-  def_ufunc<JointsCore(ScrewsCore, Core<4, 4>, InertiasCore, Core<3>, JointsCore, JointsCore, JointsCore, Core<6>),
+    (qdd, joint): qdd (..., n), the joint accelerations; joint (...),
+    int32, -1, or where M(q) is not positive definite (its Cholesky
+    factorization fails: chasles::DynamicsStatus) the joint of the failed
+    pivot, and that element's qdd is NaN. Chain.forward_dynamics raises
+    there unless on_failure="nan".)doc" + kPrivate;
+  // (n,6),(4,4),(n,6,6),(3),(n),(n),(n),(6)->(n),()
+  def_ufunc<std::tuple<JointsCore, ufunc::Typed<Core<>, int>>(ScrewsCore, Core<4, 4>, InertiasCore, Core<3>,
+                                                              JointsCore, JointsCore, JointsCore, Core<6>),
             Float64>(m, "_forward_dynamics", "screws, home, inertias, gravity, q, qd, tau, tip_wrench", forward_doc,
                      model<4>(DynamicsOf()), ForwardDynamics());
   const std::string mass_doc = std::string("M(q), the joint-space mass matrix (T = 1/2 qd^T M qd), by composite rigid bodies.") +

@@ -646,6 +646,52 @@ py::object call_dynamics_ufunc(PyObject* u, const PyChain& c, const char* what, 
 }
 
 
+/// Chain.forward_dynamics(on_failure): true for "raise" (the default), false
+/// for "nan".
+bool failure_raises(py::handle on_failure) {
+  if (PyUnicode_Check(on_failure.ptr())) {
+    if (PyUnicode_CompareWithASCIIString(on_failure.ptr(), "raise") == 0) return true;
+    if (PyUnicode_CompareWithASCIIString(on_failure.ptr(), "nan") == 0) return false;
+  }
+  raise_value_error("Chain.forward_dynamics(on_failure): expected \"raise\" or \"nan\", got " +
+                    std::string(py::repr(on_failure)));
+}
+
+/// The ValueError of Chain.forward_dynamics where M(q) is not positive
+/// definite: at `where` (empty for one configuration), the Cholesky
+/// factorization failing at `joint`.
+[[noreturn]] void raise_not_positive_definite(const std::string& where, Eigen::Index joint) {
+  raise_value_error("Chain.forward_dynamics: the mass matrix M(q) is not positive definite" + where +
+                    ": its Cholesky factorization fails at joint " + std::to_string(joint) +
+                    " (a link without mass, or without rotational inertia about its joint's axis, or an inertia "
+                    "that no rigid body has?)");
+}
+
+/// A batch of forward dynamics: the ufunc's (qdd, joint); ValueError naming
+/// the first configuration (C order) whose joint is not -1 when `raise`,
+/// else qdd with NaN there.
+py::object checked_accelerations(const py::object& result, bool raise) {
+  const py::tuple r = py::reinterpret_borrow<py::tuple>(result);
+  if (!raise) return r[0];
+  const auto joint = py::array_t<int, py::array::c_style | py::array::forcecast>::ensure(r[1]);
+  const int* at = joint.data();
+  const py::ssize_t size = joint.size();
+  py::ssize_t first = -1, failed = 0;
+  for (py::ssize_t i = 0; i < size; ++i) {
+    if (at[i] < 0) continue;
+    if (failed++ == 0) first = i;
+  }
+  if (failed == 0) return r[0];
+  if (joint.ndim() == 0) raise_not_positive_definite("", at[0]);
+  std::string index;
+  for (py::ssize_t d = joint.ndim(), rest = first; d-- > 0; rest /= joint.shape(d))
+    index = std::to_string(rest % joint.shape(d)) + (index.empty() ? "" : ", ") + index;
+  raise_not_positive_definite(" at batch index (" + index + (joint.ndim() == 1 ? ",)" : ")") + ", the first of " +
+                                  std::to_string(failed) + " of " + std::to_string(size) +
+                                  " configurations; on_failure=\"nan\" gives NaN there instead)",
+                              at[first]);
+}
+
 /// The parts of Chain.inverse_kinematics' result (python/chasles/_results.py,
 /// IKResult): one solve (q of shape (n,), a bool, an int, error (6,)) or a
 /// batch (arrays with the batch shape).
@@ -1030,26 +1076,53 @@ Raises:
 )doc");
   cls.def(
       "forward_dynamics",
-      [u_forward_dynamics](Obj<PyChain> c, py::object q, py::object qd, py::object tau, py::object tip_wrench) {
-        return call_dynamics_ufunc<3>(
+      [u_forward_dynamics](Obj<PyChain> c, py::object q, py::object qd, py::object tau, py::object tip_wrench,
+                           py::object on_failure) {
+        const bool raise = failure_raises(on_failure);
+        py::object r = call_dynamics_ufunc<3>(
             u_forward_dynamics.ptr(), *c, "Chain.forward_dynamics", {q, qd, tau},
             {"Chain.forward_dynamics(q)", "Chain.forward_dynamics(qd)", "Chain.forward_dynamics(tau)"}, true,
-            &tip_wrench, [](const DynD& d, const std::array<DynD::JointVector, 3>& x, const chasles::Wrenchd& tip) {
-              return d.forward_dynamics(x[0], x[1], x[2], tip);
+            &tip_wrench,
+            [raise](const DynD& d, const std::array<DynD::JointVector, 3>& x, const chasles::Wrenchd& tip) {
+              const auto one = d.forward_dynamics(x[0], x[1], x[2], tip);
+              if (!one && raise) raise_not_positive_definite("", one.joint);
+              return one.qdd;
             });
+        if (py::isinstance<py::tuple>(r)) return checked_accelerations(r, raise);  // the ufunc's (qdd, joint)
+        return r;
       },
       py::arg("q"), py::arg("qd"), py::arg("tau"), py::kw_only(), py::arg("tip_wrench") = py::none(),
+      py::arg("on_failure") = "raise",
       R"doc(Forward dynamics: the joint accelerations qdd = M(q)^-1 (tau - C(q, qd) qd - g(q) - J_b^T F_tip).
 
 By a Cholesky factorization of the mass matrix (chasles/dynamics.hpp). An
 array function: (..., n) in, (..., n) out, the GIL released.
 
+Where M(q) is not positive definite, there are no accelerations to give: a
+pivot of the factorization is not above the rounding of the terms it is
+made of (4 eps of their scale: chasles::DynamicsStatus). A link without
+mass, or without rotational inertia about its joint's axis (a point mass on
+the axis), or an inertia that no rigid body has (which Chain.from_urdf
+accepts, as real robot descriptions have some) can do that. By default this
+raises ValueError, naming the joint where the factorization fails and, for
+a batch, the index of the first such configuration, so that no simulation
+goes on with meaningless accelerations. on_failure="nan" instead gives NaN
+in those configurations' accelerations only, and the others as always (a
+NaN input also gives NaN: ``np.isnan(qdd).any(axis=-1)`` flags both).
+
 Args:
     q, qd, tau: array_like of shape (..., n): positions, velocities, joint torques.
     tip_wrench: as in inverse_dynamics; None: zero.
+    on_failure: "raise" (the default) or "nan": what a configuration whose
+        M(q) is not positive definite gives.
 
 Returns:
     numpy.ndarray: shape (..., n).
+
+Raises:
+    ValueError: a chain without link inertias, shapes that do not match,
+        an on_failure other than "raise" or "nan", or (unless
+        on_failure="nan") M(q) not positive definite.
 )doc");
   cls.def(
       "mass_matrix",

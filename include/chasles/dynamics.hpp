@@ -11,10 +11,11 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
+#include "chasles/constants.hpp"
 #include "chasles/detail/assert.hpp"
 #include "chasles/kinematics.hpp"
 #include "chasles/se3.hpp"
@@ -23,6 +24,34 @@
 #include "chasles/wrench.hpp"
 
 namespace chasles {
+
+/// How Dynamics::forward_dynamics ended.
+enum class DynamicsStatus : unsigned char {
+  ok,
+  /// M(q) is not positive definite to working precision: a pivot of its
+  /// Cholesky factorization is not above the rounding of its terms (see
+  /// Dynamics::forward_dynamics). A link without mass, or without
+  /// rotational inertia about its joint's axis (a point mass on the axis),
+  /// gives a zero pivot; an inertia that no rigid body has (a rotational
+  /// inertia that is not positive definite: SpatialInertia::is_physical)
+  /// can give a negative one.
+  mass_matrix_not_positive_definite,
+};
+
+/// The outcome of Dynamics::forward_dynamics: the accelerations, the
+/// status, and for a failure the joint at which the factorization stopped
+/// (as ChainCheck).
+template <typename JointVector>
+struct ForwardDynamicsResult {
+  /// qdd, the joint accelerations; all NaN unless status is ok.
+  JointVector qdd;
+  DynamicsStatus status;
+  /// The joint k of the failed pivot (-1 when ok): joints 0..k, joint k
+  /// among them, can move with (to working precision) no or a negative
+  /// kinetic energy while the joints after k are held.
+  Eigen::Index joint;
+  explicit operator bool() const noexcept { return status == DynamicsStatus::ok; }
+};
 
 /// The dynamics of a serial chain of n one-degree-of-freedom joints: its
 /// space screws S_i (6 x n, columns (v, w), the joint twists at home in the
@@ -55,6 +84,11 @@ namespace chasles {
 /// by MaxJoints). Every operation is noexcept, allocation-free and of cost
 /// O(n) (inverse dynamics) or O(n^2) (mass matrix, forward dynamics: O(n^3)
 /// for the Cholesky factorization, n <= MaxJoints).
+///
+/// The inertias are taken as given, as SpatialInertia takes them (and
+/// Chain and the URDF loaders): forward_dynamics reports a mass matrix that
+/// they leave singular or indefinite (DynamicsStatus) rather than return
+/// meaningless accelerations.
 template <typename Scalar_, int Joints, int MaxJoints = Joints>
 class Dynamics {
   static_assert(MaxJoints != Eigen::Dynamic, "Dynamics: MaxJoints must be a compile-time bound");
@@ -168,19 +202,48 @@ class Dynamics {
   }
 
   /// qdd = M(q)^-1 (tau - h(q, qd) - J_b(q)^T F_tip), by a Cholesky
-  /// factorization of M(q) (Eigen's LLT on the fixed-capacity matrix: no
-  /// allocation). One kinematic pass serves both M and h.
+  /// factorization M(q) = L L^T (in place on the fixed-capacity matrix: no
+  /// allocation; the operations of Eigen's unblocked LLT), with the status:
+  /// ok, or mass_matrix_not_positive_definite with NaN accelerations and the
+  /// joint k of the first pivot d_k = M_kk - sum_{j<k} L_kj^2 that is not
+  /// above the rounding of the terms M_kk is made of:
+  ///
+  ///   d_k <= mass_matrix_pivot_tolerance * s_k,
+  ///   s_k = |v_k|^2 tr(G_f) + |w_k|^2 tr(G_t)        (S_k(q) = (v_k, w_k))
+  ///
+  /// with G_f, G_t the force and torque diagonal blocks of the composite
+  /// inertia I^c_k = sum_{j >= k} G_j(q): tr(G_f) = 3 sum m_j and
+  /// tr(G_t) = sum tr(I_c,j) + 2 m_j |c_j(q)|^2. M_kk = S_k . I^c_k S_k is
+  /// at most 2 s_k, and the base-frame sums that make it round to a few eps
+  /// s_k whatever its own size (constants.hpp says how the tolerance was
+  /// measured). s_k is a scale of joint k's own units (kg m^2 for a
+  /// revolute joint, kg for a prismatic one), so the test does not depend on
+  /// the unit of length or of mass. A massless link at the end (s_k = 0),
+  /// a point mass on its joint's axis, two joints that move the same way
+  /// (coaxial, with a massless link between them) fail; so does any
+  /// indefinite M(q). A NaN in q, qd, tau or the model gives NaN
+  /// accelerations with status ok (as everywhere: no check of the input).
+  /// One kinematic pass serves both M and h.
   template <typename Q, typename Qd, typename Tau>
-  JointVector forward_dynamics(const Eigen::MatrixBase<Q>& q, const Eigen::MatrixBase<Qd>& qd,
-                               const Eigen::MatrixBase<Tau>& tau,
-                               const Wrench<Scalar>& tip_wrench = Wrench<Scalar>()) const noexcept {
+  ForwardDynamicsResult<JointVector> forward_dynamics(const Eigen::MatrixBase<Q>& q, const Eigen::MatrixBase<Qd>& qd,
+                                                      const Eigen::MatrixBase<Tau>& tau,
+                                                      const Wrench<Scalar>& tip_wrench = Wrench<Scalar>()) const
+      noexcept {
     check_size(q);
     check_size(qd);
     check_size(tau);
     const Pass pass(*this, q);
-    const JointVector b = tau - newton_euler(pass, qd, JointVector::Zero(joints()), true, tip_wrench);
-    const Eigen::LLT<MassMatrix> llt(composite(pass));
-    return llt.solve(b);
+    JointVector qdd = tau - newton_euler(pass, qd, JointVector::Zero(joints()), true, tip_wrench);
+    MassMatrix L = composite(pass);
+    const Eigen::Index k = factorize(pass, L);
+    if (k >= 0) {
+      const Scalar nan(std::numeric_limits<RealOf<Scalar>>::quiet_NaN());
+      return {JointVector::Constant(joints(), nan), DynamicsStatus::mass_matrix_not_positive_definite, k};
+    }
+    // M qdd = b: L y = b, then L^T qdd = y (as Eigen's LLT::solve).
+    L.template triangularView<Eigen::Lower>().solveInPlace(qdd);
+    L.adjoint().template triangularView<Eigen::Upper>().solveInPlace(qdd);
+    return {qdd, DynamicsStatus::ok, -1};
   }
 
   /// T = sum_i 1/2 V_i . G_i(q) V_i, the links' kinetic energy computed
@@ -285,6 +348,39 @@ class Dynamics {
       }
     }
     return Mq;
+  }
+
+  /// The Cholesky factorization M = L L^T in place on the lower triangle of
+  /// A (Eigen's unblocked LLT, the same operations), stopping at the first
+  /// pivot d_k <= tolerance * s_k (forward_dynamics' comment): returns that
+  /// k, or -1 when every pivot passes. The scales s_k come from the links'
+  /// inertias at q, summed from the tip (O(n)).
+  Eigen::Index factorize(const Pass& pass, MassMatrix& A) const noexcept {
+    using std::sqrt;
+    const Eigen::Index n = joints();
+    const Scalar tolerance(ThresholdsOf<Scalar>::mass_matrix_pivot_tolerance);
+    JointVector floor(n);
+    Scalar force(0), torque(0);  // tr(G_f), tr(G_t) of the composite inertia
+    for (Eigen::Index i = n - 1; i >= 0; --i) {
+      const Inertia& G = pass.I[static_cast<std::size_t>(i)];
+      force += Scalar(3) * G.mass();
+      torque += G.inertia().trace() + Scalar(2) * G.mass() * G.com().squaredNorm();
+      floor(i) = tolerance * (pass.S.col(i).template head<3>().squaredNorm() * force +
+                              pass.S.col(i).template tail<3>().squaredNorm() * torque);
+    }
+    for (Eigen::Index k = 0; k < n; ++k) {
+      const Eigen::Index rest = n - k - 1;
+      Eigen::Block<MassMatrix, Eigen::Dynamic, 1> A21(A, k + 1, k, rest, 1);
+      Eigen::Block<MassMatrix, 1, Eigen::Dynamic> A10(A, k, 0, 1, k);
+      Eigen::Block<MassMatrix, Eigen::Dynamic, Eigen::Dynamic> A20(A, k + 1, 0, rest, k);
+      Scalar d = A(k, k);
+      if (k > 0) d -= A10.squaredNorm();
+      if (d <= floor(k)) return k;  // false for NaN: a NaN goes on to the result
+      A(k, k) = d = sqrt(d);
+      if (k > 0 && rest > 0) A21.noalias() -= A20 * A10.adjoint();
+      if (rest > 0) A21 /= d;
+    }
+    return -1;
   }
 
   template <typename Derived>

@@ -41,7 +41,12 @@ namespace chasles {
 /// the kinetic energy 1/2 V^T G V is the same in both frames.
 ///
 /// No invariant is enforced by construction (C++ cannot throw): a body is
-/// physical when `is_physical()` holds.
+/// physical when `is_physical()` holds. Inertias that are not are accepted
+/// here, by Chain, Dynamics and the URDF loaders (real descriptions have
+/// them: 56 of the 1,985 <inertia> elements of the example-robot-data
+/// package's URDF files break the triangle inequality);
+/// Dynamics::forward_dynamics reports a mass matrix they leave not positive
+/// definite (DynamicsStatus).
 template <typename Scalar_>
 class SpatialInertia {
  public:

@@ -1946,6 +1946,11 @@ class SpatialInertia:
     same body described in frame a, given in frame b: ``I.transform(g_ab)``, with
     c_a = R c_b + p, I_a = R I_c R^T and G_a = Ad_g^-T G_b Ad_g^-1.
     
+    The constructor accepts only inertias that a rigid body has. Chain's
+    link_inertias and Chain.from_urdf accept any (real robot descriptions have
+    some that break the triangle inequality); Chain.forward_dynamics raises
+    where they leave the mass matrix not positive definite.
+    
     Example:
         >>> body = SpatialInertia(2.0, [0.0, 0.0, 0.5], np.diag([0.1, 0.1, 0.02]))
         >>> body.momentum(Twist(v=[1.0, 0.0, 0.0], w=[0.0, 0.0, 0.0])).force
@@ -2426,19 +2431,38 @@ class Chain:
             >>> np.allclose(arm.forward_body([0.3]), arm.forward([0.3]), rtol=0, atol=1e-15)
             True
         """
-    def forward_dynamics(self, q: typing.Any, qd: typing.Any, tau: typing.Any, *, tip_wrench: typing.Any = None) -> typing.Any:
+    def forward_dynamics(self, q: typing.Any, qd: typing.Any, tau: typing.Any, *, tip_wrench: typing.Any = None, on_failure: typing.Any = 'raise') -> typing.Any:
         """
         Forward dynamics: the joint accelerations qdd = M(q)^-1 (tau - C(q, qd) qd - g(q) - J_b^T F_tip).
         
         By a Cholesky factorization of the mass matrix (chasles/dynamics.hpp). An
         array function: (..., n) in, (..., n) out, the GIL released.
         
+        Where M(q) is not positive definite, there are no accelerations to give: a
+        pivot of the factorization is not above the rounding of the terms it is
+        made of (4 eps of their scale: chasles::DynamicsStatus). A link without
+        mass, or without rotational inertia about its joint's axis (a point mass on
+        the axis), or an inertia that no rigid body has (which Chain.from_urdf
+        accepts, as real robot descriptions have some) can do that. By default this
+        raises ValueError, naming the joint where the factorization fails and, for
+        a batch, the index of the first such configuration, so that no simulation
+        goes on with meaningless accelerations. on_failure="nan" instead gives NaN
+        in those configurations' accelerations only, and the others as always (a
+        NaN input also gives NaN: ``np.isnan(qdd).any(axis=-1)`` flags both).
+        
         Args:
             q, qd, tau: array_like of shape (..., n): positions, velocities, joint torques.
             tip_wrench: as in inverse_dynamics; None: zero.
+            on_failure: "raise" (the default) or "nan": what a configuration whose
+                M(q) is not positive definite gives.
         
         Returns:
             numpy.ndarray: shape (..., n).
+        
+        Raises:
+            ValueError: a chain without link inertias, shapes that do not match,
+                an on_failure other than "raise" or "nan", or (unless
+                on_failure="nan") M(q) not positive definite.
         """
     def gravity_torques(self, q: typing.Any) -> typing.Any:
         """

@@ -12,11 +12,15 @@
 //   (qd^T M qd), dM/dq by automatic differentiation (itself checked against
 //   central differences);
 // - the tip wrench's torques equal to J_b(q)^T F_tip (Chain::jacobian_body);
-// - forward_dynamics inverting inverse_dynamics;
+// - forward_dynamics inverting inverse_dynamics, and equal to Eigen's LLT
+//   solve on physical arms; its status where M(q) is not positive definite
+//   (a massless link, point masses on the joint axes, an indefinite
+//   inertia, a pivot of rounding size) and on both sides of its threshold;
 // - energy conserved by an RK4 simulation with no torque;
 // - float and double against the same algorithm in long double (rounding).
 // The modern_robotics package (and Pinocchio, bench/) check the values
 // themselves from Python (tests/python/test_dynamics.py).
+#include <array>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -31,6 +35,7 @@
 #include <chasles/dynamics.hpp>
 #include <chasles/kinematics.hpp>
 
+#include "support/arms.hpp"
 #include "support/group_traits.hpp"
 
 namespace {
@@ -196,7 +201,10 @@ TYPED_TEST(DynamicsTest, ForwardDynamicsInvertsInverseDynamics) {
     const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0), qdd = random_joints<S>(rng, n, 2.0);
     const Wrench<S> F(Eigen::Matrix<S, 3, 1>(S(1), S(-2), S(3)), Eigen::Matrix<S, 3, 1>(S(0.5), S(0.1), S(-0.3)));
     const auto tau = d.inverse_dynamics(q, qd, qdd, F);
-    const auto back = d.forward_dynamics(q, qd, tau, F);
+    const auto forward = d.forward_dynamics(q, qd, tau, F);
+    ASSERT_TRUE(forward) << "n = " << n;
+    ASSERT_EQ(forward.joint, -1);
+    const auto& back = forward.qdd;
     // Conditioning: the error of qdd is cond(M) times the rounding of tau.
     const auto M = d.mass_matrix(q);
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(M.template cast<double>());
@@ -247,7 +255,7 @@ TYPED_TEST(DynamicsTest, FromAChainEqualsFromItsParts) {
     using Mat = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>;
     EXPECT_EQ(V(a.inverse_dynamics(q, qd, qdd, F)), V(b.inverse_dynamics(q, qd, qdd, F)));
     EXPECT_EQ(Mat(a.mass_matrix(q)), Mat(b.mass_matrix(q)));
-    EXPECT_EQ(V(a.forward_dynamics(q, qd, qdd, F)), V(b.forward_dynamics(q, qd, qdd, F)));
+    EXPECT_EQ(V(a.forward_dynamics(q, qd, qdd, F).qdd), V(b.forward_dynamics(q, qd, qdd, F).qdd));
     EXPECT_EQ(V(a.gravity_torques(q)), V(b.gravity_torques(q)));
     EXPECT_EQ(V(a.coriolis(q, qd)), V(b.coriolis(q, qd)));
     EXPECT_TRUE(a.space_screws() == chain.space_screws() && a.gravity() == chain.gravity());
@@ -316,7 +324,7 @@ TEST(Dynamics, FixedSizeGivesTheSameBitsAsBounded) {
   const Eigen::Matrix<double, 6, 1> q6 = q, qd6 = qd;
   EXPECT_EQ(Eigen::VectorXd(f.inverse_dynamics(q6, qd6, qd6)), Eigen::VectorXd(d.inverse_dynamics(q, qd, qd)));
   EXPECT_EQ(Eigen::MatrixXd(f.mass_matrix(q6)), Eigen::MatrixXd(d.mass_matrix(q)));
-  EXPECT_TRUE(near<double>(f.forward_dynamics(q6, qd6, qd6), d.forward_dynamics(q, qd, qd), 64, 10));
+  EXPECT_TRUE(near<double>(f.forward_dynamics(q6, qd6, qd6).qdd, d.forward_dynamics(q, qd, qd).qdd, 64, 10));
 }
 
 // Central differences in double, five points, step h: truncation
@@ -451,13 +459,13 @@ TEST(Dynamics, RungeKuttaSimulationConservesEnergy) {
       const double h = 1e-3;
       double worst = 0;
       for (int step = 0; step < 2000; ++step) {
-        const Dyn<double>::JointVector k1q = qd, k1v = d.forward_dynamics(q, qd, zero);
+        const Dyn<double>::JointVector k1q = qd, k1v = d.forward_dynamics(q, qd, zero).qdd;
         const Dyn<double>::JointVector q2 = q + h / 2 * k1q, v2 = qd + h / 2 * k1v;
-        const Dyn<double>::JointVector k2q = v2, k2v = d.forward_dynamics(q2, v2, zero);
+        const Dyn<double>::JointVector k2q = v2, k2v = d.forward_dynamics(q2, v2, zero).qdd;
         const Dyn<double>::JointVector q3 = q + h / 2 * k2q, v3 = qd + h / 2 * k2v;
-        const Dyn<double>::JointVector k3q = v3, k3v = d.forward_dynamics(q3, v3, zero);
+        const Dyn<double>::JointVector k3q = v3, k3v = d.forward_dynamics(q3, v3, zero).qdd;
         const Dyn<double>::JointVector q4 = q + h * k3q, v4 = qd + h * k3v;
-        const Dyn<double>::JointVector k4q = v4, k4v = d.forward_dynamics(q4, v4, zero);
+        const Dyn<double>::JointVector k4q = v4, k4v = d.forward_dynamics(q4, v4, zero).qdd;
         q += h / 6 * (k1q + 2 * k2q + 2 * k3q + k4q);
         qd += h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v);
         worst = std::max(worst, std::fabs(total(q, qd) - E0));
@@ -468,6 +476,304 @@ TEST(Dynamics, RungeKuttaSimulationConservesEnergy) {
           << "n = " << n << ", gravity " << with_gravity << ", E0 = " << E0;
     }
   }
+}
+
+// ---- forward dynamics where M(q) is not positive definite --------------------
+//
+// Before the status, each failing case below went unnoticed: Eigen's LLT
+// reports a pivot <= 0 only through info(), which was not read (inf, NaN or
+// finite accelerations from a half-factorized M), and a pivot of rounding
+// size passes its test (accelerations of 1e10 and more, meaningless).
+
+using chasles::DynamicsStatus;
+using chasles::ForwardDynamicsResult;
+using chasles_test::PandaLike;
+
+template <typename S>
+using Panda = Dynamics<S, 7>;
+
+/// The Panda-like arm of support/arms.hpp with the given link inertias.
+template <typename S>
+Panda<S> panda_with(const std::array<SpatialInertia<S>, 7>& inertias) {
+  const PandaLike<S> arm;
+  return Panda<S>(arm.screws, arm.home, inertias, Eigen::Matrix<S, 3, 1>(S(0), S(0), S(-9.81)));
+}
+
+/// q uniform within the Panda-like arm's limits, qd and tau in [-2, 2] and [-20, 20].
+template <typename S>
+struct PandaState {
+  Eigen::Matrix<S, 7, 1> q, qd, tau;
+  explicit PandaState(std::mt19937& rng) {
+    const PandaLike<S> arm;
+    std::uniform_real_distribution<double> u(0.0, 1.0), v(-2.0, 2.0);
+    for (int i = 0; i < 7; ++i) {
+      q(i) = arm.lower(i) + S(u(rng)) * (arm.upper(i) - arm.lower(i));
+      qd(i) = S(v(rng));
+      tau(i) = S(10 * v(rng));
+    }
+  }
+};
+
+/// The value of a scalar (of an autodiff scalar: its value).
+template <typename S>
+double value_of(const S& x) {
+  if constexpr (std::is_arithmetic<S>::value)
+    return static_cast<double>(x);
+  else
+    return x.value();
+}
+
+/// r reports M(q) not positive definite at `joint`, with NaN accelerations.
+template <typename JointVector>
+::testing::AssertionResult fails_at(const ForwardDynamicsResult<JointVector>& r, Eigen::Index joint) {
+  Eigen::VectorXd qdd(r.qdd.size());
+  for (Eigen::Index i = 0; i < r.qdd.size(); ++i) qdd(i) = value_of(r.qdd(i));
+  if (r || r.status != DynamicsStatus::mass_matrix_not_positive_definite)
+    return ::testing::AssertionFailure() << "status ok, qdd = " << qdd.transpose();
+  if (r.joint != joint) return ::testing::AssertionFailure() << "failed at joint " << r.joint << ", not " << joint;
+  if (!qdd.array().isNaN().all()) return ::testing::AssertionFailure() << "qdd not NaN: " << qdd.transpose();
+  return ::testing::AssertionSuccess();
+}
+
+/// qdd by Eigen's LLT of mass_matrix(q), as forward_dynamics computed it before its status.
+template <typename D, typename V>
+typename D::JointVector llt_solve(const D& d, const V& q, const V& qd, const V& tau,
+                                  const Wrench<typename D::Scalar>& F = Wrench<typename D::Scalar>()) {
+  const typename D::JointVector zero = D::JointVector::Zero(d.joints());
+  const Eigen::LLT<typename D::MassMatrix> llt(d.mass_matrix(q));
+  return llt.solve(typename D::JointVector(tau - d.inverse_dynamics(q, qd, zero, F)));
+}
+
+TYPED_TEST(DynamicsTest, ForwardDynamicsOfPhysicalArmsIsOkAndEigensCholeskySolve) {
+  using S = TypeParam;
+  const Wrench<S> F(Eigen::Matrix<S, 3, 1>(S(1), S(-2), S(3)), Eigen::Matrix<S, 3, 1>(S(0.5), S(0.1), S(-0.3)));
+  // The Panda-like arm within its limits: the factorization is Eigen's
+  // unblocked LLT, operation for operation, so the bits are those of before.
+  std::mt19937 rng(40);
+  const Panda<S> panda = panda_with<S>(PandaLike<S>().inertias);
+  for (int trial = 0; trial < 200; ++trial) {
+    const PandaState<S> x(rng);
+    const auto r = panda.forward_dynamics(x.q, x.qd, x.tau, F);
+    ASSERT_TRUE(r) << "q = " << x.q.transpose();
+    EXPECT_EQ(r.status, DynamicsStatus::ok);
+    EXPECT_EQ(r.joint, -1);
+    EXPECT_EQ(r.qdd, llt_solve(panda, x.q, x.qd, x.tau, F)) << "q = " << x.q.transpose();
+  }
+  // Random arms of 1 to 8 revolute and prismatic joints.
+  for (int trial = 0; trial < 80; ++trial) {
+    const int n = 1 + trial % kMax;
+    const Dyn<S> d = dynamics_of<S>(random_arm(rng, n));
+    const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0), tau = random_joints<S>(rng, n, 20.0);
+    const auto r = d.forward_dynamics(q, qd, tau, F);
+    ASSERT_TRUE(r) << "n = " << n;
+    EXPECT_EQ(r.qdd, llt_solve(d, q, qd, tau, F)) << "n = " << n;
+  }
+}
+
+TYPED_TEST(DynamicsTest, ForwardDynamicsReportsAMasslessLink) {
+  using S = TypeParam;
+  std::mt19937 rng(41);
+  // The Panda-like arm without its hand (the last link): M's last row is 0.
+  std::array<SpatialInertia<S>, 7> I = PandaLike<S>().inertias;
+  I[6] = SpatialInertia<S>();
+  const Panda<S> panda = panda_with<S>(I);
+  for (int trial = 0; trial < 50; ++trial) {
+    const PandaState<S> x(rng);
+    EXPECT_TRUE(fails_at(panda.forward_dynamics(x.q, x.qd, x.tau), 6));
+  }
+  // Random arms whose last link is massless, and a chain without inertias (M = 0).
+  for (int n = 1; n <= kMax; ++n) {
+    Arm arm = random_arm(rng, n);
+    arm.I[static_cast<std::size_t>(n - 1)] = SpatialInertia<double>();
+    const Dyn<S> d = dynamics_of<S>(arm);
+    const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0);
+    EXPECT_TRUE(fails_at(d.forward_dynamics(q, qd, qd), n - 1)) << "n = " << n;
+    const Dyn<S> massless(ChainOf<S>(arm.S.template cast<S>(), arm.M.template cast<S>()));
+    EXPECT_TRUE(fails_at(massless.forward_dynamics(q, qd, qd), 0)) << "n = " << n;
+  }
+  // A massless link inside the chain is fine: the links after it move with its joint.
+  I = PandaLike<S>().inertias;
+  I[3] = SpatialInertia<S>();
+  const PandaState<S> x(rng);
+  EXPECT_TRUE(panda_with<S>(I).forward_dynamics(x.q, x.qd, x.tau));
+}
+
+/// The Panda-like arm with each link a point mass (its own mass, I_c = 0)
+/// on its joint's axis, `offset` from it (0: on the axis) along a direction
+/// normal to the axis, at `along` times i + 1 from the axis' point.
+template <typename S>
+Panda<S> panda_point_masses(double offset, double along) {
+  const PandaLike<double> arm;
+  std::array<SpatialInertia<S>, 7> I;
+  for (int i = 0; i < 7; ++i) {
+    const Eigen::Vector3d w = arm.screws.col(i).tail<3>(), v = arm.screws.col(i).head<3>();
+    const Eigen::Vector3d point = w.cross(v);  // the axis' point nearest the origin (v = -w x p)
+    const Eigen::Vector3d normal = w.unitOrthogonal();
+    const Eigen::Vector3d c = point + along * (i + 1) * w + offset * normal;
+    I[static_cast<std::size_t>(i)] =
+        SpatialInertia<double>(arm.inertias[static_cast<std::size_t>(i)].mass(), c, Eigen::Matrix3d::Zero())
+            .template cast<S>();
+  }
+  return panda_with<S>(I);
+}
+
+TYPED_TEST(DynamicsTest, ForwardDynamicsReportsPointMassesOnTheJointAxes) {
+  using S = TypeParam;
+  std::mt19937 rng(42);
+  // The last link then has no inertia about its joint's axis: M_77 and its
+  // row are 0 but for rounding, which Eigen's LLT mostly took as a pivot.
+  const Panda<S> panda = panda_point_masses<S>(0.0, 0.05);
+  int unnoticed = 0;
+  for (int trial = 0; trial < 100; ++trial) {
+    const PandaState<S> x(rng);
+    EXPECT_TRUE(fails_at(panda.forward_dynamics(x.q, x.qd, x.tau), 6)) << "q = " << x.q.transpose();
+    const auto before = llt_solve(panda, x.q, x.qd, x.tau);
+    if (Eigen::LLT<typename Panda<S>::MassMatrix>(panda.mass_matrix(x.q)).info() == Eigen::Success) {
+      ++unnoticed;
+      EXPECT_GT(max_abs(before), LD(1e4)) << "q = " << x.q.transpose();  // |qdd| of a real arm: < 1e3
+    }
+  }
+  if (std::is_same<S, double>::value) {
+    EXPECT_GT(unnoticed, 0);  // what the status is for
+  }
+}
+
+TYPED_TEST(DynamicsTest, ForwardDynamicsReportsANearlySingularMassMatrix) {
+  using S = TypeParam;
+  std::mt19937 rng(43);
+  // Point masses eps^(1/2) of a metre off their axes: M_77 = m d^2 is
+  // eps / 4 of the scale of the terms it is summed from (s = 2.8 kg m^2 for
+  // the hand), so it is rounding: below the threshold.
+  const double offset = std::sqrt(double(std::numeric_limits<S>::epsilon()));
+  const Panda<S> panda = panda_point_masses<S>(offset, 0.05);
+  for (int trial = 0; trial < 100; ++trial) {
+    const PandaState<S> x(rng);
+    EXPECT_TRUE(fails_at(panda.forward_dynamics(x.q, x.qd, x.tau), 6)) << "q = " << x.q.transpose();
+  }
+  // Eigen's LLT took most of these pivots (double): accelerations of 1e9 and more.
+  if (std::is_same<S, double>::value) {
+    const PandaState<S> x(rng);
+    EXPECT_EQ(Eigen::LLT<typename Panda<S>::MassMatrix>(panda.mass_matrix(x.q)).info(), Eigen::Success);
+    EXPECT_GT(max_abs(llt_solve(panda, x.q, x.qd, x.tau)), LD(1e9));
+  }
+}
+
+TYPED_TEST(DynamicsTest, ForwardDynamicsReportsAnIndefiniteInertia) {
+  using S = TypeParam;
+  std::mt19937 rng(44);
+  // The hand's I_zz with a sign error (-I_zz: principal moments that break
+  // the triangle inequality, not positive definite), as a URDF may give it:
+  // the hand turning about its own axis has a negative kinetic energy.
+  std::array<SpatialInertia<S>, 7> I = PandaLike<S>().inertias;
+  typename SpatialInertia<S>::Matrix3 Ic = I[6].inertia();
+  Ic(2, 2) = -Ic(2, 2);
+  I[6] = SpatialInertia<S>(I[6].mass(), I[6].com(), Ic);
+  ASSERT_FALSE(I[6].is_physical());
+  const Panda<S> panda = panda_with<S>(I);
+  for (int trial = 0; trial < 50; ++trial) {
+    const PandaState<S> x(rng);
+    EXPECT_TRUE(fails_at(panda.forward_dynamics(x.q, x.qd, x.tau), 6)) << "q = " << x.q.transpose();
+  }
+  // An inertia that breaks the triangle inequality (I_zz = 3 (I_xx + I_yy))
+  // but is positive definite gives a positive definite M: such inertias are
+  // accepted (SpatialInertia::is_physical tells), and M is what is checked.
+  Ic(2, 2) = 3 * (Ic(0, 0) + Ic(1, 1));
+  I[6] = SpatialInertia<S>(I[6].mass(), I[6].com(), Ic);
+  ASSERT_FALSE(I[6].is_physical());
+  const Panda<S> triangle = panda_with<S>(I);
+  for (int trial = 0; trial < 50; ++trial) {
+    const PandaState<S> x(rng);
+    const auto r = triangle.forward_dynamics(x.q, x.qd, x.tau);
+    ASSERT_TRUE(r) << "q = " << x.q.transpose();
+    EXPECT_EQ(r.qdd, llt_solve(triangle, x.q, x.qd, x.tau));
+  }
+}
+
+TYPED_TEST(DynamicsTest, ForwardDynamicsThresholdOnBothSides) {
+  using S = TypeParam;
+  // One revolute joint about z through the origin moving a thin disc of
+  // moments (J/2, J/2, J) centered 1 m up the axis, m = 1 kg: M = J exactly
+  // (the parallel-axis terms cancel exactly along the axis) and the pivot's
+  // scale is s = tr(I_c) + 2 m |c|^2 = 2 J + 2, so d / s = J / (2 J + 2).
+  const S tol = S(chasles::ThresholdsOf<S>::mass_matrix_pivot_tolerance);
+  typename Dynamics<S, 1>::Screws screw;
+  screw << S(0), S(0), S(0), S(0), S(0), S(1);
+  const auto disc = [&](S J) {
+    typename Dynamics<S, 1>::Inertias I;
+    I[0] = SpatialInertia<S>(S(1), Eigen::Matrix<S, 3, 1>(S(0), S(0), S(1)),
+                             Eigen::Matrix<S, 3, 1>(J / 2, J / 2, J).asDiagonal().toDenseMatrix());
+    return Dynamics<S, 1>(screw, SE3<S>(), I, Eigen::Matrix<S, 3, 1>(S(0), S(0), S(-9.81)));
+  };
+  for (const S q : {S(0), S(0.3), S(-2)}) {
+    const Eigen::Matrix<S, 1, 1> q1(q), qd(S(0.5)), tau(S(1e-14));
+    // d / s = 1.5 tol: ok, qdd = tau / J (no gravity torque about z, no Coriolis term for one joint).
+    const S above = 3 * tol;
+    const auto r = disc(above).forward_dynamics(q1, qd, tau);
+    ASSERT_TRUE(r) << "q = " << q;
+    EXPECT_EQ(disc(above).mass_matrix(q1)(0, 0), above);
+    EXPECT_TRUE(near<S>(r.qdd, Eigen::Matrix<LD, 1, 1>(LD(tau(0)) / LD(above)), 4)) << r.qdd;
+    // d / s = 0.5 tol: not positive definite, though Eigen's LLT takes it.
+    const S below = tol;
+    EXPECT_TRUE(fails_at(disc(below).forward_dynamics(q1, qd, tau), 0)) << "q = " << q;
+    using M1 = Eigen::Matrix<S, 1, 1>;
+    EXPECT_EQ(Eigen::LLT<M1>(disc(below).mass_matrix(q1)).info(), Eigen::Success);
+  }
+  // A pivot of the smallest normal number (a 1 kg disc of J = 1e-38 or
+  // 1e-308 kg m^2), and of 0.
+  const Eigen::Matrix<S, 1, 1> q0(S(0.1)), qd0(S(0)), tau0(S(1));
+  EXPECT_TRUE(fails_at(disc(S(std::numeric_limits<S>::min())).forward_dynamics(q0, qd0, tau0), 0));
+  EXPECT_TRUE(fails_at(disc(S(0)).forward_dynamics(q0, qd0, tau0), 0));
+}
+
+TYPED_TEST(DynamicsTest, ForwardDynamicsOfANaNIsNaNNotAFailure) {
+  using S = TypeParam;
+  std::mt19937 rng(45);
+  const Panda<S> panda = panda_with<S>(PandaLike<S>().inertias);
+  PandaState<S> x(rng);
+  x.tau(2) = std::numeric_limits<S>::quiet_NaN();
+  auto r = panda.forward_dynamics(x.q, x.qd, x.tau);
+  EXPECT_TRUE(r);
+  EXPECT_TRUE(r.qdd.array().isNaN().any());
+  x.q(0) = std::numeric_limits<S>::quiet_NaN();
+  r = panda.forward_dynamics(x.q, x.qd, x.tau);
+  EXPECT_TRUE(r);
+  EXPECT_TRUE(r.qdd.array().isNaN().all());
+}
+
+TEST(Dynamics, ForwardDynamicsWithAutomaticDifferentiation) {
+  // d qdd / d tau = M(q)^-1 through the factorization, and the status with
+  // autodiff scalars (compared by value).
+  using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, 7, 1>>;
+  std::mt19937 rng(46);
+  const PandaLike<double> arm;
+  std::array<SpatialInertia<AD>, 7> Ia;
+  for (std::size_t i = 0; i < 7; ++i) Ia[i] = arm.inertias[i].cast<AD>();
+  const Panda<AD> da = panda_with<AD>(Ia);
+  const Panda<double> d = panda_with<double>(arm.inertias);
+  for (int trial = 0; trial < 10; ++trial) {
+    const PandaState<double> x(rng);
+    Eigen::Matrix<AD, 7, 1> tau;
+    for (int i = 0; i < 7; ++i) tau(i) = AD(x.tau(i), 7, i);
+    const auto r = da.forward_dynamics(x.q.cast<AD>(), x.qd.cast<AD>(), tau);
+    ASSERT_TRUE(r);
+    Eigen::Matrix<double, 7, 7> J;
+    Eigen::Matrix<double, 7, 1> value;
+    for (int i = 0; i < 7; ++i) {
+      J.row(i) = r.qdd(i).derivatives().transpose();
+      value(i) = r.qdd(i).value();
+    }
+    const Eigen::Matrix<double, 7, 7> Mq = d.mass_matrix(x.q), Minv = Mq.inverse();
+    // both sides round to cond(M) eps |M^-1| (the hand's inertia is small: cond ~ 1e4)
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 7, 7>> es(Mq);
+    const LD cond = LD(es.eigenvalues().maxCoeff() / es.eigenvalues().minCoeff());
+    EXPECT_TRUE(near<double>(J, Minv, 64 * cond, max_abs(Minv)));
+    // the value: the double computation, to the rounding of autodiff's own operation order (times cond(M))
+    const Eigen::Matrix<double, 7, 1> qdd = d.forward_dynamics(x.q, x.qd, x.tau).qdd;
+    EXPECT_TRUE(near<double>(value, qdd, 64 * cond, max_abs(qdd)));
+  }
+  Ia[6] = SpatialInertia<AD>();
+  const PandaState<double> x(rng);
+  EXPECT_TRUE(fails_at(panda_with<AD>(Ia).forward_dynamics(x.q.cast<AD>(), x.qd.cast<AD>(), x.tau.cast<AD>()), 6));
 }
 
 }  // namespace

@@ -54,7 +54,7 @@
 // Properties: with q finite (any size: revolute joints), |qd_i|, |qdd_i| <=
 // Q = sqrt(max) / 2^24 (1.1e12 in float), |F_j| <= max / 2^48:
 // inverse_dynamics (with and without F_tip), mass_matrix, gravity_torques,
-// coriolis, bias, forward_dynamics (with F_tip), kinetic_energy and
+// coriolis, bias, forward_dynamics (with F_tip; status ok), kinetic_energy and
 // potential_energy finite (terms at most ~1e6 Q^2 for this arm, and M(q)^-1
 // at most ~1e4: far below max); the kinetic energy from the links' twists
 // equals 1/2 qd^T M(q) qd to 64 n eps (sum_j 2.5 |qd_j|)^2 max_i |G_i| (the
@@ -285,7 +285,8 @@ void fuzz_dynamics(Bytes& in) {
   const J id = d.inverse_dynamics(q, qd, qdd), id_tip = d.inverse_dynamics(q, qd, qdd, F);
   const typename D::MassMatrix Mq = d.mass_matrix(q);
   const J grav = d.gravity_torques(q), cor = d.coriolis(q, qd), bias = d.bias(q, qd);
-  const J fd = d.forward_dynamics(q, qd, tau, F);
+  const auto forward = d.forward_dynamics(q, qd, tau, F);
+  const J fd = forward.qdd;
   const T ke = d.kinetic_energy(q, qd), pe = d.potential_energy(q);
 
   const LD max = LD(std::numeric_limits<T>::max());
@@ -296,7 +297,7 @@ void fuzz_dynamics(Bytes& in) {
   check(finite(id) && finite(id_tip), "dynamics: inverse_dynamics finite (in range)", ty, input);
   check(finite(Mq) && finite(grav) && finite(cor) && finite(bias),
         "dynamics: mass_matrix, gravity_torques, coriolis, bias finite (in range)", ty, input);
-  check(finite(fd), "dynamics: forward_dynamics finite (in range)", ty, input);
+  check(bool(forward) && finite(fd), "dynamics: forward_dynamics ok and finite (in range)", ty, input);
   check(std::isfinite(ke) && std::isfinite(pe), "dynamics: kinetic and potential energy finite (in range)", ty,
         input);
   const Eigen::Matrix<LD, Eigen::Dynamic, 1> qdl = qd.template cast<LD>();

@@ -25,7 +25,7 @@ PRIVATE = {
     "_chain_jacobian_space": ("(n,6),(4,4),(n)->(6,n)", ["ddd->d"]),
     "_chain_jacobian_body": ("(n,6),(4,4),(n)->(6,n)", ["ddd->d"]),
     "_inverse_dynamics": ("(n,6),(4,4),(n,6,6),(3),(n),(n),(n),(6)->(n)", ["dddddddd->d"]),
-    "_forward_dynamics": ("(n,6),(4,4),(n,6,6),(3),(n),(n),(n),(6)->(n)", ["dddddddd->d"]),
+    "_forward_dynamics": ("(n,6),(4,4),(n,6,6),(3),(n),(n),(n),(6)->(n),()", ["dddddddd->di"]),
     "_mass_matrix": ("(n,6),(4,4),(n,6,6),(n)->(n,n)", ["dddd->d"]),
     "_gravity_torques": ("(n,6),(4,4),(n,6,6),(3),(n)->(n)", ["ddddd->d"]),
     "_coriolis": ("(n,6),(4,4),(n,6,6),(n),(n)->(n)", ["ddddd->d"]),

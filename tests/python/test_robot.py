@@ -21,7 +21,7 @@ import numpy as np
 import pytest
 from scipy.linalg import expm
 
-from chasles import SE3, Chain, SpatialInertia
+from chasles import SE3, Chain, SpatialInertia, _core
 
 ARMS = {
     "ur5": ("ur_description/urdf/ur5_robot.urdf", "tool0"),
@@ -261,7 +261,7 @@ def test_dynamics_one_configuration_gives_the_bits_of_the_gufuncs(arms):
                 chain.inverse_dynamics(a, b, c, **kw), _core._inverse_dynamics(S, M, G, g, a, b, c, t_op)
             )
             np.testing.assert_array_equal(
-                chain.forward_dynamics(a, b, c, **kw), _core._forward_dynamics(S, M, G, g, a, b, c, t_op)
+                chain.forward_dynamics(a, b, c, **kw), _core._forward_dynamics(S, M, G, g, a, b, c, t_op)[0]
             )
         np.testing.assert_array_equal(chain.mass_matrix(a), _core._mass_matrix(S, M, G, a))
         np.testing.assert_array_equal(chain.gravity_torques(a), _core._gravity_torques(S, M, G, g, a))
@@ -322,3 +322,169 @@ def test_dynamics_need_link_inertias_and_matching_shapes(arms):
         bare.gravity_torques(np.zeros(6))
     with pytest.raises(ValueError, match=r"Chain.mass_matrix\(q\): expected shape \(6,\)"):
         arms["ur5"].mass_matrix(np.zeros(7))
+
+
+# ---- forward dynamics where M(q) is not positive definite ---------------------------
+#
+# Each chain below made the Cholesky factorization of M(q) fail unnoticed before
+# forward_dynamics checked it: inf, NaN or finite accelerations of 1e10 and more.
+
+NOT_PD = r"Chain.forward_dynamics: the mass matrix M\(q\) is not positive definite"
+
+
+def point_masses_on_axes(chain, offset=0.0):
+    """The chain's link inertias as point masses (I_c = 0) of the same masses on
+    their joints' axes (the point nearest the origin, 0.1 m along), `offset`
+    off the axis along a normal."""
+    rows = chain.link_inertias.copy()
+    for i, s in enumerate(chain.screws):
+        v, w = s[:3], s[3:]
+        normal = np.cross(w, [1.0, 0.0, 0.0] if abs(w[0]) < 0.9 else [0.0, 1.0, 0.0])
+        rows[i, 1:4] = np.cross(w, v) + 0.1 * w + offset * normal / np.linalg.norm(normal)
+        rows[i, 4:] = 0.0
+    return Chain(chain.screws, chain.home, link_inertias=rows)
+
+
+# A two-link arm whose second link's I_zz has a sign error (principal moments
+# 0.01, 0.01, -0.01: the triangle inequality broken, not positive definite),
+# its center of mass on the joint's axis: Chain.from_urdf accepts it, and
+# M_22 = I_zz < 0.
+INDEFINITE_URDF = """<robot name="indefinite">
+  <link name="base"/>
+  <link name="upper"><inertial><origin xyz="0.2 0 0"/><mass value="2"/>
+    <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.05" iyz="0" izz="0.05"/></inertial></link>
+  <link name="hand"><inertial><origin xyz="0 0 0.1"/><mass value="0.5"/>
+    <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="-0.01"/></inertial></link>
+  <joint name="shoulder" type="revolute"><parent link="base"/><child link="upper"/>
+    <axis xyz="0 0 1"/><limit lower="-3" upper="3" effort="10" velocity="2"/></joint>
+  <joint name="wrist" type="revolute"><parent link="upper"/><child link="hand"/>
+    <origin xyz="0.4 0 0"/><axis xyz="0 0 1"/><limit lower="-3" upper="3" effort="10" velocity="2"/></joint>
+</robot>"""
+
+
+def not_positive_definite_chains(arms):
+    ur5 = arms["ur5"]
+    massless_hand = ur5.link_inertias.copy()
+    massless_hand[5] = 0.0
+    return {
+        "massless last link": (Chain(ur5.screws, ur5.home, link_inertias=massless_hand), 5),
+        "point masses on the joint axes": (point_masses_on_axes(arms["panda"]), 6),
+        # 1e-9 m off the axis: M_77 = m d^2 = 1e-18 kg m^2, rounding in the sums of its terms
+        "nearly singular": (point_masses_on_axes(arms["panda"], 1e-9), 6),
+        "indefinite inertia (URDF)": (Chain.from_urdf(INDEFINITE_URDF, "hand"), 1),
+    }
+
+
+@pytest.mark.parametrize(
+    "case", ["massless last link", "point masses on the joint axes", "nearly singular", "indefinite inertia (URDF)"]
+)
+def test_forward_dynamics_raises_where_the_mass_matrix_is_not_positive_definite(arms, case):
+    chain, joint = not_positive_definite_chains(arms)[case]
+    n = chain.n_joints
+    rng = np.random.default_rng(11)
+    q, qd, tau = within_limits(chain, rng), rng.uniform(-1, 1, n), rng.uniform(-5, 5, n)
+    # one configuration: the fast path (float64) and the gufunc (a list of ints)
+    for args in [(q, qd, tau), (q[None], qd, tau), ([0] * n, [0] * n, [1] * n)]:
+        with pytest.raises(ValueError, match=NOT_PD + r".*fails at joint " + str(joint)):
+            chain.forward_dynamics(*args)
+    # a batch: the first configuration named
+    Q = np.array([within_limits(chain, rng) for _ in range(6)]).reshape(2, 3, n)
+    with pytest.raises(ValueError, match=NOT_PD + r" at batch index \(0, 0\), the first of 6 of 6 configurations"):
+        chain.forward_dynamics(Q, qd, tau)
+    # on_failure="nan": NaN, no exception, on both paths
+    assert np.isnan(chain.forward_dynamics(q, qd, tau, on_failure="nan")).all()
+    assert np.isnan(chain.forward_dynamics(Q, qd, tau, on_failure="nan")).all()
+    # the private gufunc says where (these chains have no base frame: their
+    # link inertias are the gufunc's, as 6x6 matrices G, order (v, w))
+    G = []
+    for m, c, (ixx, ixy, ixz, iyy, iyz, izz) in zip(chain.link_inertias[:, 0], chain.link_inertias[:, 1:4],
+                                                      chain.link_inertias[:, 4:]):
+        C = np.array([[0, -c[2], c[1]], [c[2], 0, -c[0]], [-c[1], c[0], 0]])
+        Ic = np.array([[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]])
+        G.append(np.block([[m * np.eye(3), -m * C], [m * C, Ic - m * C @ C]]))
+    qdd, joints = _core._forward_dynamics(chain.screws, np.asarray(chain.home), np.array(G), chain.gravity,
+                                           Q, qd, tau, np.zeros(6))
+    assert joints.dtype == np.int32 and joints.shape == (2, 3) and (joints == joint).all() and np.isnan(qdd).all()
+
+
+def test_from_urdf_keeps_accepting_impossible_inertias():
+    chain = Chain.from_urdf(INDEFINITE_URDF, "hand")
+    assert chain.link_inertias[1, 9] == -0.01  # izz as given
+    # inverse dynamics and the mass matrix are still computed (M is indefinite)
+    M = chain.mass_matrix([0.3, -0.2])
+    assert M[1, 1] == pytest.approx(-0.01) and np.linalg.eigvalsh(M)[0] < 0
+
+
+def point_mass_pendulum():
+    """Joint 1 about z, joint 2 about x, both through the origin; link 1
+    massless, link 2 a point mass at (0, 1, 0) at home: M(q) = diag(cos^2 q2, 1),
+    singular at q2 = +-pi/2 only (the mass on joint 1's axis)."""
+    inertias = np.zeros((2, 10))
+    inertias[1, :4] = [1.0, 0.0, 1.0, 0.0]
+    return Chain([[0, 0, 0, 0, 0, 1], [0, 0, 0, 1, 0, 0]], np.eye(4), link_inertias=inertias)
+
+
+def test_forward_dynamics_batch_names_the_first_bad_configuration_or_gives_nan_there(set_threads):
+    chain = point_mass_pendulum()
+    rng = np.random.default_rng(12)
+    for threads, size in [(1, (4, 5)), (2, (3, 700))]:  # 2100 configurations: split across two threads
+        set_threads(threads)
+        q = rng.uniform(-1, 1, size + (2,))
+        qd, tau = rng.uniform(-1, 1, (2,) + size + (2,))
+        bad = [(1, 2), (size[0] - 1, size[1] - 1), (2, 3)]  # in C order: (1, 2) first
+        for i in bad:
+            q[i + (1,)] = np.pi / 2 if i[1] % 2 else -np.pi / 2
+        index = r"\(1, 2\)"
+        with pytest.raises(ValueError, match=NOT_PD + r" at batch index " + index + r", the first of 3 of "
+                           + str(q[..., 0].size) + r" configurations.*fails at joint 0"):
+            chain.forward_dynamics(q, qd, tau)
+        qdd = chain.forward_dynamics(q, qd, tau, on_failure="nan")
+        flagged = np.isnan(qdd).any(axis=-1)
+        assert sorted(zip(*np.nonzero(flagged))) == sorted(bad)
+        assert np.isnan(qdd[flagged]).all()
+        ok = ~flagged
+        M = chain.mass_matrix(q[ok])
+        h = chain.inverse_dynamics(q[ok], qd[ok], np.zeros(2))
+        np.testing.assert_allclose(qdd[ok], np.linalg.solve(M, (tau[ok] - h)[..., None])[..., 0], rtol=1e-12, atol=1e-12)
+        # each element is the single call's
+        for i in [(0, 0), (1, 2), (2, 4)]:
+            one = chain.forward_dynamics(q[i], qd[i], tau[i], on_failure="nan")
+            np.testing.assert_array_equal(one, qdd[i])
+
+
+@pytest.fixture
+def set_threads():
+    """chasles.set_num_threads, the count restored after the test."""
+    import chasles
+
+    before = chasles.get_num_threads()
+    yield chasles.set_num_threads
+    chasles.set_num_threads(before)
+
+
+def test_forward_dynamics_on_failure_is_raise_or_nan(arms):
+    chain = arms["ur5"]
+    q = np.zeros(6)
+    for bad in ["ignore", None, 1, "NaN"]:
+        with pytest.raises(ValueError, match=r"Chain.forward_dynamics\(on_failure\): expected \"raise\" or \"nan\""):
+            chain.forward_dynamics(q, q, q, on_failure=bad)
+    np.testing.assert_array_equal(chain.forward_dynamics(q, q, q, on_failure="raise"), chain.forward_dynamics(q, q, q))
+
+
+@pytest.mark.parametrize("key", list(ARMS))
+def test_forward_dynamics_of_real_arms_is_the_cholesky_solve(arms, key):
+    """The real arms within their limits: no failure on 500 configurations,
+    and qdd = M^-1 (tau - h) of numpy's solve to rounding (times cond(M))."""
+    chain = arms[key]
+    n = chain.n_joints
+    rng = np.random.default_rng(13)
+    q = np.array([within_limits(chain, rng) for _ in range(500)])
+    qd, tau = rng.uniform(-2, 2, (2, 500, n))
+    qdd = chain.forward_dynamics(q, qd, tau)
+    M = chain.mass_matrix(q)
+    h = chain.inverse_dynamics(q, qd, np.zeros(n))
+    expected = np.linalg.solve(M, (tau - h)[..., None])[..., 0]
+    cond = np.linalg.cond(M)
+    err = np.abs(qdd - expected).max(axis=-1) / np.abs(expected).max(axis=-1)
+    assert np.all(err <= 1e-13 * cond), (err / cond).max()
+    np.testing.assert_array_equal(qdd[7], chain.forward_dynamics(q[7], qd[7], tau[7]))

@@ -354,7 +354,7 @@ S exercise_all() noexcept {
   const typename D6::JointVector qd6 = th6 * S(2), qdd6 = th6 * S(-3);
   sum += d6.inverse_dynamics(th6, qd6, qdd6).sum() + d6.inverse_dynamics(th6, qd6, qdd6, tip).sum();
   sum += d6.mass_matrix(th6).sum() + d6.gravity_torques(th6).sum() + d6.coriolis(th6, qd6).sum();
-  sum += d6.bias(th6, qd6).sum() + d6.forward_dynamics(th6, qd6, qdd6).sum() + d6.forward_dynamics(th6, qd6, qdd6, tip).sum();
+  sum += d6.bias(th6, qd6).sum() + d6.forward_dynamics(th6, qd6, qdd6).qdd.sum() + d6.forward_dynamics(th6, qd6, qdd6, tip).qdd.sum();
   sum += d6.kinetic_energy(th6, qd6) + d6.potential_energy(th6);
   d6.set_gravity(V3(gravity * S(2)));
   sum += S(RealOf<S>(d6.joints())) + d6.space_screws().sum() + d6.home().translation().sum() +
@@ -362,7 +362,7 @@ S exercise_all() noexcept {
   const DD dd(SD, h, ID, gravity);
   const typename DD::JointVector qdd = thd * S(2), qddd = thd * S(-3);
   sum += dd.inverse_dynamics(thd, qdd, qddd, tip).sum() + dd.mass_matrix(thd).sum() + dd.gravity_torques(thd).sum();
-  sum += dd.coriolis(thd, qdd).sum() + dd.bias(thd, qdd).sum() + dd.forward_dynamics(thd, qdd, qddd, tip).sum();
+  sum += dd.coriolis(thd, qdd).sum() + dd.bias(thd, qdd).sum() + dd.forward_dynamics(thd, qdd, qddd, tip).qdd.sum();
   sum += dd.kinetic_energy(thd, qdd) + dd.potential_energy(thd);
   // A Chain carrying its link inertias (moved by its base frame), and its Dynamics.
   const CD heavy(SD, h, types, lo, hi, CD::JointVector::Constant(7, S(3)), CD::JointVector::Constant(7, S(50)), g, h,
