@@ -234,8 +234,9 @@ class Dynamics {
     check_size(tau);
     const Pass pass(*this, q);
     JointVector qdd = tau - newton_euler(pass, qd, JointVector::Zero(joints()), true, tip_wrench);
-    MassMatrix L = composite(pass);
-    const Eigen::Index k = factorize(pass, L);
+    JointVector floor(joints());
+    MassMatrix L = composite(pass, &floor);
+    const Eigen::Index k = factorize(L, floor);
     if (k >= 0) {
       const Scalar nan(std::numeric_limits<RealOf<Scalar>>::quiet_NaN());
       return {JointVector::Constant(joints(), nan), DynamicsStatus::mass_matrix_not_positive_definite, k};
@@ -335,12 +336,19 @@ class Dynamics {
     return tau;
   }
 
-  MassMatrix composite(const Pass& pass) const noexcept {
+  /// M(q) by the composite inertias I^c_i = sum_{j >= i} G_j(q); with
+  /// `floor`, also each joint's pivot floor tolerance * s_i of
+  /// forward_dynamics, from the diagonal blocks of I^c_i (tr(G_f), tr(G_t)).
+  MassMatrix composite(const Pass& pass, JointVector* floor = nullptr) const noexcept {
     const Eigen::Index n = joints();
+    const Scalar tolerance(ThresholdsOf<Scalar>::mass_matrix_pivot_tolerance);
     MassMatrix Mq(n, n);
     Matrix6 Ic = Matrix6::Zero();
     for (Eigen::Index i = n - 1; i >= 0; --i) {
       Ic += pass.I[static_cast<std::size_t>(i)].matrix();
+      if (floor)
+        (*floor)(i) = tolerance * (pass.S.col(i).template head<3>().squaredNorm() * Ic.diagonal().template head<3>().sum() +
+                                   pass.S.col(i).template tail<3>().squaredNorm() * Ic.diagonal().template tail<3>().sum());
       const Vector6 F = Ic * pass.S.col(i);
       for (Eigen::Index j = 0; j <= i; ++j) {
         Mq(j, i) = pass.S.col(j).dot(F);
@@ -352,22 +360,11 @@ class Dynamics {
 
   /// The Cholesky factorization M = L L^T in place on the lower triangle of
   /// A (Eigen's unblocked LLT, the same operations), stopping at the first
-  /// pivot d_k <= tolerance * s_k (forward_dynamics' comment): returns that
-  /// k, or -1 when every pivot passes. The scales s_k come from the links'
-  /// inertias at q, summed from the tip (O(n)).
-  Eigen::Index factorize(const Pass& pass, MassMatrix& A) const noexcept {
+  /// pivot d_k <= floor(k) (forward_dynamics' comment; composite() computes
+  /// the floors): returns that k, or -1 when every pivot passes.
+  Eigen::Index factorize(MassMatrix& A, const JointVector& floor) const noexcept {
     using std::sqrt;
     const Eigen::Index n = joints();
-    const Scalar tolerance(ThresholdsOf<Scalar>::mass_matrix_pivot_tolerance);
-    JointVector floor(n);
-    Scalar force(0), torque(0);  // tr(G_f), tr(G_t) of the composite inertia
-    for (Eigen::Index i = n - 1; i >= 0; --i) {
-      const Inertia& G = pass.I[static_cast<std::size_t>(i)];
-      force += Scalar(3) * G.mass();
-      torque += G.inertia().trace() + Scalar(2) * G.mass() * G.com().squaredNorm();
-      floor(i) = tolerance * (pass.S.col(i).template head<3>().squaredNorm() * force +
-                              pass.S.col(i).template tail<3>().squaredNorm() * torque);
-    }
     for (Eigen::Index k = 0; k < n; ++k) {
       const Eigen::Index rest = n - k - 1;
       Eigen::Block<MassMatrix, Eigen::Dynamic, 1> A21(A, k + 1, k, rest, 1);
