@@ -346,9 +346,11 @@ class Dynamics {
     Matrix6 Ic = Matrix6::Zero();
     for (Eigen::Index i = n - 1; i >= 0; --i) {
       Ic += pass.I[static_cast<std::size_t>(i)].matrix();
-      if (floor)
-        (*floor)(i) = tolerance * (pass.S.col(i).template head<3>().squaredNorm() * Ic.diagonal().template head<3>().sum() +
-                                   pass.S.col(i).template tail<3>().squaredNorm() * Ic.diagonal().template tail<3>().sum());
+      if (floor) {
+        const Scalar force = Ic.diagonal().template head<3>().sum(), torque = Ic.diagonal().template tail<3>().sum();
+        (*floor)(i) = tolerance * (pass.S.col(i).template head<3>().squaredNorm() * force +
+                                   pass.S.col(i).template tail<3>().squaredNorm() * torque);
+      }
       const Vector6 F = Ic * pass.S.col(i);
       for (Eigen::Index j = 0; j <= i; ++j) {
         Mq(j, i) = pass.S.col(j).dot(F);
