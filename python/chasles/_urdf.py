@@ -370,6 +370,15 @@ def chain_from_urdf(source, tip_link, base_link=None):
         return _chain_from_tree(root, tip_link, base_link)
 
 
+def _check_origin(element, what):
+    """Refuses a non-finite number in element's <origin xyz rpy>."""
+    origin = element.find("origin")
+    if origin is not None:
+        for key in ("xyz", "rpy"):
+            if origin.get(key) is not None:
+                _floats(origin.get(key), 3, f"{what} <origin {key}>")
+
+
 def _check_numbers(element, what):
     """Refuses a non-finite or negative-mass number anywhere in a <link> or
     <joint>, on the chain or not (as the C++ loader does: a hostile number is
@@ -378,11 +387,7 @@ def _check_numbers(element, what):
         inertial = element.find("inertial")
         if inertial is None:
             return
-        origin = inertial.find("origin")
-        if origin is not None:
-            for key in ("xyz", "rpy"):
-                if origin.get(key) is not None:
-                    _floats(origin.get(key), 3, f"{what} <inertial> <origin {key}>")
+        _check_origin(inertial, f"{what} <inertial>")
         mass_el = inertial.find("mass")
         if mass_el is not None:
             mass = _attribute(mass_el, "value", f"{what} <mass>")
@@ -393,11 +398,7 @@ def _check_numbers(element, what):
             for key in ("ixx", "ixy", "ixz", "iyy", "iyz", "izz"):
                 _attribute(inertia, key, f"{what} <inertia>", 0.0)
         return
-    origin = element.find("origin")
-    if origin is not None:
-        for key in ("xyz", "rpy"):
-            if origin.get(key) is not None:
-                _floats(origin.get(key), 3, f"{what} <origin {key}>")
+    _check_origin(element, what)
     axis = element.find("axis")
     if axis is not None and axis.get("xyz") is not None:
         _floats(axis.get("xyz"), 3, f"{what} <axis xyz>")
