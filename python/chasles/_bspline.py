@@ -20,9 +20,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from chasles import _core
-
-_STATE = ("_start_time", "_spacing", "_control")
-
+from chasles._value import Value
 
 def _class_doc(group: str, name: str) -> str:
     so3 = group == "SO3"
@@ -98,10 +96,11 @@ _RAISES = """Raises:
     TypeError: times that are not real numbers."""
 
 
-class _BSpline:
+class _BSpline(Value):
     """What SO3BSpline and SE3BSpline share: the state, immutability, pickling
     and copying (the members the API lists are defined by each class)."""
 
+    _state = ("_start_time", "_spacing", "_control")
     _name = ""
     _new = ""  # the private C++ constructor (in chasles._core)
     __array_ufunc__ = None  # numpy defers to the spline (no ufunc on a spline)
@@ -121,23 +120,9 @@ class _BSpline:
         start, step, array = getattr(_core, self._new)(start_time, spacing, control)
         self._start_time, self._spacing, self._control = start, step, array
 
-    def __getattr__(self, name: str) -> Any:
-        # Only reached when an attribute is missing: the state of an object
-        # made by __new__ alone, whose __init__ has not run.
-        if name in _STATE:
-            raise TypeError(f"{type(self).__name__} object is not initialized: it was made by __new__ alone, "
-                            f"without __init__")
-        raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
-
     def __reduce__(self) -> tuple[Any, ...]:
         """Pickle support (every protocol) and copy: the constructor's arguments."""
         return (type(self), (self._start_time, self._spacing, self._control))
-
-    def __copy__(self) -> _BSpline:
-        return self.__reduce__()[0](*self.__reduce__()[1])
-
-    def __deepcopy__(self, memo: dict[int, Any]) -> _BSpline:
-        return self.__copy__()
 
 
 _CLASSES: dict[str, type] = {}  # "SO3" / "SE3": the class, once defined

@@ -25,6 +25,7 @@ from numpy.typing import ArrayLike
 
 from chasles import _core
 from chasles._random import _asarray
+from chasles._value import Value
 
 ENDS = ("natural", "chord")
 
@@ -80,15 +81,13 @@ def _keys(keys: ArrayLike, n: int, core: int, name: str, what: str) -> np.ndarra
     return k
 
 
-_STATE = ("_t", "_keys", "_coefficients", "_ends")
-
-
 def _spline_from(cls: type, times: np.ndarray, keys: np.ndarray, ends: str) -> Any:
     """A spline of class cls fitted through times and keys (unpickling, copies)."""
     return cls(times, keys, ends=ends)
 
 
-class _Spline:
+class _Spline(Value):
+    _state = ("_t", "_keys", "_coefficients", "_ends")
     _name = ""
     _what = ""
     _matrix = 0
@@ -112,23 +111,9 @@ class _Spline:
         self._t, self._keys, self._coefficients = t, k, coefficients
         self._ends = ends
 
-    def __getattr__(self, name: str) -> Any:
-        # Only reached when an attribute is missing: the state of an object
-        # made by __new__ alone, whose __init__ has not run.
-        if name in _STATE:
-            raise TypeError(f"{type(self).__name__} object is not initialized: it was made by __new__ alone, "
-                            f"without __init__")
-        raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
-
     def __reduce__(self) -> tuple[Any, ...]:
         """Pickle support (every protocol) and copy: the constructor's arguments."""
         return (_spline_from, (type(self), self._t, self._keys, self._ends))
-
-    def __copy__(self) -> Any:
-        return _spline_from(type(self), self._t, self._keys, self._ends)
-
-    def __deepcopy__(self, memo: dict[int, Any]) -> Any:
-        return self.__copy__()
 
     def __setstate__(self, state: Any) -> None:
         """Unpickling a state written by chasles 0.1.0 (whose pickles held the
