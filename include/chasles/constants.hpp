@@ -75,14 +75,17 @@ struct Thresholds;
 //   that w w^T and the products with it cannot overflow on the fast path.
 //   Past theta ~ 2 pi / eps the input's angle is not known to within a turn,
 //   so only the axis and the bounded translation carry information there.
-//   It is also the largest squared norm that from_quaternion normalizes
-//   directly.
+//
+// huge_norm2: the largest squared norm |q|^2 that from_quaternion
+//   normalizes directly: 1e8 below the largest finite value (as
+//   huge_theta2, for the same reason: the products with q's components
+//   cannot overflow). Above it q is first scaled by its largest component.
 //
 // tiny_norm2: the smallest squared norm that from_quaternion normalizes
-//   directly, 1 / huge_theta2: 1e8 times the reciprocal of the largest
+//   directly, 1 / huge_norm2: 1e8 times the reciprocal of the largest
 //   finite value, so 2 / |q|^2 is finite and |q|^2 is a sum of squares
-//   that have not underflowed to subnormals. Below it (or above
-//   huge_theta2) q is first scaled by its largest component.
+//   that have not underflowed to subnormals. Below it q is first scaled by
+//   its largest component. SO3::angle uses it for |u_v|^2 likewise.
 
 template <>
 struct Thresholds<float> {
@@ -93,7 +96,8 @@ struct Thresholds<float> {
   static constexpr float log_quaternion_norm2 = 1e6f;
   static constexpr float rotation_tolerance = 3.4526698e-04f;  // eps^(1/2)
   static constexpr float huge_theta2 = 3.4e30f;                // max / 1e8
-  static constexpr float tiny_norm2 = 1.0f / huge_theta2;
+  static constexpr float huge_norm2 = 3.4e30f;                 // max / 1e8
+  static constexpr float tiny_norm2 = 1.0f / huge_norm2;
   static constexpr float mean_step_tolerance = 3.4526698e-04f;  // eps^(1/2)
   static constexpr int mean_max_iterations = 20;
   static constexpr float euler_lock2 = 1.4210855e-14f;  // eps^2
@@ -119,7 +123,8 @@ struct Thresholds<double> {
   static constexpr double log_quaternion_norm2 = 1e6;
   static constexpr double rotation_tolerance = 1.4901161193847656e-08;  // eps^(1/2)
   static constexpr double huge_theta2 = 1.7e300;                        // max / 1e8
-  static constexpr double tiny_norm2 = 1.0 / huge_theta2;
+  static constexpr double huge_norm2 = 1.7e300;                         // max / 1e8
+  static constexpr double tiny_norm2 = 1.0 / huge_norm2;
   static constexpr double mean_step_tolerance = 1.4901161193847656e-08;  // eps^(1/2)
   static constexpr int mean_max_iterations = 20;
   static constexpr double euler_lock2 = 4.930380657631324e-32;  // eps^2
@@ -147,7 +152,8 @@ struct Thresholds<long double> {
   static constexpr long double log_quaternion_norm2 = 1e6L;
   static constexpr long double rotation_tolerance = 3.2927225399135962334e-10L;  // eps^(1/2)
   static constexpr long double huge_theta2 = 1.7e300L;  // as double: safe for both long double formats
-  static constexpr long double tiny_norm2 = 1.0L / huge_theta2;
+  static constexpr long double huge_norm2 = 1.7e300L;  // as double: safe for both long double formats
+  static constexpr long double tiny_norm2 = 1.0L / huge_norm2;
   static constexpr long double mean_step_tolerance = 3.2927225399135962334e-10L;  // eps^(1/2)
   static constexpr int mean_max_iterations = 20;
   static constexpr long double euler_lock2 = 1.1754943508222875079687e-38L;  // eps^2

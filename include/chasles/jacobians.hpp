@@ -21,6 +21,7 @@
 
 #include "chasles/constants.hpp"
 #include "chasles/detail/arguments.hpp"
+#include "chasles/detail/rodrigues.hpp"
 #include "chasles/detail/series.hpp"
 #include "chasles/se3.hpp"
 #include "chasles/so3.hpp"
@@ -38,13 +39,6 @@ template <typename Scalar>
 using Vector6Of = Eigen::Matrix<Scalar, 6, 1>;
 
 namespace detail {
-
-/// I + a [w] + b [w]^2, with [w]^2 = w w^T - theta^2 I.
-template <typename Scalar>
-inline Matrix3Of<Scalar> i_plus_hat_plus_hat2(const Vector3Of<Scalar>& w, const Scalar& a, const Scalar& b) noexcept {
-  // rodrigues() computes exactly I + a [u] + b [u]^2 (so3.hpp).
-  return rodrigues(w, a, b);
-}
 
 /// Q(v, w), the upper-right block of the SE(3) left Jacobian (Sola eq. 180,
 /// Barfoot eq. 7.86), with V = [v], W = [w]:
@@ -87,7 +81,7 @@ inline Matrix6Of<Scalar> upper_block_triangular(const Matrix3Of<Scalar>& A, cons
 template <typename Scalar>
 inline Matrix3Of<Scalar> so3_right_jacobian(const Vector3Of<Scalar>& w) noexcept {
   const auto k = detail::exp_coefficients(Scalar(w.squaredNorm()));
-  return detail::i_plus_hat_plus_hat2<Scalar>(w, Scalar(-k.b), k.c);
+  return detail::rodrigues<Scalar>(w, Scalar(-k.b), k.c);
 }
 
 /// Left Jacobian of SO(3): exp(w + dw) = exp(J_l(w) dw + o(dw)) exp(w).
@@ -95,7 +89,7 @@ inline Matrix3Of<Scalar> so3_right_jacobian(const Vector3Of<Scalar>& w) noexcept
 template <typename Scalar>
 inline Matrix3Of<Scalar> so3_left_jacobian(const Vector3Of<Scalar>& w) noexcept {
   const auto k = detail::exp_coefficients(Scalar(w.squaredNorm()));
-  return detail::i_plus_hat_plus_hat2<Scalar>(w, k.b, k.c);
+  return detail::rodrigues<Scalar>(w, k.b, k.c);
 }
 
 /// Inverse of the right Jacobian of SO(3):
@@ -104,7 +98,7 @@ inline Matrix3Of<Scalar> so3_left_jacobian(const Vector3Of<Scalar>& w) noexcept 
 template <typename Scalar>
 inline Matrix3Of<Scalar> so3_right_jacobian_inverse(const Vector3Of<Scalar>& w) noexcept {
   const Scalar d = detail::jacobian_inverse_coefficient(Scalar(w.squaredNorm()));
-  return detail::i_plus_hat_plus_hat2<Scalar>(w, Scalar(0.5), d);
+  return detail::rodrigues<Scalar>(w, Scalar(0.5), d);
 }
 
 /// Inverse of the left Jacobian of SO(3):
@@ -112,7 +106,7 @@ inline Matrix3Of<Scalar> so3_right_jacobian_inverse(const Vector3Of<Scalar>& w) 
 template <typename Scalar>
 inline Matrix3Of<Scalar> so3_left_jacobian_inverse(const Vector3Of<Scalar>& w) noexcept {
   const Scalar d = detail::jacobian_inverse_coefficient(Scalar(w.squaredNorm()));
-  return detail::i_plus_hat_plus_hat2<Scalar>(w, Scalar(-0.5), d);
+  return detail::rodrigues<Scalar>(w, Scalar(-0.5), d);
 }
 
 // ---- SE(3) Jacobians ------------------------------------------------------

@@ -79,11 +79,12 @@ class SE3 {
   /// the B [w] v term, of order theta |v|, that a w = 0 special case drops.
   ///
   /// Takes any 6-vector expression (an Eigen::Map of a caller's buffer, a
-  /// segment of a larger vector) and reads it in place: converting it to a
-  /// Vector6 first stores it in packets that the loads of w straddle, a
-  /// store-forwarding stall that doubled the cost in batch loops.
+  /// segment of a larger vector) and reads it in place.
   template <typename Derived>
   static SE3 exp(const Eigen::MatrixBase<Derived>& xi) noexcept {
+    // In place, not through a Vector6: that copy stores xi in packets that
+    // the loads of w straddle, a store-forwarding stall that doubled the
+    // cost in batch loops.
     static_assert(Derived::IsVectorAtCompileTime && Derived::SizeAtCompileTime == 6,
                   "SE3::exp: a twist is a 6-vector (v, w)");
     const Vector3 v = xi.template head<3>();

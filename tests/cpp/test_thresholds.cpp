@@ -143,17 +143,24 @@ TEST(Constants, FloatAsDocumented) {
   // "Chosen a factor 1e8 below the largest finite value".
   EXPECT_LE(chasles::Thresholds<float>::huge_theta2, std::numeric_limits<float>::max() / 1e8f);
   EXPECT_GE(chasles::Thresholds<float>::huge_theta2, std::numeric_limits<float>::max() / 1e9f);
+  EXPECT_LE(chasles::Thresholds<float>::huge_norm2, std::numeric_limits<float>::max() / 1e8f);
+  EXPECT_GE(chasles::Thresholds<float>::huge_norm2, std::numeric_limits<float>::max() / 1e9f);
+  EXPECT_EQ(chasles::Thresholds<float>::tiny_norm2, 1 / chasles::Thresholds<float>::huge_norm2);
 }
 TEST(Constants, DoubleAsDocumented) {
   constants_as_documented<double>();
   log_quaternion_norm2_as_documented<double>();
   EXPECT_LE(chasles::Thresholds<double>::huge_theta2, std::numeric_limits<double>::max() / 1e8);
   EXPECT_GE(chasles::Thresholds<double>::huge_theta2, std::numeric_limits<double>::max() / 1e9);
+  EXPECT_LE(chasles::Thresholds<double>::huge_norm2, std::numeric_limits<double>::max() / 1e8);
+  EXPECT_GE(chasles::Thresholds<double>::huge_norm2, std::numeric_limits<double>::max() / 1e9);
+  EXPECT_EQ(chasles::Thresholds<double>::tiny_norm2, 1 / chasles::Thresholds<double>::huge_norm2);
 }
 TEST(Constants, LongDoubleAsDocumented) {
   constants_as_documented<long double>();
   // "as double: safe for both long double formats" (long double may be double).
   EXPECT_LE(chasles::Thresholds<long double>::huge_theta2, (long double)(std::numeric_limits<double>::max() / 1e8));
+  EXPECT_LE(chasles::Thresholds<long double>::huge_norm2, (long double)(std::numeric_limits<double>::max() / 1e8));
 }
 TEST(Constants, AutodiffUsesItsRealType) {
   using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, 3, 1>>;

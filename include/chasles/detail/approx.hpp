@@ -76,9 +76,10 @@ inline Eigen::Matrix<Scalar, Rows, Cols> clamped(const Eigen::Matrix<Scalar, Row
   return out;
 }
 
-/// (a, b) as one 6-vector, element by element. (Eigen's comma initializer
-/// of a float 6-vector from two 3-vectors trips GCC 12's -Warray-bounds
-/// with SSE packets, a false positive that -Werror users would inherit.)
+/// (a, b) as one 6-vector, element by element.
+// Not Eigen's comma initializer: for a float 6-vector from two 3-vectors it
+// trips GCC 12's -Warray-bounds with SSE packets, a false positive that
+// -Werror users would inherit.
 template <typename Scalar, typename DerivedA, typename DerivedB>
 inline Eigen::Matrix<Scalar, 6, 1> stack(const Eigen::MatrixBase<DerivedA>& a,
                                          const Eigen::MatrixBase<DerivedB>& b) noexcept {

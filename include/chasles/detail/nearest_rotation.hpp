@@ -11,7 +11,8 @@
 namespace chasles {
 namespace detail {
 
-/// Four scalars (w, x, y, z), passed by value: kept in registers.
+/// Four scalars (w, x, y, z).
+// Passed by value: kept in registers.
 template <typename Scalar>
 struct Quaternion4 {
   Scalar w, x, y, z;
@@ -30,9 +31,9 @@ struct Quaternion4 {
 ///   K_wx = M21 - M12 = 4 w x,  K_xy = M01 + M10 = 4 x y, ...
 /// Its diagonal sums to 4 for every M (Horn, Closed-form solution of
 /// absolute orientation using unit quaternions, JOSA A 4(4), 1987).
-/// Held as ten named scalars, not an array: an array indexed at run time
-/// lives in memory, and vector loads of entries just stored one by one
-/// stall on store forwarding.
+// Held as ten named scalars, not an array: an array indexed at run time
+// lives in memory, and vector loads of entries just stored one by one
+// stall on store forwarding.
 template <typename Scalar>
 struct HornMatrix {
   Scalar ww, xx, yy, zz, wx, wy, wz, xy, xz, yz;
@@ -61,9 +62,9 @@ struct HornMatrix {
   }
 
   /// The column of the largest diagonal entry (Shepperd's), as (w, x, y, z),
-  /// and that entry. Picked by 0/1 weights rather than a branch: which
-  /// column wins depends on the data, and a mispredicted branch costs more
-  /// than the 20 multiplies.
+  /// and that entry.
+  // Picked by 0/1 weights rather than a branch: which column wins depends
+  // on the data, and a mispredicted branch costs more than the 20 multiplies.
   Quaternion4<Scalar> largest_column(Scalar& diagonal) const noexcept {
     const int k = largest_diagonal();
     const Scalar m0(k == 0), m1(k == 1), m2(k == 2), m3(k == 3);
@@ -148,7 +149,7 @@ EIGEN_DONT_INLINE Quaternion4<Scalar> clamped_shepperd_quaternion(const Eigen::M
 }
 
 /// The same for M clamped to [-2, 2] (a rotation's entries lie in [-1, 1]):
-/// finite for every finite M. Kept out of line: the cold path of so3_log.
+/// finite for every finite M. The cold path of so3_log (kept out of line).
 template <typename Scalar>
 EIGEN_DONT_INLINE Quaternion4<Scalar> clamped_quaternion_power_step(const Eigen::Matrix<Scalar, 3, 3>& M) noexcept {
   return quaternion_power_step(HornMatrix<Scalar>(clamped(M, Scalar(2))));
