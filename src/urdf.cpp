@@ -65,13 +65,13 @@ using Vector3 = Eigen::Vector3d;
 /// The bounds on a description (the contract of urdf.hpp): its size, and
 /// how deep its elements nest (a URDF nests about 6 deep:
 /// robot > link > visual > geometry > mesh).
-constexpr std::size_t kMaxBytes = std::size_t{64} << 20;
-constexpr int kMaxDepth = 64;
+constexpr std::size_t max_bytes = std::size_t{64} << 20;
+constexpr int max_depth = 64;
 /// And the attributes of one element (a URDF element has at most 10 or
 /// so): urdfdom's XML parser (TinyXML) checks each new attribute against
 /// the element's others, quadratic time: 20,000 attributes (200 kB) took
 /// 1.7 s of CPU, the 270,000 of a 2.7 MB element would take minutes.
-constexpr int kMaxAttributes = 256;
+constexpr int max_attributes = 256;
 
 [[noreturn]] void fail(const std::string& message) { throw std::runtime_error("chain_from_urdf: " + message); }
 
@@ -91,11 +91,11 @@ std::string shortest(double x) {
 /// it starts with '<' (after an optional UTF-8 byte-order mark and blanks),
 /// otherwise the regular file it names, read with the bound.
 std::string read_source(const std::string& source) {
-  static constexpr char kBom[] = "\xEF\xBB\xBF";
-  const std::size_t start = source.compare(0, 3, kBom) == 0 ? 3 : 0;
+  static constexpr char utf8_bom[] = "\xEF\xBB\xBF";
+  const std::size_t start = source.compare(0, 3, utf8_bom) == 0 ? 3 : 0;
   const std::size_t first = source.find_first_not_of(" \t\r\n\f\v", start);
   if (first != std::string::npos && source[first] == '<') {
-    if (source.size() - start > kMaxBytes)
+    if (source.size() - start > max_bytes)
       fail("the description is larger than 64 MiB, the bound on a URDF description");
     return source.substr(start);
   }
@@ -105,22 +105,22 @@ std::string read_source(const std::string& source) {
   if (S_ISDIR(st.st_mode)) fail(path + " is a directory, not a URDF file");
   if (!S_ISREG(st.st_mode)) fail(path + " is not a regular file");
   const std::string too_large = path + " is larger than 64 MiB, the bound on a URDF description";
-  if (static_cast<unsigned long long>(st.st_size) > kMaxBytes) fail(too_large);
+  if (static_cast<unsigned long long>(st.st_size) > max_bytes) fail(too_large);
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(source.c_str(), "rb"), &std::fclose);
   if (!file) fail("cannot open the file " + path);
   // Never more than the bound + 1 byte, whatever the file grew to since stat.
   std::string text(static_cast<std::size_t>(st.st_size) + 1, '\0');
   std::size_t size = 0;
   for (;;) {
-    if (size == text.size()) text.resize(std::min(kMaxBytes + 1, 2 * text.size()));
+    if (size == text.size()) text.resize(std::min(max_bytes + 1, 2 * text.size()));
     const std::size_t got = std::fread(&text[size], 1, text.size() - size, file.get());
     size += got;
-    if (size > kMaxBytes) fail(too_large);
+    if (size > max_bytes) fail(too_large);
     if (got == 0) break;
   }
   if (std::ferror(file.get())) fail("cannot open the file " + path);
   text.resize(size);
-  if (text.compare(0, 3, kBom) == 0) text.erase(0, 3);
+  if (text.compare(0, 3, utf8_bom) == 0) text.erase(0, 3);
   return text;
 }
 
@@ -228,7 +228,7 @@ struct Stops {
       attribute[static_cast<unsigned char>(c)] = true;
   }
 };
-constexpr Stops kStops{};
+constexpr Stops stop_tables{};
 
 /// What an XML parser makes of an attribute value: the five named entities
 /// and character references decoded (anything else is kept as written: it
@@ -279,7 +279,7 @@ enum class Role { none, robot, link, inertial, link_origin, mass, inertia, joint
                   child, other };
 
 /// One linear pass over the text (see the top of this file). Refuses a
-/// document nested more than kMaxDepth deep; reads the elements of Role.
+/// document nested more than max_depth deep; reads the elements of Role.
 /// Its view of the structure is the XML parser's on every well-formed
 /// document; on others the parser refuses the document, and the depth bound
 /// holds whatever the scan makes of it: a comment or CDATA section ends at
@@ -296,8 +296,8 @@ Scan scan(const std::string& text) {
   const char* const end = begin + text.size();
   const char* p = begin;
   int depth = 0;
-  // The role of each open element (only the first kMaxDepth are ever open).
-  Role roles[kMaxDepth + 1] = {};
+  // The role of each open element (only the first max_depth are ever open).
+  Role roles[max_depth + 1] = {};
   bool seen_robot = false;
   auto find = [&](const char* from, const char* what) -> const char* {  // past `what`, or end
     const std::size_t n = std::strlen(what);
@@ -334,10 +334,10 @@ Scan scan(const std::string& text) {
     // A start tag: its name, attributes, and '>' or "/>".
     ++p;
     const char* name_begin = p;
-    while (p < end && !kStops.name[static_cast<unsigned char>(*p)]) ++p;
+    while (p < end && !stop_tables.name[static_cast<unsigned char>(*p)]) ++p;
     const std::string_view name(name_begin, static_cast<std::size_t>(p - name_begin));
-    if (depth + 1 > kMaxDepth)
-      fail("the XML nests elements more than " + std::to_string(kMaxDepth) +
+    if (depth + 1 > max_depth)
+      fail("the XML nests elements more than " + std::to_string(max_depth) +
            " deep, the bound on a URDF description");
     const Role up = depth > 0 ? roles[depth - 1] : Role::none;
     Role role = Role::other;
@@ -398,14 +398,14 @@ Scan scan(const std::string& text) {
         continue;
       }
       const char* attribute_begin = p;
-      while (p < end && !kStops.attribute[static_cast<unsigned char>(*p)]) ++p;
+      while (p < end && !stop_tables.attribute[static_cast<unsigned char>(*p)]) ++p;
       const std::string_view attribute(attribute_begin, static_cast<std::size_t>(p - attribute_begin));
       if (attribute.empty()) {  // a stray '/' or '='
         ++p;
         continue;
       }
-      if (++attributes > kMaxAttributes)
-        fail("an element has more than " + std::to_string(kMaxAttributes) +
+      if (++attributes > max_attributes)
+        fail("an element has more than " + std::to_string(max_attributes) +
              " attributes, the bound on a URDF description");
       while (p < end && is_space(*p)) ++p;
       if (p == end || *p != '=') continue;

@@ -29,8 +29,8 @@ class Twist {
   using Vector6 = Eigen::Matrix<Scalar, 6, 1>;
   using Matrix4 = Eigen::Matrix<Scalar, 4, 4>;
   using Matrix6 = Eigen::Matrix<Scalar, 6, 6>;
-  static constexpr int LINEAR = 0;   ///< offset of v in vector()
-  static constexpr int ANGULAR = 3;  ///< offset of w in vector()
+  static constexpr int linear_offset = 0;   ///< where v starts in vector()
+  static constexpr int angular_offset = 3;  ///< where w starts in vector()
 
   /// The zero twist.
   Twist() noexcept : xi_(Vector6::Zero()) {}
@@ -41,10 +41,10 @@ class Twist {
 
   const Vector6& vector() const noexcept { return xi_; }
   Vector6& vector() noexcept { return xi_; }
-  auto linear() const noexcept { return xi_.template segment<3>(LINEAR); }
-  auto linear() noexcept { return xi_.template segment<3>(LINEAR); }
-  auto angular() const noexcept { return xi_.template segment<3>(ANGULAR); }
-  auto angular() noexcept { return xi_.template segment<3>(ANGULAR); }
+  auto linear() const noexcept { return xi_.template segment<3>(linear_offset); }
+  auto linear() noexcept { return xi_.template segment<3>(linear_offset); }
+  auto angular() const noexcept { return xi_.template segment<3>(angular_offset); }
+  auto angular() noexcept { return xi_.template segment<3>(angular_offset); }
 
   /// (w, v), the Modern Robotics order.
   Vector6 to_modern_robotics() const noexcept {

@@ -22,8 +22,8 @@ class Wrench {
   using Scalar = Scalar_;
   using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
   using Vector6 = Eigen::Matrix<Scalar, 6, 1>;
-  static constexpr int FORCE = 0;   ///< offset of f in vector()
-  static constexpr int TORQUE = 3;  ///< offset of tau in vector()
+  static constexpr int force_offset = 0;   ///< where f starts in vector()
+  static constexpr int torque_offset = 3;  ///< where tau starts in vector()
 
   /// The zero wrench.
   Wrench() noexcept : F_(Vector6::Zero()) {}
@@ -34,10 +34,10 @@ class Wrench {
 
   const Vector6& vector() const noexcept { return F_; }
   Vector6& vector() noexcept { return F_; }
-  auto force() const noexcept { return F_.template segment<3>(FORCE); }
-  auto force() noexcept { return F_.template segment<3>(FORCE); }
-  auto torque() const noexcept { return F_.template segment<3>(TORQUE); }
-  auto torque() noexcept { return F_.template segment<3>(TORQUE); }
+  auto force() const noexcept { return F_.template segment<3>(force_offset); }
+  auto force() noexcept { return F_.template segment<3>(force_offset); }
+  auto torque() const noexcept { return F_.template segment<3>(torque_offset); }
+  auto torque() noexcept { return F_.template segment<3>(torque_offset); }
 
   /// The power V . F = v.f + w.tau of a twist on this wrench.
   Scalar power(const Twist<Scalar>& V) const noexcept { return V.vector().dot(F_); }

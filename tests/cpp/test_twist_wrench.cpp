@@ -547,8 +547,8 @@ TYPED_TEST(TwistWrench, HatVeeOfSe3) {
 
 TYPED_TEST(TwistWrench, AccessorsAndArithmetic) {
   using S = TypeParam;
-  static_assert(Twist<S>::LINEAR == 0 && Twist<S>::ANGULAR == 3);
-  static_assert(Wrench<S>::FORCE == 0 && Wrench<S>::TORQUE == 3);
+  static_assert(Twist<S>::linear_offset == 0 && Twist<S>::angular_offset == 3);
+  static_assert(Wrench<S>::force_offset == 0 && Wrench<S>::torque_offset == 3);
   Twist<S> a(V3<S>(1, 2, 3), V3<S>(4, 5, 6));
   const Twist<S> b(V6<S>::Constant(S(0.5)));
   EXPECT_TRUE(all_equal(a.linear().eval(), V3<S>(1, 2, 3)));

@@ -22,7 +22,7 @@
 
 namespace {
 
-constexpr int kMaxJoints = 32;
+constexpr int max_joints = 32;
 
 void number(double x) {
   if (std::isinf(x))
@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: %s robot.urdf tip_link [base_link]\n", argv[0]);
     return 2;
   }
-  const auto r = chasles::chain_from_urdf<double, kMaxJoints>(argv[1], argv[2], argc == 4 ? argv[3] : "");
+  const auto r = chasles::chain_from_urdf<double, max_joints>(argv[1], argv[2], argc == 4 ? argv[3] : "");
   if (!r) {
     std::fprintf(stderr, "%s\n", r.error.c_str());
     return 1;
