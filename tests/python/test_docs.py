@@ -149,6 +149,7 @@ def test_the_stages_of_tests_run_sh_are_the_documented_ones():
     for stage in ("cpp", "hardening", "python"):
         assert f"`bash tests/run.sh {stage}`" in contributing, stage
     ci = (ROOT / ".ci" / "run").read_text(encoding="utf-8")
-    assert "exec bash tests/run.sh\n" in ci and "bash tests/run.sh\n" in (ROOT / "README.md").read_text(encoding="utf-8")
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    assert "exec bash tests/run.sh\n" in ci and "bash tests/run.sh\n" in readme
     pytest_call = run_sh[run_sh.index('(cd "$VENV"') : run_sh.index("-m pytest")]
     assert "CHASLES_REQUIRE_URDF_DUMP=1" in pytest_call and "CHASLES_URDF_DUMP=" in pytest_call
