@@ -12,28 +12,14 @@ Two layers over the same C++ kernels:
 The array functions are numpy generalized ufuncs over the C++ kernels, each
 with a core signature, ``so3_exp`` ``(3)->(3,3)``, ``se3_compose``
 ``(4,4),(4,4)->(4,4)``, ``se3_act`` ``(4,4),(3)->(3)``, so numpy's own rules
-apply, as for ``np.matmul``:
-
-- the leading (batch) axes of the operands broadcast together; the trailing
-  (core) axes have the sizes of the signature, and a wrong one is a
-  ValueError naming the function and the sizes;
-- dtypes: each function has a float32 and a float64 kernel; numpy picks the
-  first to which every operand casts safely, so float32 (and float16, bool,
-  int8, int16, uint8, uint16) operands run in float32, float64 and wider
-  integers in float64, a mix of float32 and float64 in float64; Python
-  floats and ints do not change the dtype (NEP 50); complex, object, string
-  and long double arrays are a TypeError (``casting=`` and ``dtype=``
-  choose otherwise);
-- ``out=`` writes into the caller's array and returns it, ``axes=`` picks
-  the core axes, ``where=`` is not supported by generalized ufuncs;
-- the GIL is released during the loop, which ``set_num_threads(n)``
-  splits across n threads for a large batch (bit-identical results), and
-  arrays of other libraries that implement ``__array_ufunc__`` dispatch: a
-  dask array in gives a dask array out, computed lazily chunk by chunk (its
-  core axes in one chunk);
-- matrices are taken as given, like the C++ unchecked constructors (the
-  bottom row of a 4x4 pose is not read), and a NaN gives NaN in its own
-  element only.
+apply, as for ``np.matmul``: the batch axes broadcast, numpy picks the
+float32 or the float64 loop by safe casting, ``out=`` and ``axes=`` work,
+and the GIL is released (``set_num_threads(n)`` splits a large batch across
+threads, with bit-identical results). docs/python.md states these rules in
+full. A dask array passed directly is a ValueError (dask infers the result
+dtype by calling the function on arrays of size 1, which a fixed core size
+refuses): ``dask.array.apply_gufunc(f, f.signature, x, output_dtypes=...)``
+maps an array function over the chunks, lazily.
 
 ``so3_from_quat`` and ``so3_as_quat`` take ``scalar_first``, which a ufunc
 cannot: they are Python functions that pick one of two ufuncs and pass the

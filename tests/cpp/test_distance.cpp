@@ -15,6 +15,7 @@
 #include <chasles/so3.hpp>
 
 #include "support/reference.hpp"
+#include "support/scalar_types.hpp"
 
 namespace {
 
@@ -24,13 +25,8 @@ using chasles_ref::ld;
 
 template <typename T>
 class Distance : public ::testing::Test {};
-struct ScalarName {
-  template <typename T>
-  static std::string GetName(int) {
-    return sizeof(T) == sizeof(float) ? "float" : "double";
-  }
-};
-using ScalarTypes = ::testing::Types<float, double>;
+using chasles_test::ScalarName;
+using chasles_test::ScalarTypes;
 TYPED_TEST_SUITE(Distance, ScalarTypes, ScalarName);
 
 /// A unit axis, fixed per index: not a coordinate axis, so that every entry

@@ -37,6 +37,7 @@
 
 #include "support/arms.hpp"
 #include "support/group_traits.hpp"
+#include "support/scalar_types.hpp"
 
 namespace {
 
@@ -102,13 +103,6 @@ typename Dyn<S>::JointVector random_joints(std::mt19937& rng, int n, double scal
 
 template <typename S>
 class DynamicsTest : public ::testing::Test {};
-struct ScalarName {
-  template <typename S>
-  static std::string GetName(int) {
-    return std::is_same<S, float>::value ? "float" : "double";
-  }
-};
-using ScalarTypes = ::testing::Types<float, double>;
 TYPED_TEST_SUITE(DynamicsTest, ScalarTypes, ScalarName);
 
 // Rounding: every result is a sum over the n links of products of a few

@@ -37,6 +37,7 @@
 
 #include "support/group_traits.hpp"
 #include "support/samples.hpp"
+#include "support/scalar_types.hpp"
 
 namespace {
 
@@ -698,13 +699,6 @@ TYPED_TEST(GroupLaws, IsApproxTrueAndFalse) {
 
 template <typename S>
 class SO3Quaternion : public ::testing::Test {};
-struct ScalarName {
-  template <typename S>
-  static std::string GetName(int) {
-    return std::is_same<S, float>::value ? "float" : "double";
-  }
-};
-using ScalarTypes = ::testing::Types<float, double>;
 TYPED_TEST_SUITE(SO3Quaternion, ScalarTypes, ScalarName);
 
 /// q and -q are the same rotation: the distance to the nearer of the two.

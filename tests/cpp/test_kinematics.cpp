@@ -31,6 +31,7 @@
 
 #include "support/group_traits.hpp"
 #include "support/reference.hpp"
+#include "support/scalar_types.hpp"
 
 namespace {
 
@@ -213,13 +214,6 @@ void check_chain(Arm arm) {
 template <typename S>
 class Kinematics : public ::testing::Test {};
 
-struct ScalarName {
-  template <typename S>
-  static std::string GetName(int) {
-    return std::is_same<S, float>::value ? "float" : "double";
-  }
-};
-using ScalarTypes = ::testing::Types<float, double>;
 TYPED_TEST_SUITE(Kinematics, ScalarTypes, ScalarName);
 
 // ---- screws of joints -----------------------------------------------------------

@@ -24,6 +24,8 @@
 #include <chasles/se3.hpp>
 #include <chasles/so3.hpp>
 
+#include "support/scalar_types.hpp"
+
 namespace {
 
 using chasles::SE3;
@@ -31,13 +33,8 @@ using chasles::SO3;
 
 template <typename T>
 class Mean : public ::testing::Test {};
-struct ScalarName {
-  template <typename S>
-  static std::string GetName(int) {
-    return std::is_same<S, float>::value ? "float" : "double";
-  }
-};
-using ScalarTypes = ::testing::Types<float, double>;
+using chasles_test::ScalarName;
+using chasles_test::ScalarTypes;
 TYPED_TEST_SUITE(Mean, ScalarTypes, ScalarName);
 
 /// N rotations exp(spread * z) about a centre, z standard normal per axis.

@@ -18,6 +18,8 @@
 #include <chasles/se3.hpp>
 #include <chasles/so3.hpp>
 
+#include "support/scalar_types.hpp"
+
 namespace {
 
 using chasles::SE3;
@@ -25,13 +27,8 @@ using chasles::SO3;
 
 template <typename T>
 class Random : public ::testing::Test {};
-struct ScalarName {
-  template <typename S>
-  static std::string GetName(int) {
-    return std::is_same<S, float>::value ? "float" : "double";
-  }
-};
-using ScalarTypes = ::testing::Types<float, double>;
+using chasles_test::ScalarName;
+using chasles_test::ScalarTypes;
 TYPED_TEST_SUITE(Random, ScalarTypes, ScalarName);
 
 constexpr double kPi = 3.14159265358979323846;

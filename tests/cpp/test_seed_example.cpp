@@ -23,6 +23,7 @@
 
 #include "support/group_traits.hpp"
 #include "support/samples.hpp"
+#include "support/scalar_types.hpp"
 
 namespace {
 
@@ -63,13 +64,6 @@ inline M3L rodrigues(const V3L& w, LD theta) {
 
 template <typename S>
 class SeedExample : public ::testing::Test {};
-struct ScalarName {
-  template <typename S>
-  static std::string GetName(int) {
-    return std::is_same<S, float>::value ? "float" : "double";
-  }
-};
-using ScalarTypes = ::testing::Types<float, double>;
 TYPED_TEST_SUITE(SeedExample, ScalarTypes, ScalarName);
 
 /// The example's parameters: several arm lengths l1 and angles theta,

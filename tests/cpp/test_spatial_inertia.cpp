@@ -26,6 +26,7 @@
 #include <chasles/spatial_inertia.hpp>
 
 #include "support/group_traits.hpp"
+#include "support/scalar_types.hpp"
 
 namespace {
 
@@ -115,13 +116,6 @@ M6L adjoint_ld(const M3L& R, const V3L& p) {
 
 template <typename S>
 class SpatialInertiaTest : public ::testing::Test {};
-struct ScalarName {
-  template <typename S>
-  static std::string GetName(int) {
-    return std::is_same<S, float>::value ? "float" : "double";
-  }
-};
-using ScalarTypes = ::testing::Types<float, double>;
 TYPED_TEST_SUITE(SpatialInertiaTest, ScalarTypes, ScalarName);
 
 TYPED_TEST(SpatialInertiaTest, MomentumAndEnergyOfAPointCloud) {

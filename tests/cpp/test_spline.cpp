@@ -21,6 +21,8 @@
 
 #include <chasles/spline.hpp>
 
+#include "support/scalar_types.hpp"
+
 namespace {
 
 using chasles::fit_spline;
@@ -36,13 +38,8 @@ using chasles::SplineWork;
 
 template <typename T>
 class SplineTest : public ::testing::Test {};
-struct ScalarName {
-  template <typename S>
-  static std::string GetName(int) {
-    return std::is_same<S, float>::value ? "float" : "double";
-  }
-};
-using ScalarTypes = ::testing::Types<float, double>;
+using chasles_test::ScalarName;
+using chasles_test::ScalarTypes;
 TYPED_TEST_SUITE(SplineTest, ScalarTypes, ScalarName);
 
 /// A fitted spline that owns its storage (the test's convenience; the library only views).

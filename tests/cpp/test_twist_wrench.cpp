@@ -26,6 +26,7 @@
 
 #include "support/group_traits.hpp"
 #include "support/samples.hpp"
+#include "support/scalar_types.hpp"
 
 namespace {
 
@@ -101,13 +102,6 @@ class TwistWrench : public ::testing::Test {
   Twist<S> twist(double v_scale = 1, double w_scale = 1) { return Twist<S>(gauss3(v_scale), gauss3(w_scale)); }
 };
 
-struct ScalarName {
-  template <typename S>
-  static std::string GetName(int) {
-    return std::is_same<S, float>::value ? "float" : "double";
-  }
-};
-using ScalarTypes = ::testing::Types<float, double>;
 TYPED_TEST_SUITE(TwistWrench, ScalarTypes, ScalarName);
 
 // ---- Chasles' theorem and screws of twists ------------------------------------------

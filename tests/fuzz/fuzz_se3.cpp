@@ -202,8 +202,8 @@ void fuzz(Bytes& in) {
              "SE3 exp: rotation defect (eps)", ty, input);
     const LD nv = norm(v), nw = norm(w);
     const Vec3<LD> pl = E.translation().template cast<LD>();
-    // The translation's accuracy is promised for angles up to pi (README,
-    // "Accuracy"); past it, C w . v (of size |v| / |w|) may underflow while
+    // The translation's accuracy is promised for angles up to pi (docs/numerics.md,
+    // "Measured errors"); past it, C w . v (of size |v| / |w|) may underflow while
     // |v| does not.
     if (nv > 0 && nw <= kPi) {
       check_le((norm(E.translation()) - nv - subnormal_allowance<T>()) / (eps<T>() * nv), kExp,

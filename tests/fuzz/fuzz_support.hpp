@@ -60,7 +60,7 @@ const char* type_name() {
   return sizeof(T) == sizeof(float) ? "float" : "double";
 }
 
-/// The SO3 exp contract (README, "Accuracy"): every entry within 1e-15 of
+/// The SO3 exp contract (docs/numerics.md, "Measured errors"): every entry within 1e-15 of
 /// the exact rotation in double, the same number of ulps in float.
 template <typename T>
 constexpr LD exp_contract() {

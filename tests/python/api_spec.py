@@ -1676,6 +1676,27 @@ class SE3Or(Arg):
 SPEC = _build_spec()
 
 
+def array_arguments() -> list[tuple]:
+    """Every fixed-shape array argument of SPEC's callables (``Array``, and
+    ``TwistOr``, which takes a Twist too), each once: ``(label, call, valid,
+    shape text, finite)``, where ``call(x)`` calls the callable with x in
+    that argument and valid values in the others. test_bad_input.py puts
+    each through its bad inputs. (``GroupMatrix`` is left out: a matrix that
+    must be a rotation or a rigid motion, of which integer forms are not.)"""
+    found: dict[str, tuple] = {}
+    for entry in SPEC.values():
+        for signature in entry.signatures:
+            for k, arg in enumerate(signature):
+                if type(arg) not in (Array, TwistOr) or arg.label in found:
+                    continue
+
+                def call(x, entry=entry, signature=signature, k=k):
+                    return entry.call(*(x if j == k else a.good() for j, a in enumerate(signature)))
+
+                found[arg.label] = (arg.label, call, np.asarray(arg.good()), shape_text(arg.shape), arg.finite)
+    return list(found.values())
+
+
 def is_array_function(entry) -> bool:
     """An array function (so3_*, se3_*): its arguments are operands, flags and
     an Euler sequence."""

@@ -1,8 +1,9 @@
 """pytest configuration of the chasles Python tests.
 
-The hypothesis strategies live in strategies.py, beside this file; with
-``--import-mode=importlib`` the test directory is not on sys.path, so it is
-added here and test modules do ``from strategies import ...``.
+The hypothesis strategies live in strategies.py and the reference formulas
+(hat3, hat6) in helpers.py, beside this file; with ``--import-mode=importlib``
+the test directory is not on sys.path, so it is added here and test modules
+do ``from strategies import ...``, ``from helpers import ...``.
 
 Hypothesis profiles (select with HYPOTHESIS_PROFILE): "chasles", the default (100
 examples, derandomized so that every run of the suite, in CI too, tries the same

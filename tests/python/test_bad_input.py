@@ -4,7 +4,8 @@ naming the expected and the received shape), non-real dtypes and None
 (TypeError naming float64), NaN and infinities where it builds an object
 (ValueError), and matrices that are not rotations (ValueError saying by how
 much and pointing at from_matrix_projected). Never a crash, never a C++
-exception text."""
+exception text. The array arguments come from the specification of every
+public callable (api_spec.py), so that a new one is checked here too."""
 
 from __future__ import annotations
 
@@ -14,6 +15,7 @@ import math
 import pickle
 import re
 
+import api_spec
 import chasles
 import numpy as np
 import pytest
@@ -27,113 +29,29 @@ F0 = Wrench(f=[0.0, 0.0, 1.0])
 GDOT = G0.as_matrix() @ XI0.hat()
 
 
-def v3():
-    return np.array([0.1, 0.2, 0.3])
-
-
-# (name, call taking the argument under test, a valid value, the expected
-# shape text, whether NaN/inf is refused).
+# Every fixed-shape array argument of the specification (api_spec.py): (name,
+# call taking the argument under test, a valid value, the expected shape text,
+# whether NaN/inf is refused). The valid value is the specification's, but
+# where the tests below need one whose integer and boolean forms are valid
+# too (an identity, the zero twist matrix, a motion's derivative).
+VALID = {
+    "SO3.from_matrix(matrix)": np.eye(3),
+    "SO3.from_matrix_projected(matrix)": np.eye(3),
+    "SO3.from_matrix_unchecked(matrix)": np.eye(3),
+    "SO3.rotation_defect(matrix)": np.eye(3),
+    "SO3.from_quat(quat)": np.array([0.0, 0.0, 0.0, 1.0]),
+    "SE3.vee(matrix)": np.zeros((4, 4)),
+    "SE3.from_matrix(matrix)": np.eye(4),
+    "SE3.from_matrix_projected(matrix)": np.eye(4),
+    "SE3.from_matrix_unchecked(matrix)": np.eye(4),
+    "SE3.transform_defect(matrix)": np.eye(4),
+    "Twist.vee(matrix)": np.zeros((4, 4)),
+    "Twist.spatial(g_dot)": GDOT,
+    "Twist.body(g_dot)": GDOT,
+}
 ARRAY_ARGUMENTS = [
-    ("SO3.exp(w)", lambda x: SO3.exp(x), v3(), "(3,)", True),
-    ("SO3.hat(w)", lambda x: SO3.hat(x), v3(), "(3,)", False),
-    ("SO3.vee(matrix)", lambda x: SO3.vee(x), np.zeros((3, 3)), "(3, 3)", False),
-    ("SO3.from_matrix(matrix)", lambda x: SO3.from_matrix(x), np.eye(3), "(3, 3)", True),
-    (
-        "SO3.from_matrix_projected(matrix)",
-        lambda x: SO3.from_matrix_projected(x),
-        np.eye(3),
-        "(3, 3)",
-        True,
-    ),
-    (
-        "SO3.from_matrix_unchecked(matrix)",
-        lambda x: SO3.from_matrix_unchecked(x),
-        np.eye(3),
-        "(3, 3)",
-        True,
-    ),
-    ("SO3.rotation_defect(matrix)", lambda x: SO3.rotation_defect(x), np.eye(3), "(3, 3)", False),
-    (
-        "SO3.from_quat(quat)",
-        lambda x: SO3.from_quat(x),
-        np.array([0.0, 0.0, 0.0, 1.0]),
-        "(4,)",
-        True,
-    ),
-    ("SE3(translation)", lambda x: SE3(R0, x), v3(), "(3,)", True),
-    ("SE3.exp(xi)", lambda x: SE3.exp(x), np.ones(6), "(6,)", True),
-    ("SE3.hat(xi)", lambda x: SE3.hat(x), np.ones(6), "(6,)", False),
-    ("SE3.vee(matrix)", lambda x: SE3.vee(x), np.zeros((4, 4)), "(4, 4)", False),
-    ("SE3.from_matrix(matrix)", lambda x: SE3.from_matrix(x), np.eye(4), "(4, 4)", True),
-    (
-        "SE3.from_matrix_projected(matrix)",
-        lambda x: SE3.from_matrix_projected(x),
-        np.eye(4),
-        "(4, 4)",
-        True,
-    ),
-    (
-        "SE3.from_matrix_unchecked(matrix)",
-        lambda x: SE3.from_matrix_unchecked(x),
-        np.eye(4),
-        "(4, 4)",
-        True,
-    ),
-    ("SE3.transform_defect(matrix)", lambda x: SE3.transform_defect(x), np.eye(4), "(4, 4)", False),
-    ("SE3.from_screw(point)", lambda x: SE3.from_screw(x, [0, 0, 1], 0.0, 1.0), v3(), "(3,)", True),
-    (
-        "SE3.from_screw(direction)",
-        lambda x: SE3.from_screw([0, 0, 0], x, 0.0, 1.0),
-        v3(),
-        "(3,)",
-        True,
-    ),
-    ("Twist(v)", lambda x: Twist(v=x), v3(), "(3,)", True),
-    ("Twist(w)", lambda x: Twist(w=x), v3(), "(3,)", True),
-    ("Twist.from_vector(xi)", lambda x: Twist.from_vector(x), np.ones(6), "(6,)", True),
-    (
-        "Twist.from_modern_robotics(wv)",
-        lambda x: Twist.from_modern_robotics(x),
-        np.ones(6),
-        "(6,)",
-        True,
-    ),
-    ("Twist.vee(matrix)", lambda x: Twist.vee(x), np.zeros((4, 4)), "(4, 4)", True),
-    (
-        "Twist.from_screw(point)",
-        lambda x: Twist.from_screw(x, [0, 0, 1], 0.0, 1.0),
-        v3(),
-        "(3,)",
-        True,
-    ),
-    (
-        "Twist.from_screw(direction)",
-        lambda x: Twist.from_screw([0, 0, 0], x, 0.0, 1.0),
-        v3(),
-        "(3,)",
-        True,
-    ),
-    ("Twist.spatial(g_dot)", lambda x: Twist.spatial(G0, x), GDOT, "(4, 4)", True),
-    ("Twist.body(g_dot)", lambda x: Twist.body(G0, x), GDOT, "(4, 4)", True),
-    ("Wrench(f)", lambda x: Wrench(f=x), v3(), "(3,)", True),
-    ("Wrench(tau)", lambda x: Wrench(tau=x), v3(), "(3,)", True),
-    ("Wrench.from_vector(F)", lambda x: Wrench.from_vector(x), np.ones(6), "(6,)", True),
-    (
-        "Wrench.from_screw(point)",
-        lambda x: Wrench.from_screw(x, [0, 0, 1], 0.0, 1.0),
-        v3(),
-        "(3,)",
-        True,
-    ),
-    (
-        "Wrench.from_screw(direction)",
-        lambda x: Wrench.from_screw([0, 0, 0], x, 0.0, 1.0),
-        v3(),
-        "(3,)",
-        True,
-    ),
-    ("Screw(point)", lambda x: Screw(x, [0, 0, 1], 0.0, 1.0), v3(), "(3,)", True),
-    ("Screw(direction)", lambda x: Screw([0, 0, 0], x, 0.0, 1.0), v3(), "(3,)", True),
+    (name, call, VALID.get(name, good), shape, finite)
+    for name, call, good, shape, finite in api_spec.array_arguments()
 ]
 
 POINT_ARGUMENTS = [

@@ -1,18 +1,30 @@
-"""The Python code of docs/*.md runs as written: on each page, the fenced
-```python blocks run in order in one namespace (a later block may use what an
-earlier one defined), as a reader would run them. (README.md's block is run by
-test_readme.py; the C++ blocks are built by the install_and_consume ctest.)"""
+"""The documentation runs as written: README.md, docs/*.md, examples/README.md
+and CONTRIBUTING.md. On each page the fenced ```python blocks run in order in
+one namespace (a later block may use what an earlier one defined), as a
+reader would run them, and a block with ``print(...)  # -> text`` lines
+prints one line per print, the marked ones exactly their text. (The C++ and
+CMake blocks are built by the install_and_consume ctest.) The links between
+the pages lead to files that are there, and the pictures they show are the
+ones of docs/images."""
 
 from __future__ import annotations
 
+import contextlib
+import importlib.util
+import io
 import re
 from pathlib import Path
 
 import numpy as np
 import pytest
 
-DOCS = Path(__file__).resolve().parents[2] / "docs"
-PAGES = sorted(DOCS.glob("*.md"))
+ROOT = Path(__file__).resolve().parents[2]
+DOCS = ROOT / "docs"
+PAGES = [ROOT / "README.md", *sorted(DOCS.glob("*.md")), ROOT / "examples" / "README.md", ROOT / "CONTRIBUTING.md"]
+
+
+def page_id(page: Path) -> str:
+    return str(page.relative_to(ROOT))
 
 
 def python_blocks(page: Path) -> list[str]:
@@ -20,14 +32,54 @@ def python_blocks(page: Path) -> list[str]:
 
 
 def test_the_pages_are_there():
-    assert {p.name for p in PAGES} >= {"conventions.md", "numerics.md", "realtime.md", "coming_from.md"}
+    assert {p.name for p in DOCS.glob("*.md")} >= {
+        "conventions.md",
+        "coming_from.md",
+        "formulas.md",
+        "numerics.md",
+        "performance.md",
+        "python.md",
+        "realtime.md",
+        "robots.md",
+    }
+    assert all(p.is_file() for p in PAGES)
 
 
-@pytest.mark.parametrize("page", PAGES, ids=[p.name for p in PAGES])
-def test_python_blocks_run(page):
+def test_the_readme_reads_in_five_minutes():
+    lines = (ROOT / "README.md").read_text(encoding="utf-8").splitlines()
+    assert len(lines) <= 300, f"README.md has {len(lines)} lines: move the details to docs/"
+
+
+@pytest.mark.parametrize("page", PAGES, ids=page_id)
+def test_python_blocks_run_and_print_what_their_comments_say(page):
     namespace = {"__name__": f"docs.{page.stem}"}
     for i, block in enumerate(python_blocks(page), start=1):
-        exec(compile(block, f"{page} (python block {i})", "exec"), namespace)
+        code = compile(block, f"{page} (python block {i})", "exec")
+        out = io.StringIO()
+        with contextlib.redirect_stdout(out):
+            exec(code, namespace)
+        if "# -> " not in block:
+            continue
+        prints = [line for line in block.splitlines() if line.startswith("print(")]
+        lines = out.getvalue().splitlines()
+        assert len(lines) == len(prints), (page.name, i, prints, lines)
+        for statement, line in zip(prints, lines):
+            if "# -> " in statement:
+                assert line == statement.split("# -> ", 1)[1].rstrip(), (page.name, i, statement, line)
+
+
+def test_the_readme_robot_quick_start_states_what_it_prints():
+    claimed = [b for b in python_blocks(ROOT / "README.md") if "# -> " in b]
+    assert any("Chain.from_urdf" in b for b in claimed), "the robot arm quick start has no claims"
+
+
+@pytest.mark.parametrize("page", PAGES, ids=page_id)
+def test_relative_links_lead_to_files_that_are_there(page):
+    text = page.read_text(encoding="utf-8")
+    for target in re.findall(r"\]\(([^)#\s]+)(?:#[^)]*)?\)", text):
+        if re.match(r"[a-z]+:", target):
+            continue  # a web address
+        assert (page.parent / target).exists(), f"{page_id(page)} links to {target}, which is not there"
 
 
 def test_scipy_rigid_transform_takes_modern_robotics_exp_coords():
@@ -44,12 +96,11 @@ def test_scipy_rigid_transform_takes_modern_robotics_exp_coords():
 
 
 def test_every_picture_is_there_and_used():
-    """The pictures that README.md and docs/*.md show are PNG files of docs/images
-    (made by the commands written beside them: ``python -m chasles --png ...``,
+    """The pictures that the pages show are PNG files of docs/images (made by
+    the commands written beside them: ``python -m chasles --png ...``,
     ``python examples/python/robot_arm.py --png ...``), and each is shown."""
-    root = DOCS.parent
     shown = set()
-    for page in [root / "README.md", *PAGES]:
+    for page in PAGES:
         for target in re.findall(r"!\[[^\]]*\]\(([^)]+)\)", page.read_text(encoding="utf-8")):
             path = (page.parent / target).resolve()
             assert path.is_file(), f"{page.name} shows {target}, which is not there"
@@ -59,5 +110,46 @@ def test_every_picture_is_there_and_used():
             assert width >= 400 and height >= 300, (target, width, height)
             shown.add(path)
     assert {p.resolve() for p in (DOCS / "images").iterdir()} == shown
-    readme = (root / "README.md").read_text(encoding="utf-8")
-    assert "python examples/python/robot_arm.py --png docs/images/robot_arm.png" in readme
+    assert "python -m chasles --png docs/images/chasles_demo.png" in (ROOT / "README.md").read_text(encoding="utf-8")
+    robots = (DOCS / "robots.md").read_text(encoding="utf-8")
+    assert "python examples/python/robot_arm.py --png docs/images/robot_arm.png" in robots
+
+
+def load_report():
+    spec = importlib.util.spec_from_file_location("bench_report", ROOT / "bench" / "report.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_the_performance_page_is_what_bench_report_writes(tmp_path):
+    """docs/performance.md is bench/report.py's page: its text, then the
+    tables of a run (edit PAGE_HEADER in report.py, not the page)."""
+    report = load_report()
+    page = (DOCS / "performance.md").read_text(encoding="utf-8")
+    assert page.startswith(report.PAGE_HEADER + "\n## The run\n\n")
+    tables = page[len(report.PAGE_HEADER + "\n## The run\n\n") :]
+    assert re.search(r"^\| op \| .*\n\| --- \|", tables, flags=re.M), "the page has no table"
+    written = tmp_path / "performance.md"
+    report.write_page(written, tables)
+    assert written.read_text(encoding="utf-8") == page
+
+
+def test_the_stages_of_tests_run_sh_are_the_documented_ones():
+    """tests/run.sh takes the stages CONTRIBUTING.md lists, `all` by default,
+    which is what .ci/run runs (the README's test command); its pytest run
+    requires the C++ URDF cross-check (a failure, not a skip, when the
+    program or example-robot-data is missing)."""
+    run_sh = (ROOT / "tests" / "run.sh").read_text(encoding="utf-8")
+    stages = re.search(r'case "\$STAGE" in\n  ([a-z |]+)\) ;;', run_sh)
+    assert stages, "tests/run.sh does not check its stage argument"
+    assert sorted(s.strip() for s in stages.group(1).split("|")) == ["all", "cpp", "hardening", "python"]
+    assert "STAGE=${1:-all}" in run_sh
+    contributing = (ROOT / "CONTRIBUTING.md").read_text(encoding="utf-8")
+    for stage in ("cpp", "hardening", "python"):
+        assert f"`bash tests/run.sh {stage}`" in contributing, stage
+    ci = (ROOT / ".ci" / "run").read_text(encoding="utf-8")
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    assert "exec bash tests/run.sh\n" in ci and "bash tests/run.sh\n" in readme
+    pytest_call = run_sh[run_sh.index('(cd "$VENV"') : run_sh.index("-m pytest")]
+    assert "CHASLES_REQUIRE_URDF_DUMP=1" in pytest_call and "CHASLES_URDF_DUMP=" in pytest_call

@@ -20,6 +20,7 @@ import pickle
 import modern_robotics as mr
 import numpy as np
 import pytest
+from helpers import hat3 as hat
 
 import chasles
 from chasles import SE3, Chain, SpatialInertia, Twist, Wrench
@@ -29,10 +30,6 @@ RTOL = 1e-12
 
 # (v, w) <-> (w, v): the same permutation both ways.
 SWAP = np.block([[np.zeros((3, 3)), np.eye(3)], [np.eye(3), np.zeros((3, 3))]])
-
-
-def hat(c):
-    return np.array([[0, -c[2], c[1]], [c[2], 0, -c[0]], [-c[1], c[0], 0]])
 
 
 def adjoint(g):

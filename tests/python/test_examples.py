@@ -27,6 +27,14 @@ def test_every_example_is_listed():
     assert sorted(p.name for p in EXAMPLES.glob("*.py")) == sorted(EXPECTED)
 
 
+def test_every_example_is_in_the_examples_readme():
+    """examples/README.md's table names every Python and C++ example."""
+    readme = (EXAMPLES.parent / "README.md").read_text(encoding="utf-8")
+    programs = [p.relative_to(EXAMPLES.parent) for p in (*EXAMPLES.glob("*.py"), *EXAMPLES.parent.glob("cpp/*.cpp"))]
+    missing = [str(p) for p in programs if f"`{p.as_posix()}`" not in readme]
+    assert not missing, f"examples/README.md does not list {missing}"
+
+
 @pytest.mark.parametrize("name", sorted(EXPECTED))
 def test_example_runs(name, tmp_path):
     r = subprocess.run(

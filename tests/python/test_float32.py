@@ -1,4 +1,4 @@
-"""float32 arrays: the accuracy contract of the core (README "Accuracy",
+"""float32 arrays: the accuracy contract of the core (docs/numerics.md, "Measured errors";
 tests/cpp/test_accuracy.cpp) for the array functions on float32 input, the
 double thresholds carried to float32 as the same number of ulps
 (tol32 = tol64 * eps32 / eps64); and no NaN or inf from any finite float32
@@ -19,6 +19,8 @@ import chasles
 import numpy as np
 import pytest
 from scipy.linalg import expm
+from helpers import hat3 as hat
+from helpers import hat6
 
 EPS32 = float(np.finfo(np.float32).eps)
 EPS64 = float(np.finfo(np.float64).eps)
@@ -72,17 +74,6 @@ def rotation_vectors32():
 
 def widened(x):
     return np.asarray(x, dtype=np.float64)
-
-
-def hat(w):
-    return np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
-
-
-def hat6(xi):
-    X = np.zeros((4, 4))
-    X[:3, :3] = hat(xi[3:])
-    X[:3, 3] = xi[:3]
-    return X
 
 
 def angle_of(w):

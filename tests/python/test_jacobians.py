@@ -26,20 +26,10 @@ from hypothesis import strategies as st
 from scipy.linalg import expm, logm
 from scipy.spatial.transform import Rotation
 from strategies import PI, elements, points, rotation_vectors, tangents, twist_vectors
+from helpers import hat3, hat6
 
 H = 1e-5
 FD_TOL = 1e-7
-
-
-def hat3(w):
-    return np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
-
-
-def hat6(xi):
-    X = np.zeros((4, 4))
-    X[:3, :3] = hat3(xi[3:])
-    X[:3, 3] = xi[:3]
-    return X
 
 
 def log3_near_identity(R):

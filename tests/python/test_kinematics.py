@@ -10,6 +10,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 from scipy.linalg import expm
+from helpers import hat6
 
 import chasles
 from chasles import SE3, Chain
@@ -37,13 +38,6 @@ RAIL_SCREWS = np.vstack([[1 / np.sqrt(5), 2 / np.sqrt(5), 0, 0, 0, 0], UR5_SCREW
 EPS = float(np.finfo(float).eps)
 
 joint_angles = st.floats(-3.3, 3.3, allow_nan=False, allow_infinity=False)
-
-
-def hat6(xi):
-    v, w = xi[:3], xi[3:]
-    return np.array(
-        [[0, -w[2], w[1], v[0]], [w[2], 0, -w[0], v[1]], [-w[1], w[0], 0, v[2]], [0, 0, 0, 0]]
-    )
 
 
 def vee6(X):

@@ -22,6 +22,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 from scipy.linalg import expm
 from scipy.spatial.transform import Rotation
+from helpers import hat3
 from strategies import (
     PI,
     SPECIAL_ANGLES,
@@ -50,11 +51,6 @@ def ids(group):
 def angle_of(xi) -> float:
     """The rotation angle of a tangent vector of SO3 (w) or SE3 ((v, w))."""
     return float(np.linalg.norm(np.asarray(xi)[-3:]))
-
-
-def hat3(w):
-    """[w], written here from the definition, independent of the library."""
-    return np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
 
 
 def hat_ref(group, xi):

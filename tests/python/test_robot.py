@@ -20,6 +20,7 @@ import modern_robotics as mr
 import numpy as np
 import pytest
 from scipy.linalg import expm
+from helpers import hat6
 
 from chasles import SE3, Chain, SpatialInertia, _core
 
@@ -42,11 +43,6 @@ def robots_dir():
 def arms():
     root = robots_dir()
     return {key: Chain.from_urdf(root / rel, tip) for key, (rel, tip) in ARMS.items()}
-
-
-def hat6(xi):
-    v, w = xi[:3], xi[3:]
-    return np.array([[0, -w[2], w[1], v[0]], [w[2], 0, -w[0], v[1]], [-w[1], w[0], 0, v[2]], [0, 0, 0, 0]])
 
 
 def reference_forward(chain, q):

@@ -11,8 +11,9 @@ chain as JSON; tests/run.sh builds it and passes its path in the environment
 variable CHASLES_URDF_DUMP. These tests are skipped only when the variable is
 unset in a pytest run outside the full pipeline; set, the program must exist
 and work, and example-robot-data must be installed. With
-CHASLES_REQUIRE_URDF_DUMP=1 (the full pipeline), an unset CHASLES_URDF_DUMP
-fails them instead of skipping them."""
+CHASLES_REQUIRE_URDF_DUMP=1 (tests/run.sh sets it), what would skip the
+cross-check fails it instead: an unset CHASLES_URDF_DUMP, example-robot-data
+or one of its arms missing."""
 
 import json
 import os
@@ -85,6 +86,8 @@ def test_cpp_loader_equals_python_loader(key):
     rel, tip, base = ARMS[key]
     path = robots() / rel
     if not path.exists():
+        if REQUIRED:
+            pytest.fail(f"{rel} is not in this version of example-robot-data: the cross-check cannot run")
         pytest.skip(f"{rel} is not in this version of example-robot-data")
     code, cpp, err = dump(path, tip, *([base] if base else []))
     assert code == 0, err
