@@ -26,12 +26,15 @@
 #include "chasles/chasles.hpp"
 #include "chasles/dynamics.hpp"
 #include "chasles/kinematics.hpp"
+#include "harness.hpp"
 #include "support/arms.hpp"
 #include "support/reference.hpp"
 
 namespace {
 
-constexpr std::size_t kN = 1024;  // power of two: index with i & (kN - 1)
+using chasles_bench::add;
+using chasles_bench::kN;
+using chasles_bench::run;
 constexpr double kPi = 3.14159265358979323846;
 
 /// Rotation vectors of a given kind: generic (angle uniform in (0.1, 3)),
@@ -63,22 +66,6 @@ std::vector<Eigen::Matrix<S, 6, 1>> twists(const std::string& kind, std::uint32_
     out.push_back(xi);
   }
   return out;
-}
-
-/// Runs op(inputs[i]) over the cycled inputs.
-template <typename In, typename Op>
-void run(benchmark::State& state, const std::vector<In>& in, Op op) {
-  std::size_t i = 0;
-  for (auto _ : state) {
-    auto r = op(in[i & (kN - 1)]);
-    benchmark::DoNotOptimize(r);
-    ++i;
-  }
-}
-
-template <typename In, typename Op>
-void add(const std::string& name, std::vector<In> in, Op op) {
-  benchmark::RegisterBenchmark(name.c_str(), [in = std::move(in), op](benchmark::State& s) { run(s, in, op); });
 }
 
 /// As add, with the accuracy of op on exactly the inputs it is timed on:

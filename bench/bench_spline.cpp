@@ -22,27 +22,13 @@
 
 #include "chasles/bspline.hpp"
 #include "chasles/spline.hpp"
+#include "harness.hpp"
 
 namespace {
 
-constexpr std::size_t kN = 1024;  // power of two: index with i & (kN - 1)
+using chasles_bench::add;
+using chasles_bench::kN;
 constexpr int kKeys[] = {10, 1000, 100000, 1000000};
-
-/// Runs op(inputs[i]) over the cycled inputs.
-template <typename In, typename Op>
-void run(benchmark::State& state, const std::vector<In>& in, Op op) {
-  std::size_t i = 0;
-  for (auto _ : state) {
-    auto r = op(in[i & (kN - 1)]);
-    benchmark::DoNotOptimize(r);
-    ++i;
-  }
-}
-
-template <typename In, typename Op>
-void add(const std::string& name, std::vector<In> in, Op op) {
-  benchmark::RegisterBenchmark(name.c_str(), [in = std::move(in), op](benchmark::State& s) { run(s, in, op); });
-}
 
 /// n elements of a random walk: steps exp(z), z ~ N(0, 0.35^2 I) per tangent coordinate.
 template <typename Group>
