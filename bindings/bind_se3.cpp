@@ -142,6 +142,140 @@ void bind_se3(Class<SE3d>& cls) {
   static const std::string doc = class_doc();
   cls.attr("__doc__") = doc;
   hold_inline(cls);
+  // What SO3 and SE3 share (lie_group.hpp), first: the composition comes
+  // before the action on points among the overloads of @.
+
+  // ---- scipy and random ---------------------------------------------------
+
+  cls.def_static(
+      "from_scipy",
+      [](py::object tf) {
+        const char* what = "SE3.from_scipy(tf)";
+        check_single_scipy(tf, "RigidTransform", what,
+                           "A stack is an array for the array functions: tf.as_matrix() (shape (..., 4, 4)) for se3_log, se3_compose, "
+    "se3_act, ...; tf[i] is one RigidTransform.");
+        const Eigen::Matrix4d M = to_finite_eigen<4, 4>(tf.attr("as_matrix")(), what);
+        const auto g = SE3d::from_matrix(M, kRotationTolerance);
+        if (!g) {
+          // Only a RigidTransform built with normalize=False can get here.
+          raise_value_error(std::string(what) + ": the transform's matrix is not a rigid motion: rotation defect " +
+                            "max(|R^T R - I|, |det R - 1|) = " +
+                            std::to_string(SO3d::rotation_defect(M.topLeftCorner<3, 3>())) + " (tol " +
+                            std::to_string(kRotationTolerance) +
+                            "); use SE3.from_matrix_projected(tf.as_matrix()) for the nearest rotation");
+        }
+        return *g;
+      },
+      py::arg("tf"),
+      R"doc(The motion of a single scipy.spatial.transform.RigidTransform.
+
+scipy (1.16 or later) is imported by this call (it is not needed by
+``import chasles``). The motion is read from scipy's 4x4 matrix, checked as
+by ``SE3.from_matrix``. For a stack of transforms use the array functions on
+``tf.as_matrix()`` (shape (N, 4, 4)).
+
+Args:
+    tf: a single scipy.spatial.transform.RigidTransform.
+
+Returns:
+    SE3: the same motion.
+
+Raises:
+    TypeError: tf is not a RigidTransform.
+    ValueError: tf is a stack of transforms, or its matrix is not a rigid
+        motion (a transform built with normalize=False).
+    ImportError: scipy (or RigidTransform, scipy < 1.16) is missing.
+
+Example:
+    >>> from scipy.spatial.transform import RigidTransform
+    >>> SE3.from_scipy(RigidTransform.from_translation([1.0, 2.0, 3.0])).translation
+    array([1., 2., 3.])
+)doc");
+
+  cls.def(
+      "to_scipy",
+      [](Obj<SE3d> g) {
+        const py::object RigidTransform = scipy_class("RigidTransform", "SE3.to_scipy()");
+        return RigidTransform.attr("from_matrix")(mat_out<4, 4>(g->matrix()));
+      },
+      R"doc(This motion as a scipy.spatial.transform.RigidTransform.
+
+scipy (1.16 or later) is imported by this call (it is not needed by
+``import chasles``). scipy's ``RigidTransform.from_matrix(g)`` works too
+(``np.asarray(g)`` is the 4x4 matrix); for many motions,
+``RigidTransform.from_matrix`` of an array of shape (N, 4, 4).
+
+Returns:
+    scipy.spatial.transform.RigidTransform: a single transform, from the
+    homogeneous matrix of ``as_matrix()``.
+
+Raises:
+    ImportError: scipy (or RigidTransform, scipy < 1.16) is missing.
+
+Example:
+    >>> SE3(translation=[1.0, 2.0, 3.0]).to_scipy().translation
+    array([1., 2., 3.])
+)doc");
+
+  cls.def_static(
+      "random",
+      [](py::object rng, py::object low, py::object high) {
+        const Vector3 lo = box(low, "se3_random(low)"), hi = box(high, "se3_random(high)");
+        if ((hi.array() < lo.array()).any())
+          raise_value_error("se3_random: expected low <= high, got low=" + array_repr(vec_out<3>(lo)) +
+                            ", high=" + array_repr(vec_out<3>(hi)));
+        const py::object gen = numpy_generator(rng, "se3_random");
+        const SO3d R = chasles::so3_from_uniforms(uniforms(gen, "SE3.random"));
+        const Vector3 u = uniforms(gen, "SE3.random");
+        return SE3d(R, lo + (hi - lo).cwiseProduct(u));  // numpy's lo + (hi - lo) * u
+      },
+      py::arg("rng") = py::none(), py::kw_only(), py::arg("low") = -1.0, py::arg("high") = 1.0,
+      R"doc(A random rigid motion: a uniform rotation and a translation uniform in a box.
+
+One element of ``chasles.se3_random``: the rotation as SO3.random, then the
+translation uniform in [low, high] componentwise.
+
+Args:
+    rng: None (a fresh ``numpy.random.default_rng()``), an int seed or a
+        numpy Generator.
+    low: float or array_like of shape (3,): the box's lower corner.
+    high: float or array_like of shape (3,): the box's upper corner.
+
+Returns:
+    SE3: the pose.
+
+Example:
+    >>> g = SE3.random(rng=1, low=0.0, high=0.5)
+    >>> bool(np.all((0.0 <= g.translation) & (g.translation <= 0.5)))
+    True
+)doc");
+
+  // What SO3 and SE3 share (lie_group.hpp), first: the composition comes
+  // before the action on points among the overloads of @. The state: R row by row, then p; checked as SE3.from_matrix checks the matrix.
+  def_lie_group<12>(
+      cls,
+      [](const SE3d& g) {
+        return "SE3(rotation=" + array_repr(mat_out<3, 3>(g.rotation().matrix())) +
+               ", translation=" + array_repr(vec_out<3>(g.translation())) + ")";
+      },
+      [](const SE3d& g) {
+        Eigen::Matrix<double, 12, 1> v;
+        v << row_major(g.rotation().matrix()), g.translation();
+        return v;
+      },
+      [](const double* v) {
+        const Matrix3 R = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(v);
+        const Vector3 p(v[9], v[10], v[11]);
+        require_finite(R, "SE3.__setstate__");
+        require_finite(p, "SE3.__setstate__");
+        if (!SO3d::from_matrix(R, kRotationTolerance)) {
+          Matrix4 M = Matrix4::Identity();
+          M.topLeftCorner<3, 3>() = R;
+          M.topRightCorner<3, 1>() = p;
+          raise_not_rigid(M, kRotationTolerance, "SE3.__setstate__", false);
+        }
+        return SE3d(SO3d::from_matrix_unchecked(R), p);
+      });
   cls.attr("__array_ufunc__") = py::none();  // numpy defers operators to us
 
   cls.def(py::init([](Obj<SO3d> rotation, ArrayLike translation) {
@@ -242,30 +376,6 @@ Returns:
   // ---- group operations ---------------------------------------------------
 
   cls.def(
-      "inverse", [](Obj<SE3d> x) { return x->inverse(); },
-      R"doc(The inverse motion g^-1 = [[R^T, -R^T p], [0, 1]].
-
-Returns:
-    SE3: g^-1.
-
-Example:
-    >>> g = SE3.exp([0.1, 0.2, 0.3, 0.4, 0.5, 0.6])
-    >>> (g @ g.inverse()).is_approx(SE3.identity())
-    True
-)doc");
-
-  cls.def(
-      "__matmul__", [](Obj<SE3d> a, Obj<SE3d> b) { return *a * *b; }, py::arg("other"), py::is_operator(),
-      R"doc(Composition: g_ab @ g_bc = g_ac.
-
-Args:
-    other: SE3.
-
-Returns:
-    SE3: the composed motion.
-)doc");
-
-  cls.def(
       "__matmul__", [](Obj<SE3d> g, ArrayLike points) { return act_points(*g, points, "SE3 @ points"); },
       py::arg("points"),
       R"doc(Action on points: q_a = R q_b + p.
@@ -360,17 +470,6 @@ Returns:
     ndarray: shape (..., 3).
 )doc");
 
-  cls.def(
-      "adjoint", [](Obj<SE3d> g) { return mat_out<6, 6>(g->adjoint()); },
-      R"doc(The adjoint Ad_g = [[R, [p] R], [0, R]] (6x6, Murray-Li-Sastry order).
-
-g [xi] g^-1 = [Ad_g xi]: twists change frame by xi_a = Ad_g xi_b; wrenches
-by F_b = Ad_g^T F_a.
-
-Returns:
-    ndarray: shape (6, 6).
-)doc");
-
   // ---- access and conversions ---------------------------------------------
 
   // Stored parts are properties (read-only: the values are immutable).
@@ -381,14 +480,6 @@ Returns:
   cls.def_property_readonly(
       "translation", [](Obj<SE3d> g) { return vec_out<3>(g->translation()); },
       R"doc(ndarray: the translation p of g = [[R, p], [0, 1]], shape (3,) (a stored part; a new array).)doc");
-
-  cls.def(
-      "as_matrix", [](Obj<SE3d> g) { return mat_out<4, 4>(g->matrix()); },
-      R"doc(The homogeneous matrix g = [[R, p], [0, 1]].
-
-Returns:
-    ndarray: shape (4, 4), float64 (a new array).
-)doc");
 
   cls.def_static(
       "from_matrix",
@@ -509,191 +600,6 @@ Example:
     array([0., 2., 5.])
 )doc");
 
-  cls.def(
-      "normalized", [](Obj<SE3d> g) { return g->normalized(); }, R"doc(The same motion with the nearest rotation (removes drift).
-
-Returns:
-    SE3: the projected motion.
-)doc");
-
-  cls.def_static(
-      "interpolate",
-      [](Obj<SE3d> a, Obj<SE3d> b, RealLike t) {
-        return chasles::interpolate(*a, *b, to_finite_real(t.obj, "SE3.interpolate(t)"));
-      },
-      py::arg("a"), py::arg("b"), py::arg("t"),
-      R"doc(Geodesic (screw) interpolation a exp(t log(a^-1 b)).
-
-t = 0 gives a, t = 1 gives b, and the motion in between is one screw motion.
-
-Args:
-    a: SE3, the start.
-    b: SE3, the end.
-    t: the fraction, finite.
-
-Returns:
-    SE3: the interpolated motion.
-
-Example:
-    >>> a, b = SE3(), SE3(translation=[2.0, 0.0, 0.0])
-    >>> SE3.interpolate(a, b, 0.5).translation
-    array([1., 0., 0.])
-)doc");
-
-  cls.def(
-      "is_approx",
-      [](Obj<SE3d> a, Obj<SE3d> b, RealLike tol) {
-        return a->is_approx(*b, to_tolerance(tol.obj, "SE3.is_approx(tol)"));
-      },
-      py::arg("other"), py::arg_v("tol", 1e-9),
-      R"doc(Whether two motions are equal within tol.
-
-Rotation matrices within tol (absolute), translations within
-tol * max(1, |p|_max) (relative beyond unit scale). ``==`` is the exact
-comparison (every stored number equal).
-
-Args:
-    other: SE3.
-    tol: the tolerance (>= 0).
-
-Returns:
-    bool.
-)doc");
-
-  // ---- Python protocols ---------------------------------------------------
-
-  // ---- scipy and random ---------------------------------------------------
-
-  cls.def_static(
-      "from_scipy",
-      [](py::object tf) {
-        const char* what = "SE3.from_scipy(tf)";
-        check_single_scipy(tf, "RigidTransform", what,
-                           "A stack is an array for the array functions: tf.as_matrix() (shape (..., 4, 4)) for se3_log, se3_compose, "
-    "se3_act, ...; tf[i] is one RigidTransform.");
-        const Eigen::Matrix4d M = to_finite_eigen<4, 4>(tf.attr("as_matrix")(), what);
-        const auto g = SE3d::from_matrix(M, kRotationTolerance);
-        if (!g) {
-          // Only a RigidTransform built with normalize=False can get here.
-          raise_value_error(std::string(what) + ": the transform's matrix is not a rigid motion: rotation defect " +
-                            "max(|R^T R - I|, |det R - 1|) = " +
-                            std::to_string(SO3d::rotation_defect(M.topLeftCorner<3, 3>())) + " (tol " +
-                            std::to_string(kRotationTolerance) +
-                            "); use SE3.from_matrix_projected(tf.as_matrix()) for the nearest rotation");
-        }
-        return *g;
-      },
-      py::arg("tf"),
-      R"doc(The motion of a single scipy.spatial.transform.RigidTransform.
-
-scipy (1.16 or later) is imported by this call (it is not needed by
-``import chasles``). The motion is read from scipy's 4x4 matrix, checked as
-by ``SE3.from_matrix``. For a stack of transforms use the array functions on
-``tf.as_matrix()`` (shape (N, 4, 4)).
-
-Args:
-    tf: a single scipy.spatial.transform.RigidTransform.
-
-Returns:
-    SE3: the same motion.
-
-Raises:
-    TypeError: tf is not a RigidTransform.
-    ValueError: tf is a stack of transforms, or its matrix is not a rigid
-        motion (a transform built with normalize=False).
-    ImportError: scipy (or RigidTransform, scipy < 1.16) is missing.
-
-Example:
-    >>> from scipy.spatial.transform import RigidTransform
-    >>> SE3.from_scipy(RigidTransform.from_translation([1.0, 2.0, 3.0])).translation
-    array([1., 2., 3.])
-)doc");
-
-  cls.def(
-      "to_scipy",
-      [](Obj<SE3d> g) {
-        const py::object RigidTransform = scipy_class("RigidTransform", "SE3.to_scipy()");
-        return RigidTransform.attr("from_matrix")(mat_out<4, 4>(g->matrix()));
-      },
-      R"doc(This motion as a scipy.spatial.transform.RigidTransform.
-
-scipy (1.16 or later) is imported by this call (it is not needed by
-``import chasles``). scipy's ``RigidTransform.from_matrix(g)`` works too
-(``np.asarray(g)`` is the 4x4 matrix); for many motions,
-``RigidTransform.from_matrix`` of an array of shape (N, 4, 4).
-
-Returns:
-    scipy.spatial.transform.RigidTransform: a single transform, from the
-    homogeneous matrix of ``as_matrix()``.
-
-Raises:
-    ImportError: scipy (or RigidTransform, scipy < 1.16) is missing.
-
-Example:
-    >>> SE3(translation=[1.0, 2.0, 3.0]).to_scipy().translation
-    array([1., 2., 3.])
-)doc");
-
-  cls.def_static(
-      "random",
-      [](py::object rng, py::object low, py::object high) {
-        const Vector3 lo = box(low, "se3_random(low)"), hi = box(high, "se3_random(high)");
-        if ((hi.array() < lo.array()).any())
-          raise_value_error("se3_random: expected low <= high, got low=" + array_repr(vec_out<3>(lo)) +
-                            ", high=" + array_repr(vec_out<3>(hi)));
-        const py::object gen = numpy_generator(rng, "se3_random");
-        const SO3d R = chasles::so3_from_uniforms(uniforms(gen, "SE3.random"));
-        const Vector3 u = uniforms(gen, "SE3.random");
-        return SE3d(R, lo + (hi - lo).cwiseProduct(u));  // numpy's lo + (hi - lo) * u
-      },
-      py::arg("rng") = py::none(), py::kw_only(), py::arg("low") = -1.0, py::arg("high") = 1.0,
-      R"doc(A random rigid motion: a uniform rotation and a translation uniform in a box.
-
-One element of ``chasles.se3_random``: the rotation as SO3.random, then the
-translation uniform in [low, high] componentwise.
-
-Args:
-    rng: None (a fresh ``numpy.random.default_rng()``), an int seed or a
-        numpy Generator.
-    low: float or array_like of shape (3,): the box's lower corner.
-    high: float or array_like of shape (3,): the box's upper corner.
-
-Returns:
-    SE3: the pose.
-
-Example:
-    >>> g = SE3.random(rng=1, low=0.0, high=0.5)
-    >>> bool(np.all((0.0 <= g.translation) & (g.translation <= 0.5)))
-    True
-)doc");
-
-  // ---- Python protocols ---------------------------------------------------
-
-  // The state: R row by row, then p; checked as SE3.from_matrix checks the matrix.
-  def_lie_group<12>(
-      cls,
-      [](const SE3d& g) {
-        return "SE3(rotation=" + array_repr(mat_out<3, 3>(g.rotation().matrix())) +
-               ", translation=" + array_repr(vec_out<3>(g.translation())) + ")";
-      },
-      [](const SE3d& g) {
-        Eigen::Matrix<double, 12, 1> v;
-        v << row_major(g.rotation().matrix()), g.translation();
-        return v;
-      },
-      [](const double* v) {
-        const Matrix3 R = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(v);
-        const Vector3 p(v[9], v[10], v[11]);
-        require_finite(R, "SE3.__setstate__");
-        require_finite(p, "SE3.__setstate__");
-        if (!SO3d::from_matrix(R, kRotationTolerance)) {
-          Matrix4 M = Matrix4::Identity();
-          M.topLeftCorner<3, 3>() = R;
-          M.topRightCorner<3, 1>() = p;
-          raise_not_rigid(M, kRotationTolerance, "SE3.__setstate__", false);
-        }
-        return SE3d(SO3d::from_matrix_unchecked(R), p);
-      });
 }
 
 }  // namespace chasles_py

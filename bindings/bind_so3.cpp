@@ -64,6 +64,20 @@ struct SequenceName {
 };
 using SequenceLike = AnyObject<SequenceName>;
 
+/// A bool argument converted in the function body as pybind11 converts one
+/// (None is False, an object's __bool__): from_rpy takes its arguments as
+/// objects, so that its refusal (def_static_refusal) sees only the calls of
+/// a wrong shape.
+struct FlagName {
+  static constexpr auto text = py::detail::const_name("bool");
+};
+using FlagLike = AnyObject<FlagName>;
+bool to_flag(py::handle h, const char* what) {
+  py::detail::make_caster<bool> flag;
+  if (!flag.load(h, true)) raise_type_error(std::string(what) + ": expected a bool, got " + type_name(h));
+  return static_cast<bool>(flag);
+}
+
 /// The angles of as_euler / as_rpy, in degrees if asked, with the gimbal lock flag if asked.
 py::object euler_result(const chasles::EulerAngles<double>& e, bool degrees, bool return_gimbal_lock) {
   py::object angles = vec_out<3>(degrees ? Vector3(e.angles * kRadToDeg) : e.angles);
@@ -77,6 +91,18 @@ void bind_so3(Class<SO3d>& cls) {
   static const std::string doc = class_doc();
   cls.attr("__doc__") = doc;
   hold_inline(cls);
+  // What SO3 and SE3 share (lie_group.hpp), first: the composition comes
+  // before the action on points among the overloads of @. The state: the matrix row by row, checked as SO3.from_matrix checks one.
+  def_lie_group<9>(
+      cls, [](const SO3d& R) { return "SO3(matrix=" + array_repr(mat_out<3, 3>(R.matrix())) + ")"; },
+      [](const SO3d& R) { return row_major(R.matrix()); },
+      [](const double* v) {
+        const Matrix3 M = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(v);
+        require_finite(M, "SO3.__setstate__");
+        if (!SO3d::from_matrix(M, kRotationTolerance))
+          raise_not_rotation(M, kRotationTolerance, "SO3.__setstate__", false);
+        return SO3d::from_matrix_unchecked(M);
+      });
   cls.attr("__array_ufunc__") = py::none();  // numpy defers operators (2.0 * x, p @ R) to us
 
   cls.def(py::init<>(), R"doc(The identity rotation.
@@ -208,30 +234,6 @@ Example:
   // ---- group operations ---------------------------------------------------
 
   cls.def(
-      "inverse", [](Obj<SO3d> x) { return x->inverse(); },
-      R"doc(The inverse rotation R^-1 = R^T.
-
-Returns:
-    SO3: R^T.
-
-Example:
-    >>> R = SO3.exp([0.3, 0.2, 0.1])
-    >>> (R @ R.inverse()).is_approx(SO3.identity())
-    True
-)doc");
-
-  cls.def(
-      "__matmul__", [](Obj<SO3d> a, Obj<SO3d> b) { return *a * *b; }, py::arg("other"), py::is_operator(),
-      R"doc(Composition: R_ab @ R_bc = R_ac.
-
-Args:
-    other: SO3.
-
-Returns:
-    SO3: the composed rotation.
-)doc");
-
-  cls.def(
       "__matmul__", [](Obj<SO3d> R, ArrayLike p) { return act_points(*R, p, "SO3 @ points"); },
       py::arg("points"),
       R"doc(Action on points or vectors: p_a = R_ab @ p_b.
@@ -267,23 +269,7 @@ Example:
            [ 0.,  0.,  1.]])
 )doc");
 
-  cls.def(
-      "adjoint", [](Obj<SO3d> R) { return mat_out<3, 3>(R->adjoint()); },
-      R"doc(The adjoint Ad_R = R (3x3), so that R exp([w]) R^T = exp([R w]).
-
-Returns:
-    ndarray: shape (3, 3).
-)doc");
-
   // ---- conversions ------------------------------------------------------
-
-  cls.def(
-      "as_matrix", [](Obj<SO3d> R) { return mat_out<3, 3>(R->matrix()); },
-      R"doc(The rotation matrix.
-
-Returns:
-    ndarray: R, shape (3, 3), float64 (a new array).
-)doc");
 
   cls.def_static(
       "from_matrix",
@@ -441,58 +427,6 @@ Example:
     array([1., 0., 0., 0.])
 )doc");
 
-  cls.def(
-      "normalized", [](Obj<SO3d> R) { return R->normalized(); }, R"doc(The nearest rotation to the stored matrix.
-
-Removes the drift that accumulates over many compositions.
-
-Returns:
-    SO3: the projected rotation.
-)doc");
-
-  cls.def_static(
-      "interpolate",
-      [](Obj<SO3d> a, Obj<SO3d> b, RealLike t) {
-        return chasles::interpolate(*a, *b, to_finite_real(t.obj, "SO3.interpolate(t)"));
-      },
-      py::arg("a"), py::arg("b"), py::arg("t"),
-      R"doc(Geodesic interpolation a exp(t log(a^-1 b)).
-
-t = 0 gives a, t = 1 gives b; in between, the rotation about one fixed axis
-(slerp). Values outside [0, 1] extrapolate.
-
-Args:
-    a: SO3, the start.
-    b: SO3, the end.
-    t: the fraction, finite.
-
-Returns:
-    SO3: the interpolated rotation.
-
-Example:
-    >>> a, b = SO3(), SO3.exp([0.0, 0.0, 1.0])
-    >>> np.round(SO3.interpolate(a, b, 0.25).log(), 12) + 0.0
-    array([0.  , 0.  , 0.25])
-)doc");
-
-  cls.def(
-      "is_approx",
-      [](Obj<SO3d> a, Obj<SO3d> b, RealLike tol) {
-        return a->is_approx(*b, to_tolerance(tol.obj, "SO3.is_approx(tol)"));
-      },
-      py::arg("other"), py::arg_v("tol", 1e-9),
-      R"doc(Whether two rotations are equal within tol: max |R_a - R_b| <= tol.
-
-``==`` is the exact comparison (every stored number equal).
-
-Args:
-    other: SO3.
-    tol: the largest accepted difference of matrix entries (>= 0).
-
-Returns:
-    bool.
-)doc");
-
   // ---- Euler angles (bind_euler.cpp) --------------------------------------
 
   cls.def_static(
@@ -568,9 +502,9 @@ Example:
 
   cls.def_static(
       "from_rpy",
-      [](ArrayLike rpy, bool degrees) {
+      [](ArrayLike rpy, FlagLike degrees) {
         Eigen::Vector3d t = to_finite_eigen<3>(rpy.obj, "SO3.from_rpy(rpy)");
-        if (degrees) t *= kDegToRad;
+        if (to_flag(degrees.obj, "SO3.from_rpy(degrees)")) t *= kDegToRad;
         return chasles::from_euler<chasles::EulerSequence::xyz>(t);
       },
       py::arg("rpy"), py::arg("degrees") = false,
@@ -590,6 +524,17 @@ Example:
     >>> SO3.from_rpy([0.1, 0.2, 0.3]) == SO3.from_euler("xyz", [0.1, 0.2, 0.3])
     True
 )doc");
+
+  // SO3.from_rpy(0.1, 0.2, 0.3) and other calls the signature refuses: the expected shape, not pybind11's list.
+  def_static_refusal(cls, "from_rpy", [](const py::args& args, const py::kwargs& kwargs) {
+    std::string got;
+    for (const auto& a : args) got += (got.empty() ? "" : ", ") + describe_argument(a);
+    for (const auto& kw : kwargs)
+      got += (got.empty() ? "" : ", ") + py::str(kw.first).cast<std::string>() + "=" + describe_argument(kw.second);
+    return "SO3.from_rpy(rpy, degrees=False): expected rpy, one array_like of shape (3,) (roll, pitch, yaw), and "
+           "degrees, a bool; got (" + got + ")" +
+           (args.size() == 3 ? ". Three angles are one argument: SO3.from_rpy([roll, pitch, yaw])" : "");
+  });
 
   cls.def(
       "as_rpy",
@@ -706,19 +651,6 @@ Example:
     True
 )doc");
 
-  // ---- Python protocols ---------------------------------------------------
-
-  // The state: the matrix row by row, checked as SO3.from_matrix checks one.
-  def_lie_group<9>(
-      cls, [](const SO3d& R) { return "SO3(matrix=" + array_repr(mat_out<3, 3>(R.matrix())) + ")"; },
-      [](const SO3d& R) { return row_major(R.matrix()); },
-      [](const double* v) {
-        const Matrix3 M = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(v);
-        require_finite(M, "SO3.__setstate__");
-        if (!SO3d::from_matrix(M, kRotationTolerance))
-          raise_not_rotation(M, kRotationTolerance, "SO3.__setstate__", false);
-        return SO3d::from_matrix_unchecked(M);
-      });
 }
 
 }  // namespace chasles_py

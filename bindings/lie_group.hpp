@@ -9,7 +9,9 @@
 #pragma once
 
 #include <cstdio>
+#include <cstring>
 #include <memory>
+#include <utility>
 #include <string>
 
 #include <chasles/jacobians.hpp>
@@ -33,6 +35,14 @@ struct Lie<chasles::SO3d> {
   static constexpr const char* tangent = "w";
   static constexpr const char* act_ufunc = "so3_act";
   static constexpr const char* act_hint = "an SO3 composes only with an SO3";
+  static constexpr const char* kind = "rotation";
+  static constexpr const char* inverse = "R^-1 = R^T";
+  static constexpr const char* matrix = "The rotation matrix R";
+  static constexpr const char* example = "[0.3, 0.2, 0.1]";
+  static constexpr const char* adjoint = "Ad_R = R (3x3), so that R exp([w]) R^T = exp([R w]).";
+  static constexpr const char* between = "in between, the rotation about one fixed axis\n(slerp). Values outside [0, 1] extrapolate";
+  static constexpr const char* approx = "max |R_a - R_b| <= tol";
+  static constexpr const char* tol = "the largest accepted difference of matrix entries (>= 0)";
   static constexpr Jacobian (*jacobians[4])(const Tangent&) = {
       [](const Tangent& w) { return chasles::so3_right_jacobian(w); },
       [](const Tangent& w) { return chasles::so3_left_jacobian(w); },
@@ -70,6 +80,17 @@ struct Lie<chasles::SE3d> {
   static constexpr const char* act_ufunc = "se3_act";
   static constexpr const char* act_hint =
       "an SE3 composes with an SE3 by @; it acts on a Twist or a Wrench by g.act(x)";
+  static constexpr const char* kind = "motion";
+  static constexpr const char* inverse = "g^-1 = [[R^T, -R^T p], [0, 1]]";
+  static constexpr const char* matrix = "The homogeneous matrix g = [[R, p], [0, 1]]";
+  static constexpr const char* example = "[0.1, 0.2, 0.3, 0.4, 0.5, 0.6]";
+  static constexpr const char* adjoint = "Ad_g = [[R, [p] R], [0, R]] (6x6, Murray-Li-Sastry order).\n\n"
+                                         "g [xi] g^-1 = [Ad_g xi]: twists change frame by xi_a = Ad_g xi_b; wrenches\n"
+                                         "by F_b = Ad_g^T F_a.";
+  static constexpr const char* between = "and the motion in between is one screw motion";
+  static constexpr const char* approx =
+      "rotation matrices within tol (absolute), translations within\ntol * max(1, |p|_max) (relative beyond unit scale)";
+  static constexpr const char* tol = "the tolerance (>= 0)";
   static constexpr Jacobian (*jacobians[4])(const Tangent&) = {
       [](const Tangent& xi) { return chasles::se3_right_jacobian(xi); },
       [](const Tangent& xi) { return chasles::se3_left_jacobian(xi); },
@@ -178,12 +199,110 @@ inline void check_single_scipy(py::handle obj, const char* kind, const char* wha
   }
 }
 
-/// What SO3 and SE3 share: the Jacobians of exp (static methods), the
-/// matrix as __array__, and the value protocol over the state of
-/// `state(g)` (def_value_protocol), made back by `from_state`.
+/// `text` with {G} (the class), {kind}, {inverse}, {matrix}, {example},
+/// {adjoint}, {between}, {approx}, {tol}, {N} and {D} of the group G.
+template <typename G>
+std::string group_text(std::string text) {
+  using L = Lie<G>;
+  const std::pair<const char*, std::string> fields[] = {
+      {"{G}", L::name},         {"{kind}", L::kind},         {"{inverse}", L::inverse}, {"{matrix}", L::matrix},
+      {"{example}", L::example}, {"{adjoint}", L::adjoint}, {"{between}", L::between}, {"{approx}", L::approx},
+      {"{tol}", L::tol},         {"{N}", std::to_string(L::N)}, {"{D}", std::to_string(L::D)}};
+  for (const auto& [key, value] : fields)
+    for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + value.size()))
+      text.replace(at, std::strlen(key), value);
+  return text;
+}
+
+/// A docstring of group_text, kept for the process (pybind11 keeps the pointer).
+template <typename G>
+const char* group_doc(const char* text) {
+  return (new std::string(group_text<G>(text)))->c_str();
+}
+
+/// What SO3 and SE3 share: the group operations (inverse, @, the action on
+/// points, adjoint, as_matrix, normalized, interpolate, is_approx) with one
+/// docstring for both, the Jacobians of exp (static methods), the matrix as
+/// __array__, and the value protocol over the state of `state(g)`
+/// (def_value_protocol), made back by `from_state`.
 template <int S, typename G, typename Repr, typename State, typename FromState>
 void def_lie_group(Class<G>& cls, Repr repr, State state, FromState from_state) {
   using L = Lie<G>;
+  cls.def("inverse", [](Obj<G> g) { return g->inverse(); }, group_doc<G>(R"doc(The inverse {kind} {inverse}.
+
+Returns:
+    {G}: the inverse.
+
+Example:
+    >>> g = {G}.exp({example})
+    >>> (g @ g.inverse()).is_approx({G}.identity())
+    True
+)doc"));
+  cls.def(
+      "__matmul__", [](Obj<G> a, Obj<G> b) { return *a * *b; }, py::arg("other"), py::is_operator(),
+      group_doc<G>(R"doc(Composition: g_ab @ g_bc = g_ac.
+
+Args:
+    other: {G}.
+
+Returns:
+    {G}: the composed {kind}.
+)doc"));
+  cls.def("adjoint", [](Obj<G> g) { return mat_out<L::D, L::D>(g->adjoint()); }, group_doc<G>(R"doc(The adjoint {adjoint}
+
+Returns:
+    ndarray: shape ({D}, {D}).
+)doc"));
+  cls.def("as_matrix", [](Obj<G> g) { return mat_out<L::N, L::N>(g->matrix()); }, group_doc<G>(R"doc({matrix}.
+
+Returns:
+    ndarray: shape ({N}, {N}), float64 (a new array).
+)doc"));
+  cls.def("normalized", [](Obj<G> g) { return g->normalized(); }, group_doc<G>(R"doc(The same {kind} with the nearest rotation.
+
+Removes the drift that accumulates over many compositions.
+
+Returns:
+    {G}: the projected {kind}.
+)doc"));
+  static const std::string interpolate_what = std::string(L::name) + ".interpolate(t)";
+  cls.def_static(
+      "interpolate",
+      [](Obj<G> a, Obj<G> b, RealLike t) {
+        return chasles::interpolate(*a, *b, to_finite_real(t.obj, interpolate_what.c_str()));
+      },
+      py::arg("a"), py::arg("b"), py::arg("t"), group_doc<G>(R"doc(Geodesic interpolation a exp(t log(a^-1 b)).
+
+t = 0 gives a, t = 1 gives b, {between}.
+
+Args:
+    a: {G}, the start.
+    b: {G}, the end.
+    t: the fraction, finite.
+
+Returns:
+    {G}: the interpolated {kind}.
+
+Example:
+    >>> a, b = {G}(), {G}.exp({example})
+    >>> {G}.interpolate(a, b, 0.5).is_approx(a @ {G}.exp(0.5 * np.array({example})))
+    True
+)doc"));
+  static const std::string tol_what = std::string(L::name) + ".is_approx(tol)";
+  cls.def(
+      "is_approx",
+      [](Obj<G> a, Obj<G> b, RealLike tol) { return a->is_approx(*b, to_tolerance(tol.obj, tol_what.c_str())); },
+      py::arg("other"), py::arg_v("tol", 1e-9), group_doc<G>(R"doc(Whether two {kind}s are equal within tol: {approx}.
+
+``==`` is the exact comparison (every stored number equal).
+
+Args:
+    other: {G}.
+    tol: {tol}.
+
+Returns:
+    bool.
+)doc"));
   static const char* const names[4] = {"right_jacobian", "left_jacobian", "right_jacobian_inverse",
                                        "left_jacobian_inverse"};
   static const char* const titles[4] = {"right Jacobian J_r", "left Jacobian J_l", "inverse right Jacobian J_r^-1",

@@ -360,7 +360,7 @@ class SO3:
         """
         Geodesic interpolation a exp(t log(a^-1 b)).
         
-        t = 0 gives a, t = 1 gives b; in between, the rotation about one fixed axis
+        t = 0 gives a, t = 1 gives b, in between, the rotation about one fixed axis
         (slerp). Values outside [0, 1] extrapolate.
         
         Args:
@@ -372,9 +372,9 @@ class SO3:
             SO3: the interpolated rotation.
         
         Example:
-            >>> a, b = SO3(), SO3.exp([0.0, 0.0, 1.0])
-            >>> np.round(SO3.interpolate(a, b, 0.25).log(), 12) + 0.0
-            array([0.  , 0.  , 0.25])
+            >>> a, b = SO3(), SO3.exp([0.3, 0.2, 0.1])
+            >>> SO3.interpolate(a, b, 0.5).is_approx(a @ SO3.exp(0.5 * np.array([0.3, 0.2, 0.1])))
+            True
         """
     @staticmethod
     def left_jacobian(w: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
@@ -560,7 +560,7 @@ class SO3:
     @typing.overload
     def __matmul__(self, other: SO3) -> SO3:
         """
-        Composition: R_ab @ R_bc = R_ac.
+        Composition: g_ab @ g_bc = g_ac.
         
         Args:
             other: SO3.
@@ -675,10 +675,10 @@ class SO3:
         """
     def as_matrix(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        The rotation matrix.
+        The rotation matrix R.
         
         Returns:
-            ndarray: R, shape (3, 3), float64 (a new array).
+            ndarray: shape (3, 3), float64 (a new array).
         """
     def as_quat(self, *, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -726,11 +726,11 @@ class SO3:
         The inverse rotation R^-1 = R^T.
         
         Returns:
-            SO3: R^T.
+            SO3: the inverse.
         
         Example:
-            >>> R = SO3.exp([0.3, 0.2, 0.1])
-            >>> (R @ R.inverse()).is_approx(SO3.identity())
+            >>> g = SO3.exp([0.3, 0.2, 0.1])
+            >>> (g @ g.inverse()).is_approx(SO3.identity())
             True
         """
     def is_approx(self, other: SO3, tol: float = 1e-09) -> bool:
@@ -762,7 +762,7 @@ class SO3:
         """
     def normalized(self) -> SO3:
         """
-        The nearest rotation to the stored matrix.
+        The same rotation with the nearest rotation.
         
         Removes the drift that accumulates over many compositions.
         
@@ -989,7 +989,7 @@ class SE3:
     @staticmethod
     def interpolate(a: SE3, b: SE3, t: float) -> SE3:
         """
-        Geodesic (screw) interpolation a exp(t log(a^-1 b)).
+        Geodesic interpolation a exp(t log(a^-1 b)).
         
         t = 0 gives a, t = 1 gives b, and the motion in between is one screw motion.
         
@@ -1002,9 +1002,9 @@ class SE3:
             SE3: the interpolated motion.
         
         Example:
-            >>> a, b = SE3(), SE3(translation=[2.0, 0.0, 0.0])
-            >>> SE3.interpolate(a, b, 0.5).translation
-            array([1., 0., 0.])
+            >>> a, b = SE3(), SE3.exp([0.1, 0.2, 0.3, 0.4, 0.5, 0.6])
+            >>> SE3.interpolate(a, b, 0.5).is_approx(a @ SE3.exp(0.5 * np.array([0.1, 0.2, 0.3, 0.4, 0.5, 0.6])))
+            True
         """
     @staticmethod
     def left_jacobian(xi: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
@@ -1326,7 +1326,7 @@ class SE3:
         The inverse motion g^-1 = [[R^T, -R^T p], [0, 1]].
         
         Returns:
-            SE3: g^-1.
+            SE3: the inverse.
         
         Example:
             >>> g = SE3.exp([0.1, 0.2, 0.3, 0.4, 0.5, 0.6])
@@ -1335,11 +1335,10 @@ class SE3:
         """
     def is_approx(self, other: SE3, tol: float = 1e-09) -> bool:
         """
-        Whether two motions are equal within tol.
+        Whether two motions are equal within tol: rotation matrices within tol (absolute), translations within
+        tol * max(1, |p|_max) (relative beyond unit scale).
         
-        Rotation matrices within tol (absolute), translations within
-        tol * max(1, |p|_max) (relative beyond unit scale). ``==`` is the exact
-        comparison (every stored number equal).
+        ``==`` is the exact comparison (every stored number equal).
         
         Args:
             other: SE3.
@@ -1364,7 +1363,9 @@ class SE3:
         """
     def normalized(self) -> SE3:
         """
-        The same motion with the nearest rotation (removes drift).
+        The same motion with the nearest rotation.
+        
+        Removes the drift that accumulates over many compositions.
         
         Returns:
             SE3: the projected motion.

@@ -291,3 +291,16 @@ def test_a_sequence_per_element_gives_each_elements_kernel():
 
 
 SEQUENCES_IN_ENUM_ORDER = [s for s in SEQUENCES if s.islower()] + [s for s in SEQUENCES if s.isupper()]
+
+
+def test_from_rpy_with_three_numbers_gets_chasles_error():
+    """SO3.from_rpy(0.1, 0.2, 0.3): chasles' TypeError naming the expected
+    shape, not pybind11's list of overloads."""
+    with pytest.raises(TypeError, match=r"SO3\.from_rpy\(rpy, degrees=False\): expected rpy, one array_like of "
+                       r"shape \(3,\).*Three angles are one argument: SO3\.from_rpy\(\[roll, pitch, yaw\]\)") as e:
+        chasles.SO3.from_rpy(0.1, 0.2, 0.3)
+    assert "incompatible function arguments" not in str(e.value) and "Invoked with" not in str(e.value)
+    with pytest.raises(TypeError, match=r"SO3\.from_rpy\(rpy, degrees=False\).*got \(\)"):
+        chasles.SO3.from_rpy()
+    assert chasles.SO3.from_rpy([0.1, 0.2, 0.3]) == chasles.SO3.from_euler("xyz", [0.1, 0.2, 0.3])
+    assert "args" not in str(__import__("inspect").signature(chasles.SO3.from_rpy))
