@@ -88,11 +88,12 @@ def _euler_sequence(seq: Any, name: str) -> np.intc:
 
 
 def _with_scalars(kwargs: dict, scalars: int, flags: int = 0) -> dict:
-    """kwargs for a private ufunc whose `scalars` operands (sequence, unit)
-    follow the one array operand, and whose result is followed by `flags`
-    more (the gimbal lock): axes= gets () for each scalar, and dtype= becomes
-    the signature of the array operand and of the result (numpy's loop
-    search needs both when the loop's operands are not all of one type)."""
+    """kwargs for a private ufunc whose `scalars` operands (the code of the
+    sequence and unit) follow the one array operand, and whose result is
+    followed by `flags` more (the gimbal lock): axes= gets () for each
+    scalar, and dtype= becomes the signature of the array operand and of the
+    result (numpy's loop search needs both when the loop's operands are not
+    all of one type)."""
     axes = kwargs.get("axes")
     if axes is not None and isinstance(axes, (list, tuple)):
         axes = list(axes)
@@ -105,15 +106,19 @@ def _with_scalars(kwargs: dict, scalars: int, flags: int = 0) -> dict:
 
 
 def _angles_and_flag(ufunc: np.ufunc, operands: tuple, kwargs: dict, return_gimbal_lock: bool) -> Any:
-    """Calls as_euler's ufunc, whose second result is the gimbal lock flag:
-    an out= array is the angles' (numpy makes the flags)."""
+    """Calls as_euler's ufunc; with return_gimbal_lock its `_lock` variant,
+    whose second result is the gimbal lock flag: an out= array is the
+    angles' (numpy makes the flags)."""
+    if not return_gimbal_lock:
+        return ufunc(*operands, **_with_scalars(kwargs, 1))
+    ufunc = getattr(_core, ufunc.__name__ + "_lock")
+    kwargs = _with_scalars(kwargs, 1, 1)
     out = kwargs.get("out")
     if out is not None and not isinstance(out, tuple):
         kwargs = dict(kwargs, out=(out, None))
     elif isinstance(out, tuple) and len(out) == 1:
         kwargs = dict(kwargs, out=(out[0], None))
-    angles, flag = ufunc(*operands, **kwargs)
-    return (angles, flag) if return_gimbal_lock else angles
+    return ufunc(*operands, **kwargs)
 
 
 def so3_from_euler(
@@ -149,8 +154,8 @@ def so3_from_euler(
                [ 1.,  0.,  0.],
                [ 0.,  0.,  1.]])
     """
-    n = _euler_sequence(seq, "so3_from_euler")
-    return _core._so3_from_euler(angles, n, np.bool_(bool(degrees)), **_with_scalars(kwargs, 2))
+    code = _euler_sequence(seq, "so3_from_euler") + np.intc(24 if degrees else 0)
+    return _core._so3_from_euler(angles, code, **_with_scalars(kwargs, 1))
 
 
 def so3_as_euler(
@@ -191,8 +196,8 @@ def so3_as_euler(
         >>> np.round(chasles.so3_as_euler("ZYX", R), 12)
         array([ 0.3, -0.2,  0.1])
     """
-    n = _euler_sequence(seq, "so3_as_euler")
-    return _angles_and_flag(_core._so3_as_euler, (R, n, np.bool_(bool(degrees))), _with_scalars(kwargs, 2, 1), return_gimbal_lock)
+    code = _euler_sequence(seq, "so3_as_euler") + np.intc(24 if degrees else 0)
+    return _angles_and_flag(_core._so3_as_euler, (R, code), kwargs, return_gimbal_lock)
 
 
 def so3_from_rpy(rpy: ArrayLike, /, degrees: bool = False, **kwargs: Any) -> np.ndarray:
@@ -215,7 +220,7 @@ def so3_from_rpy(rpy: ArrayLike, /, degrees: bool = False, **kwargs: Any) -> np.
         >>> bool((chasles.so3_from_rpy(rpy) == chasles.so3_from_euler("xyz", rpy)).all())
         True
     """
-    return _core._so3_from_rpy(rpy, np.bool_(bool(degrees)), **_with_scalars(kwargs, 1))
+    return _core._so3_from_rpy(rpy, np.intc(1 if degrees else 0), **_with_scalars(kwargs, 1))
 
 
 def so3_as_rpy(R: ArrayLike, /, degrees: bool = False, *, return_gimbal_lock: bool = False, **kwargs: Any) -> Any:
@@ -243,4 +248,4 @@ def so3_as_rpy(R: ArrayLike, /, degrees: bool = False, *, return_gimbal_lock: bo
         >>> np.round(chasles.so3_as_rpy(chasles.so3_from_rpy([0.1, 0.2, 0.3])), 12)
         array([0.1, 0.2, 0.3])
     """
-    return _angles_and_flag(_core._so3_as_rpy, (R, np.bool_(bool(degrees))), _with_scalars(kwargs, 1, 1), return_gimbal_lock)
+    return _angles_and_flag(_core._so3_as_rpy, (R, np.intc(1 if degrees else 0)), kwargs, return_gimbal_lock)

@@ -3252,9 +3252,11 @@ _se3_bspline_rates: numpy.ufunc
 _se3_spline: numpy.ufunc
 _se3_spline_rates: numpy.ufunc
 _so3_as_euler: numpy.ufunc
+_so3_as_euler_lock: numpy.ufunc
 _so3_as_quat_wxyz: numpy.ufunc
 _so3_as_quat_xyzw: numpy.ufunc
 _so3_as_rpy: numpy.ufunc
+_so3_as_rpy_lock: numpy.ufunc
 _so3_bspline: numpy.ufunc
 _so3_bspline_rates: numpy.ufunc
 _so3_from_euler: numpy.ufunc

@@ -272,22 +272,26 @@ def test_the_rpy_gimbal_lock_flag():
 
 
 def test_a_sequence_per_element_gives_each_elements_kernel():
-    """The private ufuncs take the sequence as an operand: an array of
-    sequences (runs of equal ones, or all different) gives, per element, the
-    bits of that sequence's kernel; an index outside the 24 gives NaN."""
+    """The private ufuncs take the sequence and unit as an operand (the
+    sequence's index, plus 24 for degrees): an array of codes (runs of equal
+    ones, or all different) gives, per element, the bits of that sequence's
+    and unit's kernel; a code outside [0, 48) gives NaN."""
     core = chasles._core
     rng = np.random.default_rng(3)
-    t = rng.uniform(-1.0, 1.0, size=(48, 3))
-    seqs = np.array([k % 24 for k in range(48)], dtype=np.intc)
-    seqs[10:20] = 5  # a run
-    R = core._so3_from_euler(t, seqs, False)
-    back, _ = core._so3_as_euler(R, seqs, True)
-    for i in range(48):
-        s = SEQUENCES_IN_ENUM_ORDER[seqs[i]]
-        assert np.array_equal(R[i], chasles.so3_from_euler(s, t[i]))
-        assert np.array_equal(back[i], chasles.so3_as_euler(s, R[i], degrees=True))
-    assert np.isnan(core._so3_from_euler(t[:2], 24, False)).all()
-    assert np.isnan(core._so3_from_euler(t[:2], -1, False)).all()
+    t = rng.uniform(-1.0, 1.0, size=(96, 3))
+    codes = np.array([k % 48 for k in range(96)], dtype=np.intc)
+    codes[10:20] = 5  # a run
+    R = core._so3_from_euler(t, codes)
+    back = core._so3_as_euler(R, codes)
+    back_lock, lock = core._so3_as_euler_lock(R, codes)
+    assert np.array_equal(back, back_lock) and lock.dtype == np.bool_
+    for i in range(96):
+        s, degrees = SEQUENCES_IN_ENUM_ORDER[codes[i] % 24], bool(codes[i] >= 24)
+        assert np.array_equal(R[i], chasles.so3_from_euler(s, t[i], degrees=degrees))
+        assert np.array_equal(back[i], chasles.so3_as_euler(s, R[i], degrees=degrees))
+    for bad in (48, -1):
+        assert np.isnan(core._so3_from_euler(t[:2], np.intc(bad))).all()
+        assert np.isnan(core._so3_as_euler(R[:2], np.intc(bad))).all()
 
 
 SEQUENCES_IN_ENUM_ORDER = [s for s in SEQUENCES if s.islower()] + [s for s in SEQUENCES if s.isupper()]
