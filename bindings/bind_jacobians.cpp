@@ -1,17 +1,15 @@
-// chasles._core: the Jacobians of include/chasles/jacobians.hpp as static
-// methods of SO3 and SE3 (right_jacobian, left_jacobian and their inverses),
-// the module-level rplus, rminus, lplus, lminus for SO3 and SE3, and the
-// module-level Jacobians of the group operations (log_jacobian,
-// inverse_jacobian, compose_jacobians, act_jacobians, interpolate_jacobian_t,
-// rplus_jacobians, rminus_jacobians, lplus_jacobians, lminus_jacobians,
-// between_jacobians) and between,
-// overloaded for SO3 and SE3, in the right-local convention; and the array
-// functions so3_act_jacobian, se3_act_jacobian (generalized ufuncs).
+// chasles._core: the module-level functions of the Lie groups, each written
+// once and overloaded for SO3 and SE3 (include/chasles/jacobians.hpp): rplus,
+// rminus, lplus, lminus, between, interpolate, and the Jacobians of the group
+// operations in the right-local convention (log_jacobian, inverse_jacobian,
+// compose_jacobians, act_jacobians, rplus_jacobians, rminus_jacobians,
+// lplus_jacobians, lminus_jacobians, between_jacobians,
+// interpolate_jacobian_t); and the array functions so3_act_jacobian,
+// se3_act_jacobian. The classes' own Jacobians are in lie_group.hpp.
 #include <chasles/jacobians.hpp>
 
-#include <cstdio>
-#include <string>
 #include <tuple>
+#include <type_traits>
 
 #include "bindings.hpp"
 #include "convert.hpp"
@@ -23,131 +21,108 @@ namespace {
 
 using chasles::SE3d;
 using chasles::SO3d;
-using Vector3 = Eigen::Vector3d;
-using Vector6 = Eigen::Matrix<double, 6, 1>;
-
-const char* const kSo3Doc = R"doc(The %s of SO(3) at the rotation vector w, shape (3, 3).
-
-Right (local) convention, as manif and Pinocchio:
-exp(w + dw) = exp(w) exp(J_r(w) dw + o(dw)) and
-exp(w + dw) = exp(J_l(w) dw + o(dw)) exp(w), with
-J_r(w) = I - B [w] + C [w]^2, J_l(w) = J_r(-w) = I + B [w] + C [w]^2,
-B = (1 - cos theta) / theta^2, C = (theta - sin theta) / theta^3;
-J_r^-1 = I + 1/2 [w] + D [w]^2, J_l^-1 = I - 1/2 [w] + D [w]^2,
-D = (1 - (theta/2) cot(theta/2)) / theta^2 (finite for |w| < 2 pi).
-
-Args:
-    w: rotation vector, shape (3,), finite.
-
-Returns:
-    ndarray: shape (3, 3), float64.
-
-Raises:
-    ValueError: w is not of shape (3,), or not finite.
-    TypeError: w is not real.
-)doc";
-
-const char* const kSe3Doc = R"doc(The %s of SE(3) at the twist xi = (v, w), shape (6, 6).
-
-Linear part first. Right (local) convention, as manif and Pinocchio:
-exp(xi + dxi) = exp(xi) exp(J_r(xi) dxi + o(dxi)) and
-exp(xi + dxi) = exp(J_l(xi) dxi + o(dxi)) exp(xi), with
-J_l(xi) = [[J_l(w), Q(v, w)], [0, J_l(w)]] (Barfoot; Sola et al. 2018,
-eq. 180), J_r(xi) = J_l(-xi), and the inverses by the block formula
-[[J^-1, -J^-1 Q J^-1], [0, J^-1]].
-
-Args:
-    xi: twist (v, w), shape (6,), finite.
-
-Returns:
-    ndarray: shape (6, 6), float64.
-
-Raises:
-    ValueError: xi is not of shape (6,), or not finite.
-    TypeError: xi is not real.
-)doc";
-
 using Matrices = std::tuple<py::array_t<double>, py::array_t<double>>;
 
-std::string doc_for(const char* fmt, const char* name) {
-  char buf[2048];
-  std::snprintf(buf, sizeof buf, fmt, name);
-  return buf;
+/// The (lhs, rhs) Jacobians of a binary function as two arrays.
+template <typename J>
+Matrices pair(const J& j) {
+  return Matrices(mat_out(j.lhs), mat_out(j.rhs));
 }
+
+/// Defines the function `name` of `Def` (a class template over the group
+/// G and its tangent dimension D, with a static `f`) for SO3, then for SE3.
+/// pybind11 shows the signatures of the overloads, each followed by its
+/// docstring: the text common to both groups is given once, with the SE3
+/// overload; SO3's own text, if any, with its overload.
+template <template <typename, int> class Def, typename... Extra>
+void def_overloads(py::module_& m, const char* name, const char* doc, const char* so3_doc, const Extra&... extra) {
+  if (so3_doc != nullptr)
+    m.def(name, &Def<SO3d, 3>::f, extra..., so3_doc);
+  else
+    m.def(name, &Def<SO3d, 3>::f, extra...);
+  m.def(name, &Def<SE3d, 6>::f, extra..., doc);
+}
+
+template <typename G, int D>
+struct Rplus {
+  static auto f(Obj<G> x, ArrayLike xi) { return chasles::rplus(*x, to_finite_eigen<D>(xi.obj, "rplus(g, xi)")); }
+};
+template <typename G, int D>
+struct Rminus {
+  static auto f(Obj<G> x, Obj<G> h) { return vec_out(chasles::rminus(*x, *h)); }
+};
+template <typename G, int D>
+struct Lplus {
+  static auto f(ArrayLike xi, Obj<G> x) { return chasles::lplus(to_finite_eigen<D>(xi.obj, "lplus(xi, g)"), *x); }
+};
+template <typename G, int D>
+struct Lminus {
+  static auto f(Obj<G> x, Obj<G> h) { return vec_out(chasles::lminus(*x, *h)); }
+};
+template <typename G, int D>
+struct Between {
+  static auto f(Obj<G> a, Obj<G> b) { return chasles::between(*a, *b); }
+};
+template <typename G, int D>
+struct Interpolate {
+  static auto f(Obj<G> a, Obj<G> b, RealLike t) {
+    return chasles::interpolate(*a, *b, to_finite_real(t.obj, "interpolate(t)"));
+  }
+};
+template <typename G, int D>
+struct LogJacobian {
+  static auto f(Obj<G> x) { return mat_out(chasles::log_jacobian(*x)); }
+};
+template <typename G, int D>
+struct InverseJacobian {
+  static auto f(Obj<G> x) { return mat_out(chasles::inverse_jacobian(*x)); }
+};
+template <typename G, int D>
+struct ComposeJacobians {
+  static auto f(Obj<G> a, Obj<G> b) { return pair(chasles::compose_jacobians(*a, *b)); }
+};
+template <typename G, int D>
+struct ActJacobians {
+  static auto f(Obj<G> x, ArrayLike p) {
+    const auto J = chasles::act_jacobians(*x, to_finite_eigen<3>(p.obj, "act_jacobians(g, p)"));
+    return Matrices(mat_out(J.group), mat_out(J.point));
+  }
+};
+template <typename G, int D>
+struct RplusJacobians {
+  static auto f(Obj<G> x, ArrayLike xi) {
+    return pair(chasles::rplus_jacobians(*x, to_finite_eigen<D>(xi.obj, "rplus_jacobians(g, xi)")));
+  }
+};
+template <typename G, int D>
+struct RminusJacobians {
+  static auto f(Obj<G> x, Obj<G> h) { return pair(chasles::rminus_jacobians(*x, *h)); }
+};
+template <typename G, int D>
+struct LplusJacobians {
+  static auto f(ArrayLike xi, Obj<G> x) {
+    return pair(chasles::lplus_jacobians(to_finite_eigen<D>(xi.obj, "lplus_jacobians(xi, g)"), *x));
+  }
+};
+template <typename G, int D>
+struct LminusJacobians {
+  static auto f(Obj<G> x, Obj<G> h) { return pair(chasles::lminus_jacobians(*x, *h)); }
+};
+template <typename G, int D>
+struct BetweenJacobians {
+  static auto f(Obj<G> a, Obj<G> b) { return pair(chasles::between_jacobians(*a, *b)); }
+};
+template <typename G, int D>
+struct InterpolateJacobianT {
+  static auto f(Obj<G> a, Obj<G> b, RealLike t) {
+    return vec_out(chasles::interpolate_jacobian_t(*a, *b, to_finite_real(t.obj, "interpolate_jacobian_t(t)")));
+  }
+};
 
 }  // namespace
 
 void bind_jacobians(py::module_& m) {
-  auto so3 = py::reinterpret_borrow<py::class_<SO3d, InlineHolder<SO3d>>>(m.attr("SO3"));
-  auto se3 = py::reinterpret_borrow<py::class_<SE3d, InlineHolder<SE3d>>>(m.attr("SE3"));
-
-  // The docstrings must outlive the module: pybind11 keeps the pointer.
-  static const std::string so3_docs[4] = {doc_for(kSo3Doc, "right Jacobian J_r"), doc_for(kSo3Doc, "left Jacobian J_l"),
-                                          doc_for(kSo3Doc, "inverse right Jacobian J_r^-1"),
-                                          doc_for(kSo3Doc, "inverse left Jacobian J_l^-1")};
-  static const std::string se3_docs[4] = {doc_for(kSe3Doc, "right Jacobian J_r"), doc_for(kSe3Doc, "left Jacobian J_l"),
-                                          doc_for(kSe3Doc, "inverse right Jacobian J_r^-1"),
-                                          doc_for(kSe3Doc, "inverse left Jacobian J_l^-1")};
-
-  so3.def_static(
-      "right_jacobian",
-      [](ArrayLike w) { return mat_out<3, 3>(chasles::so3_right_jacobian(to_finite_eigen<3>(w.obj, "SO3.right_jacobian(w)"))); },
-      py::arg("w"), so3_docs[0].c_str());
-  so3.def_static(
-      "left_jacobian",
-      [](ArrayLike w) { return mat_out<3, 3>(chasles::so3_left_jacobian(to_finite_eigen<3>(w.obj, "SO3.left_jacobian(w)"))); },
-      py::arg("w"), so3_docs[1].c_str());
-  so3.def_static(
-      "right_jacobian_inverse",
-      [](ArrayLike w) {
-        return mat_out<3, 3>(
-            chasles::so3_right_jacobian_inverse(to_finite_eigen<3>(w.obj, "SO3.right_jacobian_inverse(w)")));
-      },
-      py::arg("w"), so3_docs[2].c_str());
-  so3.def_static(
-      "left_jacobian_inverse",
-      [](ArrayLike w) {
-        return mat_out<3, 3>(
-            chasles::so3_left_jacobian_inverse(to_finite_eigen<3>(w.obj, "SO3.left_jacobian_inverse(w)")));
-      },
-      py::arg("w"), so3_docs[3].c_str());
-
-  se3.def_static(
-      "right_jacobian",
-      [](ArrayLike xi) {
-        return mat_out<6, 6>(chasles::se3_right_jacobian(to_finite_eigen<6>(xi.obj, "SE3.right_jacobian(xi)")));
-      },
-      py::arg("xi"), se3_docs[0].c_str());
-  se3.def_static(
-      "left_jacobian",
-      [](ArrayLike xi) {
-        return mat_out<6, 6>(chasles::se3_left_jacobian(to_finite_eigen<6>(xi.obj, "SE3.left_jacobian(xi)")));
-      },
-      py::arg("xi"), se3_docs[1].c_str());
-  se3.def_static(
-      "right_jacobian_inverse",
-      [](ArrayLike xi) {
-        return mat_out<6, 6>(
-            chasles::se3_right_jacobian_inverse(to_finite_eigen<6>(xi.obj, "SE3.right_jacobian_inverse(xi)")));
-      },
-      py::arg("xi"), se3_docs[2].c_str());
-  se3.def_static(
-      "left_jacobian_inverse",
-      [](ArrayLike xi) {
-        return mat_out<6, 6>(
-            chasles::se3_left_jacobian_inverse(to_finite_eigen<6>(xi.obj, "SE3.left_jacobian_inverse(xi)")));
-      },
-      py::arg("xi"), se3_docs[3].c_str());
-
-  // ---- plus and minus -----------------------------------------------------
-
-  m.def(
-      "rplus", [](Obj<SO3d> g, ArrayLike xi) { return chasles::rplus(*g, to_finite_eigen<3>(xi.obj, "rplus(g, xi)")); },
-      py::arg("g"), py::arg("xi"));
-  m.def(
-      "rplus", [](Obj<SE3d> g, ArrayLike xi) { return chasles::rplus(*g, to_finite_eigen<6>(xi.obj, "rplus(g, xi)")); },
-      py::arg("g"), py::arg("xi"),
-      R"doc(g rplus xi = g exp(xi): a perturbation in g's own (local, right) frame.
+  def_overloads<Rplus>(m, "rplus", R"doc(g rplus xi = g exp(xi): a perturbation in g's own (local, right) frame.
 
 Args:
     g: SO3 or SE3.
@@ -164,14 +139,9 @@ Example:
     >>> g = chasles.SE3(translation=[1.0, 0.0, 0.0])
     >>> chasles.rplus(g, [0.0, 2.0, 0.0, 0.0, 0.0, 0.0]).translation
     array([1., 2., 0.])
-)doc");
-  m.def(
-      "rminus", [](Obj<SO3d> g, Obj<SO3d> h) { return vec_out<3>(chasles::rminus(*g, *h)); }, py::arg("g"),
-      py::arg("h"));
-  m.def(
-      "rminus", [](Obj<SE3d> g, Obj<SE3d> h) { return vec_out<6>(chasles::rminus(*g, *h)); }, py::arg("g"),
-      py::arg("h"),
-      R"doc(g rminus h = log(h^-1 g): the xi with rplus(h, xi) == g ("g minus h").
+)doc",
+                             nullptr, py::arg("g"), py::arg("xi"));
+  def_overloads<Rminus>(m, "rminus", R"doc(g rminus h = log(h^-1 g): the xi with rplus(h, xi) == g ("g minus h").
 
 The order is manif's g.rminus(h); jaxlie's rminus(a, b) = log(a^-1 b) takes
 the arguments the other way round.
@@ -188,14 +158,9 @@ Example:
     >>> g = h @ chasles.SO3.exp([0.3, 0.0, 0.0])
     >>> np.round(chasles.rminus(g, h), 12) + 0.0
     array([0.3, 0. , 0. ])
-)doc");
-  m.def(
-      "lplus", [](ArrayLike xi, Obj<SO3d> g) { return chasles::lplus(to_finite_eigen<3>(xi.obj, "lplus(xi, g)"), *g); },
-      py::arg("xi"), py::arg("g"));
-  m.def(
-      "lplus", [](ArrayLike xi, Obj<SE3d> g) { return chasles::lplus(to_finite_eigen<6>(xi.obj, "lplus(xi, g)"), *g); },
-      py::arg("xi"), py::arg("g"),
-      R"doc(xi lplus g = exp(xi) g: a perturbation in the fixed (global, left) frame.
+)doc",
+                             nullptr, py::arg("g"), py::arg("h"));
+  def_overloads<Lplus>(m, "lplus", R"doc(xi lplus g = exp(xi) g: a perturbation in the fixed (global, left) frame.
 
 Args:
     xi: tangent vector, shape (3,) for SO3, (6,) for SE3 ((v, w)), finite.
@@ -206,14 +171,9 @@ Returns:
 
 Raises:
     ValueError: xi has the wrong shape for g, or is not finite.
-)doc");
-  m.def(
-      "lminus", [](Obj<SO3d> g, Obj<SO3d> h) { return vec_out<3>(chasles::lminus(*g, *h)); }, py::arg("g"),
-      py::arg("h"));
-  m.def(
-      "lminus", [](Obj<SE3d> g, Obj<SE3d> h) { return vec_out<6>(chasles::lminus(*g, *h)); }, py::arg("g"),
-      py::arg("h"),
-      R"doc(g lminus h = log(g h^-1): the xi with lplus(xi, h) == g.
+)doc",
+                             nullptr, py::arg("xi"), py::arg("g"));
+  def_overloads<Lminus>(m, "lminus", R"doc(g lminus h = log(g h^-1): the xi with lplus(xi, h) == g.
 
 Args:
     g: SO3 or SE3.
@@ -221,14 +181,53 @@ Args:
 
 Returns:
     ndarray: shape (3,) for SO3, (6,) for SE3 ((v, w), linear part first).
-)doc");
-  // ---- Jacobians of the group operations (right-local convention) --------
+)doc",
+                             nullptr, py::arg("g"), py::arg("h"));
+  def_overloads<Between>(m, "between", R"doc(between(a, b) = a^-1 b: b seen from a (manif's a.between(b)).
 
-  m.def(
-      "log_jacobian", [](Obj<SO3d> g) { return mat_out<3, 3>(chasles::log_jacobian(*g)); }, py::arg("g"));
-  m.def(
-      "log_jacobian", [](Obj<SE3d> g) { return mat_out<6, 6>(chasles::log_jacobian(*g)); }, py::arg("g"),
-      R"doc(The Jacobian of g -> log(g), in the right-local convention.
+Args:
+    a: SO3 or SE3.
+    b: of the same group as a.
+
+Returns:
+    SO3 or SE3: a^-1 b.
+
+Raises:
+    TypeError: a and b are not of the same group.
+
+Example:
+    >>> a = chasles.SE3(translation=[1.0, 0.0, 0.0])
+    >>> b = chasles.SE3(translation=[1.0, 2.0, 0.0])
+    >>> chasles.between(a, b).translation
+    array([0., 2., 0.])
+)doc",
+                             nullptr, py::arg("a"), py::arg("b"));
+  def_overloads<Interpolate>(m, "interpolate", R"doc(Screw interpolation of rigid motions a exp(t log(a^-1 b)) (as SE3.interpolate).
+
+Args:
+    a: SE3, the start (t = 0).
+    b: SE3, the end (t = 1).
+    t: the fraction, finite.
+
+Returns:
+    SE3: the interpolated motion.
+
+Example:
+    >>> m = chasles.interpolate(SE3(), SE3(translation=[0.0, 0.0, 4.0]), 0.25)
+    >>> m.translation
+    array([0., 0., 1.])
+)doc",
+                             R"doc(Geodesic interpolation of rotations a exp(t log(a^-1 b)) (as SO3.interpolate).
+
+Args:
+    a: SO3, the start (t = 0).
+    b: SO3, the end (t = 1).
+    t: the fraction, finite.
+
+Returns:
+    SO3: the interpolated rotation.
+)doc", py::arg("a"), py::arg("b"), py::arg("t"));
+  def_overloads<LogJacobian>(m, "log_jacobian", R"doc(The Jacobian of g -> log(g), in the right-local convention.
 
 For a map f to the tangent space the right-local Jacobian J is defined by
 f(g exp(dx)) = f(g) + J dx + o(dx); here J = J_r(log g)^-1 (Sola et al.
@@ -248,13 +247,9 @@ Example:
     >>> bool(np.allclose(chasles.rplus(g, dx).log() - g.log(),
     ...                  chasles.log_jacobian(g) @ dx, atol=1e-13))
     True
-)doc");
-
-  m.def(
-      "inverse_jacobian", [](Obj<SO3d> g) { return mat_out<3, 3>(chasles::inverse_jacobian(*g)); }, py::arg("g"));
-  m.def(
-      "inverse_jacobian", [](Obj<SE3d> g) { return mat_out<6, 6>(chasles::inverse_jacobian(*g)); }, py::arg("g"),
-      R"doc(The Jacobian of g -> g^-1, in the right-local convention: -Ad_g.
+)doc",
+                             nullptr, py::arg("g"));
+  def_overloads<InverseJacobian>(m, "inverse_jacobian", R"doc(The Jacobian of g -> g^-1, in the right-local convention: -Ad_g.
 
 Right-local: f(g exp(dx)) = f(g) exp(J dx + o(dx)); here
 (g exp(dx))^-1 = g^-1 exp(-Ad_g dx), so J = -Ad_g (Sola et al. 2018,
@@ -273,23 +268,9 @@ Example:
     array([[ 0.,  1.,  0.],
            [-1.,  0.,  0.],
            [ 0.,  0., -1.]])
-)doc");
-
-  m.def(
-      "compose_jacobians",
-      [](Obj<SO3d> a, Obj<SO3d> b) {
-        const auto J = chasles::compose_jacobians(*a, *b);
-        return Matrices(mat_out<3, 3>(J.lhs), mat_out<3, 3>(J.rhs));
-      },
-      py::arg("a"), py::arg("b"));
-  m.def(
-      "compose_jacobians",
-      [](Obj<SE3d> a, Obj<SE3d> b) {
-        const auto J = chasles::compose_jacobians(*a, *b);
-        return Matrices(mat_out<6, 6>(J.lhs), mat_out<6, 6>(J.rhs));
-      },
-      py::arg("a"), py::arg("b"),
-      R"doc(The Jacobians (J_a, J_b) of (a, b) -> a b, in the right-local convention.
+)doc",
+                             nullptr, py::arg("g"));
+  def_overloads<ComposeJacobians>(m, "compose_jacobians", R"doc(The Jacobians (J_a, J_b) of (a, b) -> a b, in the right-local convention.
 
 Right-local: (a exp(da)) (b exp(db)) = a b exp(J_a da + J_b db + o(da, db)),
 with J_a = Ad_{b^-1} and J_b = I (Sola et al. 2018, section IV).
@@ -310,23 +291,9 @@ Example:
     >>> J_a, J_b = chasles.compose_jacobians(a, b)
     >>> bool(np.allclose(J_a, b.inverse().as_matrix())), bool(np.array_equal(J_b, np.eye(3)))
     (True, True)
-)doc");
-
-  m.def(
-      "act_jacobians",
-      [](Obj<SO3d> g, ArrayLike p) {
-        const auto J = chasles::act_jacobians(*g, to_finite_eigen<3>(p.obj, "act_jacobians(g, p)"));
-        return Matrices(mat_out<3, 3>(J.group), mat_out<3, 3>(J.point));
-      },
-      py::arg("g"), py::arg("p"));
-  m.def(
-      "act_jacobians",
-      [](Obj<SE3d> g, ArrayLike p) {
-        const auto J = chasles::act_jacobians(*g, to_finite_eigen<3>(p.obj, "act_jacobians(g, p)"));
-        return Matrices(mat_out<3, 6>(J.group), mat_out<3, 3>(J.point));
-      },
-      py::arg("g"), py::arg("p"),
-      R"doc(The Jacobians (J_g, J_p) of (g, p) -> g p (the action on a point).
+)doc",
+                             nullptr, py::arg("a"), py::arg("b"));
+  def_overloads<ActJacobians>(m, "act_jacobians", R"doc(The Jacobians (J_g, J_p) of (g, p) -> g p (the action on a point).
 
 Right-local in g: (g exp(dx)) (p + dp) = g p + J_g dx + J_p dp + o(dx, dp).
 SO3: J_g = -R [p], J_p = R; SE3: J_g = [R, -R [p]] (columns (v, w), linear
@@ -350,25 +317,9 @@ Example:
     array([[ 1.,  0.,  0.,  0.,  1.,  0.],
            [ 0.,  1.,  0., -1.,  0.,  0.],
            [ 0.,  0.,  1.,  0.,  0.,  0.]])
-)doc");
-
-  // ---- Jacobians of plus, minus and between (right-local convention) ----
-
-  m.def(
-      "rplus_jacobians",
-      [](Obj<SO3d> g, ArrayLike xi) {
-        const auto J = chasles::rplus_jacobians(*g, to_finite_eigen<3>(xi.obj, "rplus_jacobians(g, xi)"));
-        return Matrices(mat_out<3, 3>(J.lhs), mat_out<3, 3>(J.rhs));
-      },
-      py::arg("g"), py::arg("xi"));
-  m.def(
-      "rplus_jacobians",
-      [](Obj<SE3d> g, ArrayLike xi) {
-        const auto J = chasles::rplus_jacobians(*g, to_finite_eigen<6>(xi.obj, "rplus_jacobians(g, xi)"));
-        return Matrices(mat_out<6, 6>(J.lhs), mat_out<6, 6>(J.rhs));
-      },
-      py::arg("g"), py::arg("xi"),
-      R"doc(The Jacobians (J_g, J_xi) of (g, xi) -> rplus(g, xi) = g exp(xi).
+)doc",
+                             nullptr, py::arg("g"), py::arg("p"));
+  def_overloads<RplusJacobians>(m, "rplus_jacobians", R"doc(The Jacobians (J_g, J_xi) of (g, xi) -> rplus(g, xi) = g exp(xi).
 
 Right-local: rplus(g exp(dg), xi + dxi) = rplus(g, xi) exp(J_g dg + J_xi dxi
 + o), with J_g = Ad_{exp(xi)}^-1 = Ad_{exp(-xi)} and J_xi = J_r(xi) (Sola et
@@ -390,23 +341,9 @@ Example:
     >>> J_g, J_xi = chasles.rplus_jacobians(chasles.SO3(), [0.0, 0.0, 0.0])
     >>> bool(np.array_equal(J_g, np.eye(3))), bool(np.array_equal(J_xi, np.eye(3)))
     (True, True)
-)doc");
-
-  m.def(
-      "rminus_jacobians",
-      [](Obj<SO3d> g, Obj<SO3d> h) {
-        const auto J = chasles::rminus_jacobians(*g, *h);
-        return Matrices(mat_out<3, 3>(J.lhs), mat_out<3, 3>(J.rhs));
-      },
-      py::arg("g"), py::arg("h"));
-  m.def(
-      "rminus_jacobians",
-      [](Obj<SE3d> g, Obj<SE3d> h) {
-        const auto J = chasles::rminus_jacobians(*g, *h);
-        return Matrices(mat_out<6, 6>(J.lhs), mat_out<6, 6>(J.rhs));
-      },
-      py::arg("g"), py::arg("h"),
-      R"doc(The Jacobians (J_g, J_h) of (g, h) -> rminus(g, h) = log(h^-1 g).
+)doc",
+                             nullptr, py::arg("g"), py::arg("xi"));
+  def_overloads<RminusJacobians>(m, "rminus_jacobians", R"doc(The Jacobians (J_g, J_h) of (g, h) -> rminus(g, h) = log(h^-1 g).
 
 Right-local: rminus(g exp(dg), h exp(dh)) = rminus(g, h) + J_g dg + J_h dh
 + o, with xi = rminus(g, h), J_g = J_r(xi)^-1 and J_h = -J_l(xi)^-1 (Sola et
@@ -428,23 +365,9 @@ Example:
     >>> J_g, J_h = chasles.rminus_jacobians(chasles.SE3(), chasles.SE3())
     >>> bool(np.array_equal(J_g, np.eye(6))), bool(np.array_equal(J_h, -np.eye(6)))
     (True, True)
-)doc");
-
-  m.def(
-      "lplus_jacobians",
-      [](ArrayLike xi, Obj<SO3d> g) {
-        const auto J = chasles::lplus_jacobians(to_finite_eigen<3>(xi.obj, "lplus_jacobians(xi, g)"), *g);
-        return Matrices(mat_out<3, 3>(J.lhs), mat_out<3, 3>(J.rhs));
-      },
-      py::arg("xi"), py::arg("g"));
-  m.def(
-      "lplus_jacobians",
-      [](ArrayLike xi, Obj<SE3d> g) {
-        const auto J = chasles::lplus_jacobians(to_finite_eigen<6>(xi.obj, "lplus_jacobians(xi, g)"), *g);
-        return Matrices(mat_out<6, 6>(J.lhs), mat_out<6, 6>(J.rhs));
-      },
-      py::arg("xi"), py::arg("g"),
-      R"doc(The Jacobians (J_xi, J_g) of (xi, g) -> lplus(xi, g) = exp(xi) g.
+)doc",
+                             nullptr, py::arg("g"), py::arg("h"));
+  def_overloads<LplusJacobians>(m, "lplus_jacobians", R"doc(The Jacobians (J_xi, J_g) of (xi, g) -> lplus(xi, g) = exp(xi) g.
 
 Right-local in the result and in g: lplus(xi + dxi, g exp(dg)) =
 lplus(xi, g) exp(J_xi dxi + J_g dg + o), with J_xi = Ad_{g^-1} J_r(xi) and
@@ -467,23 +390,9 @@ Example:
     >>> J_xi, J_g = chasles.lplus_jacobians([0.0, 0.0, 0.0], g)
     >>> bool(np.allclose(J_xi, g.inverse().as_matrix())), bool(np.array_equal(J_g, np.eye(3)))
     (True, True)
-)doc");
-
-  m.def(
-      "lminus_jacobians",
-      [](Obj<SO3d> g, Obj<SO3d> h) {
-        const auto J = chasles::lminus_jacobians(*g, *h);
-        return Matrices(mat_out<3, 3>(J.lhs), mat_out<3, 3>(J.rhs));
-      },
-      py::arg("g"), py::arg("h"));
-  m.def(
-      "lminus_jacobians",
-      [](Obj<SE3d> g, Obj<SE3d> h) {
-        const auto J = chasles::lminus_jacobians(*g, *h);
-        return Matrices(mat_out<6, 6>(J.lhs), mat_out<6, 6>(J.rhs));
-      },
-      py::arg("g"), py::arg("h"),
-      R"doc(The Jacobians (J_g, J_h) of (g, h) -> lminus(g, h) = log(g h^-1).
+)doc",
+                             nullptr, py::arg("xi"), py::arg("g"));
+  def_overloads<LminusJacobians>(m, "lminus_jacobians", R"doc(The Jacobians (J_g, J_h) of (g, h) -> lminus(g, h) = log(g h^-1).
 
 Right-local in the arguments: lminus(g exp(dg), h exp(dh)) = lminus(g, h) +
 J_g dg + J_h dh + o, with xi = lminus(g, h), J_g = J_r(xi)^-1 Ad_h and
@@ -506,46 +415,9 @@ Example:
     >>> J_g, J_h = chasles.lminus_jacobians(h, h)
     >>> bool(np.allclose(J_g, h.as_matrix())), bool(np.array_equal(J_h, -J_g))
     (True, True)
-)doc");
-
-  m.def(
-      "between", [](Obj<SO3d> a, Obj<SO3d> b) { return chasles::between(*a, *b); }, py::arg("a"), py::arg("b"));
-  m.def(
-      "between", [](Obj<SE3d> a, Obj<SE3d> b) { return chasles::between(*a, *b); }, py::arg("a"), py::arg("b"),
-      R"doc(between(a, b) = a^-1 b: b seen from a (manif's a.between(b)).
-
-Args:
-    a: SO3 or SE3.
-    b: of the same group as a.
-
-Returns:
-    SO3 or SE3: a^-1 b.
-
-Raises:
-    TypeError: a and b are not of the same group.
-
-Example:
-    >>> a = chasles.SE3(translation=[1.0, 0.0, 0.0])
-    >>> b = chasles.SE3(translation=[1.0, 2.0, 0.0])
-    >>> chasles.between(a, b).translation
-    array([0., 2., 0.])
-)doc");
-
-  m.def(
-      "between_jacobians",
-      [](Obj<SO3d> a, Obj<SO3d> b) {
-        const auto J = chasles::between_jacobians(*a, *b);
-        return Matrices(mat_out<3, 3>(J.lhs), mat_out<3, 3>(J.rhs));
-      },
-      py::arg("a"), py::arg("b"));
-  m.def(
-      "between_jacobians",
-      [](Obj<SE3d> a, Obj<SE3d> b) {
-        const auto J = chasles::between_jacobians(*a, *b);
-        return Matrices(mat_out<6, 6>(J.lhs), mat_out<6, 6>(J.rhs));
-      },
-      py::arg("a"), py::arg("b"),
-      R"doc(The Jacobians (J_a, J_b) of (a, b) -> between(a, b) = a^-1 b.
+)doc",
+                             nullptr, py::arg("g"), py::arg("h"));
+  def_overloads<BetweenJacobians>(m, "between_jacobians", R"doc(The Jacobians (J_a, J_b) of (a, b) -> between(a, b) = a^-1 b.
 
 Right-local: between(a exp(da), b exp(db)) = between(a, b) exp(J_a da +
 J_b db + o), with J_a = -Ad_{b^-1 a} and J_b = I (Sola et al. 2018,
@@ -567,23 +439,9 @@ Example:
     >>> J_a, J_b = chasles.between_jacobians(a, chasles.SO3())
     >>> bool(np.allclose(J_a, -a.as_matrix())), bool(np.array_equal(J_b, np.eye(3)))
     (True, True)
-)doc");
-
-  m.def(
-      "interpolate_jacobian_t",
-      [](Obj<SO3d> a, Obj<SO3d> b, RealLike t) {
-        return vec_out<3>(
-            chasles::interpolate_jacobian_t(*a, *b, to_finite_real(t.obj, "interpolate_jacobian_t(t)")));
-      },
-      py::arg("a"), py::arg("b"), py::arg("t"));
-  m.def(
-      "interpolate_jacobian_t",
-      [](Obj<SE3d> a, Obj<SE3d> b, RealLike t) {
-        return vec_out<6>(
-            chasles::interpolate_jacobian_t(*a, *b, to_finite_real(t.obj, "interpolate_jacobian_t(t)")));
-      },
-      py::arg("a"), py::arg("b"), py::arg("t"),
-      R"doc(The derivative in t of interpolate(a, b, t) = a exp(t log(a^-1 b)).
+)doc",
+                             nullptr, py::arg("a"), py::arg("b"));
+  def_overloads<InterpolateJacobianT>(m, "interpolate_jacobian_t", R"doc(The derivative in t of interpolate(a, b, t) = a exp(t log(a^-1 b)).
 
 Right-local: interpolate(a, b, t + dt) = interpolate(a, b, t) exp(J dt + o(dt)),
 and J = J_r(t xi) xi = xi = rminus(b, a) = log(a^-1 b), the same for every t
@@ -606,7 +464,8 @@ Example:
     >>> a, b = chasles.SE3(), chasles.SE3(translation=[2.0, 0.0, 0.0])
     >>> chasles.interpolate_jacobian_t(a, b, 0.5)
     array([2., 0., 0., 0., 0., 0.])
-)doc");
+)doc",
+                             nullptr, py::arg("a"), py::arg("b"), py::arg("t"));
 
   // ---- the Jacobian of the point action for many points (array functions) ----
 

@@ -1,7 +1,9 @@
-// chasles._core: class SE3 over chasles::SE3d (include/chasles/se3.hpp), and
-// the module-level interpolate. SE3's actions on Twist and Wrench are added in
-// bind_twist_wrench.cpp, once those classes exist.
+// chasles._core: class SE3 over chasles::SE3d (include/chasles/se3.hpp); what
+// it shares with SO3 is in lie_group.hpp.
+#include <chasles/random.hpp>
 #include <chasles/se3.hpp>
+#include <chasles/twist.hpp>
+#include <chasles/wrench.hpp>
 
 #include <cmath>
 #include <string>
@@ -9,6 +11,7 @@
 #include "bindings.hpp"
 #include "conventions.hpp"
 #include "convert.hpp"
+#include "lie_group.hpp"
 #include "signatures.hpp"
 
 namespace chasles_py {
@@ -18,6 +21,7 @@ namespace {
 using chasles::SE3d;
 using chasles::SO3d;
 using chasles::Twistd;
+using chasles::Wrenchd;
 using Vector3 = Eigen::Vector3d;
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 using Matrix3 = Eigen::Matrix3d;
@@ -125,12 +129,153 @@ std::string explain_se3_refusal(const py::args& args, const py::kwargs& kwargs) 
   raise_value_error(msg);
 }
 
+/// low or high of SE3.random: a number (for every component) or shape (3,), finite.
+Vector3 box(py::handle h, const char* what) {
+  std::vector<Py_intptr_t> shape;
+  if (raw_shape(h, shape) && !shape.empty()) return to_finite_eigen<3>(h, what);
+  return Vector3::Constant(to_finite_real(h, what));
+}
+
 }  // namespace
 
-void bind_se3(py::module_& m) {
-  const std::string doc = class_doc();
-  py::class_<SE3d, InlineHolder<SE3d>> cls(m, "SE3", doc.c_str());
+void bind_se3(Class<SE3d>& cls) {
+  static const std::string doc = class_doc();
+  cls.attr("__doc__") = doc;
   hold_inline(cls);
+  // What SO3 and SE3 share (lie_group.hpp), first: the composition comes
+  // before the action on points among the overloads of @.
+
+  // ---- scipy and random ---------------------------------------------------
+
+  cls.def_static(
+      "from_scipy",
+      [](py::object tf) {
+        const char* what = "SE3.from_scipy(tf)";
+        check_single_scipy(tf, "RigidTransform", what,
+                           "A stack is an array for the array functions: tf.as_matrix() (shape (..., 4, 4)) for se3_log, se3_compose, "
+    "se3_act, ...; tf[i] is one RigidTransform.");
+        const Eigen::Matrix4d M = to_finite_eigen<4, 4>(tf.attr("as_matrix")(), what);
+        const auto g = SE3d::from_matrix(M, kRotationTolerance);
+        if (!g) {
+          // Only a RigidTransform built with normalize=False can get here.
+          raise_value_error(std::string(what) + ": the transform's matrix is not a rigid motion: rotation defect " +
+                            "max(|R^T R - I|, |det R - 1|) = " +
+                            std::to_string(SO3d::rotation_defect(M.topLeftCorner<3, 3>())) + " (tol " +
+                            std::to_string(kRotationTolerance) +
+                            "); use SE3.from_matrix_projected(tf.as_matrix()) for the nearest rotation");
+        }
+        return *g;
+      },
+      py::arg("tf"),
+      R"doc(The motion of a single scipy.spatial.transform.RigidTransform.
+
+scipy (1.16 or later) is imported by this call (it is not needed by
+``import chasles``). The motion is read from scipy's 4x4 matrix, checked as
+by ``SE3.from_matrix``. For a stack of transforms use the array functions on
+``tf.as_matrix()`` (shape (N, 4, 4)).
+
+Args:
+    tf: a single scipy.spatial.transform.RigidTransform.
+
+Returns:
+    SE3: the same motion.
+
+Raises:
+    TypeError: tf is not a RigidTransform.
+    ValueError: tf is a stack of transforms, or its matrix is not a rigid
+        motion (a transform built with normalize=False).
+    ImportError: scipy (or RigidTransform, scipy < 1.16) is missing.
+
+Example:
+    >>> from scipy.spatial.transform import RigidTransform
+    >>> SE3.from_scipy(RigidTransform.from_translation([1.0, 2.0, 3.0])).translation
+    array([1., 2., 3.])
+)doc");
+
+  cls.def(
+      "to_scipy",
+      [](Obj<SE3d> g) {
+        const py::object RigidTransform = scipy_class("RigidTransform", "SE3.to_scipy()");
+        return RigidTransform.attr("from_matrix")(mat_out<4, 4>(g->matrix()));
+      },
+      R"doc(This motion as a scipy.spatial.transform.RigidTransform.
+
+scipy (1.16 or later) is imported by this call (it is not needed by
+``import chasles``). scipy's ``RigidTransform.from_matrix(g)`` works too
+(``np.asarray(g)`` is the 4x4 matrix); for many motions,
+``RigidTransform.from_matrix`` of an array of shape (N, 4, 4).
+
+Returns:
+    scipy.spatial.transform.RigidTransform: a single transform, from the
+    homogeneous matrix of ``as_matrix()``.
+
+Raises:
+    ImportError: scipy (or RigidTransform, scipy < 1.16) is missing.
+
+Example:
+    >>> SE3(translation=[1.0, 2.0, 3.0]).to_scipy().translation
+    array([1., 2., 3.])
+)doc");
+
+  cls.def_static(
+      "random",
+      [](py::object rng, py::object low, py::object high) {
+        const Vector3 lo = box(low, "se3_random(low)"), hi = box(high, "se3_random(high)");
+        if ((hi.array() < lo.array()).any())
+          raise_value_error("se3_random: expected low <= high, got low=" + array_repr(vec_out<3>(lo)) +
+                            ", high=" + array_repr(vec_out<3>(hi)));
+        const py::object gen = numpy_generator(rng, "se3_random");
+        const SO3d R = chasles::so3_from_uniforms(uniforms(gen, "SE3.random"));
+        const Vector3 u = uniforms(gen, "SE3.random");
+        return SE3d(R, lo + (hi - lo).cwiseProduct(u));  // numpy's lo + (hi - lo) * u
+      },
+      py::arg("rng") = py::none(), py::kw_only(), py::arg("low") = -1.0, py::arg("high") = 1.0,
+      R"doc(A random rigid motion: a uniform rotation and a translation uniform in a box.
+
+One element of ``chasles.se3_random``: the rotation as SO3.random, then the
+translation uniform in [low, high] componentwise.
+
+Args:
+    rng: None (a fresh ``numpy.random.default_rng()``), an int seed or a
+        numpy Generator.
+    low: float or array_like of shape (3,): the box's lower corner.
+    high: float or array_like of shape (3,): the box's upper corner.
+
+Returns:
+    SE3: the pose.
+
+Example:
+    >>> g = SE3.random(rng=1, low=0.0, high=0.5)
+    >>> bool(np.all((0.0 <= g.translation) & (g.translation <= 0.5)))
+    True
+)doc");
+
+  // What SO3 and SE3 share (lie_group.hpp), first: the composition comes
+  // before the action on points among the overloads of @. The state: R row by row, then p; checked as SE3.from_matrix checks the matrix.
+  def_lie_group<12>(
+      cls,
+      [](const SE3d& g) {
+        return "SE3(rotation=" + array_repr(mat_out<3, 3>(g.rotation().matrix())) +
+               ", translation=" + array_repr(vec_out<3>(g.translation())) + ")";
+      },
+      [](const SE3d& g) {
+        Eigen::Matrix<double, 12, 1> v;
+        v << row_major(g.rotation().matrix()), g.translation();
+        return v;
+      },
+      [](const double* v) {
+        const Matrix3 R = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(v);
+        const Vector3 p(v[9], v[10], v[11]);
+        require_finite(R, "SE3.__setstate__");
+        require_finite(p, "SE3.__setstate__");
+        if (!SO3d::from_matrix(R, kRotationTolerance)) {
+          Matrix4 M = Matrix4::Identity();
+          M.topLeftCorner<3, 3>() = R;
+          M.topRightCorner<3, 1>() = p;
+          raise_not_rigid(M, kRotationTolerance, "SE3.__setstate__", false);
+        }
+        return SE3d(SO3d::from_matrix_unchecked(R), p);
+      });
   cls.attr("__array_ufunc__") = py::none();  // numpy defers operators to us
 
   cls.def(py::init([](Obj<SO3d> rotation, ArrayLike translation) {
@@ -231,44 +376,7 @@ Returns:
   // ---- group operations ---------------------------------------------------
 
   cls.def(
-      "inverse", [](Obj<SE3d> x) { return x->inverse(); },
-      R"doc(The inverse motion g^-1 = [[R^T, -R^T p], [0, 1]].
-
-Returns:
-    SE3: g^-1.
-
-Example:
-    >>> g = SE3.exp([0.1, 0.2, 0.3, 0.4, 0.5, 0.6])
-    >>> (g @ g.inverse()).is_approx(SE3.identity())
-    True
-)doc");
-
-  cls.def(
-      "__matmul__", [](Obj<SE3d> a, Obj<SE3d> b) { return *a * *b; }, py::arg("other"), py::is_operator(),
-      R"doc(Composition: g_ab @ g_bc = g_ac.
-
-Args:
-    other: SE3.
-
-Returns:
-    SE3: the composed motion.
-)doc");
-
-  // The action on points is the array function se3_act with this matrix:
-  // one rule for dtypes, broadcasting and the GIL (one point of float64
-  // skips numpy's dispatch: the same kernel, the same bits).
-  const auto act_points = [](const SE3d& g, ArrayLike points, const char* what) {
-    if (!npy().PyArray_Check_(points.obj.ptr()) && is_bound_object(points.obj))
-      raise_type_error(std::string(what) + ": expected points of shape (..., 3), got " + type_name(points.obj) +
-                       " (an SE3 composes with an SE3 by @; it acts on a Twist or a Wrench by g.act(x))");
-    if (Vector3 p; single_element(points.obj, p.data(), 3)) return py::object(vec_out<3>(g.act(p)));
-    const py::array M = mat_out<4, 4>(g.matrix());
-    const py::object p = ufunc_operand(points.obj, what);
-    return call_array_function<2>("se3_act", what, {M.ptr(), p.ptr()});
-  };
-
-  cls.def(
-      "__matmul__", [act_points](Obj<SE3d> g, ArrayLike points) { return act_points(*g, points, "SE3 @ points"); },
+      "__matmul__", [](Obj<SE3d> g, ArrayLike points) { return act_points(*g, points, "SE3 @ points"); },
       py::arg("points"),
       R"doc(Action on points: q_a = R q_b + p.
 
@@ -282,8 +390,30 @@ Returns:
     ndarray: the moved points, shape (..., 3).
 )doc");
 
+  // The actions on twists and wrenches before the one on points (a Twist is array-like too, through __array__).
   cls.def(
-      "act", [act_points](Obj<SE3d> g, ArrayLike points) { return act_points(*g, points, "SE3.act(points)"); },
+      "act", [](Obj<SE3d> g, Obj<Twistd> xi) { return g->act(*xi); }, py::arg("twist"),
+      R"doc(A twist from frame b to frame a: xi_a = Ad_g xi_b = (R v + p x R w, R w).
+
+Args:
+    twist: Twist, xi_b.
+
+Returns:
+    Twist: xi_a.
+)doc");
+  cls.def(
+      "act", [](Obj<SE3d> g, Obj<Wrenchd> F) { return g->act(*F); }, py::arg("wrench"),
+      R"doc(A wrench from frame b to frame a: F_a = Ad_g^-T F_b = (R f, p x R f + R tau).
+
+Args:
+    wrench: Wrench, F_b.
+
+Returns:
+    Wrench: F_a.
+)doc");
+
+  cls.def(
+      "act", [](Obj<SE3d> g, ArrayLike points) { return act_points(*g, points, "SE3.act(points)"); },
       py::arg("points"),
       R"doc(Action on points: q_a = R q_b + p (the same as ``g @ points``).
 
@@ -304,8 +434,29 @@ Example:
 )doc");
 
   cls.def(
+      "act_inv", [](Obj<SE3d> g, Obj<Twistd> xi) { return g->act_inv(*xi); }, py::arg("twist"),
+      R"doc(A twist from frame a to frame b: xi_b = Ad_g^-1 xi_a = (R^T (v - p x w), R^T w).
+
+Args:
+    twist: Twist, xi_a.
+
+Returns:
+    Twist: xi_b.
+)doc");
+  cls.def(
+      "act_inv", [](Obj<SE3d> g, Obj<Wrenchd> F) { return g->act_inv(*F); }, py::arg("wrench"),
+      R"doc(A wrench from frame a to frame b: F_b = Ad_g^T F_a = (R^T f, R^T (tau - p x f)).
+
+Args:
+    wrench: Wrench, F_a.
+
+Returns:
+    Wrench: F_b.
+)doc");
+
+  cls.def(
       "act_inv",
-      [act_points](Obj<SE3d> g, ArrayLike points) { return act_points(g->inverse(), points, "SE3.act_inv(points)"); },
+      [](Obj<SE3d> g, ArrayLike points) { return act_points(g->inverse(), points, "SE3.act_inv(points)"); },
       py::arg("points"),
       R"doc(Inverse action on points: q_b = R^T (q_a - p), i.e. g^-1 @ q_a.
 
@@ -319,17 +470,6 @@ Returns:
     ndarray: shape (..., 3).
 )doc");
 
-  cls.def(
-      "adjoint", [](Obj<SE3d> g) { return mat_out<6, 6>(g->adjoint()); },
-      R"doc(The adjoint Ad_g = [[R, [p] R], [0, R]] (6x6, Murray-Li-Sastry order).
-
-g [xi] g^-1 = [Ad_g xi]: twists change frame by xi_a = Ad_g xi_b; wrenches
-by F_b = Ad_g^T F_a.
-
-Returns:
-    ndarray: shape (6, 6).
-)doc");
-
   // ---- access and conversions ---------------------------------------------
 
   // Stored parts are properties (read-only: the values are immutable).
@@ -340,14 +480,6 @@ Returns:
   cls.def_property_readonly(
       "translation", [](Obj<SE3d> g) { return vec_out<3>(g->translation()); },
       R"doc(ndarray: the translation p of g = [[R, p], [0, 1]], shape (3,) (a stored part; a new array).)doc");
-
-  cls.def(
-      "as_matrix", [](Obj<SE3d> g) { return mat_out<4, 4>(g->matrix()); },
-      R"doc(The homogeneous matrix g = [[R, p], [0, 1]].
-
-Returns:
-    ndarray: shape (4, 4), float64 (a new array).
-)doc");
 
   cls.def_static(
       "from_matrix",
@@ -468,145 +600,6 @@ Example:
     array([0., 2., 5.])
 )doc");
 
-  cls.def(
-      "normalized", [](Obj<SE3d> g) { return g->normalized(); }, R"doc(The same motion with the nearest rotation (removes drift).
-
-Returns:
-    SE3: the projected motion.
-)doc");
-
-  cls.def_static(
-      "interpolate",
-      [](Obj<SE3d> a, Obj<SE3d> b, RealLike t) {
-        return chasles::interpolate(*a, *b, to_finite_real(t.obj, "SE3.interpolate(t)"));
-      },
-      py::arg("a"), py::arg("b"), py::arg("t"),
-      R"doc(Geodesic (screw) interpolation a exp(t log(a^-1 b)).
-
-t = 0 gives a, t = 1 gives b, and the motion in between is one screw motion.
-
-Args:
-    a: SE3, the start.
-    b: SE3, the end.
-    t: the fraction, finite.
-
-Returns:
-    SE3: the interpolated motion.
-
-Example:
-    >>> a, b = SE3(), SE3(translation=[2.0, 0.0, 0.0])
-    >>> SE3.interpolate(a, b, 0.5).translation
-    array([1., 0., 0.])
-)doc");
-
-  cls.def(
-      "is_approx",
-      [](Obj<SE3d> a, Obj<SE3d> b, RealLike tol) {
-        return a->is_approx(*b, to_tolerance(tol.obj, "SE3.is_approx(tol)"));
-      },
-      py::arg("other"), py::arg_v("tol", 1e-9),
-      R"doc(Whether two motions are equal within tol.
-
-Rotation matrices within tol (absolute), translations within
-tol * max(1, |p|_max) (relative beyond unit scale). ``==`` is the exact
-comparison (every stored number equal).
-
-Args:
-    other: SE3.
-    tol: the tolerance (>= 0).
-
-Returns:
-    bool.
-)doc");
-
-  // ---- Python protocols ---------------------------------------------------
-
-  def_equality(cls, [](const SE3d& a, const SE3d& b) {
-    return a.rotation().matrix() == b.rotation().matrix() && a.translation() == b.translation();
-  });
-  def_repr(cls, [](const SE3d& g) {
-    return "SE3(rotation=" + array_repr(mat_out<3, 3>(g.rotation().matrix())) +
-           ", translation=" + array_repr(vec_out<3>(g.translation())) + ")";
-  });
-  cls.def(
-      "__array__",
-      [](Obj<SE3d> g_, DTypeLike dtype, CopyFlag copy) {
-        const SE3d& g = *g_;
-        return array_protocol(mat_out<4, 4>(g.matrix()), dtype, copy, "SE3");
-      },
-      py::arg_v("dtype", py::none(), "None"), py::arg_v("copy", py::none(), "None"),
-      "The homogeneous matrix, shape (4, 4), for np.asarray (numpy's dtype and copy keywords).");
-  def_array_dtype(cls);  // float64, for numpy's and scipy's dtype discovery (convert.hpp)
-  cls.def("__copy__", [](Obj<SE3d> g) { return *g; });
-  cls.def("__deepcopy__", [](Obj<SE3d> g, const py::object&) { return *g; }, py::arg("memo"));
-  cls.def(py::pickle(
-      [](Obj<SE3d> g_) {
-        const SE3d& g = *g_;
-        py::tuple t(12);
-        const Matrix3& R = g.rotation().matrix();
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) t[3 * i + j] = py::float_(R(i, j));
-        for (int i = 0; i < 3; ++i) t[9 + i] = py::float_(g.translation()[i]);
-        return t;
-      },
-      [](const py::object& state) {
-        const py::tuple t = state_tuple(state, 12, "SE3");
-        Eigen::Matrix<double, 3, 3, Eigen::RowMajor> R;
-        Vector3 p;
-        read_state(t, 0, 9, R.data(), "SE3");
-        read_state(t, 9, 3, p.data(), "SE3");
-        // Checked as SE3.from_matrix checks the matrix (a pickle is data from outside).
-        require_finite(R, "SE3.__setstate__");
-        require_finite(p, "SE3.__setstate__");
-        if (!SO3d::from_matrix(R, kRotationTolerance)) {
-          Matrix4 M = Matrix4::Identity();
-          M.topLeftCorner<3, 3>() = R;
-          M.topRightCorner<3, 1>() = p;
-          raise_not_rigid(M, kRotationTolerance, "SE3.__setstate__", false);
-        }
-        return SE3d(SO3d::from_matrix_unchecked(R), p);
-      }));
-  add_reduce(cls);
-
-  // ---- module level -------------------------------------------------------
-
-  m.def(
-      "interpolate",
-      [](Obj<SO3d> a, Obj<SO3d> b, RealLike t) {
-        return chasles::interpolate(*a, *b, to_finite_real(t.obj, "interpolate(t)"));
-      },
-      py::arg("a"), py::arg("b"), py::arg("t"),
-      R"doc(Geodesic interpolation of rotations a exp(t log(a^-1 b)) (as SO3.interpolate).
-
-Args:
-    a: SO3, the start (t = 0).
-    b: SO3, the end (t = 1).
-    t: the fraction, finite.
-
-Returns:
-    SO3: the interpolated rotation.
-)doc");
-  m.def(
-      "interpolate",
-      [](Obj<SE3d> a, Obj<SE3d> b, RealLike t) {
-        return chasles::interpolate(*a, *b, to_finite_real(t.obj, "interpolate(t)"));
-      },
-      py::arg("a"), py::arg("b"), py::arg("t"),
-      R"doc(Screw interpolation of rigid motions a exp(t log(a^-1 b)) (as SE3.interpolate).
-
-Args:
-    a: SE3, the start (t = 0).
-    b: SE3, the end (t = 1).
-    t: the fraction, finite.
-
-Returns:
-    SE3: the interpolated motion.
-
-Example:
-    >>> m = chasles.interpolate(SE3(), SE3(translation=[0.0, 0.0, 4.0]), 0.25)
-    >>> m.translation
-    array([0., 0., 1.])
-)doc");
 }
 
 }  // namespace chasles_py

@@ -1,4 +1,5 @@
 // chasles._core: class SO3 over chasles::SO3d (include/chasles/so3.hpp).
+#include <chasles/random.hpp>
 #include <chasles/so3.hpp>
 
 #include <string>
@@ -6,6 +7,7 @@
 #include "bindings.hpp"
 #include "conventions.hpp"
 #include "convert.hpp"
+#include "lie_group.hpp"
 #include "signatures.hpp"
 
 namespace chasles_py {
@@ -55,12 +57,52 @@ std::string class_doc() { return std::string(kClassDoc) + kConventions; }
   raise_value_error(msg);
 }
 
+/// An Euler sequence argument, a str checked in the function body (so that
+/// the error names the call); shown as str in signatures and stubs.
+struct SequenceName {
+  static constexpr auto text = py::detail::const_name("str");
+};
+using SequenceLike = AnyObject<SequenceName>;
+
+/// A bool argument converted in the function body as pybind11 converts one
+/// (None is False, an object's __bool__): from_rpy takes its arguments as
+/// objects, so that its refusal (def_static_refusal) sees only the calls of
+/// a wrong shape.
+struct FlagName {
+  static constexpr auto text = py::detail::const_name("bool");
+};
+using FlagLike = AnyObject<FlagName>;
+bool to_flag(py::handle h, const char* what) {
+  py::detail::make_caster<bool> flag;
+  if (!flag.load(h, true)) raise_type_error(std::string(what) + ": expected a bool, got " + type_name(h));
+  return static_cast<bool>(flag);
+}
+
+/// The angles of as_euler / as_rpy, in degrees if asked, with the gimbal lock flag if asked.
+py::object euler_result(const chasles::EulerAngles<double>& e, bool degrees, bool return_gimbal_lock) {
+  py::object angles = vec_out<3>(degrees ? Vector3(e.angles * kRadToDeg) : e.angles);
+  if (!return_gimbal_lock) return angles;
+  return py::make_tuple(angles, py::bool_(e.gimbal_lock));
+}
+
 }  // namespace
 
-void bind_so3(py::module_& m) {
-  const std::string doc = class_doc();
-  py::class_<SO3d, InlineHolder<SO3d>> cls(m, "SO3", doc.c_str());
+void bind_so3(Class<SO3d>& cls) {
+  static const std::string doc = class_doc();
+  cls.attr("__doc__") = doc;
   hold_inline(cls);
+  // What SO3 and SE3 share (lie_group.hpp), first: the composition comes
+  // before the action on points among the overloads of @. The state: the matrix row by row, checked as SO3.from_matrix checks one.
+  def_lie_group<9>(
+      cls, [](const SO3d& R) { return "SO3(matrix=" + array_repr(mat_out<3, 3>(R.matrix())) + ")"; },
+      [](const SO3d& R) { return row_major(R.matrix()); },
+      [](const double* v) {
+        const Matrix3 M = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(v);
+        require_finite(M, "SO3.__setstate__");
+        if (!SO3d::from_matrix(M, kRotationTolerance))
+          raise_not_rotation(M, kRotationTolerance, "SO3.__setstate__", false);
+        return SO3d::from_matrix_unchecked(M);
+      });
   cls.attr("__array_ufunc__") = py::none();  // numpy defers operators (2.0 * x, p @ R) to us
 
   cls.def(py::init<>(), R"doc(The identity rotation.
@@ -192,44 +234,7 @@ Example:
   // ---- group operations ---------------------------------------------------
 
   cls.def(
-      "inverse", [](Obj<SO3d> x) { return x->inverse(); },
-      R"doc(The inverse rotation R^-1 = R^T.
-
-Returns:
-    SO3: R^T.
-
-Example:
-    >>> R = SO3.exp([0.3, 0.2, 0.1])
-    >>> (R @ R.inverse()).is_approx(SO3.identity())
-    True
-)doc");
-
-  cls.def(
-      "__matmul__", [](Obj<SO3d> a, Obj<SO3d> b) { return *a * *b; }, py::arg("other"), py::is_operator(),
-      R"doc(Composition: R_ab @ R_bc = R_ac.
-
-Args:
-    other: SO3.
-
-Returns:
-    SO3: the composed rotation.
-)doc");
-
-  // The action on points is the array function so3_act with this matrix:
-  // one rule for dtypes, broadcasting and the GIL (one point of float64
-  // skips numpy's dispatch: the same kernel, the same bits).
-  const auto act_points = [](const SO3d& R, ArrayLike points, const char* what) {
-    if (!npy().PyArray_Check_(points.obj.ptr()) && is_bound_object(points.obj))
-      raise_type_error(std::string(what) + ": expected points of shape (..., 3), got " + type_name(points.obj) +
-                       " (an SO3 composes only with an SO3)");
-    if (Vector3 p; single_element(points.obj, p.data(), 3)) return py::object(vec_out<3>(R.act(p)));
-    const py::array M = mat_out<3, 3>(R.matrix());
-    const py::object p = ufunc_operand(points.obj, what);
-    return call_array_function<2>("so3_act", what, {M.ptr(), p.ptr()});
-  };
-
-  cls.def(
-      "__matmul__", [act_points](Obj<SO3d> R, ArrayLike p) { return act_points(*R, p, "SO3 @ points"); },
+      "__matmul__", [](Obj<SO3d> R, ArrayLike p) { return act_points(*R, p, "SO3 @ points"); },
       py::arg("points"),
       R"doc(Action on points or vectors: p_a = R_ab @ p_b.
 
@@ -244,7 +249,7 @@ Returns:
 )doc");
 
   cls.def(
-      "act", [act_points](Obj<SO3d> R, ArrayLike p) { return act_points(*R, p, "SO3.act(points)"); },
+      "act", [](Obj<SO3d> R, ArrayLike p) { return act_points(*R, p, "SO3.act(points)"); },
       py::arg("points"),
       R"doc(Action on points or vectors: p_a = R_ab p_b (the same as ``R @ points``).
 
@@ -264,23 +269,7 @@ Example:
            [ 0.,  0.,  1.]])
 )doc");
 
-  cls.def(
-      "adjoint", [](Obj<SO3d> R) { return mat_out<3, 3>(R->adjoint()); },
-      R"doc(The adjoint Ad_R = R (3x3), so that R exp([w]) R^T = exp([R w]).
-
-Returns:
-    ndarray: shape (3, 3).
-)doc");
-
   // ---- conversions ------------------------------------------------------
-
-  cls.def(
-      "as_matrix", [](Obj<SO3d> R) { return mat_out<3, 3>(R->matrix()); },
-      R"doc(The rotation matrix.
-
-Returns:
-    ndarray: R, shape (3, 3), float64 (a new array).
-)doc");
 
   cls.def_static(
       "from_matrix",
@@ -438,86 +427,230 @@ Example:
     array([1., 0., 0., 0.])
 )doc");
 
-  cls.def(
-      "normalized", [](Obj<SO3d> R) { return R->normalized(); }, R"doc(The nearest rotation to the stored matrix.
+  // ---- Euler angles (bind_euler.cpp) --------------------------------------
 
-Removes the drift that accumulates over many compositions.
+  cls.def_static(
+      "from_euler",
+      [](SequenceLike seq, ArrayLike angles, bool degrees) {
+        const int n = euler_sequence(seq.obj, "SO3.from_euler(seq)");
+        Eigen::Vector3d t = to_finite_eigen<3>(angles.obj, "SO3.from_euler(angles)");
+        if (degrees) t *= kDegToRad;
+        return SO3d::from_matrix_unchecked(euler_to_matrix(n, t));
+      },
+      py::arg("seq"), py::arg("angles"), py::arg("degrees") = false,
+      R"doc(The rotation of Euler angles, as scipy's ``Rotation.from_euler``.
+
+``seq`` is one of the 12 axis sequences, lowercase for extrinsic (fixed
+axes) or uppercase for intrinsic (moving axes). Extrinsic ``"xyz"`` with
+angles (a, b, c) is R = Rz(c) Ry(b) Rx(a); intrinsic ``"XYZ"`` is
+R = Rx(a) Ry(b) Rz(c). Tait-Bryan: xyz, xzy, yxz, yzx, zxy, zyx; proper
+Euler: xyx, xzx, yxy, yzy, zxz, zyz (and their uppercase forms).
+
+Args:
+    seq: the sequence, e.g. ``"xyz"``, ``"ZYX"``, ``"zxz"``.
+    angles: shape (3,), finite, in the order of ``seq``'s letters.
+    degrees: the angles are in degrees (default radians).
 
 Returns:
-    SO3: the projected rotation.
+    SO3: the rotation.
+
+Raises:
+    TypeError: seq is not a str.
+    ValueError: seq is not one of the 24 sequences; angles of a wrong shape
+        or not finite.
+
+Example:
+    >>> R = SO3.from_euler("xyz", [90.0, 0.0, 0.0], degrees=True)
+    >>> np.round(R.as_matrix(), 12) + 0.0
+    array([[ 1.,  0.,  0.],
+           [ 0.,  0., -1.],
+           [ 0.,  1.,  0.]])
+)doc");
+
+  cls.def(
+      "as_euler",
+      [](Obj<SO3d> R, SequenceLike seq, bool degrees, bool return_gimbal_lock) {
+        return euler_result(euler_of(euler_sequence(seq.obj, "SO3.as_euler(seq)"), *R), degrees, return_gimbal_lock);
+      },
+      py::arg("seq"), py::arg("degrees") = false, py::kw_only(), py::arg("return_gimbal_lock") = false,
+      R"doc(Euler angles of the rotation, as scipy's ``Rotation.as_euler``.
+
+scipy's ranges: the middle angle in [-pi/2, pi/2] for Tait-Bryan sequences
+(three distinct axes), [0, pi] for proper Euler sequences (first axis =
+last), the others in [-pi, pi]. At the gimbal lock (middle angle +-pi/2, or
+0 or pi, to working precision) only the sum or difference of the outer
+angles is defined, and the third angle is zero, as scipy. Robust there:
+``SO3.from_euler(seq, R.as_euler(seq))`` reproduces R to a few ulps for
+every rotation (atan2 of well-conditioned pairs of entries; scipy declares
+the lock within 1e-7 of it and loses up to 1e-7 there).
+
+Args:
+    seq: the sequence, e.g. ``"xyz"``, ``"ZYX"``, ``"zxz"`` (see from_euler).
+    degrees: return degrees (default radians).
+    return_gimbal_lock: also return whether the rotation is at the gimbal
+        lock (the third angle was set to zero).
+
+Returns:
+    ndarray: shape (3,), the angles in the order of ``seq``'s letters; with
+    return_gimbal_lock=True the tuple (angles, gimbal_lock: bool).
+
+Example:
+    >>> R = SO3.from_euler("ZYX", [0.3, -0.2, 0.1])
+    >>> np.round(R.as_euler("ZYX"), 12)
+    array([ 0.3, -0.2,  0.1])
 )doc");
 
   cls.def_static(
-      "interpolate",
-      [](Obj<SO3d> a, Obj<SO3d> b, RealLike t) {
-        return chasles::interpolate(*a, *b, to_finite_real(t.obj, "SO3.interpolate(t)"));
+      "from_rpy",
+      [](ArrayLike rpy, FlagLike degrees) {
+        Eigen::Vector3d t = to_finite_eigen<3>(rpy.obj, "SO3.from_rpy(rpy)");
+        if (to_flag(degrees.obj, "SO3.from_rpy(degrees)")) t *= kDegToRad;
+        return chasles::from_euler<chasles::EulerSequence::xyz>(t);
       },
-      py::arg("a"), py::arg("b"), py::arg("t"),
-      R"doc(Geodesic interpolation a exp(t log(a^-1 b)).
+      py::arg("rpy"), py::arg("degrees") = false,
+      R"doc(The rotation of roll, pitch and yaw, URDF's ``rpy`` and ROS tf's setRPY.
 
-t = 0 gives a, t = 1 gives b; in between, the rotation about one fixed axis
-(slerp). Values outside [0, 1] extrapolate.
+About the fixed axes x, y and z in that order: R = Rz(yaw) Ry(pitch)
+Rx(roll), i.e. ``SO3.from_euler("xyz", rpy)`` (scipy's extrinsic "xyz").
 
 Args:
-    a: SO3, the start.
-    b: SO3, the end.
-    t: the fraction, finite.
+    rpy: shape (3,), (roll, pitch, yaw), finite.
+    degrees: the angles are in degrees (default radians).
 
 Returns:
-    SO3: the interpolated rotation.
+    SO3: the rotation.
 
 Example:
-    >>> a, b = SO3(), SO3.exp([0.0, 0.0, 1.0])
-    >>> np.round(SO3.interpolate(a, b, 0.25).log(), 12) + 0.0
-    array([0.  , 0.  , 0.25])
+    >>> SO3.from_rpy([0.1, 0.2, 0.3]) == SO3.from_euler("xyz", [0.1, 0.2, 0.3])
+    True
 )doc");
 
-  cls.def(
-      "is_approx",
-      [](Obj<SO3d> a, Obj<SO3d> b, RealLike tol) {
-        return a->is_approx(*b, to_tolerance(tol.obj, "SO3.is_approx(tol)"));
-      },
-      py::arg("other"), py::arg_v("tol", 1e-9),
-      R"doc(Whether two rotations are equal within tol: max |R_a - R_b| <= tol.
+  // SO3.from_rpy(0.1, 0.2, 0.3) and other calls the signature refuses: the expected shape, not pybind11's list.
+  def_static_refusal(cls, "from_rpy", [](const py::args& args, const py::kwargs& kwargs) {
+    std::string got;
+    for (const auto& a : args) got += (got.empty() ? "" : ", ") + describe_argument(a);
+    for (const auto& kw : kwargs)
+      got += (got.empty() ? "" : ", ") + py::str(kw.first).cast<std::string>() + "=" + describe_argument(kw.second);
+    return "SO3.from_rpy(rpy, degrees=False): expected rpy, one array_like of shape (3,) (roll, pitch, yaw), and "
+           "degrees, a bool; got (" + got + ")" +
+           (args.size() == 3 ? ". Three angles are one argument: SO3.from_rpy([roll, pitch, yaw])" : "");
+  });
 
-``==`` is the exact comparison (every stored number equal).
+  cls.def(
+      "as_rpy",
+      [](Obj<SO3d> R, bool degrees, bool return_gimbal_lock) {
+        return euler_result(chasles::as_rpy(*R), degrees, return_gimbal_lock);
+      },
+      py::arg("degrees") = false, py::kw_only(), py::arg("return_gimbal_lock") = false,
+      R"doc(Roll, pitch and yaw of the rotation (URDF, ROS tf's getRPY).
+
+``R.as_euler("xyz")``: R = Rz(yaw) Ry(pitch) Rx(roll), pitch in
+[-pi/2, pi/2], roll and yaw in [-pi, pi]; at the gimbal lock (pitch +-pi/2)
+yaw is zero.
 
 Args:
-    other: SO3.
-    tol: the largest accepted difference of matrix entries (>= 0).
+    degrees: return degrees (default radians).
+    return_gimbal_lock: also return whether pitch is at +-pi/2 (yaw was set
+        to zero).
 
 Returns:
-    bool.
+    ndarray: shape (3,), (roll, pitch, yaw); with return_gimbal_lock=True the
+    tuple (rpy, gimbal_lock: bool).
+
+Example:
+    >>> np.round(SO3.from_rpy([0.1, 0.2, 0.3]).as_rpy(), 12)
+    array([0.1, 0.2, 0.3])
 )doc");
 
-  // ---- Python protocols ---------------------------------------------------
+  // ---- scipy and random ---------------------------------------------------
 
-  def_equality(cls, [](const SO3d& a, const SO3d& b) { return a.matrix() == b.matrix(); });
-  def_repr(cls, [](const SO3d& R) { return "SO3(matrix=" + array_repr(mat_out<3, 3>(R.matrix())) + ")"; });
-  cls.def(
-      "__array__",
-      [](Obj<SO3d> R_, DTypeLike dtype, CopyFlag copy) {
-        const SO3d& R = *R_;
-        return array_protocol(mat_out<3, 3>(R.matrix()), dtype, copy, "SO3");
+  cls.def_static(
+      "from_scipy",
+      [](py::object r) {
+        const char* what = "SO3.from_scipy(r)";
+        check_single_scipy(r, "Rotation", what,
+                           "A stack is an array for the array functions: r.as_matrix() (shape (..., 3, 3)) for so3_log, so3_compose, "
+    "so3_act, ..., or chasles.so3_from_quat(r.as_quat()); r[i] is one Rotation.");
+        // scipy keeps a unit quaternion (x, y, z, w): its rotation, by the same
+        // conversion as SO3.from_quat.
+        const Eigen::Vector4d q = to_finite_eigen<4>(r.attr("as_quat")(), what);
+        return SO3d::from_quaternion(Eigen::Quaterniond(q[3], q[0], q[1], q[2]));
       },
-      py::arg_v("dtype", py::none(), "None"), py::arg_v("copy", py::none(), "None"),
-      "The rotation matrix, shape (3, 3), for np.asarray (numpy's dtype and copy keywords).");
-  def_array_dtype(cls);  // float64, for numpy's and scipy's dtype discovery (convert.hpp)
-  cls.def("__copy__", [](Obj<SO3d> R) { return *R; });
-  cls.def("__deepcopy__", [](Obj<SO3d> R, const py::object&) { return *R; }, py::arg("memo"));
-  // The state: the matrix row by row, checked as SO3.from_matrix checks one
-  // (a pickle is data from outside: one that is not a rotation is refused).
-  cls.def(py::pickle([](Obj<SO3d> R) { return float_tuple(R->matrix()); },
-                     [](const py::object& state) {
-                       const py::tuple t = state_tuple(state, 9, "SO3");
-                       Eigen::Matrix<double, 3, 3, Eigen::RowMajor> M;
-                       read_state(t, 0, 9, M.data(), "SO3");
-                       require_finite(M, "SO3.__setstate__");
-                       if (!SO3d::from_matrix(M, kRotationTolerance))
-                         raise_not_rotation(M, kRotationTolerance, "SO3.__setstate__", false);
-                       return SO3d::from_matrix_unchecked(M);
-                     }));
-  add_reduce(cls);
+      py::arg("r"),
+      R"doc(The rotation of a single scipy.spatial.transform.Rotation.
+
+scipy is imported by this call (it is not needed by ``import chasles``).
+The rotation is read from scipy's unit quaternion, as ``SO3.from_quat``.
+For a stack of rotations use the array functions on ``r.as_matrix()``
+(shape (N, 3, 3)), or ``chasles.so3_from_quat(r.as_quat())``.
+
+Args:
+    r: a single scipy.spatial.transform.Rotation.
+
+Returns:
+    SO3: the same rotation.
+
+Raises:
+    TypeError: r is not a Rotation.
+    ValueError: r is a stack of rotations.
+    ImportError: scipy is not installed.
+
+Example:
+    >>> from scipy.spatial.transform import Rotation
+    >>> R = SO3.from_scipy(Rotation.from_rotvec([0.0, 0.0, 0.5]))
+    >>> np.round(R.log(), 12) + 0.0
+    array([0. , 0. , 0.5])
+)doc");
+
+  cls.def(
+      "to_scipy",
+      [](Obj<SO3d> R) {
+        const py::object Rotation = scipy_class("Rotation", "SO3.to_scipy()");
+        const Eigen::Quaterniond q = R->quaternion();
+        return Rotation.attr("from_quat")(vec_out<4>(Eigen::Vector4d(q.x(), q.y(), q.z(), q.w())));
+      },
+      R"doc(This rotation as a scipy.spatial.transform.Rotation.
+
+scipy is imported by this call (it is not needed by ``import chasles``).
+scipy's ``Rotation.from_matrix(R)`` works too (``np.asarray(R)`` is the
+matrix); for many rotations, ``Rotation.from_matrix`` of an array of shape
+(N, 3, 3).
+
+Returns:
+    scipy.spatial.transform.Rotation: a single rotation, from the unit
+    quaternion of ``as_quat()``.
+
+Raises:
+    ImportError: scipy is not installed.
+
+Example:
+    >>> SO3.exp([0.0, 0.0, 0.5]).to_scipy().as_rotvec().round(12) + 0.0
+    array([0. , 0. , 0.5])
+)doc");
+
+  cls.def_static(
+      "random",
+      [](py::object rng) {
+        return chasles::so3_from_uniforms(uniforms(numpy_generator(rng, "so3_random"), "SO3.random"));
+      },
+      py::arg("rng") = py::none(),
+      R"doc(A uniform random rotation (the Haar measure), as scipy's Rotation.random().
+
+Shoemake's method over three uniforms drawn from ``rng``: one element of
+``chasles.so3_random``.
+
+Args:
+    rng: None (a fresh ``numpy.random.default_rng()``), an int seed or a
+        numpy Generator.
+
+Returns:
+    SO3: the rotation.
+
+Example:
+    >>> SO3.random(rng=7).is_approx(SO3.random(rng=7), 0.0)
+    True
+)doc");
+
 }
 
 }  // namespace chasles_py

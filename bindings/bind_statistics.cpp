@@ -1,9 +1,8 @@
 // chasles._core: angles and distances of rotations and rigid motions, and
 // the map of random samples, as numpy generalized ufuncs
-// (chasles/distance.hpp, chasles/random.hpp, SO3::angle); SO3.random and
-// SE3.random over the Python samplers (python/chasles/_random.py), so that
-// numpy's Generator is the one source of randomness. No mathematics here:
-// each kernel calls the C++ API on one element.
+// (chasles/distance.hpp, chasles/random.hpp, SO3::angle), and the means
+// behind python/chasles/_mean.py. No mathematics here: each kernel calls the
+// C++ API on one element.
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -29,7 +28,6 @@ using ufunc::def_ufunc;
 using ufunc::ScalarOf;
 using SO3d = chasles::SO3<double>;
 using SE3d = chasles::SE3<double>;
-using namespace pybind11::literals;
 
 void bind_distances(py::module_& m) {
   def_ufunc<Core<>(Core<3, 3>)>(m, "so3_angle", "R", array_doc(R"(Rotation angles of rotation matrices: theta = |log(R)| in [0, pi].
@@ -106,59 +104,6 @@ Returns:
         using T = ScalarOf<decltype(u)>;
         return chasles::so3_from_uniforms(Eigen::Matrix<T, 3, 1>(u)).matrix();
       });
-
-  auto so3 = py::reinterpret_borrow<py::class_<SO3d, InlineHolder<SO3d>>>(m.attr("SO3"));
-  auto se3 = py::reinterpret_borrow<py::class_<SE3d, InlineHolder<SE3d>>>(m.attr("SE3"));
-  so3.def_static(
-      "random",
-      [](py::object rng) {
-        const py::object R = py::module_::import("chasles._random").attr("so3_random")(py::none(), rng);
-        return SO3d::from_matrix_unchecked(to_eigen<3, 3>(R, "SO3.random"));
-      },
-      py::arg("rng") = py::none(),
-      R"doc(A uniform random rotation (the Haar measure), as scipy's Rotation.random().
-
-Shoemake's method over three uniforms drawn from ``rng``: one element of
-``chasles.so3_random``.
-
-Args:
-    rng: None (a fresh ``numpy.random.default_rng()``), an int seed or a
-        numpy Generator.
-
-Returns:
-    SO3: the rotation.
-
-Example:
-    >>> SO3.random(rng=7).is_approx(SO3.random(rng=7), 0.0)
-    True
-)doc");
-  se3.def_static(
-      "random",
-      [](py::object rng, py::object low, py::object high) {
-        const py::object g =
-            py::module_::import("chasles._random").attr("se3_random")(py::none(), rng, "low"_a = low, "high"_a = high);
-        return SE3d::from_matrix_unchecked(to_eigen<4, 4>(g, "SE3.random"));
-      },
-      py::arg("rng") = py::none(), py::kw_only(), py::arg("low") = -1.0, py::arg("high") = 1.0,
-      R"doc(A random rigid motion: a uniform rotation and a translation uniform in a box.
-
-One element of ``chasles.se3_random``: the rotation as SO3.random, then the
-translation uniform in [low, high] componentwise.
-
-Args:
-    rng: None (a fresh ``numpy.random.default_rng()``), an int seed or a
-        numpy Generator.
-    low: float or array_like of shape (3,): the box's lower corner.
-    high: float or array_like of shape (3,): the box's upper corner.
-
-Returns:
-    SE3: the pose.
-
-Example:
-    >>> g = SE3.random(rng=1, low=0.0, high=0.5)
-    >>> bool(np.all((0.0 <= g.translation) & (g.translation <= 0.5)))
-    True
-)doc");
 }
 
 std::string shape_of(const py::array& a) {

@@ -163,39 +163,26 @@ Args:
 Returns:
     bool.
 )doc");
-  def_equality(cls, [](const T& x, const T& y) { return x.vector() == y.vector(); });
-  const std::string name(cls_name), an(a), bn(b);
-  def_repr(cls, [name, an, bn](const T& x) {
-    return name + "(" + an + "=" + array_repr(vec_out<3>(Vector3(x.vector().template head<3>()))) + ", " + bn + "=" +
-           array_repr(vec_out<3>(Vector3(x.vector().template tail<3>()))) + ")";
-  });
-  cls.def(
-      "__array__",
-      [name](Obj<T> x_, DTypeLike dtype, CopyFlag copy) {
-        const T& x = *x_;
-        return array_protocol(vec_out<6>(x.vector()), dtype, copy, name.c_str());
+  const std::string name(cls_name), an(a), bn(b), setstate = name + ".__setstate__";
+  def_array(cls, [](const T& x) { return vec_out<6>(x.vector()); },
+            "The 6-vector, shape (6,), for np.asarray (numpy's dtype and copy keywords).");
+  // The state: the 6-vector, finite as the constructor takes it.
+  def_value_protocol<6>(
+      cls,
+      [name, an, bn](const T& x) {
+        return name + "(" + an + "=" + array_repr(vec_out<3>(Vector3(x.vector().template head<3>()))) + ", " + bn +
+               "=" + array_repr(vec_out<3>(Vector3(x.vector().template tail<3>()))) + ")";
       },
-      py::arg_v("dtype", py::none(), "None"), py::arg_v("copy", py::none(), "None"),
-      "The 6-vector, shape (6,), for np.asarray (numpy's dtype and copy keywords).");
-  def_array_dtype(cls);  // float64, for numpy's and scipy's dtype discovery (convert.hpp)
-  cls.def("__copy__", [](Obj<T> x) { return *x; });
-  cls.def("__deepcopy__", [](Obj<T> x, const py::object&) { return *x; }, py::arg("memo"));
-  // The state: the 6-vector, finite as the constructor takes it (a pickle
-  // is data from outside).
-  const std::string setstate = name + ".__setstate__";
-  cls.def(py::pickle([](Obj<T> x) { return float_tuple(x->vector()); },
-                     [name, setstate](const py::object& state) {
-                       const py::tuple t = state_tuple(state, 6, name.c_str());
-                       Vector6 v;
-                       read_state(t, 0, 6, v.data(), name.c_str());
-                       require_finite(v, setstate.c_str());
-                       return T(v);
-                     }));
-  add_reduce(cls);
+      [](const T& x) { return x.vector(); },
+      [setstate](const double* v) {
+        const Vector6 x = Eigen::Map<const Vector6>(v);
+        require_finite(x, setstate.c_str());
+        return T(x);
+      });
 }
 
-void bind_screw(py::module_& m) {
-  py::class_<Screwd> cls(m, "Screw", kScrewDoc);
+void bind_screw(py::class_<Screwd>& cls) {
+  cls.attr("__doc__") = kScrewDoc;
   cls.attr("__array_ufunc__") = py::none();  // numpy defers operators (np.float64(1.0) == s) to us
   cls.def(py::init([](ArrayLike point, ArrayLike direction, RealLike pitch, RealLike magnitude) {
             Screwd s;
@@ -230,10 +217,6 @@ Args:
     return py::iter(py::make_tuple(vec_out<3>(s.point), vec_out<3>(s.direction), s.pitch, s.magnitude));
   });
   cls.def("__len__", [](Obj<Screwd>) { return 4; });
-  def_repr(cls, [](const Screwd& s) {
-    return "Screw(point=" + array_repr(vec_out<3>(s.point)) + ", direction=" + array_repr(vec_out<3>(s.direction)) +
-           ", pitch=" + float_repr(s.pitch) + ", magnitude=" + float_repr(s.magnitude) + ")";
-  });
   cls.def(
       "is_approx",
       [](Obj<Screwd> a_, Obj<Screwd> b_, RealLike tol) {
@@ -256,39 +239,34 @@ Args:
 Returns:
     bool.
 )doc");
-  def_equality(cls, [](const Screwd& a, const Screwd& b) {
-    return a.point == b.point && a.direction == b.direction && a.pitch == b.pitch && a.magnitude == b.magnitude;
-  });
-  cls.def("__copy__", [](Obj<Screwd> s) { return *s; });
-  cls.def("__deepcopy__", [](Obj<Screwd> s, const py::object&) { return *s; }, py::arg("memo"));
-  cls.def(py::pickle(
-      [](Obj<Screwd> s_) {
-        const Screwd& s = *s_;
-        return py::make_tuple(s.point[0], s.point[1], s.point[2], s.direction[0], s.direction[1], s.direction[2],
-                              s.pitch, s.magnitude);
+  // The state: point, direction, pitch, magnitude; checked as the constructor checks them.
+  def_value_protocol<8>(
+      cls,
+      [](const Screwd& s) {
+        return "Screw(point=" + array_repr(vec_out<3>(s.point)) + ", direction=" + array_repr(vec_out<3>(s.direction)) +
+               ", pitch=" + float_repr(s.pitch) + ", magnitude=" + float_repr(s.magnitude) + ")";
       },
-      [](const py::object& state) {
-        const py::tuple t = state_tuple(state, 8, "Screw");
-        double v[8];
-        read_state(t, 0, 8, v, "Screw");
-        // The constructor's checks (a pickle is data from outside).
-        require_finite(Vector3(v[0], v[1], v[2]), "Screw.__setstate__(point)");
-        require_finite(Vector3(v[3], v[4], v[5]), "Screw.__setstate__(direction)");
-        to_pitch(py::float_(v[6]), "Screw.__setstate__(pitch)");
-        require_finite(v[7], "Screw.__setstate__(magnitude)");
+      [](const Screwd& s) {
+        Eigen::Matrix<double, 8, 1> v;
+        v << s.point, s.direction, s.pitch, s.magnitude;
+        return v;
+      },
+      [](const double* v) {
         Screwd s;
         s.point = Vector3(v[0], v[1], v[2]);
         s.direction = Vector3(v[3], v[4], v[5]);
-        s.pitch = v[6];
+        require_finite(s.point, "Screw.__setstate__(point)");
+        require_finite(s.direction, "Screw.__setstate__(direction)");
+        s.pitch = to_pitch(py::float_(v[6]), "Screw.__setstate__(pitch)");
         s.magnitude = v[7];
+        require_finite(s.magnitude, "Screw.__setstate__(magnitude)");
         return s;
-      }));
-  add_reduce(cls);
+      });
 }
 
-void bind_twist(py::module_& m) {
-  const std::string doc = std::string(kTwistDoc) + kConventions;
-  py::class_<Twistd, InlineHolder<Twistd>> cls(m, "Twist", doc.c_str());
+void bind_twist(Class<Twistd>& cls) {
+  static const std::string doc = std::string(kTwistDoc) + kConventions;
+  cls.attr("__doc__") = doc;
   hold_inline(cls);
   const auto zero3 = py::make_tuple(0.0, 0.0, 0.0);
 
@@ -484,12 +462,27 @@ Returns:
     Twist.
 )doc");
 
+  cls.def(
+      "power", [](Obj<Twistd> V, Obj<Wrenchd> F) { return F->power(*V); }, py::arg("wrench"),
+      R"doc(The power V . F = v.f + w.tau of this twist on a wrench (same frame).
+
+Args:
+    wrench: Wrench, F.
+
+Returns:
+    float.
+
+Example:
+    >>> Twist(v=[1.0, 0.0, 0.0]).power(Wrench(f=[2.0, 0.0, 0.0]))
+    2.0
+)doc");
+
   bind_six_vector_protocols(cls, "Twist", "v", "w");
 }
 
-void bind_wrench(py::module_& m) {
-  const std::string doc = std::string(kWrenchDoc) + kConventions;
-  py::class_<Wrenchd, InlineHolder<Wrenchd>> cls(m, "Wrench", doc.c_str());
+void bind_wrench(Class<Wrenchd>& cls) {
+  static const std::string doc = std::string(kWrenchDoc) + kConventions;
+  cls.attr("__doc__") = doc;
   hold_inline(cls);
   const auto zero3 = py::make_tuple(0.0, 0.0, 0.0);
 
@@ -585,77 +578,12 @@ Example:
   bind_six_vector_protocols(cls, "Wrench", "f", "tau");
 }
 
-/// SE3's actions on twists and wrenches, put before its action on points in
-/// the overload order (a Twist is array-like too, through __array__).
-void bind_se3_actions(py::module_& m) {
-  auto se3 = py::reinterpret_borrow<py::class_<SE3d, InlineHolder<SE3d>>>(m.attr("SE3"));
-  // Prepended in reverse: the final order is Twist, Wrench, points.
-  se3.def(
-      "act", [](Obj<SE3d> g, Obj<Wrenchd> F) { return g->act(*F); }, py::arg("wrench"), py::prepend(),
-      R"doc(A wrench from frame b to frame a: F_a = Ad_g^-T F_b = (R f, p x R f + R tau).
-
-Args:
-    wrench: Wrench, F_b.
-
-Returns:
-    Wrench: F_a.
-)doc");
-  se3.def(
-      "act", [](Obj<SE3d> g, Obj<Twistd> xi) { return g->act(*xi); }, py::arg("twist"), py::prepend(),
-      R"doc(A twist from frame b to frame a: xi_a = Ad_g xi_b = (R v + p x R w, R w).
-
-Args:
-    twist: Twist, xi_b.
-
-Returns:
-    Twist: xi_a.
-)doc");
-  se3.def(
-      "act_inv", [](Obj<SE3d> g, Obj<Wrenchd> F) { return g->act_inv(*F); }, py::arg("wrench"), py::prepend(),
-      R"doc(A wrench from frame a to frame b: F_b = Ad_g^T F_a = (R^T f, R^T (tau - p x f)).
-
-Args:
-    wrench: Wrench, F_a.
-
-Returns:
-    Wrench: F_b.
-)doc");
-  se3.def(
-      "act_inv", [](Obj<SE3d> g, Obj<Twistd> xi) { return g->act_inv(*xi); }, py::arg("twist"), py::prepend(),
-      R"doc(A twist from frame a to frame b: xi_b = Ad_g^-1 xi_a = (R^T (v - p x w), R^T w).
-
-Args:
-    twist: Twist, xi_a.
-
-Returns:
-    Twist: xi_b.
-)doc");
-}
-
 }  // namespace
 
-void bind_twist_wrench(py::module_& m) {
-  bind_screw(m);
-  bind_twist(m);
-  bind_wrench(m);
-
-  // Defined here because each needs the other class.
-  py::class_<Twistd, InlineHolder<Twistd>>(py::reinterpret_borrow<py::class_<Twistd, InlineHolder<Twistd>>>(m.attr("Twist")))
-      .def("power", [](Obj<Twistd> V, Obj<Wrenchd> F) { return F->power(*V); }, py::arg("wrench"),
-           R"doc(The power V . F = v.f + w.tau of this twist on a wrench (same frame).
-
-Args:
-    wrench: Wrench, F.
-
-Returns:
-    float.
-
-Example:
-    >>> Twist(v=[1.0, 0.0, 0.0]).power(Wrench(f=[2.0, 0.0, 0.0]))
-    2.0
-)doc");
-
-  bind_se3_actions(m);
+void bind_twist_wrench(Class<Twistd>& twist, Class<Wrenchd>& wrench, py::class_<Screwd>& screw) {
+  bind_screw(screw);
+  bind_twist(twist);
+  bind_wrench(wrench);
 }
 
 }  // namespace chasles_py

@@ -1,24 +1,46 @@
 // chasles._core: what the bind_*.cpp files share.
+//
+// module.cpp makes every class first (an empty class object, in this order),
+// then binds each in its home file: a method that takes or returns another
+// class (SE3.act(Twist), Twist.from_derivative(SE3, ...)) finds it made, so
+// the order of the bind_* calls does not matter and no file reopens a class.
 #pragma once
 
 #include <pybind11/pybind11.h>
+
+#include <chasles/euler.hpp>
+#include <chasles/screw.hpp>
+
+#include "instance.hpp"
 
 namespace chasles_py {
 
 namespace py = pybind11;
 
-void bind_so3(py::module_& m);           // bind_so3.cpp: class SO3
-void bind_se3(py::module_& m);           // bind_se3.cpp: class SE3
-void bind_twist_wrench(py::module_& m);  // bind_twist_wrench.cpp: classes Twist, Wrench, Screw
+/// A value class held inside its Python object (instance.hpp).
+template <typename T>
+using Class = py::class_<T, InlineHolder<T>>;
+
+void bind_so3(Class<chasles::SO3d>& cls);  // bind_so3.cpp: class SO3
+void bind_se3(Class<chasles::SE3d>& cls);  // bind_se3.cpp: class SE3
+void bind_twist_wrench(Class<chasles::Twistd>& twist, Class<chasles::Wrenchd>& wrench,
+                       py::class_<chasles::Screw<double>>& screw);  // bind_twist_wrench.cpp: Twist, Wrench, Screw
 void bind_batch(py::module_& m);         // bind_batch.cpp: broadcasting array functions
-void bind_jacobians(py::module_& m);     // bind_jacobians.cpp: SO3/SE3 Jacobians, rplus/rminus/lplus/lminus
+void bind_jacobians(py::module_& m);     // bind_jacobians.cpp: rplus, ..., between, interpolate, their Jacobians
 void bind_kinematics(py::module_& m);    // bind_kinematics.cpp: class Chain
-void bind_scipy(py::module_& m);         // bind_scipy.cpp: SO3/SE3 from_scipy, to_scipy
-void bind_statistics(py::module_& m);    // bind_statistics.cpp: angles, distances (array functions)
-void bind_euler(py::module_& m);         // bind_euler.cpp: SO3 Euler angles and RPY, their private ufuncs
+void bind_statistics(py::module_& m);    // bind_statistics.cpp: angles, distances, means (array functions)
+void bind_euler(py::module_& m);         // bind_euler.cpp: the private ufuncs of Euler angles and RPY
 void bind_spline(py::module_& m);        // bind_spline.cpp: the cores of SO3Spline, SE3Spline
 void bind_bspline(py::module_& m);       // bind_bspline.cpp: classes SO3BSpline, SE3BSpline
 void bind_dynamics(py::module_& m);      // bind_dynamics.cpp: class SpatialInertia, the dynamics ufuncs
 void bind_threads(py::module_& m);       // bind_threads.cpp: set_num_threads, get_num_threads
+
+constexpr double kDegToRad = 3.14159265358979323846 / 180.0;  // numpy's deg2rad: x * (pi / 180)
+constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;  // numpy's rad2deg: x * (180 / pi)
+/// bind_euler.cpp: the index in chasles::EulerSequence of the str `seq` (TypeError or ValueError naming `what`),
+/// and the conversions of one rotation for that index.
+int euler_sequence(py::handle seq, const char* what);
+Eigen::Matrix3d euler_to_matrix(int seq, const Eigen::Vector3d& angles);
+chasles::EulerAngles<double> euler_of(int seq, const chasles::SO3d& R);
 
 }  // namespace chasles_py

@@ -19,7 +19,7 @@
 //   finite numbers, got [nan, 0.0, 0.0]".
 // - `to_real(obj, what)`: a Python float or int, a numpy real scalar or 0-d
 //   array, or any object with __float__ (not complex), as a double.
-// - `call_array_function(name, what, args)`: an array function (a numpy
+// - `call_ufunc(array_function(name), what, args)`: an array function (a numpy
 //   generalized ufunc) called from C++, its errors naming `what`.
 // - `describe_argument(obj)`, `raw_shape(obj, shape)`: what came, for the
 //   messages of constructors that refuse raw data (SO3(matrix), ...).
@@ -45,6 +45,7 @@
 #include <cstring>
 #include <initializer_list>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include <Eigen/Core>
@@ -632,12 +633,19 @@ inline bool single_element(py::handle x, double* out, py::ssize_t n) {
   return read_number_sequence(o, out, n);
 }
 
-/// call_ufunc with the array function `name` of chasles._core.
-template <std::size_t N>
-inline py::object call_array_function(const char* name, const char* what, const std::array<PyObject*, N>& args) {
-  static PyObject* const core = py::module_::import("chasles._core").release().ptr();  // kept for the process
-  const py::object ufunc = py::reinterpret_borrow<py::object>(core).attr(name);
-  return call_ufunc<N>(ufunc.ptr(), what, args);
+/// The array functions (ufuncs) of the module by name, each added when
+/// ufunc.hpp registers it: so that C++ calls one without importing its own
+/// module. Held for the process, as the module holds them.
+inline std::unordered_map<std::string, PyObject*>& array_functions() {
+  static std::unordered_map<std::string, PyObject*> registry;
+  return registry;
+}
+
+/// The array function `name`, registered by the time the module is imported.
+inline PyObject* array_function(const char* name) {
+  const auto it = array_functions().find(name);
+  if (it == array_functions().end()) py::pybind11_fail(std::string("chasles: no array function ") + name);
+  return it->second;
 }
 
 /// numpy's __array__ protocol for an object whose value lives in C++:
@@ -807,6 +815,54 @@ inline py::tuple state_tuple(py::handle state, py::ssize_t n, const char* cls) {
   if (!PyTuple_Check(state.ptr()) || PyTuple_GET_SIZE(state.ptr()) != n)
     raise_value_error(std::string(cls) + ".__setstate__: expected a tuple of " + std::to_string(n) + " floats");
   return py::reinterpret_borrow<py::tuple>(state);
+}
+
+/// The entries of m row by row, as one vector (a pickled state).
+template <int R, int C>
+Eigen::Matrix<double, R * C, 1> row_major(const Eigen::Matrix<double, R, C>& m) {
+  Eigen::Matrix<double, R * C, 1> v;
+  Eigen::Map<Eigen::Matrix<double, R, C, Eigen::RowMajor>>(v.data()) = m;
+  return v;
+}
+
+/// `__array__` and the class attribute `dtype` (def_array_dtype) of a class
+/// whose value has an array form, `array_of(const T&)` (a new float64 array).
+template <typename Class, typename F>
+void def_array(Class& cls, F array_of, const char* doc) {
+  using T = typename Class::type;
+  const std::string name = py::str(cls.attr("__name__"));
+  cls.def(
+      "__array__",
+      [name, array_of](Obj<T> x, DTypeLike dtype, CopyFlag copy) {
+        return array_protocol(array_of(*x), dtype, copy, name.c_str());
+      },
+      py::arg_v("dtype", py::none(), "None"), py::arg_v("copy", py::none(), "None"), doc);
+  def_array_dtype(cls);
+}
+
+/// The protocol of a value class T, whose objects are their numbers:
+/// `state(const T&)`, N doubles (an Eigen vector), are its pickled state (a
+/// tuple of Python floats, for every pickle protocol: add_reduce) and its
+/// identity: `==` is the exact equality of the states (def_equality);
+/// `from_state(const double*)` makes the value of a state back, checked as
+/// the constructor checks its arguments (a pickle is data from outside), or
+/// raises. Also repr (`repr(const T&)`, def_repr), __copy__ and __deepcopy__
+/// (the value). SO3, SE3, Twist, Wrench, Screw, SpatialInertia.
+template <int N, typename Class, typename Repr, typename State, typename FromState>
+void def_value_protocol(Class& cls, Repr repr, State state, FromState from_state) {
+  using T = typename Class::type;
+  const std::string name = py::str(cls.attr("__name__"));
+  def_equality(cls, [state](const T& a, const T& b) { return state(a) == state(b); });
+  def_repr(cls, repr);
+  cls.def("__copy__", [](Obj<T> x) { return *x; });
+  cls.def("__deepcopy__", [](Obj<T> x, const py::object&) { return *x; }, py::arg("memo"));
+  cls.def(py::pickle([state](Obj<T> x) { return float_tuple(state(*x)); },
+                     [name, from_state](const py::object& s) {
+                       double v[N];
+                       read_state(state_tuple(s, N, name.c_str()), 0, N, v, name.c_str());
+                       return from_state(static_cast<const double*>(v));
+                     }));
+  add_reduce(cls);
 }
 
 }  // namespace chasles_py

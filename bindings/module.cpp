@@ -6,21 +6,27 @@
 #include "numpy_capi.hpp"
 
 PYBIND11_MODULE(_core, m) {
+  namespace cp = chasles_py;
   m.doc() = "chasles C++ kernels (use the chasles package, which re-exports them).";
   m.attr("__version__") = CHASLES_VERSION;
   if (PyArray_ImportNumPyAPI() < 0 || PyUFunc_ImportUFuncAPI() < 0) throw pybind11::error_already_set();
-  chasles_py::bind_so3(m);
-  chasles_py::bind_se3(m);
-  chasles_py::bind_twist_wrench(m);
-  chasles_py::bind_batch(m);
-  chasles_py::bind_jacobians(m);  // after SO3 and SE3: adds their static methods
-  chasles_py::bind_dynamics(m);    // before Chain: its dynamics methods call these ufuncs
-  chasles_py::bind_kinematics(m);
-  chasles_py::bind_scipy(m);  // after SO3 and SE3: adds their methods
-  chasles_py::bind_statistics(m);
-  chasles_py::bind_euler(m);  // after SO3: adds its Euler methods
-  chasles_py::bind_spline(m);
-  chasles_py::bind_bspline(m);
-  chasles_py::bind_threads(m);
-  chasles_py::finish_functions(m);  // last: signatures for help() and inspect (signatures.hpp)
+  // The classes first, then their bindings in any order (bindings.hpp).
+  cp::Class<chasles::SO3d> so3(m, "SO3");
+  cp::Class<chasles::SE3d> se3(m, "SE3");
+  cp::Class<chasles::Twistd> twist(m, "Twist");
+  cp::Class<chasles::Wrenchd> wrench(m, "Wrench");
+  pybind11::class_<chasles::Screw<double>> screw(m, "Screw");
+  cp::bind_so3(so3);
+  cp::bind_se3(se3);
+  cp::bind_twist_wrench(twist, wrench, screw);
+  cp::bind_batch(m);
+  cp::bind_jacobians(m);
+  cp::bind_dynamics(m);
+  cp::bind_kinematics(m);
+  cp::bind_statistics(m);
+  cp::bind_euler(m);
+  cp::bind_spline(m);
+  cp::bind_bspline(m);
+  cp::bind_threads(m);
+  cp::finish_functions(m);  // last: signatures for help() and inspect (signatures.hpp)
 }

@@ -379,6 +379,14 @@ inline void finish_functions(py::module_& m) {
   }
 }
 
+/// Hides the last overload of the pybind11 function `fn` (see def_refusal).
+inline void hide_last_overload(PyObject* fn, const char* what) {
+  py::detail::function_record* rec = signatures::record_of(fn);
+  if (rec == nullptr) py::pybind11_fail(std::string("chasles: def_refusal: ") + what + " is not a pybind11 function");
+  while (rec->next != nullptr) rec = rec->next;
+  signatures::refusals().push_back(rec);
+}
+
 /// An overload of __init__ for every call the real ones refuse: it raises
 /// the TypeError whose text `explain(args, kwargs)` returns, and is hidden
 /// from the docstring, the signature and the stub (see the file comment).
@@ -390,11 +398,17 @@ void def_refusal(Class& cls, Explain explain) {
   }));
   // The overload just added is the last of __init__'s chain.
   const py::object init = cls.attr("__init__");
-  PyObject* fn = PyInstanceMethod_Check(init.ptr()) ? PyInstanceMethod_GET_FUNCTION(init.ptr()) : init.ptr();
-  py::detail::function_record* rec = signatures::record_of(fn);
-  if (rec == nullptr) py::pybind11_fail("chasles: def_refusal: __init__ is not a pybind11 function");
-  while (rec->next != nullptr) rec = rec->next;
-  signatures::refusals().push_back(rec);
+  hide_last_overload(PyInstanceMethod_Check(init.ptr()) ? PyInstanceMethod_GET_FUNCTION(init.ptr()) : init.ptr(),
+                     "__init__");
+}
+
+/// The same for the static method `name` (defined before).
+template <typename Class, typename Explain>
+void def_static_refusal(Class& cls, const char* name, Explain explain) {
+  cls.def_static(name, [explain](const py::args& args, const py::kwargs& kwargs) -> py::object {
+    raise_type_error(explain(args, kwargs));
+  });
+  hide_last_overload(py::getattr(cls, name).ptr(), name);
 }
 
 }  // namespace chasles_py

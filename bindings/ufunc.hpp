@@ -58,6 +58,7 @@
 #include <chasles/se3.hpp>
 
 #include "bindings.hpp"
+#include "convert.hpp"
 #include "numpy_capi.hpp"
 #include "parallel.hpp"
 
@@ -455,8 +456,62 @@ void dispatch(char** args, ssize count, const ssize* steps, const Steps<P>& core
     else
       run<P, T, false, F>(args, count, steps, core, n, kernel, seq);
   };
-  if (!((fixed == I && (with(std::integral_constant<std::size_t, I>()), true)) || ...))
-    with(std::integral_constant<std::size_t, N>());
+  // only an operand with core axes can be held (no instantiation for the scalar ones)
+  auto held = [&](auto i) {
+    constexpr std::size_t F = decltype(i)::value;
+    if constexpr (P::template At<F>::ndim > 0) {
+      if (fixed == F) return with(i), true;
+    }
+    return false;
+  };
+  if (!(held(std::integral_constant<std::size_t, I>()) || ...)) with(std::integral_constant<std::size_t, N>());
+}
+
+/// Every result of `count` elements invalid (store_invalid).
+template <typename P, typename T, std::size_t... O>
+void store_invalid_results(char** args, ssize count, const ssize* steps, const Steps<P>& core, ssize n,
+                           std::index_sequence<O...>) noexcept {
+  constexpr std::size_t N = P::nin;
+  for (ssize i = 0; i < count; ++i)
+    (store_invalid<typename P::template At<N + O>, T>(args[N + O] + i * steps[N + O], core[N + O], n), ...);
+}
+
+/// `cases<N, S>(kernel)`: operand S, an int in [0, N), picks the case
+/// `kernel(std::integral_constant<int, C>(), operands...)` (an Euler
+/// sequence). The case is read once per run of equal values, so a case
+/// given as one scalar (stride 0) costs nothing per element; a case
+/// outside [0, N) gives invalid results (NaN).
+template <int N, std::size_t S, typename Kernel>
+struct Cases : Kernel {
+  using Sequence = std::make_integer_sequence<int, N>;
+};
+template <int N, std::size_t S, typename Kernel>
+Cases<N, S, Kernel> cases(Kernel kernel) {
+  return {kernel};
+}
+template <typename K>
+struct IsCases : std::false_type {};
+template <int N, std::size_t S, typename Kernel>
+struct IsCases<Cases<N, S, Kernel>> : std::true_type {};
+
+template <typename P, typename T, int N, std::size_t S, typename Kernel, int... C>
+void dispatch_cases(char** args, ssize count, const ssize* steps, const Steps<P>& core, ssize n,
+                    const Cases<N, S, Kernel>& k, std::integer_sequence<int, C...>) noexcept {
+  const auto case_at = [&](ssize i) { return *reinterpret_cast<const int*>(args[S] + i * steps[S]); };
+  for (ssize i = 0, j; i < count; i = j) {
+    const int c = case_at(i);
+    for (j = i + 1; j < count && (steps[S] == 0 || case_at(j) == c);) j = steps[S] == 0 ? count : j + 1;
+    std::array<char*, P::nops> at;
+    for (std::size_t q = 0; q < P::nops; ++q) at[q] = args[q] + i * steps[q];
+    const auto with = [&](auto c_) {
+      const auto kernel = [f = static_cast<const Kernel&>(k), c_](const auto&... a) { return f(c_, a...); };
+      dispatch<P, T>(at.data(), j - i, steps, core, n, kernel, std::make_index_sequence<P::nin>(),
+                     std::make_index_sequence<P::nout>());
+      return true;
+    };
+    if (!((c == C && with(std::integral_constant<int, C>())) || ...))
+      store_invalid_results<P, T>(at.data(), j - i, steps, core, n, std::make_index_sequence<P::nout>());
+  }
 }
 
 /// The loop of a ufunc with a model (see def_ufunc): the model is made from
@@ -514,6 +569,7 @@ Model<K, Make> model(Make make) {
 template <typename ModelT, typename Kernel>
 struct Entry {
   using ModelType = ModelT;
+  using KernelType = Kernel;
   ModelT model;
   Kernel kernel;
   int n_index;
@@ -525,14 +581,6 @@ constexpr std::index_sequence<Offset + I...> shifted(std::index_sequence<I...>) 
   return {};
 }
 
-/// Every result of `count` elements invalid (store_invalid).
-template <typename P, typename T, std::size_t... O>
-void store_invalid_results(char** args, ssize count, const ssize* steps, const Steps<P>& core, ssize n,
-                           std::index_sequence<O...>) noexcept {
-  constexpr std::size_t N = P::nin;
-  for (ssize i = 0; i < count; ++i)
-    (store_invalid<typename P::template At<N + O>, T>(args[N + O] + i * steps[N + O], core[N + O], n), ...);
-}
 
 /// The numpy loop (PyUFuncGenericFunction) of a kernel for T: reads the
 /// core strides numpy passes after the outer ones and n, and runs the
@@ -566,6 +614,9 @@ void loop(char** args, const ssize* dims, const ssize* steps, void* data) noexce
       constexpr std::size_t K = E::ModelType::size;
       run_model<P, T>(at.data(), end - begin, steps, core, n, entry.model.make, entry.kernel,
                       std::make_index_sequence<K>(), shifted<K>(std::make_index_sequence<N - K>()));
+    } else if constexpr (IsCases<typename E::KernelType>::value) {
+      dispatch_cases<P, T>(at.data(), end - begin, steps, core, n, entry.kernel,
+                           typename E::KernelType::Sequence());
     } else {
       dispatch<P, T>(at.data(), end - begin, steps, core, n, entry.kernel, std::make_index_sequence<N>(),
                      std::make_index_sequence<P::nout>());
@@ -659,6 +710,7 @@ py::object register_ufunc(py::module_& m, const char* name, const char* params, 
   py::object ufunc = py::reinterpret_steal<py::object>(u);
   describe_ufunc(ufunc, name, params, doc);
   m.attr(name) = ufunc;
+  array_functions()[name] = ufunc.inc_ref().ptr();
   return ufunc;
 }
 

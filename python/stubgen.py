@@ -50,6 +50,78 @@ pybind11_stubgen.main()
 """
 
 
+# pybind11-stubgen types every array function as a bare numpy.ufunc. As
+# numpy's own _umath_linalg.pyi, the stub gives each public one a generic
+# type that carries its operands (positional, as numpy passes them), its
+# name and its core signature, with the signature and the operands' names in
+# a comment beside it.
+UFUNC_TYPEVARS = """
+_Name = typing.TypeVar("_Name", bound=str)
+_Signature = typing.TypeVar("_Signature", bound=str)
+"""
+UFUNC_CLASS = """
+class _GUFunc_Nin{nin}_Nout1(numpy.ufunc, typing.Generic[_Name, _Signature]):
+    \"\"\"A numpy generalized ufunc of {nin} operand(s) and one result.\"\"\"
+    @property
+    def __name__(self) -> _Name: ...
+    @property
+    def signature(self) -> _Signature: ...
+    @property
+    def nin(self) -> typing.Literal[{nin}]: ...
+    @property
+    def nout(self) -> typing.Literal[1]: ...
+    def __call__(
+        self,
+        {operands}
+        /,
+        out: numpy.ndarray | tuple[numpy.ndarray] | None = ...,
+        *,
+        where: numpy.typing.ArrayLike = ...,
+        axes: list[tuple[int, ...]] = ...,
+        axis: int = ...,
+        keepdims: bool = ...,
+        casting: typing.Literal["no", "equiv", "safe", "same_kind", "unsafe"] = ...,
+        order: typing.Literal["K", "A", "C", "F"] = ...,
+        dtype: numpy.typing.DTypeLike = ...,
+        subok: bool = ...,
+        signature: typing.Any = ...,
+    ) -> numpy.typing.NDArray[numpy.floating[typing.Any]]: ...
+"""
+
+
+def type_array_functions(stub: str) -> str:
+    """The stub with each public array function of chasles._core typed
+    (UFUNC_CLASS) instead of a bare numpy.ufunc."""
+    import inspect
+
+    import numpy as np
+
+    from chasles import _core
+
+    lines = stub.splitlines(keepends=True)
+    arities: set[int] = set()
+    for i, line in enumerate(lines):
+        name = line.split(":")[0]
+        u = getattr(_core, name, None) if line.endswith(": numpy.ufunc\n") else None
+        if not isinstance(u, np.ufunc) or name.startswith("_"):
+            continue
+        if u.nout != 1:
+            raise SystemExit(f"stubgen.py: {name} has {u.nout} results; add its type")
+        arities.add(u.nin)
+        params = ", ".join(inspect.signature(u).parameters)  # named by ufunc.hpp's describe_ufunc
+        params = ", ".join(p for p in params.split(", ")[: u.nin])
+        lines[i] = (
+            f"# {name}({params}): {u.signature}\n"
+            f'{name}: _GUFunc_Nin{u.nin}_Nout1[typing.Literal["{name}"], typing.Literal["{u.signature}"]]\n'
+        )
+    classes = "".join(
+        UFUNC_CLASS.format(nin=n, operands=" ".join(f"x{k}: numpy.typing.ArrayLike," for k in range(1, n + 1)))
+        for n in sorted(arities)
+    )
+    at = next(i for i, line in enumerate(lines) if line.startswith("__all__"))
+    return "".join(lines[: at + 1]) + UFUNC_TYPEVARS + classes + "".join(lines[at + 1 :])
+
+
 def generate() -> str:
     """The stub pybind11-stubgen writes for the installed chasles._core."""
     with tempfile.TemporaryDirectory() as out:
@@ -62,7 +134,7 @@ def generate() -> str:
             capture_output=True,
             text=True,
         )
-        return (Path(out) / "chasles" / "_core.pyi").read_text()
+        return type_array_functions((Path(out) / "chasles" / "_core.pyi").read_text())
 
 
 def main(argv: list[str] | None = None) -> int:

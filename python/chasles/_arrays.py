@@ -63,16 +63,16 @@ def so3_as_quat(R: ArrayLike, /, *, scalar_first: bool = False, **kwargs: Any) -
     return ufunc(R, **kwargs)
 
 
-# The 24 Euler sequences, as scipy: lowercase extrinsic, uppercase intrinsic.
-_EULER_SEQUENCES = tuple(
-    s
-    for base in ("xyz", "xzy", "yxz", "yzx", "zxy", "zyx", "xyx", "xzx", "yxy", "yzy", "zxz", "zyz")
-    for s in (base, base.upper())
+# The 24 Euler sequences, as scipy (lowercase extrinsic, uppercase intrinsic),
+# in the order of chasles::EulerSequence: the index is the ufuncs' operand.
+_EULER_SEQUENCES = (
+    "xyz", "xzy", "yxz", "yzx", "zxy", "zyx", "xyx", "xzx", "yxy", "yzy", "zxz", "zyz",
+    "XYZ", "XZY", "YXZ", "YZX", "ZXY", "ZYX", "XYX", "XZX", "YXY", "YZY", "ZXZ", "ZYZ",
 )
 
 
-def _euler_ufunc(kind: str, seq: Any, degrees: Any, name: str) -> np.ufunc:
-    """The private ufunc ``_so3_<kind>_<seq>[_deg]``, or the error naming `name`."""
+def _euler_sequence(seq: Any, name: str) -> np.intc:
+    """The index of `seq` in _EULER_SEQUENCES, or the error naming `name`."""
     if not isinstance(seq, str):
         raise TypeError(
             f"{name}(seq): expected a str of three axes such as 'xyz' or 'ZYX', "
@@ -84,7 +84,41 @@ def _euler_ufunc(kind: str, seq: Any, degrees: Any, name: str) -> np.ufunc:
             "uppercase (intrinsic), no two consecutive equal, as 'xyz', 'ZYX' or 'zxz'; "
             f"got {seq!r}"
         )
-    return getattr(_core, f"_so3_{kind}_{str(seq)}{'_deg' if degrees else ''}")
+    return np.intc(_EULER_SEQUENCES.index(str(seq)))  # typed: numpy casts a Python int to int64
+
+
+def _with_scalars(kwargs: dict, scalars: int, flags: int = 0) -> dict:
+    """kwargs for a private ufunc whose `scalars` operands (the code of the
+    sequence and unit) follow the one array operand, and whose result is
+    followed by `flags` more (the gimbal lock): axes= gets () for each
+    scalar, and dtype= becomes the signature of the array operand and of the
+    result (numpy's loop search needs both when the loop's operands are not
+    all of one type)."""
+    axes = kwargs.get("axes")
+    if axes is not None and isinstance(axes, (list, tuple)):
+        axes = list(axes)
+        kwargs = dict(kwargs, axes=axes[:1] + [()] * scalars + axes[1:])
+    if kwargs.get("dtype") is not None:
+        kwargs = dict(kwargs)
+        dtype = kwargs.pop("dtype")
+        kwargs["signature"] = (dtype,) + (None,) * scalars + (dtype,) + (None,) * flags
+    return kwargs
+
+
+def _angles_and_flag(ufunc: np.ufunc, operands: tuple, kwargs: dict, return_gimbal_lock: bool) -> Any:
+    """Calls as_euler's ufunc; with return_gimbal_lock its `_lock` variant,
+    whose second result is the gimbal lock flag: an out= array is the
+    angles' (numpy makes the flags)."""
+    if not return_gimbal_lock:
+        return ufunc(*operands, **_with_scalars(kwargs, 1))
+    ufunc = getattr(_core, ufunc.__name__ + "_lock")
+    kwargs = _with_scalars(kwargs, 1, 1)
+    out = kwargs.get("out")
+    if out is not None and not isinstance(out, tuple):
+        kwargs = dict(kwargs, out=(out, None))
+    elif isinstance(out, tuple) and len(out) == 1:
+        kwargs = dict(kwargs, out=(out[0], None))
+    return ufunc(*operands, **kwargs)
 
 
 def so3_from_euler(
@@ -99,8 +133,7 @@ def so3_from_euler(
     elementary rotations, each entry to a few ulps.
 
     Args:
-        seq: the sequence, e.g. ``"xyz"``, ``"ZYX"``, ``"zxz"`` (not an array:
-            it picks the ufunc).
+        seq: the sequence, e.g. ``"xyz"``, ``"ZYX"``, ``"zxz"`` (not an array).
         angles: array_like of shape (..., 3): the angles, in the order of
             ``seq``'s letters.
         degrees: the angles are in degrees (default radians); converted as
@@ -121,10 +154,13 @@ def so3_from_euler(
                [ 1.,  0.,  0.],
                [ 0.,  0.,  1.]])
     """
-    return _euler_ufunc("from_euler", seq, degrees, "so3_from_euler")(angles, **kwargs)
+    code = _euler_sequence(seq, "so3_from_euler") + np.intc(24 if degrees else 0)
+    return _core._so3_from_euler(angles, code, **_with_scalars(kwargs, 1))
 
 
-def so3_as_euler(seq: str, R: ArrayLike, /, degrees: bool = False, **kwargs: Any) -> np.ndarray:
+def so3_as_euler(
+    seq: str, R: ArrayLike, /, degrees: bool = False, *, return_gimbal_lock: bool = False, **kwargs: Any
+) -> Any:
     """Euler angles of rotation matrices, as scipy's ``Rotation.as_euler``.
 
     scipy's ranges: the middle angle in [-pi/2, pi/2] for Tait-Bryan
@@ -140,11 +176,15 @@ def so3_as_euler(seq: str, R: ArrayLike, /, degrees: bool = False, **kwargs: Any
         seq: the sequence, e.g. ``"xyz"``, ``"ZYX"``, ``"zxz"``.
         R: array_like of shape (..., 3, 3): rotation matrices.
         degrees: return degrees (default radians), as numpy's rad2deg.
-        **kwargs: passed to the ufunc (``out=``, ``axes=``, ``dtype=``, ...).
+        return_gimbal_lock: also return, for each rotation, whether it is at
+            the gimbal lock (the third angle was set to zero).
+        **kwargs: passed to the ufunc (``out=``, ``axes=``, ``dtype=``, ...;
+            ``out=`` and ``dtype=`` are the angles').
 
     Returns:
         numpy.ndarray of shape (..., 3): the angles, in the order of
-        ``seq``'s letters.
+        ``seq``'s letters; with return_gimbal_lock=True the tuple (angles,
+        gimbal_lock), gimbal_lock a bool array of shape (...).
 
     Raises:
         TypeError: seq is not a str.
@@ -156,7 +196,8 @@ def so3_as_euler(seq: str, R: ArrayLike, /, degrees: bool = False, **kwargs: Any
         >>> np.round(chasles.so3_as_euler("ZYX", R), 12)
         array([ 0.3, -0.2,  0.1])
     """
-    return _euler_ufunc("as_euler", seq, degrees, "so3_as_euler")(R, **kwargs)
+    code = _euler_sequence(seq, "so3_as_euler") + np.intc(24 if degrees else 0)
+    return _angles_and_flag(_core._so3_as_euler, (R, code), kwargs, return_gimbal_lock)
 
 
 def so3_from_rpy(rpy: ArrayLike, /, degrees: bool = False, **kwargs: Any) -> np.ndarray:
@@ -179,10 +220,10 @@ def so3_from_rpy(rpy: ArrayLike, /, degrees: bool = False, **kwargs: Any) -> np.
         >>> bool((chasles.so3_from_rpy(rpy) == chasles.so3_from_euler("xyz", rpy)).all())
         True
     """
-    return (_core._so3_from_rpy_deg if degrees else _core._so3_from_rpy)(rpy, **kwargs)
+    return _core._so3_from_rpy(rpy, np.intc(1 if degrees else 0), **_with_scalars(kwargs, 1))
 
 
-def so3_as_rpy(R: ArrayLike, /, degrees: bool = False, **kwargs: Any) -> np.ndarray:
+def so3_as_rpy(R: ArrayLike, /, degrees: bool = False, *, return_gimbal_lock: bool = False, **kwargs: Any) -> Any:
     """Roll, pitch, yaw of rotation matrices (URDF, ROS tf's getRPY).
 
     ``so3_as_euler("xyz", R)``: R = Rz(yaw) Ry(pitch) Rx(roll), pitch in
@@ -192,14 +233,19 @@ def so3_as_rpy(R: ArrayLike, /, degrees: bool = False, **kwargs: Any) -> np.ndar
     Args:
         R: array_like of shape (..., 3, 3): rotation matrices.
         degrees: return degrees (default radians).
-        **kwargs: passed to the ufunc (``out=``, ``axes=``, ``dtype=``, ...).
+        return_gimbal_lock: also return, for each rotation, whether pitch is
+            at +-pi/2 (yaw was set to zero).
+        **kwargs: passed to the ufunc (``out=``, ``axes=``, ``dtype=``, ...;
+            ``out=`` and ``dtype=`` are the angles').
 
     Returns:
-        numpy.ndarray of shape (..., 3): (roll, pitch, yaw).
+        numpy.ndarray of shape (..., 3): (roll, pitch, yaw); with
+        return_gimbal_lock=True the tuple (rpy, gimbal_lock), gimbal_lock a
+        bool array of shape (...).
 
     Example:
         >>> import chasles
         >>> np.round(chasles.so3_as_rpy(chasles.so3_from_rpy([0.1, 0.2, 0.3])), 12)
         array([0.1, 0.2, 0.3])
     """
-    return (_core._so3_as_rpy_deg if degrees else _core._so3_as_rpy)(R, **kwargs)
+    return _angles_and_flag(_core._so3_as_rpy, (R, np.intc(1 if degrees else 0)), kwargs, return_gimbal_lock)

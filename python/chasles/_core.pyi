@@ -8,6 +8,90 @@ import numpy.dtypes
 import numpy.typing
 import typing
 __all__: list[str] = ['Chain', 'SE3', 'SO3', 'Screw', 'SpatialInertia', 'Twist', 'Wrench', 'act_jacobians', 'between', 'between_jacobians', 'compose_jacobians', 'get_num_threads', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'lminus_jacobians', 'log_jacobian', 'lplus', 'lplus_jacobians', 'rminus', 'rminus_jacobians', 'rplus', 'rplus_jacobians', 'se3_act', 'se3_act_jacobian', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_distance', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_vee', 'set_num_threads', 'so3_act', 'so3_act_jacobian', 'so3_angle', 'so3_compose', 'so3_distance', 'so3_exp', 'so3_from_uniforms', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee']
+
+_Name = typing.TypeVar("_Name", bound=str)
+_Signature = typing.TypeVar("_Signature", bound=str)
+
+class _GUFunc_Nin1_Nout1(numpy.ufunc, typing.Generic[_Name, _Signature]):
+    """A numpy generalized ufunc of 1 operand(s) and one result."""
+    @property
+    def __name__(self) -> _Name: ...
+    @property
+    def signature(self) -> _Signature: ...
+    @property
+    def nin(self) -> typing.Literal[1]: ...
+    @property
+    def nout(self) -> typing.Literal[1]: ...
+    def __call__(
+        self,
+        x1: numpy.typing.ArrayLike,
+        /,
+        out: numpy.ndarray | tuple[numpy.ndarray] | None = ...,
+        *,
+        where: numpy.typing.ArrayLike = ...,
+        axes: list[tuple[int, ...]] = ...,
+        axis: int = ...,
+        keepdims: bool = ...,
+        casting: typing.Literal["no", "equiv", "safe", "same_kind", "unsafe"] = ...,
+        order: typing.Literal["K", "A", "C", "F"] = ...,
+        dtype: numpy.typing.DTypeLike = ...,
+        subok: bool = ...,
+        signature: typing.Any = ...,
+    ) -> numpy.typing.NDArray[numpy.floating[typing.Any]]: ...
+
+class _GUFunc_Nin2_Nout1(numpy.ufunc, typing.Generic[_Name, _Signature]):
+    """A numpy generalized ufunc of 2 operand(s) and one result."""
+    @property
+    def __name__(self) -> _Name: ...
+    @property
+    def signature(self) -> _Signature: ...
+    @property
+    def nin(self) -> typing.Literal[2]: ...
+    @property
+    def nout(self) -> typing.Literal[1]: ...
+    def __call__(
+        self,
+        x1: numpy.typing.ArrayLike, x2: numpy.typing.ArrayLike,
+        /,
+        out: numpy.ndarray | tuple[numpy.ndarray] | None = ...,
+        *,
+        where: numpy.typing.ArrayLike = ...,
+        axes: list[tuple[int, ...]] = ...,
+        axis: int = ...,
+        keepdims: bool = ...,
+        casting: typing.Literal["no", "equiv", "safe", "same_kind", "unsafe"] = ...,
+        order: typing.Literal["K", "A", "C", "F"] = ...,
+        dtype: numpy.typing.DTypeLike = ...,
+        subok: bool = ...,
+        signature: typing.Any = ...,
+    ) -> numpy.typing.NDArray[numpy.floating[typing.Any]]: ...
+
+class _GUFunc_Nin3_Nout1(numpy.ufunc, typing.Generic[_Name, _Signature]):
+    """A numpy generalized ufunc of 3 operand(s) and one result."""
+    @property
+    def __name__(self) -> _Name: ...
+    @property
+    def signature(self) -> _Signature: ...
+    @property
+    def nin(self) -> typing.Literal[3]: ...
+    @property
+    def nout(self) -> typing.Literal[1]: ...
+    def __call__(
+        self,
+        x1: numpy.typing.ArrayLike, x2: numpy.typing.ArrayLike, x3: numpy.typing.ArrayLike,
+        /,
+        out: numpy.ndarray | tuple[numpy.ndarray] | None = ...,
+        *,
+        where: numpy.typing.ArrayLike = ...,
+        axes: list[tuple[int, ...]] = ...,
+        axis: int = ...,
+        keepdims: bool = ...,
+        casting: typing.Literal["no", "equiv", "safe", "same_kind", "unsafe"] = ...,
+        order: typing.Literal["K", "A", "C", "F"] = ...,
+        dtype: numpy.typing.DTypeLike = ...,
+        subok: bool = ...,
+        signature: typing.Any = ...,
+    ) -> numpy.typing.NDArray[numpy.floating[typing.Any]]: ...
 class SO3:
     """
     A rotation of R^3: an element of SO(3), stored as its 3x3 matrix (float64).
@@ -276,7 +360,7 @@ class SO3:
         """
         Geodesic interpolation a exp(t log(a^-1 b)).
         
-        t = 0 gives a, t = 1 gives b; in between, the rotation about one fixed axis
+        t = 0 gives a, t = 1 gives b, in between, the rotation about one fixed axis
         (slerp). Values outside [0, 1] extrapolate.
         
         Args:
@@ -288,9 +372,9 @@ class SO3:
             SO3: the interpolated rotation.
         
         Example:
-            >>> a, b = SO3(), SO3.exp([0.0, 0.0, 1.0])
-            >>> np.round(SO3.interpolate(a, b, 0.25).log(), 12) + 0.0
-            array([0.  , 0.  , 0.25])
+            >>> a, b = SO3(), SO3.exp([0.3, 0.2, 0.1])
+            >>> SO3.interpolate(a, b, 0.5).is_approx(a @ SO3.exp(0.5 * np.array([0.3, 0.2, 0.1])))
+            True
         """
     @staticmethod
     def left_jacobian(w: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
@@ -476,7 +560,7 @@ class SO3:
     @typing.overload
     def __matmul__(self, other: SO3) -> SO3:
         """
-        Composition: R_ab @ R_bc = R_ac.
+        Composition: g_ab @ g_bc = g_ac.
         
         Args:
             other: SO3.
@@ -561,7 +645,7 @@ class SO3:
             >>> round(SO3.exp([0.0, 0.0, 0.5]).angle(), 12)
             0.5
         """
-    def as_euler(self, seq: str, degrees: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+    def as_euler(self, seq: str, degrees: bool = False, *, return_gimbal_lock: bool = False) -> typing.Any:
         """
         Euler angles of the rotation, as scipy's ``Rotation.as_euler``.
         
@@ -577,9 +661,12 @@ class SO3:
         Args:
             seq: the sequence, e.g. ``"xyz"``, ``"ZYX"``, ``"zxz"`` (see from_euler).
             degrees: return degrees (default radians).
+            return_gimbal_lock: also return whether the rotation is at the gimbal
+                lock (the third angle was set to zero).
         
         Returns:
-            ndarray: shape (3,), the angles in the order of ``seq``'s letters.
+            ndarray: shape (3,), the angles in the order of ``seq``'s letters; with
+            return_gimbal_lock=True the tuple (angles, gimbal_lock: bool).
         
         Example:
             >>> R = SO3.from_euler("ZYX", [0.3, -0.2, 0.1])
@@ -588,10 +675,10 @@ class SO3:
         """
     def as_matrix(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        The rotation matrix.
+        The rotation matrix R.
         
         Returns:
-            ndarray: R, shape (3, 3), float64 (a new array).
+            ndarray: shape (3, 3), float64 (a new array).
         """
     def as_quat(self, *, scalar_first: bool = False) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -613,7 +700,7 @@ class SO3:
             >>> SO3().as_quat(scalar_first=True)
             array([1., 0., 0., 0.])
         """
-    def as_rpy(self, degrees: bool = False) -> numpy.typing.NDArray[numpy.float64]:
+    def as_rpy(self, degrees: bool = False, *, return_gimbal_lock: bool = False) -> typing.Any:
         """
         Roll, pitch and yaw of the rotation (URDF, ROS tf's getRPY).
         
@@ -623,9 +710,12 @@ class SO3:
         
         Args:
             degrees: return degrees (default radians).
+            return_gimbal_lock: also return whether pitch is at +-pi/2 (yaw was set
+                to zero).
         
         Returns:
-            ndarray: shape (3,), (roll, pitch, yaw).
+            ndarray: shape (3,), (roll, pitch, yaw); with return_gimbal_lock=True the
+            tuple (rpy, gimbal_lock: bool).
         
         Example:
             >>> np.round(SO3.from_rpy([0.1, 0.2, 0.3]).as_rpy(), 12)
@@ -636,11 +726,11 @@ class SO3:
         The inverse rotation R^-1 = R^T.
         
         Returns:
-            SO3: R^T.
+            SO3: the inverse.
         
         Example:
-            >>> R = SO3.exp([0.3, 0.2, 0.1])
-            >>> (R @ R.inverse()).is_approx(SO3.identity())
+            >>> g = SO3.exp([0.3, 0.2, 0.1])
+            >>> (g @ g.inverse()).is_approx(SO3.identity())
             True
         """
     def is_approx(self, other: SO3, tol: float = 1e-09) -> bool:
@@ -672,7 +762,7 @@ class SO3:
         """
     def normalized(self) -> SO3:
         """
-        The nearest rotation to the stored matrix.
+        The same rotation with the nearest rotation.
         
         Removes the drift that accumulates over many compositions.
         
@@ -899,7 +989,7 @@ class SE3:
     @staticmethod
     def interpolate(a: SE3, b: SE3, t: float) -> SE3:
         """
-        Geodesic (screw) interpolation a exp(t log(a^-1 b)).
+        Geodesic interpolation a exp(t log(a^-1 b)).
         
         t = 0 gives a, t = 1 gives b, and the motion in between is one screw motion.
         
@@ -912,9 +1002,9 @@ class SE3:
             SE3: the interpolated motion.
         
         Example:
-            >>> a, b = SE3(), SE3(translation=[2.0, 0.0, 0.0])
-            >>> SE3.interpolate(a, b, 0.5).translation
-            array([1., 0., 0.])
+            >>> a, b = SE3(), SE3.exp([0.1, 0.2, 0.3, 0.4, 0.5, 0.6])
+            >>> SE3.interpolate(a, b, 0.5).is_approx(a @ SE3.exp(0.5 * np.array([0.1, 0.2, 0.3, 0.4, 0.5, 0.6])))
+            True
         """
     @staticmethod
     def left_jacobian(xi: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
@@ -1236,7 +1326,7 @@ class SE3:
         The inverse motion g^-1 = [[R^T, -R^T p], [0, 1]].
         
         Returns:
-            SE3: g^-1.
+            SE3: the inverse.
         
         Example:
             >>> g = SE3.exp([0.1, 0.2, 0.3, 0.4, 0.5, 0.6])
@@ -1245,11 +1335,10 @@ class SE3:
         """
     def is_approx(self, other: SE3, tol: float = 1e-09) -> bool:
         """
-        Whether two motions are equal within tol.
+        Whether two motions are equal within tol: rotation matrices within tol (absolute), translations within
+        tol * max(1, |p|_max) (relative beyond unit scale).
         
-        Rotation matrices within tol (absolute), translations within
-        tol * max(1, |p|_max) (relative beyond unit scale). ``==`` is the exact
-        comparison (every stored number equal).
+        ``==`` is the exact comparison (every stored number equal).
         
         Args:
             other: SE3.
@@ -1274,7 +1363,9 @@ class SE3:
         """
     def normalized(self) -> SE3:
         """
-        The same motion with the nearest rotation (removes drift).
+        The same motion with the nearest rotation.
+        
+        Removes the drift that accumulates over many compositions.
         
         Returns:
             SE3: the projected motion.
@@ -1308,117 +1399,6 @@ class SE3:
     def translation(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         ndarray: the translation p of g = [[R, p], [0, 1]], shape (3,) (a stored part; a new array).
-        """
-class Screw:
-    """
-    A screw: a directed line in space (through ``point``, along the unit
-    ``direction``), a ``pitch`` and a ``magnitude``.
-    
-    For a twist it is Chasles' screw motion: rotate by ``magnitude`` about the
-    line while translating ``pitch * magnitude`` along it; pitch = inf is a pure
-    translation of length ``magnitude`` along ``direction``. For a wrench it is
-    Poinsot's wrench: a force of size ``magnitude`` along the line plus a torque
-    ``pitch * magnitude`` about it; pitch = inf is a pure couple. ``point`` is
-    the point of the line nearest the origin (0 for infinite pitch). The zero
-    twist or wrench has magnitude 0, pitch 0, direction 0.
-    
-    A Screw unpacks as ``point, direction, pitch, magnitude = screw``, so
-    ``SE3.from_screw(*twist.screw())`` rebuilds the motion.
-    
-    Example:
-        >>> s = Twist(v=[2.0, 0.0, 0.0], w=[0.0, 0.0, 1.0]).screw()
-        >>> s.point, s.direction, s.pitch, s.magnitude
-        (array([0., 2., 0.]), array([0., 0., 1.]), 0.0, 1.0)
-    """
-    __array_ufunc__ = None
-    __hash__: typing.ClassVar[None] = None
-    def __copy__(self) -> Screw:
-        ...
-    def __deepcopy__(self, memo: typing.Any) -> Screw:
-        ...
-    def __eq__(self, other: typing.Any) -> bool:
-        """
-        Exact equality of the stored numbers: Screws are values, compared as floats
-        (-0.0 == 0.0; a NaN is unequal to everything, itself included).
-        
-        For a tolerance, use ``is_approx(other, tol)``. An object of another type gives
-        NotImplemented, so ``==`` is False. Screws are unhashable.
-        
-        Args:
-            other: any object.
-        
-        Returns:
-            bool.
-        """
-    def __getstate__(self) -> tuple[float, float, float, float, float, float, float, float]:
-        ...
-    def __init__(self, point: numpy.typing.ArrayLike, direction: numpy.typing.ArrayLike, pitch: float, magnitude: float) -> None:
-        """
-        A screw from its parameters (stored as given).
-        
-        Args:
-            point: a point of the axis, shape (3,), finite.
-            direction: the axis direction, shape (3,), finite (unit length by
-                convention; from_screw normalizes it).
-            pitch: translation (or torque) per unit of magnitude; inf allowed.
-            magnitude: rotation angle (twist) or force size (wrench), finite.
-        """
-    def __iter__(self) -> collections.abc.Iterator:
-        ...
-    def __len__(self) -> int:
-        ...
-    def __ne__(self, other: typing.Any) -> bool:
-        """
-        The negation of ``==``: some stored number differs (or is NaN), or other is not a Screw.
-        
-        Args:
-            other: any object.
-        
-        Returns:
-            bool.
-        """
-    def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
-        """
-        Pickle support: (copyreg.__newobj__, (cls,), state).
-        """
-    def __reduce_ex__(self, protocol: typing.SupportsInt | typing.SupportsIndex) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
-        """
-        Pickle support (every protocol): (copyreg.__newobj__, (cls,), state).
-        """
-    def __repr__(self) -> str:
-        ...
-    def __setstate__(self, arg0: typing.Any) -> None:
-        ...
-    def is_approx(self, other: Screw, tol: float = 1e-09) -> bool:
-        """
-        Whether two screws have the same parameters within tol (relative beyond unit scale).
-        
-        Args:
-            other: Screw.
-            tol: the tolerance (>= 0).
-        
-        Returns:
-            bool.
-        """
-    @property
-    def direction(self) -> numpy.typing.NDArray[numpy.float64]:
-        """
-        ndarray: the unit direction of the axis, shape (3,).
-        """
-    @property
-    def magnitude(self) -> float:
-        """
-        float: the magnitude.
-        """
-    @property
-    def pitch(self) -> float:
-        """
-        float: the pitch (inf for a translation or a couple).
-        """
-    @property
-    def point(self) -> numpy.typing.NDArray[numpy.float64]:
-        """
-        ndarray: the point of the axis nearest the origin, shape (3,).
         """
 class Twist:
     """
@@ -1927,6 +1907,117 @@ class Wrench:
     def vector(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         ndarray: the 6-vector (f, tau), force first, shape (6,).
+        """
+class Screw:
+    """
+    A screw: a directed line in space (through ``point``, along the unit
+    ``direction``), a ``pitch`` and a ``magnitude``.
+    
+    For a twist it is Chasles' screw motion: rotate by ``magnitude`` about the
+    line while translating ``pitch * magnitude`` along it; pitch = inf is a pure
+    translation of length ``magnitude`` along ``direction``. For a wrench it is
+    Poinsot's wrench: a force of size ``magnitude`` along the line plus a torque
+    ``pitch * magnitude`` about it; pitch = inf is a pure couple. ``point`` is
+    the point of the line nearest the origin (0 for infinite pitch). The zero
+    twist or wrench has magnitude 0, pitch 0, direction 0.
+    
+    A Screw unpacks as ``point, direction, pitch, magnitude = screw``, so
+    ``SE3.from_screw(*twist.screw())`` rebuilds the motion.
+    
+    Example:
+        >>> s = Twist(v=[2.0, 0.0, 0.0], w=[0.0, 0.0, 1.0]).screw()
+        >>> s.point, s.direction, s.pitch, s.magnitude
+        (array([0., 2., 0.]), array([0., 0., 1.]), 0.0, 1.0)
+    """
+    __array_ufunc__ = None
+    __hash__: typing.ClassVar[None] = None
+    def __copy__(self) -> Screw:
+        ...
+    def __deepcopy__(self, memo: typing.Any) -> Screw:
+        ...
+    def __eq__(self, other: typing.Any) -> bool:
+        """
+        Exact equality of the stored numbers: Screws are values, compared as floats
+        (-0.0 == 0.0; a NaN is unequal to everything, itself included).
+        
+        For a tolerance, use ``is_approx(other, tol)``. An object of another type gives
+        NotImplemented, so ``==`` is False. Screws are unhashable.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, point: numpy.typing.ArrayLike, direction: numpy.typing.ArrayLike, pitch: float, magnitude: float) -> None:
+        """
+        A screw from its parameters (stored as given).
+        
+        Args:
+            point: a point of the axis, shape (3,), finite.
+            direction: the axis direction, shape (3,), finite (unit length by
+                convention; from_screw normalizes it).
+            pitch: translation (or torque) per unit of magnitude; inf allowed.
+            magnitude: rotation angle (twist) or force size (wrench), finite.
+        """
+    def __iter__(self) -> collections.abc.Iterator:
+        ...
+    def __len__(self) -> int:
+        ...
+    def __ne__(self, other: typing.Any) -> bool:
+        """
+        The negation of ``==``: some stored number differs (or is NaN), or other is not a Screw.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
+    def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support: (copyreg.__newobj__, (cls,), state).
+        """
+    def __reduce_ex__(self, protocol: typing.SupportsInt | typing.SupportsIndex) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support (every protocol): (copyreg.__newobj__, (cls,), state).
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: typing.Any) -> None:
+        ...
+    def is_approx(self, other: Screw, tol: float = 1e-09) -> bool:
+        """
+        Whether two screws have the same parameters within tol (relative beyond unit scale).
+        
+        Args:
+            other: Screw.
+            tol: the tolerance (>= 0).
+        
+        Returns:
+            bool.
+        """
+    @property
+    def direction(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        ndarray: the unit direction of the axis, shape (3,).
+        """
+    @property
+    def magnitude(self) -> float:
+        """
+        float: the magnitude.
+        """
+    @property
+    def pitch(self) -> float:
+        """
+        float: the pitch (inf for a translation or a couple).
+        """
+    @property
+    def point(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        ndarray: the point of the axis nearest the origin, shape (3,).
         """
 class SpatialInertia:
     """
@@ -3160,136 +3251,67 @@ _se3_bspline: numpy.ufunc
 _se3_bspline_rates: numpy.ufunc
 _se3_spline: numpy.ufunc
 _se3_spline_rates: numpy.ufunc
-_so3_as_euler_XYX: numpy.ufunc
-_so3_as_euler_XYX_deg: numpy.ufunc
-_so3_as_euler_XYZ: numpy.ufunc
-_so3_as_euler_XYZ_deg: numpy.ufunc
-_so3_as_euler_XZX: numpy.ufunc
-_so3_as_euler_XZX_deg: numpy.ufunc
-_so3_as_euler_XZY: numpy.ufunc
-_so3_as_euler_XZY_deg: numpy.ufunc
-_so3_as_euler_YXY: numpy.ufunc
-_so3_as_euler_YXY_deg: numpy.ufunc
-_so3_as_euler_YXZ: numpy.ufunc
-_so3_as_euler_YXZ_deg: numpy.ufunc
-_so3_as_euler_YZX: numpy.ufunc
-_so3_as_euler_YZX_deg: numpy.ufunc
-_so3_as_euler_YZY: numpy.ufunc
-_so3_as_euler_YZY_deg: numpy.ufunc
-_so3_as_euler_ZXY: numpy.ufunc
-_so3_as_euler_ZXY_deg: numpy.ufunc
-_so3_as_euler_ZXZ: numpy.ufunc
-_so3_as_euler_ZXZ_deg: numpy.ufunc
-_so3_as_euler_ZYX: numpy.ufunc
-_so3_as_euler_ZYX_deg: numpy.ufunc
-_so3_as_euler_ZYZ: numpy.ufunc
-_so3_as_euler_ZYZ_deg: numpy.ufunc
-_so3_as_euler_xyx: numpy.ufunc
-_so3_as_euler_xyx_deg: numpy.ufunc
-_so3_as_euler_xyz: numpy.ufunc
-_so3_as_euler_xyz_deg: numpy.ufunc
-_so3_as_euler_xzx: numpy.ufunc
-_so3_as_euler_xzx_deg: numpy.ufunc
-_so3_as_euler_xzy: numpy.ufunc
-_so3_as_euler_xzy_deg: numpy.ufunc
-_so3_as_euler_yxy: numpy.ufunc
-_so3_as_euler_yxy_deg: numpy.ufunc
-_so3_as_euler_yxz: numpy.ufunc
-_so3_as_euler_yxz_deg: numpy.ufunc
-_so3_as_euler_yzx: numpy.ufunc
-_so3_as_euler_yzx_deg: numpy.ufunc
-_so3_as_euler_yzy: numpy.ufunc
-_so3_as_euler_yzy_deg: numpy.ufunc
-_so3_as_euler_zxy: numpy.ufunc
-_so3_as_euler_zxy_deg: numpy.ufunc
-_so3_as_euler_zxz: numpy.ufunc
-_so3_as_euler_zxz_deg: numpy.ufunc
-_so3_as_euler_zyx: numpy.ufunc
-_so3_as_euler_zyx_deg: numpy.ufunc
-_so3_as_euler_zyz: numpy.ufunc
-_so3_as_euler_zyz_deg: numpy.ufunc
+_so3_as_euler: numpy.ufunc
+_so3_as_euler_lock: numpy.ufunc
 _so3_as_quat_wxyz: numpy.ufunc
 _so3_as_quat_xyzw: numpy.ufunc
 _so3_as_rpy: numpy.ufunc
-_so3_as_rpy_deg: numpy.ufunc
+_so3_as_rpy_lock: numpy.ufunc
 _so3_bspline: numpy.ufunc
 _so3_bspline_rates: numpy.ufunc
-_so3_from_euler_XYX: numpy.ufunc
-_so3_from_euler_XYX_deg: numpy.ufunc
-_so3_from_euler_XYZ: numpy.ufunc
-_so3_from_euler_XYZ_deg: numpy.ufunc
-_so3_from_euler_XZX: numpy.ufunc
-_so3_from_euler_XZX_deg: numpy.ufunc
-_so3_from_euler_XZY: numpy.ufunc
-_so3_from_euler_XZY_deg: numpy.ufunc
-_so3_from_euler_YXY: numpy.ufunc
-_so3_from_euler_YXY_deg: numpy.ufunc
-_so3_from_euler_YXZ: numpy.ufunc
-_so3_from_euler_YXZ_deg: numpy.ufunc
-_so3_from_euler_YZX: numpy.ufunc
-_so3_from_euler_YZX_deg: numpy.ufunc
-_so3_from_euler_YZY: numpy.ufunc
-_so3_from_euler_YZY_deg: numpy.ufunc
-_so3_from_euler_ZXY: numpy.ufunc
-_so3_from_euler_ZXY_deg: numpy.ufunc
-_so3_from_euler_ZXZ: numpy.ufunc
-_so3_from_euler_ZXZ_deg: numpy.ufunc
-_so3_from_euler_ZYX: numpy.ufunc
-_so3_from_euler_ZYX_deg: numpy.ufunc
-_so3_from_euler_ZYZ: numpy.ufunc
-_so3_from_euler_ZYZ_deg: numpy.ufunc
-_so3_from_euler_xyx: numpy.ufunc
-_so3_from_euler_xyx_deg: numpy.ufunc
-_so3_from_euler_xyz: numpy.ufunc
-_so3_from_euler_xyz_deg: numpy.ufunc
-_so3_from_euler_xzx: numpy.ufunc
-_so3_from_euler_xzx_deg: numpy.ufunc
-_so3_from_euler_xzy: numpy.ufunc
-_so3_from_euler_xzy_deg: numpy.ufunc
-_so3_from_euler_yxy: numpy.ufunc
-_so3_from_euler_yxy_deg: numpy.ufunc
-_so3_from_euler_yxz: numpy.ufunc
-_so3_from_euler_yxz_deg: numpy.ufunc
-_so3_from_euler_yzx: numpy.ufunc
-_so3_from_euler_yzx_deg: numpy.ufunc
-_so3_from_euler_yzy: numpy.ufunc
-_so3_from_euler_yzy_deg: numpy.ufunc
-_so3_from_euler_zxy: numpy.ufunc
-_so3_from_euler_zxy_deg: numpy.ufunc
-_so3_from_euler_zxz: numpy.ufunc
-_so3_from_euler_zxz_deg: numpy.ufunc
-_so3_from_euler_zyx: numpy.ufunc
-_so3_from_euler_zyx_deg: numpy.ufunc
-_so3_from_euler_zyz: numpy.ufunc
-_so3_from_euler_zyz_deg: numpy.ufunc
+_so3_from_euler: numpy.ufunc
 _so3_from_quat_wxyz: numpy.ufunc
 _so3_from_quat_xyzw: numpy.ufunc
 _so3_from_rpy: numpy.ufunc
-_so3_from_rpy_deg: numpy.ufunc
 _so3_spline: numpy.ufunc
 _so3_spline_rates: numpy.ufunc
-se3_act: numpy.ufunc
-se3_act_jacobian: numpy.ufunc
-se3_act_twist: numpy.ufunc
-se3_act_wrench: numpy.ufunc
-se3_adjoint: numpy.ufunc
-se3_compose: numpy.ufunc
-se3_distance: numpy.ufunc
-se3_exp: numpy.ufunc
-se3_hat: numpy.ufunc
-se3_interpolate: numpy.ufunc
-se3_inverse: numpy.ufunc
-se3_log: numpy.ufunc
-se3_vee: numpy.ufunc
-so3_act: numpy.ufunc
-so3_act_jacobian: numpy.ufunc
-so3_angle: numpy.ufunc
-so3_compose: numpy.ufunc
-so3_distance: numpy.ufunc
-so3_exp: numpy.ufunc
-so3_from_uniforms: numpy.ufunc
-so3_hat: numpy.ufunc
-so3_interpolate: numpy.ufunc
-so3_inverse: numpy.ufunc
-so3_log: numpy.ufunc
-so3_vee: numpy.ufunc
+# se3_act(g, points): (4,4),(3)->(3)
+se3_act: _GUFunc_Nin2_Nout1[typing.Literal["se3_act"], typing.Literal["(4,4),(3)->(3)"]]
+# se3_act_jacobian(g, points): (4,4),(3)->(3,6)
+se3_act_jacobian: _GUFunc_Nin2_Nout1[typing.Literal["se3_act_jacobian"], typing.Literal["(4,4),(3)->(3,6)"]]
+# se3_act_twist(g, xi): (4,4),(6)->(6)
+se3_act_twist: _GUFunc_Nin2_Nout1[typing.Literal["se3_act_twist"], typing.Literal["(4,4),(6)->(6)"]]
+# se3_act_wrench(g, F): (4,4),(6)->(6)
+se3_act_wrench: _GUFunc_Nin2_Nout1[typing.Literal["se3_act_wrench"], typing.Literal["(4,4),(6)->(6)"]]
+# se3_adjoint(g): (4,4)->(6,6)
+se3_adjoint: _GUFunc_Nin1_Nout1[typing.Literal["se3_adjoint"], typing.Literal["(4,4)->(6,6)"]]
+# se3_compose(a, b): (4,4),(4,4)->(4,4)
+se3_compose: _GUFunc_Nin2_Nout1[typing.Literal["se3_compose"], typing.Literal["(4,4),(4,4)->(4,4)"]]
+# se3_distance(a, b): (4,4),(4,4)->(2)
+se3_distance: _GUFunc_Nin2_Nout1[typing.Literal["se3_distance"], typing.Literal["(4,4),(4,4)->(2)"]]
+# se3_exp(xi): (6)->(4,4)
+se3_exp: _GUFunc_Nin1_Nout1[typing.Literal["se3_exp"], typing.Literal["(6)->(4,4)"]]
+# se3_hat(xi): (6)->(4,4)
+se3_hat: _GUFunc_Nin1_Nout1[typing.Literal["se3_hat"], typing.Literal["(6)->(4,4)"]]
+# se3_interpolate(a, b, t): (4,4),(4,4),()->(4,4)
+se3_interpolate: _GUFunc_Nin3_Nout1[typing.Literal["se3_interpolate"], typing.Literal["(4,4),(4,4),()->(4,4)"]]
+# se3_inverse(g): (4,4)->(4,4)
+se3_inverse: _GUFunc_Nin1_Nout1[typing.Literal["se3_inverse"], typing.Literal["(4,4)->(4,4)"]]
+# se3_log(g): (4,4)->(6)
+se3_log: _GUFunc_Nin1_Nout1[typing.Literal["se3_log"], typing.Literal["(4,4)->(6)"]]
+# se3_vee(matrix): (4,4)->(6)
+se3_vee: _GUFunc_Nin1_Nout1[typing.Literal["se3_vee"], typing.Literal["(4,4)->(6)"]]
+# so3_act(R, points): (3,3),(3)->(3)
+so3_act: _GUFunc_Nin2_Nout1[typing.Literal["so3_act"], typing.Literal["(3,3),(3)->(3)"]]
+# so3_act_jacobian(R, points): (3,3),(3)->(3,3)
+so3_act_jacobian: _GUFunc_Nin2_Nout1[typing.Literal["so3_act_jacobian"], typing.Literal["(3,3),(3)->(3,3)"]]
+# so3_angle(R): (3,3)->()
+so3_angle: _GUFunc_Nin1_Nout1[typing.Literal["so3_angle"], typing.Literal["(3,3)->()"]]
+# so3_compose(a, b): (3,3),(3,3)->(3,3)
+so3_compose: _GUFunc_Nin2_Nout1[typing.Literal["so3_compose"], typing.Literal["(3,3),(3,3)->(3,3)"]]
+# so3_distance(a, b): (3,3),(3,3)->()
+so3_distance: _GUFunc_Nin2_Nout1[typing.Literal["so3_distance"], typing.Literal["(3,3),(3,3)->()"]]
+# so3_exp(w): (3)->(3,3)
+so3_exp: _GUFunc_Nin1_Nout1[typing.Literal["so3_exp"], typing.Literal["(3)->(3,3)"]]
+# so3_from_uniforms(u): (3)->(3,3)
+so3_from_uniforms: _GUFunc_Nin1_Nout1[typing.Literal["so3_from_uniforms"], typing.Literal["(3)->(3,3)"]]
+# so3_hat(w): (3)->(3,3)
+so3_hat: _GUFunc_Nin1_Nout1[typing.Literal["so3_hat"], typing.Literal["(3)->(3,3)"]]
+# so3_interpolate(a, b, t): (3,3),(3,3),()->(3,3)
+so3_interpolate: _GUFunc_Nin3_Nout1[typing.Literal["so3_interpolate"], typing.Literal["(3,3),(3,3),()->(3,3)"]]
+# so3_inverse(R): (3,3)->(3,3)
+so3_inverse: _GUFunc_Nin1_Nout1[typing.Literal["so3_inverse"], typing.Literal["(3,3)->(3,3)"]]
+# so3_log(R): (3,3)->(3)
+so3_log: _GUFunc_Nin1_Nout1[typing.Literal["so3_log"], typing.Literal["(3,3)->(3)"]]
+# so3_vee(matrix): (3,3)->(3)
+so3_vee: _GUFunc_Nin1_Nout1[typing.Literal["so3_vee"], typing.Literal["(3,3)->(3)"]]

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numbers
 import warnings
-from typing import Any, Optional
+from typing import Any, NamedTuple, Optional
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -20,6 +20,17 @@ from chasles import _core
 from chasles._random import _asarray
 
 METHODS = ("geodesic", "chordal")
+
+
+class MeanInfo(NamedTuple):
+    """What ``so3_mean`` / ``se3_mean`` return with ``return_info=True``."""
+
+    mean: np.ndarray
+    """The mean, shape (3, 3) or (4, 4)."""
+    converged: bool
+    """The geodesic iteration converged (always True for ``method="chordal"``)."""
+    iterations: int
+    """The Newton steps taken (0 for ``method="chordal"``)."""
 
 
 def _check_weights(name: str, w: np.ndarray) -> None:
@@ -38,7 +49,7 @@ def _check_weights(name: str, w: np.ndarray) -> None:
 
 
 def _mean(name: str, core: int, matrices: ArrayLike, weights: Optional[ArrayLike], method: Any,
-          max_iterations: Any, reduce) -> np.ndarray:
+          max_iterations: Any, return_info: bool, reduce) -> Any:
     if not isinstance(method, str) or method not in METHODS:
         raise ValueError(f"{name}(method): expected 'geodesic' or 'chordal', got {method!r}")
     if isinstance(max_iterations, (bool, np.bool_)) or not isinstance(max_iterations, (numbers.Integral, np.integer)):
@@ -47,7 +58,10 @@ def _mean(name: str, core: int, matrices: ArrayLike, weights: Optional[ArrayLike
         raise ValueError(f"{name}(max_iterations): expected 1 <= max_iterations <= 1000, got {max_iterations}")
     X = _asarray(matrices, f"{name}(matrices)")
     if X.ndim != 3 or X.shape[1:] != (core, core) or X.shape[0] == 0:
-        raise ValueError(f"{name}(matrices): expected shape (N, {core}, {core}) with N >= 1, got {X.shape}")
+        hint = ""
+        if core == 3 and X.ndim == 2 and X.shape[1] == 4:
+            hint = "; quaternions (x, y, z, w) are rotations by chasles.so3_from_quat(quat)"
+        raise ValueError(f"{name}(matrices): expected shape (N, {core}, {core}) with N >= 1, got {X.shape}{hint}")
     X = np.ascontiguousarray(X, dtype=np.float64)
     if not np.all(np.isfinite(X)):
         raise ValueError(f"{name}(matrices): expected finite numbers")
@@ -60,6 +74,8 @@ def _mean(name: str, core: int, matrices: ArrayLike, weights: Optional[ArrayLike
             raise ValueError(f"{name}(weights): expected shape ({n},), got {w.shape}")
         _check_weights(name, w)
     mean, iterations, converged = reduce(X, w, method == "geodesic", int(max_iterations))
+    if return_info:
+        return MeanInfo(mean, bool(converged), int(iterations))
     if not converged:
         warnings.warn(
             f"{name}: the geodesic mean did not converge in {iterations} iterations "
@@ -71,7 +87,7 @@ def _mean(name: str, core: int, matrices: ArrayLike, weights: Optional[ArrayLike
 
 
 def so3_mean(matrices: ArrayLike, weights: Optional[ArrayLike] = None, method: str = "geodesic", *,
-             max_iterations: int = 20) -> np.ndarray:
+             max_iterations: int = 20, return_info: bool = False) -> Any:
     """The weighted mean of rotations.
 
     ``method="geodesic"`` (default): the Karcher mean M with
@@ -95,9 +111,12 @@ def so3_mean(matrices: ArrayLike, weights: Optional[ArrayLike] = None, method: s
             or subnormal w, give the same mean).
         method: "geodesic" or "chordal".
         max_iterations: the bound on the Newton steps (geodesic).
+        return_info: return a ``MeanInfo`` (mean, converged, iterations)
+            instead of the mean alone, and no RuntimeWarning.
 
     Returns:
-        numpy.ndarray of shape (3, 3): the mean rotation, float64.
+        numpy.ndarray of shape (3, 3): the mean rotation, float64; with
+        return_info=True a ``MeanInfo`` named tuple.
 
     Example:
         >>> import chasles
@@ -105,11 +124,11 @@ def so3_mean(matrices: ArrayLike, weights: Optional[ArrayLike] = None, method: s
         >>> np.allclose(chasles.so3_mean(R), chasles.so3_exp([0.0, 0.0, 0.2]))
         True
     """
-    return _mean("so3_mean", 3, matrices, weights, method, max_iterations, _core._so3_mean)
+    return _mean("so3_mean", 3, matrices, weights, method, max_iterations, return_info, _core._so3_mean)
 
 
 def se3_mean(matrices: ArrayLike, weights: Optional[ArrayLike] = None, method: str = "geodesic", *,
-             max_iterations: int = 20) -> np.ndarray:
+             max_iterations: int = 20, return_info: bool = False) -> Any:
     """The weighted mean of rigid motions.
 
     ``method="geodesic"`` (default): the bi-invariant exponential barycenter
@@ -131,9 +150,12 @@ def se3_mean(matrices: ArrayLike, weights: Optional[ArrayLike] = None, method: s
             or subnormal w, give the same mean).
         method: "geodesic" or "chordal".
         max_iterations: the bound on the Newton steps (geodesic).
+        return_info: return a ``MeanInfo`` (mean, converged, iterations)
+            instead of the mean alone, and no RuntimeWarning.
 
     Returns:
-        numpy.ndarray of shape (4, 4): the mean pose, float64.
+        numpy.ndarray of shape (4, 4): the mean pose, float64; with
+        return_info=True a ``MeanInfo`` named tuple.
 
     Example:
         >>> import chasles
@@ -141,4 +163,4 @@ def se3_mean(matrices: ArrayLike, weights: Optional[ArrayLike] = None, method: s
         >>> np.allclose(chasles.se3_mean(g)[:3, 3], [2.0, 0.0, 0.0])
         True
     """
-    return _mean("se3_mean", 4, matrices, weights, method, max_iterations, _core._se3_mean)
+    return _mean("se3_mean", 4, matrices, weights, method, max_iterations, return_info, _core._se3_mean)

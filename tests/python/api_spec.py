@@ -222,8 +222,9 @@ class TwistOr(Array):
 @dataclass
 class Points(Arg):
     """Points of an object's action: the array function so3_act or se3_act
-    with the object's float64 matrix, so shape (..., 3), any dtype numpy casts
-    safely to float64, NaN allowed; errors name the call."""
+    with the object's float64 matrix (float32 for a float32 ndarray: float32
+    points give float32), so shape (..., 3), any dtype numpy casts safely to
+    float64, NaN allowed; errors name the call."""
 
     def good(self):
         return np.array([[0.5, -1.0, 2.0], [1.0, 0.0, 0.25]])
@@ -241,7 +242,8 @@ class Points(Arg):
         shape = core_shape_refusal(a.shape, (3,))
         if shape:
             return Refused(ValueError, (self.label,) + shape)
-        return Accepted(plain(a, np.float64))
+        float32 = isinstance(value, np.ndarray) and value.dtype.type is np.float32
+        return Accepted(plain(a, np.float32 if float32 else np.float64))
 
 
 @dataclass

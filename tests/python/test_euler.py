@@ -238,3 +238,73 @@ def test_shape_errors_name_the_function():
         chasles.SO3.from_euler("xyz", [0.1, 0.2])
     with pytest.raises(ValueError, match=r"SO3.from_rpy\(rpy\).*finite"):
         chasles.SO3.from_rpy([0.1, np.nan, 0.2])
+
+
+# ---- the gimbal lock flag, and one ufunc for every sequence ----------------------
+
+
+@pytest.mark.parametrize("seq", SEQUENCES)
+def test_the_gimbal_lock_flag_reaches_python(seq):
+    """as_euler's flag (C++ EulerAngles::gimbal_lock) is returned on request,
+    for the array functions and the methods; the angles are unchanged."""
+    lock = locks(seq)[0]
+    angles = np.array([[0.3, lock, 0.2], [0.3, 0.7 if not proper(seq) else 1.1, 0.2]])
+    R = chasles.so3_from_euler(seq, angles)
+    got, flag = chasles.so3_as_euler(seq, R, return_gimbal_lock=True)
+    assert flag.dtype == np.bool_ and flag.shape == (2,) and flag.tolist() == [True, False]
+    assert np.array_equal(got, chasles.so3_as_euler(seq, R))
+    deg, flag_deg = chasles.so3_as_euler(seq, R, degrees=True, return_gimbal_lock=True)
+    assert np.array_equal(deg, chasles.so3_as_euler(seq, R, degrees=True)) and np.array_equal(flag, flag_deg)
+    for k in range(2):
+        one, locked = chasles.SO3.from_matrix(R[k]).as_euler(seq, return_gimbal_lock=True)
+        assert locked is bool(flag[k]) and np.array_equal(one, got[k])
+    out = np.empty((2, 3))
+    assert chasles.so3_as_euler(seq, R, out=out) is out and np.array_equal(out, got)
+
+
+def test_the_rpy_gimbal_lock_flag():
+    R = chasles.so3_from_rpy([[0.1, np.pi / 2, 0.3], [0.1, 0.2, 0.3]])
+    rpy, flag = chasles.so3_as_rpy(R, return_gimbal_lock=True)
+    assert flag.tolist() == [True, False] and np.array_equal(rpy, chasles.so3_as_rpy(R))
+    one, locked = chasles.SO3.from_matrix(R[0]).as_rpy(degrees=True, return_gimbal_lock=True)
+    assert locked is True and np.array_equal(one, chasles.so3_as_rpy(R[0], degrees=True))
+    assert chasles.SO3().as_rpy(return_gimbal_lock=True)[1] is False
+
+
+def test_a_sequence_per_element_gives_each_elements_kernel():
+    """The private ufuncs take the sequence and unit as an operand (the
+    sequence's index, plus 24 for degrees): an array of codes (runs of equal
+    ones, or all different) gives, per element, the bits of that sequence's
+    and unit's kernel; a code outside [0, 48) gives NaN."""
+    core = chasles._core
+    rng = np.random.default_rng(3)
+    t = rng.uniform(-1.0, 1.0, size=(96, 3))
+    codes = np.array([k % 48 for k in range(96)], dtype=np.intc)
+    codes[10:20] = 5  # a run
+    R = core._so3_from_euler(t, codes)
+    back = core._so3_as_euler(R, codes)
+    back_lock, lock = core._so3_as_euler_lock(R, codes)
+    assert np.array_equal(back, back_lock) and lock.dtype == np.bool_
+    for i in range(96):
+        s, degrees = SEQUENCES_IN_ENUM_ORDER[codes[i] % 24], bool(codes[i] >= 24)
+        assert np.array_equal(R[i], chasles.so3_from_euler(s, t[i], degrees=degrees))
+        assert np.array_equal(back[i], chasles.so3_as_euler(s, R[i], degrees=degrees))
+    for bad in (48, -1):
+        assert np.isnan(core._so3_from_euler(t[:2], np.intc(bad))).all()
+        assert np.isnan(core._so3_as_euler(R[:2], np.intc(bad))).all()
+
+
+SEQUENCES_IN_ENUM_ORDER = [s for s in SEQUENCES if s.islower()] + [s for s in SEQUENCES if s.isupper()]
+
+
+def test_from_rpy_with_three_numbers_gets_chasles_error():
+    """SO3.from_rpy(0.1, 0.2, 0.3): chasles' TypeError naming the expected
+    shape, not pybind11's list of overloads."""
+    with pytest.raises(TypeError, match=r"SO3\.from_rpy\(rpy, degrees=False\): expected rpy, one array_like of "
+                       r"shape \(3,\).*Three angles are one argument: SO3\.from_rpy\(\[roll, pitch, yaw\]\)") as e:
+        chasles.SO3.from_rpy(0.1, 0.2, 0.3)
+    assert "incompatible function arguments" not in str(e.value) and "Invoked with" not in str(e.value)
+    with pytest.raises(TypeError, match=r"SO3\.from_rpy\(rpy, degrees=False\).*got \(\)"):
+        chasles.SO3.from_rpy()
+    assert chasles.SO3.from_rpy([0.1, 0.2, 0.3]) == chasles.SO3.from_euler("xyz", [0.1, 0.2, 0.3])
+    assert "args" not in str(__import__("inspect").signature(chasles.SO3.from_rpy))

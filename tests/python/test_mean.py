@@ -222,3 +222,29 @@ def test_the_private_cores_refuse_the_weights_the_cpp_mean_reports(core, weights
     X = np.repeat(np.eye(n)[None], 2, axis=0)
     with pytest.raises(ValueError, match=rf"^{core}\(weights\): expected finite weights >= 0, not all 0$"):
         getattr(chasles._core, core)(X, np.array(weights), geodesic, 20)
+
+
+@pytest.mark.parametrize("mean", [chasles.so3_mean, chasles.se3_mean])
+def test_the_convergence_and_iteration_count_reach_python(mean):
+    """return_info=True gives what the C++ mean reports (mean, converged,
+    iterations) without a warning; the default return is the mean alone."""
+    R = cloud(200, 1 / np.sqrt(3), 3)
+    X = R if mean is chasles.so3_mean else chasles.se3_exp(np.concatenate([np.ones((200, 3)), chasles.so3_log(R)], -1))
+    info = mean(X, return_info=True)
+    assert np.array_equal(info.mean, mean(X)) and info.converged is True and 1 <= info.iterations <= 20
+    mean_, converged, iterations = info
+    assert iterations == info.iterations
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        short = mean(X, max_iterations=1, return_info=True)
+    assert short.converged is False and short.iterations == 1
+    chordal = mean(X, method="chordal", return_info=True)
+    assert chordal.converged is True and chordal.iterations == 0
+    assert np.array_equal(chordal.mean, mean(X, method="chordal"))
+
+
+def test_quaternions_given_to_so3_mean_name_so3_from_quat():
+    q = np.tile([0.0, 0.0, 0.0, 1.0], (5, 1))
+    with pytest.raises(ValueError, match=r"so3_mean\(matrices\).*\(N, 3, 3\).*got \(5, 4\).*so3_from_quat"):
+        chasles.so3_mean(q)
+    assert np.allclose(chasles.so3_mean(chasles.so3_from_quat(q)), np.eye(3))

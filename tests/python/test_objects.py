@@ -608,9 +608,13 @@ def test_points_of_any_leading_shape_layout_and_dtype(G):
     assert np.array_equal(g @ strided[:, ::2], g @ flat)
     assert np.array_equal(g @ flat[::-1], (g @ flat)[::-1])
     assert np.array_equal(g @ flat.astype(">f8"), g @ flat)
-    assert np.array_equal(
-        g @ flat.astype(np.float32), g @ flat.astype(np.float32).astype(np.float64)
-    )
+    # float32 points give float32: the pose rounded to float32 once, then the
+    # float32 kernel (the bits of the array function on float32 operands)
+    f32 = flat.astype(np.float32)
+    act = chasles.so3_act if G is SO3 else chasles.se3_act
+    assert (g @ f32).dtype == np.float32 and g.act(f32).dtype == np.float32
+    assert np.array_equal(g @ f32, act(g.as_matrix().astype(np.float32), f32))
+    assert np.array_equal(g.act(f32), g @ f32)
     assert np.array_equal(g @ [1, 2, 3], g @ np.array([1.0, 2.0, 3.0]))
     assert np.array_equal(g @ (1, 2, 3), g @ np.array([1.0, 2.0, 3.0]))
     assert np.array_equal(g @ [[1, 2, 3]], g @ np.array([[1.0, 2.0, 3.0]]))

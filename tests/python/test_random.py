@@ -227,3 +227,38 @@ def test_gaussians_take_a_mean_within_the_tolerance_as_it_is():
     np.testing.assert_array_equal(
         chasles.se3_gaussian(g, cov6, 2, rng=3), chasles.se3_gaussian(g.as_matrix(), cov6, 2, rng=3)
     )
+
+
+def test_objects_random_do_not_import_the_python_samplers():
+    """SO3.random and SE3.random draw from numpy's Generator in C++: they work
+    with chasles._random unimportable (the extension imports no module of
+    its package), with the bits of so3_random / se3_random."""
+    import subprocess
+    import sys
+
+    code = (
+        "import sys, numpy as np, chasles\n"
+        "a, b = chasles.so3_random(rng=7), chasles.se3_random(rng=8, low=0.5, high=2.0)\n"
+        "sys.modules['chasles._random'] = None\n"
+        "assert np.array_equal(chasles.SO3.random(rng=7).as_matrix(), a)\n"
+        "assert np.array_equal(chasles.SE3.random(rng=8, low=0.5, high=2.0).as_matrix(), b)\n"
+    )
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=False)
+    assert r.returncode == 0, r.stderr
+
+
+@pytest.mark.parametrize("bad, error", [(-1, ValueError), ("seed", TypeError), (1.5, TypeError), (1j, TypeError)])
+def test_objects_random_refuse_a_bad_rng_naming_the_sampler(bad, error):
+    with pytest.raises(error, match=r"so3_random\(rng\)"):
+        chasles.SO3.random(rng=bad)
+    with pytest.raises(error, match=r"se3_random\(rng\)"):
+        chasles.SE3.random(rng=bad)
+
+
+def test_se3_random_box_errors_name_the_argument():
+    with pytest.raises(ValueError, match=r"se3_random\(low\)"):
+        chasles.SE3.random(rng=0, low=[0.0, np.nan, 0.0])
+    with pytest.raises(ValueError, match=r"se3_random\(high\)"):
+        chasles.SE3.random(rng=0, high=[1.0, 2.0])
+    with pytest.raises(ValueError, match=r"se3_random: expected low <= high"):
+        chasles.SE3.random(rng=0, low=1.0, high=0.0)
