@@ -21,7 +21,7 @@ namespace chasles_py {
 namespace {
 
 constexpr int kMaxJoints = 32;
-using DynD = chasles::Dynamics<double, Eigen::Dynamic, kMaxJoints>;
+using DynD = chasles::Chain<double, Eigen::Dynamic, kMaxJoints>;
 using InertiaD = chasles::SpatialInertia<double>;
 using chasles::SE3d;
 using chasles::Twistd;
@@ -127,7 +127,8 @@ struct DynamicsOf {
     DynD::Inertias I;
     for (Eigen::Index i = 0; i < inertias.size(); ++i)
       I[static_cast<std::size_t>(i)] = InertiaD::from_matrix_unchecked(Matrix6(inertias[i]));
-    return DynD(DynD::Screws(screws.transpose()), SE3d::from_matrix_unchecked(Matrix4(home)), I, Vector3(gravity));
+    return DynD(DynD::Screws(screws.transpose()), SE3d::from_matrix_unchecked(Matrix4(home)), DynD::HomeAsGiven(), I,
+                Vector3(gravity));
   }
 };
 
@@ -136,7 +137,7 @@ using Joints = DynD::JointVector;
 struct InverseDynamics {
   template <typename Q, typename Qd, typename Qdd, typename F>
   Joints operator()(const DynD& d, const Q& q, const Qd& qd, const Qdd& qdd, const F& tip) const noexcept {
-    return d.inverse_dynamics(Joints(q), Joints(qd), Joints(qdd), Wrenchd(Vector6(tip)));
+    return chasles::inverse_dynamics(d, Joints(q), Joints(qd), Joints(qdd), Wrenchd(Vector6(tip)));
   }
 };
 /// (qdd, joint): the accelerations (NaN where M(q) is not positive
@@ -145,26 +146,26 @@ struct ForwardDynamics {
   template <typename Q, typename Qd, typename Tau, typename F>
   std::tuple<Joints, int> operator()(const DynD& d, const Q& q, const Qd& qd, const Tau& tau, const F& tip) const
       noexcept {
-    const auto r = d.forward_dynamics(Joints(q), Joints(qd), Joints(tau), Wrenchd(Vector6(tip)));
+    const auto r = chasles::forward_dynamics(d, Joints(q), Joints(qd), Joints(tau), Wrenchd(Vector6(tip)));
     return {r.qdd, static_cast<int>(r.joint)};
   }
 };
 struct MassMatrix {
   template <typename Q>
   DynD::MassMatrix operator()(const DynD& d, const Q& q) const noexcept {
-    return d.mass_matrix(Joints(q));
+    return chasles::mass_matrix(d, Joints(q));
   }
 };
 struct GravityTorques {
   template <typename Q>
   Joints operator()(const DynD& d, const Q& q) const noexcept {
-    return d.gravity_torques(Joints(q));
+    return chasles::gravity_torques(d, Joints(q));
   }
 };
 struct Coriolis {
   template <typename Q, typename Qd>
   Joints operator()(const DynD& d, const Q& q, const Qd& qd) const noexcept {
-    return d.coriolis(Joints(q), Joints(qd));
+    return chasles::coriolis(d, Joints(q), Joints(qd));
   }
 };
 

@@ -26,7 +26,7 @@ namespace {
 
 constexpr int kMaxJoints = 32;
 using ChainD = chasles::Chain<double, Eigen::Dynamic, kMaxJoints>;
-using DynD = chasles::Dynamics<double, Eigen::Dynamic, kMaxJoints>;
+using DynD = ChainD;
 using InertiaD = chasles::SpatialInertia<double>;
 using chasles::SE3d;
 using Vector3 = Eigen::Vector3d;
@@ -202,9 +202,9 @@ py::object chain_ufunc(py::module_& m, const char* name, const char* method) {
 /// The chain's space screws, shape (n, 6), and home pose, shape (4, 4), as
 /// the ufuncs' first two operands.
 py::array screws_array(const ChainD& c) {
-  const Py_intptr_t dims[2] = {c.joints(), 6};
+  const Py_intptr_t dims[2] = {c.n_joints(), 6};
   py::array_t<double> out = new_array(2, dims);
-  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor>>(array_data(out), c.joints(), 6) =
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor>>(array_data(out), c.n_joints(), 6) =
       c.space_screws().transpose();
   return std::move(out);
 }
@@ -231,7 +231,7 @@ py::object joint_operand(py::handle x, py::ssize_t n, const char* what) {
 /// (tests/python/test_ufuncs.py compares the two).
 template <ChainOp Op>
 py::object call_chain_ufunc(PyObject* u, const ChainD& c, py::handle theta, const char* what) {
-  const py::ssize_t n = c.joints();
+  const py::ssize_t n = c.n_joints();
   if (ChainD::JointVector one(n); single_element(theta, one.data(), n)) {
     const auto result = chain_result<Op>(c, one);
     const Py_intptr_t dims[2] = {result.rows(), result.cols()};
@@ -463,7 +463,7 @@ bool is_plain(const PyChain& c) {
   if (!c.names.empty() || c.has_inertias || !identity(c.given_base) || !identity(c.given_tool) ||
       c.gravity() != ChainD::default_gravity())
     return false;
-  for (Eigen::Index i = 0; i < c.joints(); ++i) {
+  for (Eigen::Index i = 0; i < c.n_joints(); ++i) {
     const bool prismatic = !(c.space_screws().col(i).tail<3>().squaredNorm() > 0);
     if (c.joint_type(i) != (prismatic ? chasles::JointType::prismatic : chasles::JointType::revolute)) return false;
     if (!(c.lower()(i) == -INFINITY && c.upper()(i) == INFINITY && c.velocity_limits()(i) == INFINITY &&
@@ -559,7 +559,7 @@ Returns:
 /// frame), read-only, and the Dynamics built from them as the ufunc loop
 /// builds its model.
 std::shared_ptr<const DynamicsModel> dynamics_model(const ChainD& c) {
-  const Py_intptr_t n = c.joints();
+  const Py_intptr_t n = c.n_joints();
   const Py_intptr_t dims[3] = {n, 6, 6};
   py::array_t<double> G = new_array(3, dims);
   DynD::Inertias I{};
@@ -569,7 +569,7 @@ std::shared_ptr<const DynamicsModel> dynamics_model(const ChainD& c) {
     I[k] = InertiaD::from_matrix_unchecked(c.link_inertias()[k].matrix());
   }
   DynamicsModel d{screws_array(c), mat_out<4, 4>(c.home().matrix()), std::move(G), vec_out<3>(c.gravity()),
-                  DynD(c.space_screws(), SE3d::from_matrix_unchecked(c.home().matrix()), I, c.gravity())};
+                  DynD(c.space_screws(), SE3d::from_matrix_unchecked(c.home().matrix()), DynD::HomeAsGiven(), I, c.gravity())};
   for (py::array* a : {&d.screws, &d.home, &d.inertias, &d.gravity})
     py::detail::array_proxy(a->ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
   return std::make_shared<const DynamicsModel>(std::move(d));
@@ -599,7 +599,7 @@ py::object call_dynamics_ufunc(PyObject* u, const PyChain& c, const char* what, 
                                const std::array<const char*, J>& names, bool with_gravity, const py::handle* tip,
                                Kernel kernel) {
   const DynamicsModel& d = dynamics_of(c, what);
-  const py::ssize_t n = c.joints();
+  const py::ssize_t n = c.n_joints();
   std::array<DynD::JointVector, J> one;
   bool single = true;
   for (std::size_t j = 0; j < J && single; ++j) {
@@ -712,7 +712,7 @@ IKSolution solve_ik(PyObject* u, const PyChain& c, py::handle target, py::handle
   if (!(position_tolerance >= 0) || !(orientation_tolerance >= 0))
     raise_value_error(std::string(what) + ": expected tolerances >= 0, got " + short_float(position_tolerance) + " and " +
                       short_float(orientation_tolerance));
-  const py::ssize_t n = c.joints();
+  const py::ssize_t n = c.n_joints();
   const py::array T = as_float64_array(target, "Chain.inverse_kinematics(target)");
   if (T.ndim() < 2 || T.shape(T.ndim() - 1) != 4 || T.shape(T.ndim() - 2) != 4)
     raise_value_error(std::string(what) + "(target): expected an SE3 or shape (4, 4) or (..., 4, 4), got " +
@@ -1051,7 +1051,7 @@ Example:
             u_inverse_dynamics.ptr(), *c, "Chain.inverse_dynamics", {q, qd, qdd},
             {"Chain.inverse_dynamics(q)", "Chain.inverse_dynamics(qd)", "Chain.inverse_dynamics(qdd)"}, true,
             &tip_wrench, [](const DynD& d, const std::array<DynD::JointVector, 3>& x, const chasles::Wrenchd& tip) {
-              return d.inverse_dynamics(x[0], x[1], x[2], tip);
+              return chasles::inverse_dynamics(d, x[0], x[1], x[2], tip);
             });
       },
       py::arg("q"), py::arg("qd"), py::arg("qdd"), py::kw_only(), py::arg("tip_wrench") = py::none(),
@@ -1084,7 +1084,7 @@ Raises:
             {"Chain.forward_dynamics(q)", "Chain.forward_dynamics(qd)", "Chain.forward_dynamics(tau)"}, true,
             &tip_wrench,
             [raise](const DynD& d, const std::array<DynD::JointVector, 3>& x, const chasles::Wrenchd& tip) {
-              const auto one = d.forward_dynamics(x[0], x[1], x[2], tip);
+              const auto one = chasles::forward_dynamics(d, x[0], x[1], x[2], tip);
               if (!one && raise) raise_not_positive_definite("", one.joint);
               return one.qdd;
             });
@@ -1129,7 +1129,7 @@ Raises:
       [u_mass_matrix](Obj<PyChain> c, py::object q) {
         return call_dynamics_ufunc<1>(u_mass_matrix.ptr(), *c, "Chain.mass_matrix", {q}, {"Chain.mass_matrix(q)"}, false,
                                       nullptr, [](const DynD& d, const std::array<DynD::JointVector, 1>& x,
-                                                  const chasles::Wrenchd&) { return d.mass_matrix(x[0]); });
+                                                  const chasles::Wrenchd&) { return chasles::mass_matrix(d, x[0]); });
       },
       py::arg("q"),
       R"doc(The joint-space mass matrix M(q), symmetric positive definite (composite rigid bodies).
@@ -1146,7 +1146,7 @@ Returns:
         return call_dynamics_ufunc<1>(u_gravity_torques.ptr(), *c, "Chain.gravity_torques", {q},
                                       {"Chain.gravity_torques(q)"}, true, nullptr,
                                       [](const DynD& d, const std::array<DynD::JointVector, 1>& x,
-                                         const chasles::Wrenchd&) { return d.gravity_torques(x[0]); });
+                                         const chasles::Wrenchd&) { return chasles::gravity_torques(d, x[0]); });
       },
       py::arg("q"),
       R"doc(The torques g(q) that hold the chain still against gravity: inverse_dynamics(q, 0, 0).
@@ -1163,7 +1163,7 @@ Returns:
         return call_dynamics_ufunc<2>(u_coriolis.ptr(), *c, "Chain.coriolis", {q, qd},
                                       {"Chain.coriolis(q)", "Chain.coriolis(qd)"}, false, nullptr,
                                       [](const DynD& d, const std::array<DynD::JointVector, 2>& x,
-                                         const chasles::Wrenchd&) { return d.coriolis(x[0], x[1]); });
+                                         const chasles::Wrenchd&) { return chasles::coriolis(d, x[0], x[1]); });
       },
       py::arg("q"), py::arg("qd"),
       R"doc(The Coriolis and centrifugal torques C(q, qd) qd (no gravity).
@@ -1179,9 +1179,9 @@ Returns:
       "screws",
       [](Obj<PyChain> c_) {
         const ChainD& c = *c_;
-        const Py_intptr_t dims[2] = {c.joints(), 6};
+        const Py_intptr_t dims[2] = {c.n_joints(), 6};
         py::array_t<double> out = new_array(2, dims);
-        Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor>>(array_data(out), c.joints(), 6) =
+        Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor>>(array_data(out), c.n_joints(), 6) =
             c.space_screws().transpose();
         return out;
       },
@@ -1190,9 +1190,9 @@ Returns:
       "body_screws",
       [](Obj<PyChain> c_) {
         const ChainD& c = *c_;
-        const Py_intptr_t dims[2] = {c.joints(), 6};
+        const Py_intptr_t dims[2] = {c.n_joints(), 6};
         py::array_t<double> out = new_array(2, dims);
-        Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor>>(array_data(out), c.joints(), 6) =
+        Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor>>(array_data(out), c.n_joints(), 6) =
             c.body_screws().transpose();
         return out;
       },
@@ -1200,12 +1200,12 @@ Returns:
   cls.def_property_readonly(
       "home", [](Obj<PyChain> c) { return c->home(); }, R"doc(SE3: the home pose M = g(0).)doc");
   cls.def_property_readonly(
-      "n_joints", [](Obj<PyChain> c) { return static_cast<int>(c->joints()); }, R"doc(int: n, the number of joints.)doc");
+      "n_joints", [](Obj<PyChain> c) { return static_cast<int>(c->n_joints()); }, R"doc(int: n, the number of joints.)doc");
   cls.def_property_readonly(
       "joint_types",
       [](Obj<PyChain> c) {
-        py::tuple t(c->joints());
-        for (Eigen::Index i = 0; i < c->joints(); ++i)
+        py::tuple t(c->n_joints());
+        for (Eigen::Index i = 0; i < c->n_joints(); ++i)
           t[static_cast<size_t>(i)] = py::str(kJointTypeNames[static_cast<int>(c->joint_type(i))]);
         return t;
       },
@@ -1244,9 +1244,9 @@ Returns:
       "link_inertias",
       [](Obj<PyChain> c) -> py::object {
         if (!c->has_inertias) return py::none();
-        const Py_intptr_t dims[2] = {c->joints(), 10};
+        const Py_intptr_t dims[2] = {c->n_joints(), 10};
         py::array_t<double> out = new_array(2, dims);
-        Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 10, Eigen::RowMajor>>(array_data(out), c->joints(), 10) =
+        Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 10, Eigen::RowMajor>>(array_data(out), c->n_joints(), 10) =
             c->inertias;
         return std::move(out);
       },
@@ -1322,8 +1322,8 @@ Example:
     const auto same_pose = [](const SE3d& x, const SE3d& y) {
       return x.rotation().matrix() == y.rotation().matrix() && x.translation() == y.translation();
     };
-    if (a.joints() != b.joints()) return false;
-    for (Eigen::Index i = 0; i < a.joints(); ++i)
+    if (a.n_joints() != b.n_joints()) return false;
+    for (Eigen::Index i = 0; i < a.n_joints(); ++i)
       if (a.joint_type(i) != b.joint_type(i)) return false;
     return a.space_screws() == b.space_screws() && same_pose(a.home(), b.home()) && a.lower() == b.lower() &&
            a.upper() == b.upper() && a.velocity_limits() == b.velocity_limits() &&
@@ -1332,7 +1332,7 @@ Example:
            (!a.has_inertias || a.inertias == b.inertias);
   });
   def_repr(cls, [](const PyChain& c) {
-    std::string r = "Chain(n_joints=" + std::to_string(c.joints());
+    std::string r = "Chain(n_joints=" + std::to_string(c.n_joints());
     if (!c.names.empty()) {
       r += ", names=(";
       for (size_t i = 0; i < c.names.size(); ++i)
@@ -1360,7 +1360,7 @@ Example:
   cls.def(py::pickle(
       [](Obj<PyChain> c_) -> py::tuple {
         const PyChain& c = *c_;
-        const py::ssize_t n = c.joints();
+        const py::ssize_t n = c.n_joints();
         if (is_plain(c)) {
           py::tuple t(6 * n + 12);
           for (py::ssize_t i = 0; i < n; ++i)
