@@ -14,7 +14,7 @@ PYBIND11_MODULE(_core, m) {
   chasles_py::bind_twist_wrench(m);
   chasles_py::bind_batch(m);
   chasles_py::bind_jacobians(m);  // after SO3 and SE3: adds their static methods
-  chasles_py::bind_dynamics(m);    // before Chain: its dynamics methods call these ufuncs
+  chasles_py::bind_dynamics(m);
   chasles_py::bind_kinematics(m);
   chasles_py::bind_scipy(m);  // after SO3 and SE3: adds their methods
   chasles_py::bind_statistics(m);
