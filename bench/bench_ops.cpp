@@ -237,7 +237,8 @@ void register_dynamics(const std::string& input, const std::string& sn, int n) {
     const Eigen::Matrix<S, 3, 1> com(S(0.1 * i), S(0.05 * i), S(0.1));
     inertias[std::size_t(i)] = chasles::SpatialInertia<S>(S(mass), com, moments.asDiagonal());
   }
-  const D dyn(chain.space_screws(), chain.home(), inertias, Eigen::Matrix<S, 3, 1>(S(0), S(0), S(-9.81)));
+  const D dyn(chain.space_screws(), chain.home(), typename D::HomeAsGiven(), inertias,
+              Eigen::Matrix<S, 3, 1>(S(0), S(0), S(-9.81)));
   struct State {
     JV q, qd, qdd;
   };
@@ -252,10 +253,10 @@ void register_dynamics(const std::string& input, const std::string& sn, int n) {
     states.push_back(st);
   }
   const std::string tail = "/" + input + "/" + sn;
-  add("Dynamics/inverse_dynamics" + tail, states, [dyn](const State& x) { return dyn.inverse_dynamics(x.q, x.qd, x.qdd); });
-  add("Dynamics/mass_matrix" + tail, states, [dyn](const State& x) { return dyn.mass_matrix(x.q); });
-  add("Dynamics/gravity_torques" + tail, states, [dyn](const State& x) { return dyn.gravity_torques(x.q); });
-  add("Dynamics/forward_dynamics" + tail, states, [dyn](const State& x) { return dyn.forward_dynamics(x.q, x.qd, x.qdd); });
+  add("Dynamics/inverse_dynamics" + tail, states, [dyn](const State& x) { return inverse_dynamics(dyn, x.q, x.qd, x.qdd); });
+  add("Dynamics/mass_matrix" + tail, states, [dyn](const State& x) { return mass_matrix(dyn, x.q); });
+  add("Dynamics/gravity_torques" + tail, states, [dyn](const State& x) { return gravity_torques(dyn, x.q); });
+  add("Dynamics/forward_dynamics" + tail, states, [dyn](const State& x) { return forward_dynamics(dyn, x.q, x.qd, x.qdd); });
 }
 
 template <typename S>
@@ -404,9 +405,9 @@ void register_all(const std::string& sn) {
   register_spline<SO3<S>>("SO3", sn);
   register_spline<SE3<S>>("SE3", sn);
   register_bspline<S>(sn);
-  register_dynamics<S, Dynamics<S, 6>>("6dof", sn, 6);
-  register_dynamics<S, Dynamics<S, 7>>("7dof", sn, 7);
-  register_dynamics<S, Dynamics<S, Eigen::Dynamic, 8>>("7dof_dynamic_max8", sn, 7);
+  register_dynamics<S, chasles::Chain<S, 6>>("6dof", sn, 6);
+  register_dynamics<S, chasles::Chain<S, 7>>("7dof", sn, 7);
+  register_dynamics<S, chasles::Chain<S, Eigen::Dynamic, 8>>("7dof_dynamic_max8", sn, 7);
 
   // ---- floors
   std::vector<S> angles;

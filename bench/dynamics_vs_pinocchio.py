@@ -55,10 +55,10 @@ def robots_dir():
 def reduced_model(path, chain: Chain):
     """Pinocchio's model of the URDF with every joint not in the chain locked at 0."""
     full = pin.buildModelFromUrdf(str(path))
-    keep = set(chain.names)
+    keep = set(chain.joint_names)
     lock = [i for i in range(1, full.njoints) if full.names[i] not in keep]
     model = pin.buildReducedModel(full, lock, pin.neutral(full))
-    assert list(model.names)[1:] == list(chain.names), (list(model.names), chain.names)
+    assert list(model.names)[1:] == list(chain.joint_names), (list(model.names), chain.joint_names)
     return model
 
 

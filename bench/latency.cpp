@@ -324,7 +324,7 @@ void ik_rows(const std::string& arm, const C& chain, const typename C::JointVect
     chasles::SE3<S> target;
     JV seed;
   };
-  const int n = int(chain.joints());
+  const int n = int(chain.n_joints());
   const chasles::IKOptions<S> options;
   std::mt19937_64 rng(7 + std::uint64_t(n));
   std::uniform_real_distribution<double> u(0, 1), near(-0.01, 0.01), away(-0.3, 0.3);
@@ -437,9 +437,9 @@ std::vector<Row> run_robot(std::size_t calls, const Timer& timer, std::vector<IK
 
   // Dynamics of the Panda-like arm.
   {
-    using D = Dynamics<S, 7>;
+    using D = Chain<S, 7>;
     using JV = typename D::JointVector;
-    const D dyn(panda.screws, panda.home, panda.inertias, V3(S(0), S(0), S(-9.81)));
+    const D dyn(panda.screws, panda.home, typename D::HomeAsGiven(), panda.inertias, V3(S(0), S(0), S(-9.81)));
     struct State {
       JV q, qd, qdd, tau;
     };
@@ -468,16 +468,16 @@ std::vector<Row> run_robot(std::size_t calls, const Timer& timer, std::vector<IK
     std::vector<int> ks;
     for (std::size_t i : order) xs.push_back(states[i]), ks.push_back(kinds[i]);
     rows.push_back(measure("Dynamics/inverse_dynamics (7 joints)", xs, ks,
-                           [&dyn](const State& s) { return dyn.inverse_dynamics(s.q, s.qd, s.qdd); }, calls, timer,
+                           [&dyn](const State& s) { return inverse_dynamics(dyn, s.q, s.qd, s.qdd); }, calls, timer,
                            kDynKindNames, kDynKinds));
     rows.push_back(measure("Dynamics/mass_matrix (7 joints)", xs, ks,
-                           [&dyn](const State& s) { return dyn.mass_matrix(s.q); }, calls, timer, kDynKindNames,
+                           [&dyn](const State& s) { return mass_matrix(dyn, s.q); }, calls, timer, kDynKindNames,
                            kDynKinds));
     rows.push_back(measure("Dynamics/gravity_torques (7 joints)", xs, ks,
-                           [&dyn](const State& s) { return dyn.gravity_torques(s.q); }, calls, timer, kDynKindNames,
+                           [&dyn](const State& s) { return gravity_torques(dyn, s.q); }, calls, timer, kDynKindNames,
                            kDynKinds));
     rows.push_back(measure("Dynamics/forward_dynamics (7 joints)", xs, ks,
-                           [&dyn](const State& s) { return dyn.forward_dynamics(s.q, s.qd, s.tau); }, calls, timer,
+                           [&dyn](const State& s) { return forward_dynamics(dyn, s.q, s.qd, s.tau); }, calls, timer,
                            kDynKindNames, kDynKinds));
   }
 

@@ -27,12 +27,12 @@ void bind_twist_wrench(Class<chasles::Twistd>& twist, Class<chasles::Wrenchd>& w
                        py::class_<chasles::Screw<double>>& screw);  // bind_twist_wrench.cpp: Twist, Wrench, Screw
 void bind_batch(py::module_& m);         // bind_batch.cpp: broadcasting array functions
 void bind_jacobians(py::module_& m);     // bind_jacobians.cpp: rplus, ..., between, interpolate, their Jacobians
-void bind_kinematics(py::module_& m);    // bind_kinematics.cpp: class Chain
+void bind_kinematics(py::module_& m);    // bind_kinematics.cpp: class _Chain (chasles.Chain's model), its ufuncs
 void bind_statistics(py::module_& m);    // bind_statistics.cpp: angles, distances, means (array functions)
 void bind_euler(py::module_& m);         // bind_euler.cpp: the private ufuncs of Euler angles and RPY
 void bind_spline(py::module_& m);        // bind_spline.cpp: the cores of SO3Spline, SE3Spline
 void bind_bspline(py::module_& m);       // bind_bspline.cpp: classes SO3BSpline, SE3BSpline
-void bind_dynamics(py::module_& m);      // bind_dynamics.cpp: class SpatialInertia, the dynamics ufuncs
+void bind_dynamics(py::module_& m);      // bind_dynamics.cpp: class SpatialInertia
 void bind_threads(py::module_& m);       // bind_threads.cpp: set_num_threads, get_num_threads
 
 constexpr double kDegToRad = 3.14159265358979323846 / 180.0;  // numpy's deg2rad: x * (pi / 180)

@@ -27,14 +27,13 @@ int main(int argc, char** argv) {
   const Robot robot = chasles::chain_from_urdf<double, 7>(argv[1], argv[2]);
   if (!robot) return std::fprintf(stderr, "%s\n", robot.error.c_str()), 1;
   const Arm& arm = *robot.chain;
-  const chasles::SE3d target = arm.forward(Arm::JointVector::Constant(arm.joints(), 0.4));  // forward kinematics
-  const auto ik = chasles::inverse_kinematics(arm, target, Arm::JointVector::Zero(arm.joints()),  // from q = 0
+  const chasles::SE3d target = arm.forward(Arm::JointVector::Constant(arm.n_joints(), 0.4));  // forward kinematics
+  const auto ik = chasles::inverse_kinematics(arm, target, Arm::JointVector::Zero(arm.n_joints()),  // from q = 0
                                               arm.lower(), arm.upper());
-  const chasles::Dynamics<double, Eigen::Dynamic, 7> dynamics(arm);  // its link inertias and gravity
-  const Arm::JointVector tau = dynamics.gravity_torques(ik.q);  // N m (N for a prismatic joint)
+  const Arm::JointVector tau = chasles::gravity_torques(arm, ik.q);  // N m (N if prismatic)
   // ---- printing and checks
   const Eigen::Vector3d p = target.translation();
-  std::printf("%d joints:", static_cast<int>(arm.joints()));
+  std::printf("%d joints:", static_cast<int>(arm.n_joints()));
   for (const std::string& name : robot.joint_names) std::printf(" %s", name.c_str());
   std::printf("\ntool at q = 0.4: (%.6f, %.6f, %.6f) m\n", p.x(), p.y(), p.z());
   std::printf("inverse kinematics from zero: %s in %d iterations, q =", ik.converged ? "converged" : "NOT converged",
@@ -46,11 +45,11 @@ int main(int argc, char** argv) {
 
   bool ok = ik.converged && arm.forward(ik.q).is_approx(target, 1e-9);
   const double h = 1e-6;
-  for (Eigen::Index i = 0; i < arm.joints(); ++i) {
+  for (Eigen::Index i = 0; i < arm.n_joints(); ++i) {
     Arm::JointVector plus = ik.q, minus = ik.q;
     plus(i) += h;
     minus(i) -= h;
-    const double dV = (dynamics.potential_energy(plus) - dynamics.potential_energy(minus)) / (2 * h);
+    const double dV = (chasles::potential_energy(arm, plus) - chasles::potential_energy(arm, minus)) / (2 * h);
     ok = ok && std::abs(tau(i) - dV) < 1e-6 * (1 + std::abs(tau(i)));
   }
   std::printf("%s\n", ok ? "all checks passed" : "FAILED");

@@ -132,7 +132,7 @@ def main():
           f"tau = M qdd + C qd + g to {identity:.1e} N m")
     peak = np.abs(tau).max(axis=0)
     print("   joint           peak |tau|   effort limit   peak / limit")
-    for name, p, limit in zip(arm.names, peak, arm.effort_limits):
+    for name, p, limit in zip(arm.joint_names, peak, arm.effort_limits):
         print(f"   {name:13s} {p:8.3f} N m   {limit:8.1f} N m   {p / limit:8.1%}")
     within = bool(np.all(peak <= arm.effort_limits))
     assert within, "the motion needs more torque than the motors give: make it slower"

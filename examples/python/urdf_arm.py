@@ -43,7 +43,7 @@ def main():
     path = ur5_path()
     arm = chasles.Chain.from_urdf(path, "tool0")
     print(arm)
-    for name, kind, lo, hi in zip(arm.names, arm.joint_types, arm.lower, arm.upper):
+    for name, kind, lo, hi in zip(arm.joint_names, arm.joint_types, arm.lower, arm.upper):
         print(f"  {name:22s} {kind:10s} [{lo:+.3f}, {hi:+.3f}] rad")
     joints = {j.find("child").get("link"): j for j in ET.parse(path).getroot().findall("joint")}
     chain, link = [], "tool0"

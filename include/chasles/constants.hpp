@@ -281,7 +281,7 @@ struct Thresholds<long double> {
 //   type passes; anything further off is not a body. tests/cpp/
 //   test_spatial_inertia.cpp checks both sides.
 //
-// mass_matrix_pivot_tolerance: Dynamics::forward_dynamics (dynamics.hpp)
+// mass_matrix_pivot_tolerance: forward_dynamics (dynamics.hpp)
 //   reports M(q) not positive definite at the first Cholesky pivot
 //   d_k <= tol s_k, s_k = |v_k|^2 tr(G_f) + |w_k|^2 tr(G_t) the scale of the
 //   terms M_kk is summed from (M_kk <= 2 s_k; s_k in joint k's own units, so

@@ -31,8 +31,8 @@
 // position error in the tool frame, in the chain's length unit, and the
 // rotation angle in radians). The cost is bounded: at most max_iterations
 // iterations, each one or two n x n Cholesky factorizations (Eigen's LLT on the
-// chain's fixed-capacity matrices: no allocation), one forward kinematics
-// and, after an accepted step, one body Jacobian.
+// chain's fixed-capacity matrices: no allocation) and one body pass that
+// gives the pose and the body Jacobian together (Chain::forward_body(q, J_b)).
 #pragma once
 
 #include <cmath>
@@ -57,7 +57,7 @@ struct IKOptions {
   Scalar position_tolerance = Scalar(ThresholdsOf<Scalar>::ik_tolerance);
   /// |e_w| at a solution (radians).
   Scalar orientation_tolerance = Scalar(ThresholdsOf<Scalar>::ik_tolerance);
-  /// The bound on iterations (each one forward kinematics and one Jacobian).
+  /// The bound on iterations (each one body pass: the pose and the body Jacobian).
   int max_iterations = ThresholdsOf<Scalar>::ik_max_iterations;
   /// The damping at the start, relative to the largest diagonal entry of
   /// J^T J (Madsen, Nielsen and Tingleff's tau).
@@ -75,14 +75,12 @@ struct IKResult {
 
 namespace detail {
 
-/// de/dq = -J_l(e)^-1 J_b(q) (6 x n) at q, e = pose_error at q already
-/// known: the formula of pose_error_jacobian, shared with the iteration of
-/// inverse_kinematics (which has e at hand).
-template <typename ChainT, typename Derived>
-inline typename ChainT::Jacobian pose_error_jacobian_at(const ChainT& chain,
-                                                        const Eigen::Matrix<typename ChainT::Scalar, 6, 1>& e,
-                                                        const Eigen::MatrixBase<Derived>& q) noexcept {
-  return -(se3_left_jacobian_inverse(e) * chain.jacobian_body(q));
+/// de/dq = -J_l(e)^-1 J_b(q) (6 x n) at q, with e = pose_error and J_b(q)
+/// already known: the formula of pose_error_jacobian, shared with the
+/// iteration of inverse_kinematics (which has both at hand).
+template <typename Jacobian, typename Scalar>
+inline Jacobian pose_error_jacobian_at(const Eigen::Matrix<Scalar, 6, 1>& e, const Jacobian& jacobian_body) noexcept {
+  return -(se3_left_jacobian_inverse(e) * jacobian_body);
 }
 
 template <typename Scalar>
@@ -95,19 +93,22 @@ inline bool ik_converged(const Eigen::Matrix<Scalar, 6, 1>& e, const IKOptions<S
 
 /// The body error e(q) = rminus(T, g(q)) = log(g(q)^-1 T), (v, w): the
 /// twist that carries the tool frame at q onto the target T, in the tool
-/// frame; zero at a solution.
+/// frame; zero at a solution. g(q) by the body pass (Chain::forward_body(q,
+/// J_b) without the Jacobian), the pose inverse_kinematics works with.
 template <typename ChainT, typename Derived>
 inline Eigen::Matrix<typename ChainT::Scalar, 6, 1> pose_error(const ChainT& chain,
                                                                const SE3<typename ChainT::Scalar>& target,
                                                                const Eigen::MatrixBase<Derived>& q) noexcept {
-  return rminus(target, chain.forward(q));
+  return rminus(target, detail::body_pass(chain, q, nullptr));
 }
 
 /// de/dq = -J_l(e)^-1 J_b(q) (6 x n), the exact Jacobian of pose_error.
 template <typename ChainT, typename Derived>
 inline typename ChainT::Jacobian pose_error_jacobian(const ChainT& chain, const SE3<typename ChainT::Scalar>& target,
                                                      const Eigen::MatrixBase<Derived>& q) noexcept {
-  return detail::pose_error_jacobian_at(chain, pose_error(chain, target, q), q);
+  typename ChainT::Jacobian J_b;
+  const SE3<typename ChainT::Scalar> g = chain.forward_body(q, J_b);
+  return detail::pose_error_jacobian_at(Eigen::Matrix<typename ChainT::Scalar, 6, 1>(rminus(target, g)), J_b);
 }
 
 /// Inverse kinematics of `chain` for the tool pose `target`, from the
@@ -126,19 +127,21 @@ inline IKResult<ChainT> inverse_kinematics(const ChainT& chain, const SE3<typena
   using Vector6 = Eigen::Matrix<Scalar, 6, 1>;
   constexpr int N = ChainT::JointsAtCompileTime, MaxN = ChainT::MaxJointsAtCompileTime;
   using Normal = Eigen::Matrix<Scalar, N, N, Eigen::ColMajor, MaxN, MaxN>;
-  const Eigen::Index n = chain.joints();
+  const Eigen::Index n = chain.n_joints();
   CHASLES_ASSERT(q0.size() == n && lower.size() == n && upper.size() == n);
 
   const auto half_squared = [](const Vector6& e) -> Scalar { return e.squaredNorm() / Scalar(2); };
 
+  using Jacobian = typename ChainT::Jacobian;
   JointVector q = q0.template cast<Scalar>().cwiseMax(lower).cwiseMin(upper);
-  Vector6 e = pose_error(chain, target, q);
+  Jacobian J_b(6, n), J_b_trial(6, n);  // the body Jacobians at q and at the trial
+  Vector6 e = rminus(target, chain.forward_body(q, J_b));
   Scalar cost = half_squared(e);
   Normal JtJ(n, n);
   JointVector gradient(n);  // J^T e, the gradient of cost = |e|^2 / 2
   const auto linearize = [&] {
-    // J = de/dq = -J_l(e)^-1 J_b(q) (pose_error_jacobian, with e known).
-    const typename ChainT::Jacobian J = detail::pose_error_jacobian_at(chain, e, q);
+    // J = de/dq = -J_l(e)^-1 J_b(q) (pose_error_jacobian, with e and J_b known).
+    const Jacobian J = detail::pose_error_jacobian_at(e, J_b);
     JtJ.noalias() = J.transpose() * J;
     gradient.noalias() = J.transpose() * e;
   };
@@ -174,7 +177,7 @@ inline IKResult<ChainT> inverse_kinematics(const ChainT& chain, const SE3<typena
     const JointVector trial = (q + dq).cwiseMax(lower).cwiseMin(upper);
     const JointVector step = trial - q;
     if (!(step.squaredNorm() > eps * eps * (q.squaredNorm() + eps))) return {q, false, k, e};  // stalled
-    const Vector6 e_trial = pose_error(chain, target, trial);
+    const Vector6 e_trial = rminus(target, chain.forward_body(trial, J_b_trial));
     const Scalar cost_trial = half_squared(e_trial);
     // Gain ratio: the actual decrease of the cost over the linear model's.
     const Scalar predicted = -(step.dot(gradient) + step.dot(JtJ * step) / Scalar(2));
@@ -183,6 +186,7 @@ inline IKResult<ChainT> inverse_kinematics(const ChainT& chain, const SE3<typena
       q = trial;
       e = e_trial;
       cost = cost_trial;
+      J_b = J_b_trial;
       linearize();
       const Scalar r = Scalar(2) * rho - Scalar(1);
       const Scalar shrink = Scalar(1) - r * r * r;
@@ -213,7 +217,7 @@ inline IKResult<ChainT> inverse_kinematics(const ChainT& chain, const SE3<typena
   using Real = RealOf<Scalar>;
   IKResult<ChainT> best = inverse_kinematics(chain, target, q0, lower, upper, options);
   int total = best.iterations;
-  typename ChainT::JointVector seed(chain.joints());
+  typename ChainT::JointVector seed(chain.n_joints());
   std::uniform_real_distribution<Real> uniform(Real(0), Real(1));
   const Scalar pi(static_cast<Real>(3.14159265358979323846)), inf(std::numeric_limits<Real>::infinity());
   for (int r = 0; r < restarts && !best.converged; ++r) {
@@ -237,7 +241,7 @@ inline IKResult<ChainT> inverse_kinematics(const ChainT& chain, const SE3<typena
                                            const IKOptions<typename ChainT::Scalar>& options = {}) noexcept {
   using JointVector = typename ChainT::JointVector;
   using Scalar = typename ChainT::Scalar;
-  const Eigen::Index n = chain.joints();
+  const Eigen::Index n = chain.n_joints();
   const Scalar inf = std::numeric_limits<RealOf<Scalar>>::infinity();
   return inverse_kinematics(chain, target, q0, JointVector(JointVector::Constant(n, -inf)),
                             JointVector(JointVector::Constant(n, inf)), options);

@@ -105,19 +105,19 @@ std::ostream& operator<<(std::ostream& os, const Screw<Scalar>& s) {
 template <typename Scalar, int Joints, int MaxJoints>
 std::ostream& operator<<(std::ostream& os, const Chain<Scalar, Joints, MaxJoints>& chain) {
   static const char* const type_names[] = {"revolute", "continuous", "prismatic"};
-  os << "Chain(n_joints=" << chain.joints() << ", space_screws=[";
-  for (Eigen::Index i = 0; i < chain.joints(); ++i) {
+  os << "Chain(n_joints=" << chain.n_joints() << ", space_screws=[";
+  for (Eigen::Index i = 0; i < chain.n_joints(); ++i) {
     if (i > 0) os << ", ";
     detail::print_numbers(os, chain.space_screws().col(i));
   }
   os << "], home=" << chain.home() << ", joint_types=[";
-  for (Eigen::Index i = 0; i < chain.joints(); ++i)
+  for (Eigen::Index i = 0; i < chain.n_joints(); ++i)
     os << (i > 0 ? ", " : "") << type_names[static_cast<int>(chain.joint_type(i))];
   os << "], lower=";
   detail::print_numbers(os, chain.lower()) << ", upper=";
   detail::print_numbers(os, chain.upper()) << ", gravity=";
   detail::print_numbers(os, chain.gravity()) << ", link_masses=[";
-  for (Eigen::Index i = 0; i < chain.joints(); ++i)
+  for (Eigen::Index i = 0; i < chain.n_joints(); ++i)
     os << (i > 0 ? ", " : "") << chain.link_inertias()[static_cast<std::size_t>(i)].mass();
   return os << "])";
 }

@@ -11,8 +11,8 @@
 #include <Eigen/Core>
 
 #include "chasles/constants.hpp"
-
 #include "chasles/detail/assert.hpp"
+#include "chasles/detail/nearest_rotation.hpp"
 #include "chasles/se3.hpp"
 #include "chasles/spatial_inertia.hpp"
 #include "chasles/twist.hpp"
@@ -41,29 +41,82 @@ struct JointVectorSize<Joints, MaxJoints, Size, true> {
   static constexpr bool ok = true;
 };
 
-/// The nearest rotation to R, a rotation up to rounding (defect d <= sqrt(eps),
-/// as SE3::from_matrix accepts): two steps of Bjorck and Bowie's iteration
-/// for the orthogonal polar factor, R <- R + R (I - R^T R) / 2 (Bjorck and
-/// Bowie, "An iterative algorithm for computing the best estimate of an
-/// orthogonal matrix", SIAM J. Numer. Anal. 8(2), 1971; the defect goes from
-/// d to about 3 d^2 / 4 per step). An R with R^T R == I in floating point
-/// (a permutation, the identity) is returned unchanged, bit for bit.
-template <typename Scalar>
-Eigen::Matrix<Scalar, 3, 3> orthonormalized(Eigen::Matrix<Scalar, 3, 3> R) noexcept {
-  using Matrix3 = Eigen::Matrix<Scalar, 3, 3>;
-  for (int step = 0; step < 2; ++step) {
-    const Matrix3 E = Matrix3::Identity() - R.transpose() * R;
-    R += R * (E * Scalar(0.5));
-  }
-  return R;
-}
-
 /// g with its rotation orthonormalized.
 template <typename Scalar>
 SE3<Scalar> projected(const SE3<Scalar>& g) noexcept {
   return SE3<Scalar>(SO3<Scalar>::from_matrix_unchecked(orthonormalized<Scalar>(g.rotation().matrix())),
                      g.translation());
 }
+
+/// A joint vector v of a chain has n entries: checked at compile time when
+/// its size is fixed (against a fixed n, or MaxJoints), at run time by
+/// eigen_assert (as Eigen checks sizes) when n or its size is dynamic.
+template <typename ChainT, typename Derived>
+void check_joint_vector(const ChainT& chain, const Eigen::MatrixBase<Derived>& v) noexcept {
+  static_assert(JointVectorSize<ChainT::JointsAtCompileTime, ChainT::MaxJointsAtCompileTime,
+                                Derived::SizeAtCompileTime>::ok);
+  static_cast<void>(chain);  // (both unused when assertions are off)
+  static_cast<void>(v);
+  CHASLES_ASSERT(v.size() == chain.n_joints());
+}
+
+/// The space pass at q, the one loop behind forward kinematics, the space
+/// Jacobian and the dynamics: with g_0 = I and
+///   g_i = g_{i-1} exp([S_i] q_i)            (link i's motion from home),
+/// column i of the space Jacobian is S_i(q) = Ad_{g_{i-1}} S_i (written to
+/// *J unless J is null), and link(i, g_i) is called after each product. It
+/// returns g_n; with `last` false it stops before the last product (the
+/// Jacobian alone has no use for it) and returns g_{n-1}.
+template <typename ChainT, typename Q, typename Link>
+EIGEN_ALWAYS_INLINE SE3<typename ChainT::Scalar> space_pass(const ChainT& chain, const Eigen::MatrixBase<Q>& q,
+                                        typename ChainT::Jacobian* J, Link&& link, bool last = true) noexcept {
+  using Scalar = typename ChainT::Scalar;
+  using Group = SE3<Scalar>;
+  using Vector6 = Eigen::Matrix<Scalar, 6, 1>;
+  const typename ChainT::Screws& S = chain.space_screws();
+  const Eigen::Index n = S.cols();
+  Group g;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (J != nullptr) J->col(i) = g.act(Twist<Scalar>(Vector6(S.col(i)))).vector();
+    if (!last && i + 1 == n) break;
+    g *= Group::exp(S.col(i) * q(i));
+    link(i, static_cast<const Group&>(g));
+  }
+  return g;
+}
+
+/// The body pass at q, the loop behind the body Jacobian: with h_{n+1} = I
+/// and h_i = exp([B_i] q_i) h_{i+1}, column i of the body Jacobian is
+/// Ad_{h_{i+1}^-1} B_i (written to *J unless J is null); it returns
+/// g(q) = M h_1 (with `last` false it stops before the last product, as the
+/// Jacobian alone needs, and returns M h_2).
+template <typename ChainT, typename Q>
+EIGEN_ALWAYS_INLINE SE3<typename ChainT::Scalar> body_pass(const ChainT& chain, const Eigen::MatrixBase<Q>& q,
+                                       typename ChainT::Jacobian* J, bool last = true) noexcept {
+  using Scalar = typename ChainT::Scalar;
+  using Group = SE3<Scalar>;
+  using Vector6 = Eigen::Matrix<Scalar, 6, 1>;
+  const typename ChainT::Screws& B = chain.body_screws();
+  Group h;
+  for (Eigen::Index i = B.cols() - 1; i >= 0; --i) {
+    if (J != nullptr) J->col(i) = h.act_inv(Twist<Scalar>(Vector6(B.col(i)))).vector();
+    if (!last && i == 0) break;
+    h = Group::exp(B.col(i) * q(i)) * h;
+  }
+  return chain.home() * h;
+}
+
+/// (Both passes are inlined into each caller, so that each gets the loop it
+/// would have written alone: the Jacobian's column writes and the link
+/// callback vanish where they are not asked for. exp takes the product
+/// expression, one instantiation for every caller: GCC then inlines exp's
+/// coefficients into it, as it stops doing once exp has several.)
+///
+/// A link callback of space_pass that does nothing.
+struct NoLink {
+  template <typename Group>
+  void operator()(Eigen::Index, const Group&) const noexcept {}
+};
 
 }  // namespace detail
 
@@ -132,8 +185,10 @@ struct ChainCheck {
 ///   S_i = Ad_base S0_i,  M = base M0 tool,  G_i = G0_i.transform(base)
 /// (G_i = Ad_base^-T G0_i Ad_base^-1), so that every algorithm (forward
 /// kinematics, Jacobians, inverse kinematics, and the dynamics of
-/// dynamics.hpp, Dynamics(chain)) works on (S, M, G) alone, in the world
-/// frame; base() and tool() stay available. The home pose is projected onto SE(3) on
+/// dynamics.hpp, free functions of the chain: inverse_dynamics(chain, q,
+/// qd, qdd), ...) works on (S, M, G) alone, in the world frame; base() and
+/// tool() stay available. The chain is the whole robot model: the
+/// algorithms hold no copy of it. The home pose is projected onto SE(3) on
 /// construction (detail::orthonormalized: a pose composed of URDF transforms
 /// is a rigid motion only up to a defect of a few eps).
 ///
@@ -168,6 +223,8 @@ class Chain {
   using Inertia = SpatialInertia<Scalar>;
   /// One inertia per link (the first n are used; the others stay zero).
   using Inertias = std::array<Inertia, static_cast<std::size_t>(MaxJoints)>;
+  /// n x n: the joint-space mass matrix (dynamics.hpp).
+  using MassMatrix = Eigen::Matrix<Scalar, Joints, Joints, Eigen::ColMajor, MaxJoints, MaxJoints>;
   static constexpr int JointsAtCompileTime = Joints;
   static constexpr int MaxJointsAtCompileTime = MaxJoints;
 
@@ -190,13 +247,29 @@ class Chain {
 
   /// The same with the home pose taken as it is, not projected: for a home
   /// pose that is already one (another chain's home(), which this
-  /// reproduces bit for bit).
+  /// reproduces bit for bit); and optionally the links' inertias (in the
+  /// base frame at home) and gravity, as in the next constructor.
   struct HomeAsGiven {};
   template <typename Derived>
-  Chain(const Eigen::MatrixBase<Derived>& space_screws, const Group& home, HomeAsGiven) noexcept
+  Chain(const Eigen::MatrixBase<Derived>& space_screws, const Group& home, HomeAsGiven,
+        const Inertias& link_inertias = Inertias(), const Vector3& gravity = default_gravity()) noexcept
       : Chain(space_screws, home) {
     M_ = home;
+    inertias_ = link_inertias;
+    gravity_ = gravity;
     compute_body_screws();
+  }
+
+  /// The dynamics model: the space screws S (6 x n), the home pose M
+  /// (projected onto SE(3)), the links' inertias (in the base frame at
+  /// home, the first n entries) and gravity; joint types inferred, no
+  /// limits, identity base and tool.
+  template <typename Derived>
+  Chain(const Eigen::MatrixBase<Derived>& space_screws, const Group& home, const Inertias& link_inertias,
+        const Vector3& gravity = default_gravity()) noexcept
+      : Chain(space_screws, home) {
+    inertias_ = link_inertias;
+    gravity_ = gravity;
   }
 
   /// The full model, from arrays: the screws S0 (6 x n, in the base frame)
@@ -228,6 +301,23 @@ class Chain {
     compute_body_screws();
   }
 
+  /// The chain another chain stores, from its accessors: space screws,
+  /// home pose and link inertias in the world frame (base and tool already
+  /// folded in), types, limits, base, tool and gravity, all taken as they
+  /// are, so that the copy computes what the original does, bit for bit
+  /// (the body screws are computed again, by the same arithmetic).
+  struct Stored {};
+  template <typename Derived>
+  Chain(Stored, const Eigen::MatrixBase<Derived>& space_screws, const Group& home, const JointTypes& types,
+        const JointVector& lower, const JointVector& upper, const JointVector& velocity_limits,
+        const JointVector& effort_limits, const Group& base, const Group& tool, const Vector3& gravity,
+        const Inertias& link_inertias) noexcept
+      : S_(space_screws), B_(6, space_screws.cols()), M_(home), types_(types), lower_(lower), upper_(upper),
+        velocity_(velocity_limits), effort_(effort_limits), base_(base), tool_(tool), gravity_(gravity),
+        inertias_(link_inertias) {
+    compute_body_screws();
+  }
+
   /// (0, 0, -9.81): gravity in m/s^2 along -z, as URDF tools and Pinocchio.
   static Vector3 default_gravity() noexcept { return Vector3(Scalar(0), Scalar(0), Scalar(-9.81)); }
 
@@ -249,9 +339,19 @@ class Chain {
   template <typename Derived>
   Group forward(const Eigen::MatrixBase<Derived>& theta) const noexcept {
     check_size(theta);
-    Group g;
-    for (Eigen::Index i = 0; i < joints(); ++i) g *= Group::exp(S_.col(i) * theta(i));
-    return g * M_;
+    return detail::space_pass(*this, theta, nullptr, detail::NoLink()) * M_;
+  }
+
+  /// g(theta) = M (exp([B_1] th_1) (... exp([B_n] th_n))), and the body
+  /// Jacobian J_b (6 x n) in `jacobian_body`, from one body pass (the
+  /// products that the Jacobian's columns need make the pose too): what
+  /// inverse kinematics needs at each configuration it tries. Equal to
+  /// `forward` up to rounding (the products associated from the right).
+  template <typename Derived>
+  Group forward_body(const Eigen::MatrixBase<Derived>& theta, Jacobian& jacobian_body) const noexcept {
+    check_size(theta);
+    jacobian_body.resize(6, n_joints());
+    return detail::body_pass(*this, theta, &jacobian_body);
   }
 
   /// Body form: g(theta) = M exp([B_1] th_1) ... exp([B_n] th_n); equal to
@@ -260,7 +360,7 @@ class Chain {
   Group forward_body(const Eigen::MatrixBase<Derived>& theta) const noexcept {
     check_size(theta);
     Group g = M_;
-    for (Eigen::Index i = 0; i < joints(); ++i) g *= Group::exp(B_.col(i) * theta(i));
+    for (Eigen::Index i = 0; i < n_joints(); ++i) g *= Group::exp(B_.col(i) * theta(i));
     return g;
   }
 
@@ -269,13 +369,8 @@ class Chain {
   template <typename Derived>
   Jacobian jacobian_space(const Eigen::MatrixBase<Derived>& theta) const noexcept {
     check_size(theta);
-    const Eigen::Index n = joints();
-    Jacobian J(6, n);
-    Group g;
-    for (Eigen::Index i = 0; i < n; ++i) {
-      J.col(i) = g.act(Twist<Scalar>(Vector6(S_.col(i)))).vector();
-      if (i + 1 < n) g *= Group::exp(S_.col(i) * theta(i));
-    }
+    Jacobian J(6, n_joints());
+    detail::space_pass(*this, theta, &J, detail::NoLink(), false);
     return J;
   }
 
@@ -285,18 +380,13 @@ class Chain {
   template <typename Derived>
   Jacobian jacobian_body(const Eigen::MatrixBase<Derived>& theta) const noexcept {
     check_size(theta);
-    const Eigen::Index n = joints();
-    Jacobian J(6, n);
-    Group h;  // exp([B_{i+1}] th_{i+1}) ... exp([B_n] th_n)
-    for (Eigen::Index i = n - 1; i >= 0; --i) {
-      J.col(i) = h.act_inv(Twist<Scalar>(Vector6(B_.col(i)))).vector();
-      if (i > 0) h = Group::exp(B_.col(i) * theta(i)) * h;
-    }
+    Jacobian J(6, n_joints());
+    detail::body_pass(*this, theta, &J, false);
     return J;
   }
 
   /// n, the number of joints.
-  Eigen::Index joints() const noexcept { return S_.cols(); }
+  Eigen::Index n_joints() const noexcept { return S_.cols(); }
   /// S (6 x n): the joint screws at home, in the base frame.
   const Screws& space_screws() const noexcept { return S_; }
   /// B = Ad_{M^-1} S (6 x n): the joint screws at home, in the tool frame.
@@ -305,7 +395,7 @@ class Chain {
   const Group& home() const noexcept { return M_; }
   /// The type of joint i.
   JointType joint_type(Eigen::Index i) const noexcept {
-    CHASLES_ASSERT(i >= 0 && i < joints());
+    CHASLES_ASSERT(i >= 0 && i < n_joints());
     return types_[static_cast<std::size_t>(i)];
   }
   /// The types (the first n are used).
@@ -340,7 +430,7 @@ class Chain {
     using std::abs;
     using std::sqrt;
     const Scalar tol(ThresholdsOf<Scalar>::screw_tolerance);
-    for (Eigen::Index i = 0; i < joints(); ++i) {
+    for (Eigen::Index i = 0; i < n_joints(); ++i) {
       const Vector3 v = S_.col(i).template head<3>(), w = S_.col(i).template tail<3>();
       const JointType type = types_[static_cast<std::size_t>(i)];
       if (type == JointType::prismatic) {
@@ -359,7 +449,7 @@ class Chain {
         return {ChainStatus::velocity_or_effort_limit_invalid, i};
     }
     if (!(abs(gravity_(0)) + abs(gravity_(1)) + abs(gravity_(2)) < infinity())) return {ChainStatus::gravity_not_finite, -1};
-    for (Eigen::Index i = 0; i < joints(); ++i) {
+    for (Eigen::Index i = 0; i < n_joints(); ++i) {
       const Inertia& G = inertias_[static_cast<std::size_t>(i)];
       bool finite = G.mass() >= Scalar(0) && G.mass() < infinity();  // false for NaN
       for (int r = 0; r < 3; ++r) {
@@ -377,9 +467,7 @@ class Chain {
   /// checks sizes) when n or its size is dynamic.
   template <typename Derived>
   void check_size(const Eigen::MatrixBase<Derived>& theta) const noexcept {
-    static_assert(detail::JointVectorSize<Joints, MaxJoints, Derived::SizeAtCompileTime>::ok);
-    static_cast<void>(theta);  // (unused when assertions are off)
-    CHASLES_ASSERT(theta.size() == joints());
+    detail::check_joint_vector(*this, theta);
   }
 
   static Scalar infinity() noexcept { return Scalar(std::numeric_limits<RealOf<Scalar>>::infinity()); }

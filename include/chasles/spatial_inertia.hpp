@@ -42,10 +42,10 @@ namespace chasles {
 ///
 /// No invariant is enforced by construction (C++ cannot throw): a body is
 /// physical when `is_physical()` holds. Inertias that are not are accepted
-/// here, by Chain, Dynamics and the URDF loaders (real descriptions have
+/// here, by Chain, the dynamics and the URDF loaders (real descriptions have
 /// them: 56 of the 1,985 <inertia> elements of the example-robot-data
 /// package's URDF files break the triangle inequality);
-/// Dynamics::forward_dynamics reports a mass matrix they leave not positive
+/// forward_dynamics reports a mass matrix they leave not positive
 /// definite (DynamicsStatus).
 template <typename Scalar_>
 class SpatialInertia {

@@ -53,7 +53,6 @@ checked and drawn into a PNG.
 """
 
 from chasles._core import (
-    Chain,
     SE3,
     SO3,
     Screw,
@@ -108,6 +107,7 @@ from chasles._core import (
 from chasles._mean import se3_mean, so3_mean
 from chasles._random import se3_gaussian, se3_random, so3_gaussian, so3_random
 from chasles._spline import SE3Spline, SO3Spline
+from chasles._chain import Chain
 from chasles._bspline import SE3BSpline, SO3BSpline
 from chasles._arrays import (
     so3_as_euler,

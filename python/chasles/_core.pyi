@@ -2,6 +2,7 @@
 chasles C++ kernels (use the chasles package, which re-exports them).
 """
 from __future__ import annotations
+from chasles._chain import Chain
 import collections.abc
 import numpy
 import numpy.dtypes
@@ -2080,12 +2081,6 @@ class SpatialInertia:
     def __add__(self, other: SpatialInertia) -> SpatialInertia:
         """
         The two bodies rigidly joined (both described in the same frame): the matrices add.
-        
-        Args:
-            other: SpatialInertia.
-        
-        Returns:
-            SpatialInertia.
         """
     def __array__(self, dtype: numpy.typing.DTypeLike = None, copy: bool | None = None) -> numpy.ndarray:
         """
@@ -2155,26 +2150,13 @@ class SpatialInertia:
         ...
     def is_approx(self, other: SpatialInertia, tol: float = 1e-09) -> bool:
         """
-        Whether m, c and I_c agree within tol: max difference <= tol * max(1, their largest magnitude).
+        Whether m, c and I_c agree within tol (>= 0): max difference <= tol * max(1, their largest magnitude).
         
         ``==`` is the exact comparison.
-        
-        Args:
-            other: SpatialInertia.
-            tol: the tolerance (>= 0).
-        
-        Returns:
-            bool.
         """
     def kinetic_energy(self, twist: numpy.typing.ArrayLike) -> float:
         """
-        T = 1/2 V^T G V = 1/2 (m |v_c|^2 + w . I_c w).
-        
-        Args:
-            twist: Twist or shape (6,), V = (v, w).
-        
-        Returns:
-            float.
+        T = 1/2 V^T G V = 1/2 (m |v_c|^2 + w . I_c w), a float; twist: a Twist or shape (6,).
         
         Example:
             >>> SpatialInertia(2.0, [0.0, 0.0, 0.0], np.eye(3)).kinetic_energy([1.0, 0.0, 0.0, 0.0, 0.0, 0.0])
@@ -2184,11 +2166,8 @@ class SpatialInertia:
         """
         The momentum wrench h = G V = (m v_c, c x m v_c + I_c w), v_c = v + w x c.
         
-        Args:
-            twist: Twist or shape (6,), V = (v, w), the body's twist in the frame of description.
-        
-        Returns:
-            Wrench: (linear momentum, angular momentum about the frame's origin).
+        twist: a Twist or shape (6,), V = (v, w) in the frame of description. Returns a
+        Wrench: (linear momentum, angular momentum about the frame's origin).
         
         Example:
             >>> body = SpatialInertia(2.0, [0.0, 0.0, 0.0], np.eye(3))
@@ -2197,17 +2176,10 @@ class SpatialInertia:
         """
     def transform(self, g: SE3) -> SpatialInertia:
         """
-        The same body described in frame a, this one describing it in frame b; g = g_ab.
+        The same body described in frame a, this one describing it in frame b; g = g_ab (SE3).
         
-        c_a = R c + p, I_a = R I_c R^T; the matrix is Ad_g^-T G Ad_g^-1, so the
-        kinetic energy of a motion is the same in both frames:
-        ``I.transform(g).kinetic_energy(g.act(V)) == I.kinetic_energy(V)``.
-        
-        Args:
-            g: SE3, g_ab.
-        
-        Returns:
-            SpatialInertia.
+        c_a = R c + p, I_a = R I_c R^T, G_a = Ad_g^-T G Ad_g^-1: the kinetic energy of
+        a motion is the same in both frames. Returns a SpatialInertia.
         
         Example:
             >>> body = SpatialInertia(1.0, [0.0, 0.0, 0.0], np.eye(3))
@@ -2234,527 +2206,128 @@ class SpatialInertia:
         """
         ndarray: G, shape (6, 6), order (v, w): [[m 1, -m [c]], [m [c], I_c - m [c]^2]].
         """
-class Chain:
+class _Chain:
     """
-    Forward kinematics and Jacobians of a serial chain by the product of exponentials
-    (Murray, Li and Sastry, ch. 3; Lynch and Park, Modern Robotics, ch. 4-5).
-    
-    The chain is given by its space screws S_i (the joint twists at the home
-    configuration in the base frame, one row (v, w) per joint, linear part first)
-    and its home pose M = g(0); it keeps the body screws B_i = Ad_{M^-1} S_i.
-    Revolute joints about the axis through q along w have the screw
-    (-w x q, w) (``Chain.revolute_screw(point, direction)``: the point first, as
-    in ``SE3.from_screw``), prismatic joints along v the screw (v, 0)
-    (``Chain.prismatic_screw``). At most 32 joints. Its methods forward,
-    forward_body, jacobian_space and jacobian_body are array functions: joint
-    positions of shape (..., n) in, arrays out.
-    
-    Example:
-        >>> screws = [Chain.revolute_screw([0, 0, 0], [0, 0, 1]),
-        ...           Chain.revolute_screw([1, 0, 0], [0, 0, 1])]
-        >>> arm = Chain(screws, SE3(translation=[2.0, 0.0, 0.0]))
-        >>> np.round(arm.forward([np.pi / 2, 0.0])[:3, 3], 12) + 0.0
-        array([0., 2., 0.])
-        >>> arm.jacobian_space([0.0, 0.0]).shape
-        (6, 2)
-    
-    Conventions (the same in C++, in README.md and in every docstring):
-        - twists xi = (v, w), linear part first (Murray, Li and Sastry); the
-          Modern Robotics order (w, v) only through Twist.to_modern_robotics /
-          Twist.from_modern_robotics;
-        - wrenches F = (f, tau), force first, so power is the dot product V . F;
-        - g_ab maps frame b to frame a: q_a = g_ab q_b, g_ac = g_ab @ g_bc;
-          twists change frame by Ad_g = [[R, [p]R], [0, R]], wrenches by Ad_g^-T;
-        - hat(w) = [w] with [w] p = w x p; [xi] = [[ [w], v ], [0, 0]];
-        - quaternions are (x, y, z, w), scalar last, as in scipy; pass
-          scalar_first=True for (w, x, y, z); angles are in radians.
-    
-    Numbers may be given as lists, tuples or arrays of any real dtype (bool,
-    integers and floats are converted to float64), in any memory layout; a wrong
-    shape is a ValueError naming the expected and the given shape, a value that
-    is not real (complex, object, str, None) a TypeError. Constructors refuse NaN
-    and infinities (ValueError); functions that return the numbers given,
-    rearranged (hat, SO3.vee, SE3.vee, actions on points), carry a NaN through,
-    and the defects are inf for a matrix that is not finite.
-    
-    Values are float64 and immutable. ``==`` is the exact equality of the stored
-    numbers, compared as floats (-0.0 == 0.0; a NaN is unequal to everything,
-    itself included), ``!=`` its negation, and objects are unhashable; compare
-    within a tolerance with ``is_approx(other, tol)``. Objects pickle and copy
-    bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
+    The private model of chasles.Chain (python/chasles/_chain.py): the C++ chain (include/chasles/kinematics.hpp) and the methods that compute.
     """
     __array_ufunc__ = None
-    __hash__: typing.ClassVar[None] = None
-    @staticmethod
-    def from_urdf(source: typing.Any, tip_link: typing.Any, base_link: typing.Any = None) -> Chain:
-        """
-        The chain from base_link to tip_link of a URDF robot description.
-        
-        Revolute, continuous and prismatic joints become the chain's joints (their
-        names, types, limits); fixed joints are folded into the next joint's screw
-        or into the home pose; each moving joint's child link's ``<inertial>``,
-        with those of the links that ride on it, goes to ``link_inertias``: links
-        after it up to the next moving joint, and links hanging off the chain (side
-        branches, and the links below tip_link), fixed joints as they are and
-        moving joints off the chain at zero, as Pinocchio's buildReducedModel at
-        the neutral configuration. The home pose is
-        tip_link's frame at zero joint positions. Parsed with the standard
-        library's xml.etree (chasles/_urdf.py): URDF's kinematic and inertial
-        elements only, no meshes.
-        
-        The source is XML text when, after an optional byte-order mark and
-        whitespace, it starts with '<'; otherwise it is a path, which must name a
-        regular file of at most 64 MiB (read with that bound; UTF-8). Elements may
-        nest at most 64 deep (checked before the parser sees the text). A
-        refusal names the joint, link or path, in the words the C++ loader
-        chain_from_urdf uses too. Physically impossible inertias (not positive
-        semidefinite, or violating the triangle inequality) are not refused:
-        48 of the 1,985 link inertias of example-robot-data are such (tiago's
-        antennas, anymal's hatch, icub's legs), and those robots load; their
-        mass matrix may then not be positive definite (the C++
-        SpatialInertia::is_physical() tells which inertias are physical).
-        
-        Args:
-            source: a path (str, bytes or os.PathLike) to a .urdf file, or the XML
-                text (str, or UTF-8 bytes).
-            tip_link: the name of the last link (the tool).
-            base_link: the name of the base link; None: the root of the tree.
-        
-        Returns:
-            Chain.
-        
-        Raises:
-            ValueError: a malformed description; a floating or planar joint, or a
-                mimic joint, between base and tip; a joint naming a missing link; a
-                loop; duplicate link or joint names; an unknown tip or base link, or
-                a tip not below the base; a number that is not finite in the file or
-                overflows when combined (poses composed along the chain, masses
-                summed); a negative mass, lower > upper, a negative velocity or
-                effort limit, a zero axis; a path that is not a regular file, a file
-                or text larger than 64 MiB, elements nested more than 64 deep.
-        
-        Example:
-            >>> urdf = \"\"\"<robot name="r"><link name="a"/><link name="b"/>
-            ...   <joint name="j" type="revolute"><parent link="a"/><child link="b"/>
-            ...     <origin xyz="0 0 0.5"/><axis xyz="0 0 1"/>
-            ...     <limit lower="-1" upper="1" effort="10" velocity="2"/></joint></robot>\"\"\"
-            >>> arm = Chain.from_urdf(urdf, "b")
-            >>> arm.names, arm.joint_types, arm.upper
-            (('j',), ('revolute',), array([1.]))
-        """
     @staticmethod
     def prismatic_screw(direction: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
-        The screw of a prismatic joint: (v, 0), v = direction / |direction|.
-        
-        Args:
-            direction: shape (3,), nonzero (normalized here).
-        
-        Returns:
-            numpy.ndarray: shape (6,), (v, 0).
-        
-        Example:
-            >>> Chain.prismatic_screw([0, 3, 4])
-            array([0. , 0.6, 0.8, 0. , 0. , 0. ])
+        The screw (v, 0) of a prismatic joint, v = direction / |direction| (shape (3,), nonzero).
         """
     @staticmethod
     def revolute_screw(point: numpy.typing.ArrayLike, direction: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
-        The screw of a revolute joint about the axis through q along w: (-w x q, w).
+        The screw (-w x q, w) of a revolute joint about the axis through point q along direction w.
         
-        The point comes first, as in ``SE3.from_screw(point, direction, ...)``.
-        
-        Args:
-            point: shape (3,), q, any point on the axis.
-            direction: shape (3,), the joint axis, nonzero (normalized here: w = direction / |direction|).
-        
-        Returns:
-            numpy.ndarray: shape (6,), (v, w), linear part first.
-        
-        Example:
-            >>> Chain.revolute_screw([1, 0, 0], [0, 0, 2])
-            array([ 0., -1.,  0.,  0.,  0.,  1.])
+        The point comes first, as in ``SE3.from_screw``; both shape (3,), w nonzero (normalized here).
+        Returns shape (6,), (v, w).
         """
-    def __copy__(self) -> Chain:
-        ...
-    def __deepcopy__(self, memo: typing.Any) -> Chain:
-        ...
-    def __eq__(self, other: typing.Any) -> bool:
+    def __init__(self, screws: numpy.typing.ArrayLike, home: typing.Any, joint_types: typing.Any, lower: typing.Any, upper: typing.Any, velocity_limits: typing.Any, effort_limits: typing.Any, base: typing.Any, tool: typing.Any, gravity: typing.Any, link_inertias: typing.Any, home_as_given: bool) -> None:
         """
-        Exact equality of the stored numbers: Chains are values, compared as floats
-        (-0.0 == 0.0; a NaN is unequal to everything, itself included).
-        
-        For a tolerance, use ``is_approx(other, tol)``. An object of another type gives
-        NotImplemented, so ``==`` is False. Chains are unhashable.
-        
-        Args:
-            other: any object.
-        
-        Returns:
-            bool.
+        The model from chasles.Chain's arguments (joint types as codes 0, 1, 2 or None).
         """
-    def __getstate__(self) -> tuple:
-        ...
-    def __init__(self, screws: numpy.typing.ArrayLike, home: typing.Any, *, joint_types: typing.Any = None, names: typing.Any = None, lower: typing.Any = None, upper: typing.Any = None, velocity_limits: typing.Any = None, effort_limits: typing.Any = None, base: typing.Any = None, tool: typing.Any = None, gravity: typing.Any = None, link_inertias: typing.Any = None) -> None:
+    def _arrays(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], tuple, numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], SE3, SE3, numpy.typing.NDArray[numpy.float64]]:
         """
-        A serial chain from its space screws and its home pose, with its robot model.
-        
-        The base and tool frames are folded in: the chain's ``screws`` are
-        Ad_base S_i and its ``home`` is base M tool (projected onto SE(3)), so that
-        forward kinematics and the Jacobians are in the world frame and end at the
-        tool; ``base`` and ``tool`` stay available.
-        
-        Each screw is checked against its joint's type: a revolute or continuous
-        joint's angular part w must be a unit vector and its pitch w . v zero, a
-        prismatic joint's w zero and its linear part v a unit vector (to 1.5e-8).
-        A table in Modern Robotics' (w, v) order, or transposed (one column per
-        joint, as MR's Slist), is refused with the conversion in the message.
-        
-        Args:
-            screws: shape (n, 6), 1 <= n <= 32: row i is the space screw S_i = (v, w)
-                of joint i at the home configuration, in the base frame, finite.
-            home: SE3 or shape (4, 4), M = g(0), the tool frame at home (before
-                ``tool``), in the base frame.
-            joint_types: n of "revolute", "continuous", "prismatic"; None infers
-                them (prismatic where w = 0, revolute elsewhere).
-            names: n joint names (str), or None.
-            lower: shape (n,), lower position limits (radians or metres); None: -inf.
-            upper: shape (n,), upper position limits; None: inf. A continuous joint
-                has -inf and inf.
-            velocity_limits: shape (n,), >= 0; None: inf.
-            effort_limits: shape (n,), >= 0 (N m or N); None: inf.
-            base: SE3 or shape (4, 4), the base frame in the world frame; None: identity.
-            tool: SE3 or shape (4, 4), the tool frame after M; None: identity.
-            gravity: shape (3,), in the world frame, m/s^2; None: (0, 0, -9.81).
-            link_inertias: shape (n, 10), per joint the inertia of the link it moves
-                (mass, center of mass (3), ixx, ixy, ixz, iyy, iyz, izz about the
-                center of mass), in the base frame at home (``Chain.from_urdf``
-                fills it); or None.
-        
-        Raises:
-            ValueError: a shape other than (n, 6), more than 32 joints, a non-finite
-                entry, a home, base or tool matrix that is not a rigid motion, a
-                screw that does not match its joint type, lower > upper, a negative
-                velocity or effort limit, a negative mass.
-            TypeError: joint types or names that are not strings.
-        
-        Example:
-            >>> arm = Chain([[0, 0, 0, 0, 0, 1]], np.eye(4))
-            >>> arm.n_joints
-            1
-            >>> arm = Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), joint_types=["revolute"],
-            ...             names=["shoulder"], lower=[-1.5], upper=[1.5])
-            >>> arm
-            Chain(n_joints=1, names=('shoulder',))
+        (space screws, body screws, type codes, lower, upper, velocity and effort limits, base, tool, gravity).
         """
-    def __ne__(self, other: typing.Any) -> bool:
+    def _check(self) -> tuple[int, int]:
         """
-        The negation of ``==``: some stored number differs (or is NaN), or other is not a Chain.
-        
-        Args:
-            other: any object.
-        
-        Returns:
-            bool.
+        Chain::validate(): (ChainStatus as an int, joint).
         """
-    def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
-        """
-        Pickle support: (copyreg.__newobj__, (cls,), state).
-        """
-    def __reduce_ex__(self, protocol: typing.SupportsInt | typing.SupportsIndex) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
-        """
-        Pickle support (every protocol): (copyreg.__newobj__, (cls,), state).
-        """
-    def __repr__(self) -> str:
-        ...
-    def __setstate__(self, arg0: typing.Any) -> None:
-        ...
     def coriolis(self, q: typing.Any, qd: typing.Any) -> typing.Any:
         """
         The Coriolis and centrifugal torques C(q, qd) qd (no gravity).
         
-        Args:
-            q, qd: array_like of shape (..., n).
+        q, qd: array_like (..., n); returns (..., n).
         
-        Returns:
-            numpy.ndarray: shape (..., n).
+        An array function: (n,) gives one result, (..., n) one per configuration,
+        by numpy's rules (broadcasting, dtypes, the GIL released; NaN gives NaN). ValueError: a chain without link inertias, shapes that do not match.
         """
     def forward(self, theta: numpy.typing.ArrayLike) -> typing.Any:
         """
         Forward kinematics, space form: g(theta) = exp([S_1] th_1) ... exp([S_n] th_n) M.
         
-        An array function: theta of shape (n,) gives one result, (..., n) one per
-        configuration, by the same numpy rules as every chasles array function
-        (broadcasting, dtypes, the GIL released; a NaN gives NaN in its element).
+        theta: array_like (..., n), joint positions; returns (..., 4, 4), the tool frame's matrices.
         
-        Args:
-            theta: array_like of shape (..., n), joint positions (radians or lengths).
-        
-        Returns:
-            numpy.ndarray: shape (..., 4, 4), the homogeneous matrices of the tool
-            frame (``SE3.from_matrix_unchecked`` makes an SE3 of one).
-        
-        Example:
-            >>> arm = Chain([Chain.prismatic_screw([1, 0, 0])], np.eye(4))
-            >>> arm.forward([0.5])[:3, 3]
-            array([0.5, 0. , 0. ])
-            >>> arm.forward([[0.5], [1.0]]).shape
-            (2, 4, 4)
+        An array function: (n,) gives one result, (..., n) one per configuration,
+        by numpy's rules (broadcasting, dtypes, the GIL released; NaN gives NaN).
         """
     def forward_body(self, theta: numpy.typing.ArrayLike) -> typing.Any:
         """
         Forward kinematics, body form: g(theta) = M exp([B_1] th_1) ... exp([B_n] th_n).
         
-        Equal to ``forward`` up to rounding.
+        Equal to ``forward`` up to rounding. theta: array_like (..., n); returns (..., 4, 4).
         
-        An array function: theta of shape (n,) gives one result, (..., n) one per
-        configuration, by the same numpy rules as every chasles array function
-        (broadcasting, dtypes, the GIL released; a NaN gives NaN in its element).
-        
-        Args:
-            theta: array_like of shape (..., n).
-        
-        Returns:
-            numpy.ndarray: shape (..., 4, 4).
-        
-        Example:
-            >>> arm = Chain([Chain.revolute_screw([1, 0, 0], [0, 0, 1])], np.eye(4))
-            >>> np.allclose(arm.forward_body([0.3]), arm.forward([0.3]), rtol=0, atol=1e-15)
-            True
+        An array function: (n,) gives one result, (..., n) one per configuration,
+        by numpy's rules (broadcasting, dtypes, the GIL released; NaN gives NaN).
         """
     def forward_dynamics(self, q: typing.Any, qd: typing.Any, tau: typing.Any, *, tip_wrench: typing.Any = None, on_failure: typing.Any = 'raise') -> typing.Any:
         """
-        Forward dynamics: the joint accelerations qdd = M(q)^-1 (tau - C(q, qd) qd - g(q) - J_b^T F_tip).
+        Forward dynamics: qdd = M(q)^-1 (tau - C(q, qd) qd - g(q) - J_b^T F_tip) (Cholesky).
         
-        By a Cholesky factorization of the mass matrix (chasles/dynamics.hpp). An
-        array function: (..., n) in, (..., n) out, the GIL released.
+        q, qd, tau: array_like (..., n); tip_wrench as in inverse_dynamics. Where M(q) is not
+        positive definite (a massless link, a point mass on its axis, an inertia no rigid body has:
+        chasles::DynamicsStatus) there are no accelerations: ValueError naming the joint (and the
+        first such batch index), or with on_failure="nan" NaN there only. Returns (..., n).
         
-        Where M(q) is not positive definite, there are no accelerations to give: a
-        pivot of the factorization is not above the rounding of the terms it is
-        made of (4 eps of their scale: chasles::DynamicsStatus). A link without
-        mass, or without rotational inertia about its joint's axis (a point mass on
-        the axis), or an inertia that no rigid body has (which Chain.from_urdf
-        accepts, as real robot descriptions have some) can do that. By default this
-        raises ValueError, naming the joint where the factorization fails and, for
-        a batch, the index of the first such configuration, so that no simulation
-        goes on with meaningless accelerations. on_failure="nan" instead gives NaN
-        in those configurations' accelerations only, and the others as always (a
-        NaN input also gives NaN: ``np.isnan(qdd).any(axis=-1)`` flags both).
-        
-        Args:
-            q, qd, tau: array_like of shape (..., n): positions, velocities, joint torques.
-            tip_wrench: as in inverse_dynamics; None: zero.
-            on_failure: "raise" (the default) or "nan": what a configuration whose
-                M(q) is not positive definite gives.
-        
-        Returns:
-            numpy.ndarray: shape (..., n).
-        
-        Raises:
-            ValueError: a chain without link inertias, shapes that do not match,
-                an on_failure other than "raise" or "nan", or (unless
-                on_failure="nan") M(q) not positive definite.
+        An array function: (n,) gives one result, (..., n) one per configuration,
+        by numpy's rules (broadcasting, dtypes, the GIL released; NaN gives NaN). ValueError: a chain without link inertias, shapes that do not match.
         """
     def gravity_torques(self, q: typing.Any) -> typing.Any:
         """
         The torques g(q) that hold the chain still against gravity: inverse_dynamics(q, 0, 0).
         
-        Args:
-            q: array_like of shape (..., n).
+        q: array_like (..., n); returns (..., n).
         
-        Returns:
-            numpy.ndarray: shape (..., n).
+        An array function: (n,) gives one result, (..., n) one per configuration,
+        by numpy's rules (broadcasting, dtypes, the GIL released; NaN gives NaN). ValueError: a chain without link inertias, shapes that do not match.
         """
     def inverse_dynamics(self, q: typing.Any, qd: typing.Any, qdd: typing.Any, *, tip_wrench: typing.Any = None) -> typing.Any:
         """
-        Inverse dynamics: the joint torques (forces) tau that give the accelerations qdd.
+        Inverse dynamics: tau = M(q) qdd + C(q, qd) qd + g(q) + J_b(q)^T F_tip (Newton-Euler).
         
-        tau = M(q) qdd + C(q, qd) qd + g(q) + J_b(q)^T F_tip, by the recursive
-        Newton-Euler algorithm in screw form (chasles/dynamics.hpp), with the
-        chain's link inertias and gravity. An array function: (..., n) in, (..., n)
-        out, the GIL released.
+        q, qd, qdd: array_like (..., n); tip_wrench: (..., 6) or a Wrench, (f, tau) that the tool
+        applies on the environment, in the tool frame (Modern Robotics' F_tip); None: zero.
+        Returns (..., n), N m for revolute joints and N for prismatic ones.
         
-        Args:
-            q, qd, qdd: array_like of shape (..., n): joint positions, velocities, accelerations.
-            tip_wrench: array_like of shape (..., 6) or a Wrench: the wrench (f, tau)
-                the tool applies to the environment, in the tool frame (Modern
-                Robotics' F_tip); None: zero.
-        
-        Returns:
-            numpy.ndarray: shape (..., n), N m for revolute joints and N for prismatic ones.
-        
-        Raises:
-            ValueError: a chain without link inertias, shapes that do not match.
-        """
-    def inverse_kinematics(self, target: typing.Any, q0: typing.Any, *, position_tolerance: typing.SupportsFloat | typing.SupportsIndex = 3.666852862501036e-11, orientation_tolerance: typing.SupportsFloat | typing.SupportsIndex = 3.666852862501036e-11, max_iterations: typing.SupportsInt | typing.SupportsIndex = 100, restarts: typing.SupportsInt | typing.SupportsIndex = 0, seed: typing.SupportsInt | typing.SupportsIndex = 0) -> typing.Any:
-        """
-        Inverse kinematics: joint positions q with forward(q) = target, within the joint limits.
-        
-        Levenberg-Marquardt on the body error e(q) = log(forward(q)^-1 target)
-        (twist (v, w) in the tool frame) with its exact Jacobian
-        -J_l(e)^-1 J_b(q), each step projected onto [lower, upper], at most
-        max_iterations iterations; then, while not converged, up to ``restarts``
-        more attempts from seeds uniform within the limits ([-pi, pi] where a
-        limit is infinite), drawn from a generator seeded with ``seed``. The C++
-        solver (chasles/inverse_kinematics.hpp) runs with the GIL released, as the
-        private gufunc ``chasles._core._inverse_kinematics``.
-        
-        Targets and seeds broadcast: one target (an SE3 or (4, 4)) and q0 (n,) give
-        one solve; (..., 4, 4) targets and/or (..., n) seeds give a batch. Element
-        i of a batch (in C order) draws its restarts from a generator seeded with
-        ``seed + i``: it equals the single solve with that seed.
-        
-        Args:
-            target: SE3 or array_like of shape (4, 4) or (..., 4, 4), the tool pose(s).
-            q0: array_like of shape (n,) or (..., n), the seed(s) (clamped into the limits).
-            position_tolerance: |e_v| at a solution (the chain's length unit); default 3.7e-11.
-            orientation_tolerance: |e_w| at a solution (radians); default 3.7e-11.
-            max_iterations: iterations per attempt (>= 0).
-            restarts: further attempts from random seeds while not converged (>= 0).
-            seed: the seed of those random seeds (a 64-bit Mersenne twister; seed + i
-                for element i of a batch).
-        
-        Returns:
-            IKResult: a named tuple (q, converged, iterations, error): q of shape
-            (n,), a bool, an int, the body error twist e of shape (6,); for a batch,
-            arrays of shapes (..., n), (...), (...), (..., 6).
-        
-        Raises:
-            ValueError: a target that is not a rigid motion, shapes that do not
-                match or broadcast, a non-finite seed, negative counts or tolerances.
-        
-        Example:
-            >>> arm = Chain([Chain.revolute_screw([0, 0, 0], [0, 0, 1]),
-            ...              Chain.revolute_screw([1, 0, 0], [0, 0, 1])], SE3(SO3(), [2, 0, 0]))
-            >>> r = arm.inverse_kinematics(arm.forward([0.3, -0.5]), [0.0, -0.2])
-            >>> r.converged, np.round(r.q, 12) + 0.0
-            (True, array([ 0.3, -0.5]))
+        An array function: (n,) gives one result, (..., n) one per configuration,
+        by numpy's rules (broadcasting, dtypes, the GIL released; NaN gives NaN). ValueError: a chain without link inertias, shapes that do not match.
         """
     def jacobian_body(self, theta: numpy.typing.ArrayLike) -> typing.Any:
         """
-        The body Jacobian J_b: the body twist (g^-1 g')^vee = J_b theta'.
+        The body Jacobian J_b: (g^-1 g')^vee = J_b theta'.
         
-        Column i is Ad_{(exp([B_{i+1}] th_{i+1}) ... exp([B_n] th_n))^-1} B_i; rows (v, w).
+        Column i is Ad_{(exp([B_{i+1}] th_{i+1}) ... exp([B_n] th_n))^-1} B_i, rows (v, w).
+        theta: array_like (..., n); returns (..., 6, n).
         
-        An array function: theta of shape (n,) gives one result, (..., n) one per
-        configuration, by the same numpy rules as every chasles array function
-        (broadcasting, dtypes, the GIL released; a NaN gives NaN in its element).
-        
-        Args:
-            theta: array_like of shape (..., n).
-        
-        Returns:
-            numpy.ndarray: shape (..., 6, n).
-        
-        Example:
-            >>> arm = Chain([Chain.revolute_screw([0, 0, 0], [0, 0, 1])], SE3(translation=[1.0, 0.0, 0.0]))
-            >>> np.round(arm.jacobian_body([0.3])[:, 0], 12) + 0.0
-            array([0., 1., 0., 0., 0., 1.])
+        An array function: (n,) gives one result, (..., n) one per configuration,
+        by numpy's rules (broadcasting, dtypes, the GIL released; NaN gives NaN).
         """
     def jacobian_space(self, theta: numpy.typing.ArrayLike) -> typing.Any:
         """
-        The space Jacobian J_s: the spatial twist (g' g^-1)^vee = J_s theta'.
+        The space Jacobian J_s: (g' g^-1)^vee = J_s theta'.
         
-        Column i is Ad_{exp([S_1] th_1) ... exp([S_{i-1}] th_{i-1})} S_i; rows (v, w).
-        J_s = Ad_g J_b.
+        Column i is Ad_{exp([S_1] th_1) ... exp([S_{i-1}] th_{i-1})} S_i, rows (v, w); J_s = Ad_g J_b.
+        theta: array_like (..., n); returns (..., 6, n).
         
-        An array function: theta of shape (n,) gives one result, (..., n) one per
-        configuration, by the same numpy rules as every chasles array function
-        (broadcasting, dtypes, the GIL released; a NaN gives NaN in its element).
-        
-        Args:
-            theta: array_like of shape (..., n).
-        
-        Returns:
-            numpy.ndarray: shape (..., 6, n).
-        
-        Example:
-            >>> arm = Chain([Chain.revolute_screw([0, 0, 0], [0, 0, 1])], np.eye(4))
-            >>> arm.jacobian_space([0.3])[:, 0]
-            array([0., 0., 0., 0., 0., 1.])
+        An array function: (n,) gives one result, (..., n) one per configuration,
+        by numpy's rules (broadcasting, dtypes, the GIL released; NaN gives NaN).
         """
     def mass_matrix(self, q: typing.Any) -> typing.Any:
         """
         The joint-space mass matrix M(q), symmetric positive definite (composite rigid bodies).
         
-        Args:
-            q: array_like of shape (..., n).
+        q: array_like (..., n); returns (..., n, n).
         
-        Returns:
-            numpy.ndarray: shape (..., n, n).
-        """
-    @property
-    def base(self) -> SE3:
-        """
-        SE3: the base frame in the world frame (already folded into screws and home).
-        """
-    @property
-    def body_screws(self) -> numpy.typing.NDArray[numpy.float64]:
-        """
-        numpy.ndarray: shape (n, 6), the body screws B_i = Ad_{M^-1} S_i (a copy).
-        """
-    @property
-    def effort_limits(self) -> numpy.ndarray:
-        """
-        numpy.ndarray: shape (n,), the effort limits, N m or N (inf where none; a copy).
-        """
-    @property
-    def gravity(self) -> numpy.typing.NDArray[numpy.float64]:
-        """
-        numpy.ndarray: shape (3,), gravity in the world frame, m/s^2 (a copy).
+        An array function: (n,) gives one result, (..., n) one per configuration,
+        by numpy's rules (broadcasting, dtypes, the GIL released; NaN gives NaN). ValueError: a chain without link inertias, shapes that do not match.
         """
     @property
     def home(self) -> SE3:
         """
         SE3: the home pose M = g(0).
-        """
-    @property
-    def joint_types(self) -> tuple:
-        """
-        tuple[str, ...]: each joint's type: "revolute", "continuous" or "prismatic".
-        """
-    @property
-    def link_inertias(self) -> typing.Any:
-        """
-        numpy.ndarray | None: shape (n, 10), per joint the inertia of the link it moves
-        (with the links that ride on it): mass, center of mass (3), then ixx, ixy, ixz,
-        iyy, iyz, izz of the rotational inertia about the center of mass, both in
-        the base frame at home; None when not given (a copy).
-        """
-    @property
-    def lower(self) -> numpy.ndarray:
-        """
-        numpy.ndarray: shape (n,), the lower position limits (-inf where none; a copy).
-        """
-    @property
-    def n_joints(self) -> int:
-        """
-        int: n, the number of joints.
-        """
-    @property
-    def names(self) -> typing.Any:
-        """
-        tuple[str, ...] | None: the joint names, or None when none were given.
-        """
-    @property
-    def screws(self) -> numpy.typing.NDArray[numpy.float64]:
-        """
-        numpy.ndarray: shape (n, 6), the space screws S_i, one row (v, w) per joint (a copy).
-        """
-    @property
-    def tool(self) -> SE3:
-        """
-        SE3: the tool frame after the last link (already folded into home).
-        """
-    @property
-    def upper(self) -> numpy.ndarray:
-        """
-        numpy.ndarray: shape (n,), the upper position limits (inf where none; a copy).
-        """
-    @property
-    def velocity_limits(self) -> numpy.ndarray:
-        """
-        numpy.ndarray: shape (n,), the velocity limits (inf where none; a copy).
         """
 def _se3_bspline_evaluate(start_time: typing.SupportsFloat | typing.SupportsIndex, spacing: typing.SupportsFloat | typing.SupportsIndex, control: numpy.ndarray, t: numpy.typing.ArrayLike, order: typing.SupportsInt | typing.SupportsIndex) -> numpy.ndarray:
     """

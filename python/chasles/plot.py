@@ -409,7 +409,7 @@ def _common_normal(
 def _home_geometry(arm: Chain) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """At home, in the world frame: each joint's origin and exit point on its
     axis, and the axis' unit direction; shapes (n, 3) each (see ``chain``)."""
-    screws = arm.screws
+    screws = arm.space_screws
     n = len(screws)
     origins, exits, directions = np.zeros((n, 3)), np.zeros((n, 3)), np.zeros((n, 3))
     for i, (v, w) in enumerate(zip(screws[:, :3], screws[:, 3:])):
@@ -526,7 +526,7 @@ def chain(
     # prefix[k] = exp([S_1] q_1) ... exp([S_k] q_k), k = 0 .. n.
     prefix = np.empty((n + 1, 4, 4))
     prefix[0] = np.eye(4)
-    for k, step in enumerate(chasles.se3_exp(arm.screws * qs[:, None])):
+    for k, step in enumerate(chasles.se3_exp(arm.space_screws * qs[:, None])):
         prefix[k + 1] = prefix[k] @ step
     tool = np.asarray(arm.forward(qs))
     base = arm.base.as_matrix()

@@ -1,4 +1,4 @@
-// chasles::Dynamics (inverse dynamics, mass matrix, forward dynamics of a
+// The dynamics of a chasles::Chain (inverse dynamics, mass matrix, forward dynamics of a
 // serial chain), on random arms of revolute and prismatic joints with random
 // physical inertias, against independent oracles:
 // - M(q) positive definite (Cholesky) and its columns equal to
@@ -43,7 +43,6 @@ namespace {
 
 using namespace chasles_test;
 using chasles::Chain;
-using chasles::Dynamics;
 using chasles::RealOf;
 using chasles::SE3;
 using chasles::SpatialInertia;
@@ -51,7 +50,7 @@ using chasles::Wrench;
 
 constexpr int kMax = 8;
 template <typename S>
-using Dyn = Dynamics<S, Eigen::Dynamic, kMax>;
+using Dyn = Chain<S, Eigen::Dynamic, kMax>;
 
 /// A random arm in double: n joints (revolute with probability 3/4, else
 /// prismatic) with axes through points within 1 m of the base, a random home
@@ -122,13 +121,13 @@ TYPED_TEST(DynamicsTest, AgreesWithLongDouble) {
     const Dyn<LD> dl = dynamics_of<LD>(arm);
     const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0), qdd = random_joints<S>(rng, n, 2.0);
     const Wrench<S> F(Eigen::Matrix<S, 3, 1>(S(1), S(-2), S(3)), Eigen::Matrix<S, 3, 1>(S(0.5), S(0.1), S(-0.3)));
-    const auto tau = d.inverse_dynamics(q, qd, qdd, F);
-    const auto taul = dl.inverse_dynamics(to_ld(q), to_ld(qd), to_ld(qdd), F.template cast<LD>());
+    const auto tau = inverse_dynamics(d, q, qd, qdd, F);
+    const auto taul = inverse_dynamics(dl, to_ld(q), to_ld(qd), to_ld(qdd), F.template cast<LD>());
     const LD scale = std::max(LD(100), max_abs(taul));
     EXPECT_TRUE(near<S>(tau, taul, kPerJoint * n, scale)) << "n = " << n;
-    EXPECT_TRUE(near<S>(d.mass_matrix(q), dl.mass_matrix(to_ld(q)), kPerJoint * n, 10));
-    EXPECT_TRUE(near<S>(d.gravity_torques(q), dl.gravity_torques(to_ld(q)), kPerJoint * n, scale));
-    EXPECT_TRUE(near<S>(d.coriolis(q, qd), dl.coriolis(to_ld(q), to_ld(qd)), kPerJoint * n, scale));
+    EXPECT_TRUE(near<S>(mass_matrix(d, q), mass_matrix(dl, to_ld(q)), kPerJoint * n, 10));
+    EXPECT_TRUE(near<S>(gravity_torques(d, q), gravity_torques(dl, to_ld(q)), kPerJoint * n, scale));
+    EXPECT_TRUE(near<S>(coriolis(d, q, qd), coriolis(dl, to_ld(q), to_ld(qd)), kPerJoint * n, scale));
   }
 }
 
@@ -139,14 +138,14 @@ TYPED_TEST(DynamicsTest, MassMatrixIsPositiveDefiniteAndTheColumnsOfInverseDynam
     const int n = 1 + trial % kMax;
     const Dyn<S> d = dynamics_of<S>(random_arm(rng, n));
     const auto q = random_joints<S>(rng, n, 3.0);
-    const auto M = d.mass_matrix(q);
+    const auto M = mass_matrix(d, q);
     EXPECT_EQ(M, M.transpose());
     EXPECT_EQ(Eigen::LLT<typename Dyn<S>::MassMatrix>(M).info(), Eigen::Success) << "n = " << n;
     const typename Dyn<S>::JointVector zero = Dyn<S>::JointVector::Zero(n);
-    const auto tau0 = d.inverse_dynamics(q, zero, zero);  // gravity on: g(q)
+    const auto tau0 = inverse_dynamics(d, q, zero, zero);  // gravity on: g(q)
     for (int i = 0; i < n; ++i) {
       const typename Dyn<S>::JointVector ei = Dyn<S>::JointVector::Unit(n, i);
-      const typename Dyn<S>::JointVector column = d.inverse_dynamics(q, zero, ei) - tau0;
+      const typename Dyn<S>::JointVector column = inverse_dynamics(d, q, zero, ei) - tau0;
       EXPECT_TRUE(near<S>(column, M.col(i), kPerJoint * n, std::max(LD(100), max_abs(tau0)))) << "column " << i;
     }
   }
@@ -159,8 +158,8 @@ TYPED_TEST(DynamicsTest, KineticEnergyIsHalfQdMQd) {
     const int n = 1 + trial % kMax;
     const Dyn<S> d = dynamics_of<S>(random_arm(rng, n));
     const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0);
-    const LD T = d.kinetic_energy(q, qd);
-    const LD TM = LD(qd.dot(d.mass_matrix(q) * qd)) / 2;
+    const LD T = kinetic_energy(d, q, qd);
+    const LD TM = LD(qd.dot(mass_matrix(d, q) * qd)) / 2;
     EXPECT_GT(T, 0);
     EXPECT_LE(std::fabs(T - TM), kPerJoint * n * eps<S>() * std::max(LD(10), T)) << "n = " << n;
   }
@@ -179,9 +178,9 @@ TYPED_TEST(DynamicsTest, TipWrenchGivesTheBodyJacobianTranspose) {
     Eigen::Matrix<S, 6, 1> Fv;
     for (int k = 0; k < 6; ++k) Fv(k) = S(u(rng));
     const typename Dyn<S>::JointVector diff =
-        d.inverse_dynamics(q, qd, qdd, Wrench<S>(Fv)) - d.inverse_dynamics(q, qd, qdd);
+        inverse_dynamics(d, q, qd, qdd, Wrench<S>(Fv)) - inverse_dynamics(d, q, qd, qdd);
     const typename Dyn<S>::JointVector expected = chain.jacobian_body(q).transpose() * Fv;
-    const LD scale = std::max(LD(100), max_abs(d.inverse_dynamics(q, qd, qdd)));
+    const LD scale = std::max(LD(100), max_abs(inverse_dynamics(d, q, qd, qdd)));
     EXPECT_TRUE(near<S>(diff, expected, kPerJoint * n, scale)) << "n = " << n;
   }
 }
@@ -194,19 +193,19 @@ TYPED_TEST(DynamicsTest, ForwardDynamicsInvertsInverseDynamics) {
     const Dyn<S> d = dynamics_of<S>(random_arm(rng, n));
     const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0), qdd = random_joints<S>(rng, n, 2.0);
     const Wrench<S> F(Eigen::Matrix<S, 3, 1>(S(1), S(-2), S(3)), Eigen::Matrix<S, 3, 1>(S(0.5), S(0.1), S(-0.3)));
-    const auto tau = d.inverse_dynamics(q, qd, qdd, F);
-    const auto forward = d.forward_dynamics(q, qd, tau, F);
+    const auto tau = inverse_dynamics(d, q, qd, qdd, F);
+    const auto forward = forward_dynamics(d, q, qd, tau, F);
     ASSERT_TRUE(forward) << "n = " << n;
     ASSERT_EQ(forward.joint, -1);
     const auto& back = forward.qdd;
     // Conditioning: the error of qdd is cond(M) times the rounding of tau.
-    const auto M = d.mass_matrix(q);
+    const auto M = mass_matrix(d, q);
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(M.template cast<double>());
     const LD cond = LD(es.eigenvalues().maxCoeff() / es.eigenvalues().minCoeff());
     EXPECT_TRUE(near<S>(back, to_ld(qdd), kPerJoint * n * cond, std::max(LD(100), max_abs(tau)) / LD(es.eigenvalues().maxCoeff())))
         << "n = " << n << ", cond(M) = " << static_cast<double>(cond);
     // bias = coriolis + gravity.
-    EXPECT_TRUE(near<S>(d.bias(q, qd), Eigen::Matrix<S, Eigen::Dynamic, 1>(d.coriolis(q, qd) + d.gravity_torques(q)),
+    EXPECT_TRUE(near<S>(bias(d, q, qd), Eigen::Matrix<S, Eigen::Dynamic, 1>(coriolis(d, q, qd) + gravity_torques(d, q)),
                         4, std::max(LD(100), max_abs(tau))));
   }
 }
@@ -242,16 +241,17 @@ TYPED_TEST(DynamicsTest, FromAChainEqualsFromItsParts) {
     const Arm arm = random_arm(rng, n);
     const ChainOf<S> chain = chain_of<S>(arm, base, Eigen::Vector3d(0.2, -0.1, -9.8));
     const Dyn<S> a(chain);
-    const Dyn<S> b(chain.space_screws(), chain.home(), chain.link_inertias(), chain.gravity());
+    const Dyn<S> b(chain.space_screws(), chain.home(), typename Dyn<S>::HomeAsGiven(), chain.link_inertias(),
+                   chain.gravity());
     const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0), qdd = random_joints<S>(rng, n, 2.0);
     const Wrench<S> F(Eigen::Matrix<S, 3, 1>(S(1), S(-2), S(3)), Eigen::Matrix<S, 3, 1>(S(0.5), S(0.1), S(-0.3)));
     using V = Eigen::Matrix<S, Eigen::Dynamic, 1>;
     using Mat = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>;
-    EXPECT_EQ(V(a.inverse_dynamics(q, qd, qdd, F)), V(b.inverse_dynamics(q, qd, qdd, F)));
-    EXPECT_EQ(Mat(a.mass_matrix(q)), Mat(b.mass_matrix(q)));
-    EXPECT_EQ(V(a.forward_dynamics(q, qd, qdd, F).qdd), V(b.forward_dynamics(q, qd, qdd, F).qdd));
-    EXPECT_EQ(V(a.gravity_torques(q)), V(b.gravity_torques(q)));
-    EXPECT_EQ(V(a.coriolis(q, qd)), V(b.coriolis(q, qd)));
+    EXPECT_EQ(V(inverse_dynamics(a, q, qd, qdd, F)), V(inverse_dynamics(b, q, qd, qdd, F)));
+    EXPECT_EQ(Mat(mass_matrix(a, q)), Mat(mass_matrix(b, q)));
+    EXPECT_EQ(V(forward_dynamics(a, q, qd, qdd, F).qdd), V(forward_dynamics(b, q, qd, qdd, F).qdd));
+    EXPECT_EQ(V(gravity_torques(a, q)), V(gravity_torques(b, q)));
+    EXPECT_EQ(V(coriolis(a, q, qd)), V(coriolis(b, q, qd)));
     EXPECT_TRUE(a.space_screws() == chain.space_screws() && a.gravity() == chain.gravity());
   }
 }
@@ -276,17 +276,17 @@ TYPED_TEST(DynamicsTest, TheBaseFrameMovesTheInertias) {
     const Dyn<LD> reference(chain_of<LD>(arm, SE3<double>(), rotated));
     const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0), qdd = random_joints<S>(rng, n, 2.0);
     const Wrench<S> F(Eigen::Matrix<S, 3, 1>(S(1), S(-2), S(3)), Eigen::Matrix<S, 3, 1>(S(0.5), S(0.1), S(-0.3)));
-    const auto taul = reference.inverse_dynamics(to_ld(q), to_ld(qd), to_ld(qdd), F.template cast<LD>());
+    const auto taul = inverse_dynamics(reference, to_ld(q), to_ld(qd), to_ld(qdd), F.template cast<LD>());
     const LD scale = std::max(LD(100), max_abs(taul));
     // twice the rounding of AgreesWithLongDouble: the base frame adds a change of frame to every quantity
-    EXPECT_TRUE(near<S>(based.inverse_dynamics(q, qd, qdd, F), taul, 2 * kPerJoint * n, scale)) << "n = " << n;
-    EXPECT_TRUE(near<S>(based.mass_matrix(q), reference.mass_matrix(to_ld(q)), 2 * kPerJoint * n, 10));
-    EXPECT_TRUE(near<S>(based.gravity_torques(q), reference.gravity_torques(to_ld(q)), 2 * kPerJoint * n, scale));
-    EXPECT_TRUE(near<S>(based.coriolis(q, qd), reference.coriolis(to_ld(q), to_ld(qd)), 2 * kPerJoint * n, scale));
+    EXPECT_TRUE(near<S>(inverse_dynamics(based, q, qd, qdd, F), taul, 2 * kPerJoint * n, scale)) << "n = " << n;
+    EXPECT_TRUE(near<S>(mass_matrix(based, q), mass_matrix(reference, to_ld(q)), 2 * kPerJoint * n, 10));
+    EXPECT_TRUE(near<S>(gravity_torques(based, q), gravity_torques(reference, to_ld(q)), 2 * kPerJoint * n, scale));
+    EXPECT_TRUE(near<S>(coriolis(based, q, qd), coriolis(reference, to_ld(q), to_ld(qd)), 2 * kPerJoint * n, scale));
     // and not the same without rotating gravity (the test can fail)
     if (base.rotation().matrix().col(2).z() < 0.9) {
       const Dyn<LD> unrotated(chain_of<LD>(arm, SE3<double>(), gravity));
-      EXPECT_FALSE(near<S>(based.gravity_torques(q), unrotated.gravity_torques(to_ld(q)), 2 * kPerJoint * n, scale));
+      EXPECT_FALSE(near<S>(gravity_torques(based, q), gravity_torques(unrotated, to_ld(q)), 2 * kPerJoint * n, scale));
     }
   }
 }
@@ -299,26 +299,26 @@ TYPED_TEST(DynamicsTest, AChainWithoutInertiasIsMassless) {
   const C chain(arm.S.template cast<S>(), arm.M.template cast<S>());  // no inertias given
   const Dyn<S> d(chain);
   const auto q = random_joints<S>(rng, 5, 3.0), qd = random_joints<S>(rng, 5, 2.0), qdd = random_joints<S>(rng, 5, 2.0);
-  EXPECT_TRUE(d.inverse_dynamics(q, qd, qdd).isZero(0));
-  EXPECT_TRUE(d.mass_matrix(q).isZero(0));
+  EXPECT_TRUE(inverse_dynamics(d, q, qd, qdd).isZero(0));
+  EXPECT_TRUE(mass_matrix(d, q).isZero(0));
   // only a tip wrench needs torques: J_b(q)^T F_tip
   const Wrench<S> F(Eigen::Matrix<S, 3, 1>(S(1), S(-2), S(3)), Eigen::Matrix<S, 3, 1>(S(0.5), S(0.1), S(-0.3)));
   const Eigen::Matrix<S, Eigen::Dynamic, 1> expected = chain.jacobian_body(q).transpose() * F.vector();
-  EXPECT_TRUE(near<S>(d.inverse_dynamics(q, qd, qdd, F), expected, kPerJoint * 5, 10));
+  EXPECT_TRUE(near<S>(inverse_dynamics(d, q, qd, qdd, F), expected, kPerJoint * 5, 10));
 }
 
 TEST(Dynamics, FixedSizeGivesTheSameBitsAsBounded) {
   std::mt19937 rng(26);
   const Arm arm = random_arm(rng, 6);
   const Dyn<double> d = dynamics_of<double>(arm);
-  Dynamics<double, 6>::Inertias I6;
+  Chain<double, 6>::Inertias I6;
   for (std::size_t i = 0; i < 6; ++i) I6[i] = arm.I[i];
-  const Dynamics<double, 6> f(Eigen::Matrix<double, 6, 6>(arm.S), arm.M, I6, arm.gravity);
+  const Chain<double, 6> f(Eigen::Matrix<double, 6, 6>(arm.S), arm.M, I6, arm.gravity);
   const auto q = random_joints<double>(rng, 6, 3.0), qd = random_joints<double>(rng, 6, 2.0);
   const Eigen::Matrix<double, 6, 1> q6 = q, qd6 = qd;
-  EXPECT_EQ(Eigen::VectorXd(f.inverse_dynamics(q6, qd6, qd6)), Eigen::VectorXd(d.inverse_dynamics(q, qd, qd)));
-  EXPECT_EQ(Eigen::MatrixXd(f.mass_matrix(q6)), Eigen::MatrixXd(d.mass_matrix(q)));
-  EXPECT_TRUE(near<double>(f.forward_dynamics(q6, qd6, qd6).qdd, d.forward_dynamics(q, qd, qd).qdd, 64, 10));
+  EXPECT_EQ(Eigen::VectorXd(inverse_dynamics(f, q6, qd6, qd6)), Eigen::VectorXd(inverse_dynamics(d, q, qd, qd)));
+  EXPECT_EQ(Eigen::MatrixXd(mass_matrix(f, q6)), Eigen::MatrixXd(mass_matrix(d, q)));
+  EXPECT_TRUE(near<double>(forward_dynamics(f, q6, qd6, qd6).qdd, forward_dynamics(d, q, qd, qd).qdd, 64, 10));
 }
 
 // Central differences in double, five points, step h: truncation
@@ -337,12 +337,12 @@ TEST(Dynamics, GravityTorquesAreTheGradientOfThePotentialEnergy) {
     const int n = 1 + trial % kMax;
     const Dyn<double> d = dynamics_of<double>(random_arm(rng, n));
     const auto q = random_joints<double>(rng, n, 3.0);
-    const auto g = d.gravity_torques(q);
+    const auto g = gravity_torques(d, q);
     for (int i = 0; i < n; ++i) {
       const double dU = derivative([&](double t) {
         Dyn<double>::JointVector qt = q;
         qt(i) += t;
-        return d.potential_energy(qt);
+        return potential_energy(d, qt);
       });
       EXPECT_NEAR(g(i), dU, 1e-7 * std::max(100.0, g.cwiseAbs().maxCoeff())) << "n = " << n << ", joint " << i;
     }
@@ -371,13 +371,13 @@ TEST(Dynamics, PowerBalanceAlongATrajectory) {
     auto energy = [&](double t) {
       Dyn<double>::JointVector q, qd, qdd;
       state(t, q, qd, qdd);
-      return qd.dot(d.mass_matrix(q) * qd) / 2;
+      return qd.dot(mass_matrix(d, q) * qd) / 2;
     };
     for (double t : {0.0, 0.4, 1.3}) {
       Dyn<double>::JointVector q, qd, qdd;
       state(t, q, qd, qdd);
-      const auto tau = d.inverse_dynamics(q, qd, qdd);
-      const double power = qd.dot(tau - d.gravity_torques(q));
+      const auto tau = inverse_dynamics(d, q, qd, qdd);
+      const double power = qd.dot(tau - gravity_torques(d, q));
       const double dT = derivative([&](double s) { return energy(t + s); });
       EXPECT_NEAR(power, dT, 1e-7 * std::max(100.0, tau.cwiseAbs().maxCoeff() * qd.cwiseAbs().maxCoeff()))
           << "n = " << n << ", t = " << t;
@@ -393,25 +393,25 @@ TEST(Dynamics, CoriolisIsTheChristoffelFormOfTheMassMatrixDerivative) {
   std::mt19937 rng(29);
   for (int trial = 0; trial < 10; ++trial) {
     const Arm arm = random_arm(rng, 6);
-    Dynamics<AD, 6>::Inertias Ia;
-    Dynamics<double, 6>::Inertias Id;
+    Chain<AD, 6>::Inertias Ia;
+    Chain<double, 6>::Inertias Id;
     for (std::size_t i = 0; i < 6; ++i) {
       Ia[i] = arm.I[i].cast<AD>();
       Id[i] = arm.I[i];
     }
     const Eigen::Matrix<double, 6, 6> S6 = arm.S;
-    const Dynamics<AD, 6> da(S6.cast<AD>(), arm.M.cast<AD>(), Ia, arm.gravity.cast<AD>());
-    const Dynamics<double, 6> d(S6, arm.M, Id, arm.gravity);
+    const Chain<AD, 6> da(S6.cast<AD>(), arm.M.cast<AD>(), Ia, arm.gravity.cast<AD>());
+    const Chain<double, 6> d(S6, arm.M, Id, arm.gravity);
     const Eigen::Matrix<double, 6, 1> q = random_joints<double>(rng, 6, 3.0), qd = random_joints<double>(rng, 6, 2.0);
     Eigen::Matrix<AD, 6, 1> qa;
     for (int i = 0; i < 6; ++i) qa(i) = AD(q(i), 6, i);
-    const auto Ma = da.mass_matrix(qa);
+    const auto Ma = mass_matrix(da, qa);
     std::array<Eigen::Matrix<double, 6, 6>, 6> dM;
     for (int k = 0; k < 6; ++k) {
       for (int r = 0; r < 6; ++r)
         for (int c = 0; c < 6; ++c) dM[static_cast<std::size_t>(k)](r, c) = Ma(r, c).derivatives()(k);
       const auto M_at = [&](double t) {
-        return Eigen::Matrix<double, 6, 6>(d.mass_matrix(Eigen::Matrix<double, 6, 1>(q + t * Eigen::Matrix<double, 6, 1>::Unit(k))));
+        return Eigen::Matrix<double, 6, 6>(mass_matrix(d, Eigen::Matrix<double, 6, 1>(q + t * Eigen::Matrix<double, 6, 1>::Unit(k))));
       };
       // Five-point difference, h = 1e-3: truncation h^4/30 |M^(5)| <= 3e-12 for
       // |M^(5)| <= 1e2 (these arms' masses and reaches), rounding ~ eps |M| / h <= 1e-11.
@@ -426,7 +426,7 @@ TEST(Dynamics, CoriolisIsTheChristoffelFormOfTheMassMatrixDerivative) {
       christoffel(k) = qd.dot(dM[static_cast<std::size_t>(k)] * qd) / 2;
     }
     const Eigen::Matrix<double, 6, 1> expected = Mdot * qd - christoffel;
-    const auto c = d.coriolis(q, qd);
+    const auto c = coriolis(d, q, qd);
     EXPECT_TRUE(near<double>(c, expected, 64 * 6, 100)) << "coriolis\n" << c.transpose() << "\nexpected\n" << expected.transpose();
   }
 }
@@ -447,24 +447,24 @@ TEST(Dynamics, RungeKuttaSimulationConservesEnergy) {
       Dyn<double>::JointVector q = random_joints<double>(rng, n, 3.0), qd = random_joints<double>(rng, n, 1.0);
       const Dyn<double>::JointVector zero = Dyn<double>::JointVector::Zero(n);
       auto total = [&](const Dyn<double>::JointVector& x, const Dyn<double>::JointVector& xd) {
-        return d.kinetic_energy(x, xd) + d.potential_energy(x);
+        return kinetic_energy(d, x, xd) + potential_energy(d, x);
       };
       const double E0 = total(q, qd);
       const double h = 1e-3;
       double worst = 0;
       for (int step = 0; step < 2000; ++step) {
-        const Dyn<double>::JointVector k1q = qd, k1v = d.forward_dynamics(q, qd, zero).qdd;
+        const Dyn<double>::JointVector k1q = qd, k1v = forward_dynamics(d, q, qd, zero).qdd;
         const Dyn<double>::JointVector q2 = q + h / 2 * k1q, v2 = qd + h / 2 * k1v;
-        const Dyn<double>::JointVector k2q = v2, k2v = d.forward_dynamics(q2, v2, zero).qdd;
+        const Dyn<double>::JointVector k2q = v2, k2v = forward_dynamics(d, q2, v2, zero).qdd;
         const Dyn<double>::JointVector q3 = q + h / 2 * k2q, v3 = qd + h / 2 * k2v;
-        const Dyn<double>::JointVector k3q = v3, k3v = d.forward_dynamics(q3, v3, zero).qdd;
+        const Dyn<double>::JointVector k3q = v3, k3v = forward_dynamics(d, q3, v3, zero).qdd;
         const Dyn<double>::JointVector q4 = q + h * k3q, v4 = qd + h * k3v;
-        const Dyn<double>::JointVector k4q = v4, k4v = d.forward_dynamics(q4, v4, zero).qdd;
+        const Dyn<double>::JointVector k4q = v4, k4v = forward_dynamics(d, q4, v4, zero).qdd;
         q += h / 6 * (k1q + 2 * k2q + 2 * k3q + k4q);
         qd += h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v);
         worst = std::max(worst, std::fabs(total(q, qd) - E0));
       }
-      const double T0 = d.kinetic_energy(q, qd);
+      const double T0 = kinetic_energy(d, q, qd);
       EXPECT_GT(T0, 0);
       EXPECT_LE(worst, 1e-9 * std::max(std::fabs(E0), T0))
           << "n = " << n << ", gravity " << with_gravity << ", E0 = " << E0;
@@ -484,7 +484,7 @@ using chasles::ForwardDynamicsResult;
 using chasles_test::PandaLike;
 
 template <typename S>
-using Panda = Dynamics<S, 7>;
+using Panda = Chain<S, 7>;
 
 /// The Panda-like arm of support/arms.hpp with the given link inertias.
 template <typename S>
@@ -533,9 +533,9 @@ template <typename JointVector>
 template <typename D, typename V>
 typename D::JointVector llt_solve(const D& d, const V& q, const V& qd, const V& tau,
                                   const Wrench<typename D::Scalar>& F = Wrench<typename D::Scalar>()) {
-  const typename D::JointVector zero = D::JointVector::Zero(d.joints());
-  const Eigen::LLT<typename D::MassMatrix> llt(d.mass_matrix(q));
-  return llt.solve(typename D::JointVector(tau - d.inverse_dynamics(q, qd, zero, F)));
+  const typename D::JointVector zero = D::JointVector::Zero(d.n_joints());
+  const Eigen::LLT<typename D::MassMatrix> llt(mass_matrix(d, q));
+  return llt.solve(typename D::JointVector(tau - inverse_dynamics(d, q, qd, zero, F)));
 }
 
 TYPED_TEST(DynamicsTest, ForwardDynamicsOfPhysicalArmsIsOkAndEigensCholeskySolve) {
@@ -547,7 +547,7 @@ TYPED_TEST(DynamicsTest, ForwardDynamicsOfPhysicalArmsIsOkAndEigensCholeskySolve
   const Panda<S> panda = panda_with<S>(PandaLike<S>().inertias);
   for (int trial = 0; trial < 200; ++trial) {
     const PandaState<S> x(rng);
-    const auto r = panda.forward_dynamics(x.q, x.qd, x.tau, F);
+    const auto r = forward_dynamics(panda, x.q, x.qd, x.tau, F);
     ASSERT_TRUE(r) << "q = " << x.q.transpose();
     EXPECT_EQ(r.status, DynamicsStatus::ok);
     EXPECT_EQ(r.joint, -1);
@@ -558,7 +558,7 @@ TYPED_TEST(DynamicsTest, ForwardDynamicsOfPhysicalArmsIsOkAndEigensCholeskySolve
     const int n = 1 + trial % kMax;
     const Dyn<S> d = dynamics_of<S>(random_arm(rng, n));
     const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0), tau = random_joints<S>(rng, n, 20.0);
-    const auto r = d.forward_dynamics(q, qd, tau, F);
+    const auto r = forward_dynamics(d, q, qd, tau, F);
     ASSERT_TRUE(r) << "n = " << n;
     EXPECT_EQ(r.qdd, llt_solve(d, q, qd, tau, F)) << "n = " << n;
   }
@@ -573,7 +573,7 @@ TYPED_TEST(DynamicsTest, ForwardDynamicsReportsAMasslessLink) {
   const Panda<S> panda = panda_with<S>(I);
   for (int trial = 0; trial < 50; ++trial) {
     const PandaState<S> x(rng);
-    EXPECT_TRUE(fails_at(panda.forward_dynamics(x.q, x.qd, x.tau), 6));
+    EXPECT_TRUE(fails_at(forward_dynamics(panda, x.q, x.qd, x.tau), 6));
   }
   // Random arms whose last link is massless, and a chain without inertias (M = 0).
   for (int n = 1; n <= kMax; ++n) {
@@ -581,15 +581,15 @@ TYPED_TEST(DynamicsTest, ForwardDynamicsReportsAMasslessLink) {
     arm.I[static_cast<std::size_t>(n - 1)] = SpatialInertia<double>();
     const Dyn<S> d = dynamics_of<S>(arm);
     const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0);
-    EXPECT_TRUE(fails_at(d.forward_dynamics(q, qd, qd), n - 1)) << "n = " << n;
+    EXPECT_TRUE(fails_at(forward_dynamics(d, q, qd, qd), n - 1)) << "n = " << n;
     const Dyn<S> massless(ChainOf<S>(arm.S.template cast<S>(), arm.M.template cast<S>()));
-    EXPECT_TRUE(fails_at(massless.forward_dynamics(q, qd, qd), 0)) << "n = " << n;
+    EXPECT_TRUE(fails_at(forward_dynamics(massless, q, qd, qd), 0)) << "n = " << n;
   }
   // A massless link inside the chain is fine: the links after it move with its joint.
   I = PandaLike<S>().inertias;
   I[3] = SpatialInertia<S>();
   const PandaState<S> x(rng);
-  EXPECT_TRUE(panda_with<S>(I).forward_dynamics(x.q, x.qd, x.tau));
+  EXPECT_TRUE(forward_dynamics(panda_with<S>(I), x.q, x.qd, x.tau));
 }
 
 /// The Panda-like arm with each link a point mass (its own mass, I_c = 0)
@@ -620,9 +620,9 @@ TYPED_TEST(DynamicsTest, ForwardDynamicsReportsPointMassesOnTheJointAxes) {
   int unnoticed = 0;
   for (int trial = 0; trial < 100; ++trial) {
     const PandaState<S> x(rng);
-    EXPECT_TRUE(fails_at(panda.forward_dynamics(x.q, x.qd, x.tau), 6)) << "q = " << x.q.transpose();
+    EXPECT_TRUE(fails_at(forward_dynamics(panda, x.q, x.qd, x.tau), 6)) << "q = " << x.q.transpose();
     const auto before = llt_solve(panda, x.q, x.qd, x.tau);
-    if (Eigen::LLT<typename Panda<S>::MassMatrix>(panda.mass_matrix(x.q)).info() == Eigen::Success) {
+    if (Eigen::LLT<typename Panda<S>::MassMatrix>(mass_matrix(panda, x.q)).info() == Eigen::Success) {
       ++unnoticed;
       EXPECT_GT(max_abs(before), LD(1e4)) << "q = " << x.q.transpose();  // |qdd| of a real arm: < 1e3
     }
@@ -642,12 +642,12 @@ TYPED_TEST(DynamicsTest, ForwardDynamicsReportsANearlySingularMassMatrix) {
   const Panda<S> panda = panda_point_masses<S>(offset, 0.05);
   for (int trial = 0; trial < 100; ++trial) {
     const PandaState<S> x(rng);
-    EXPECT_TRUE(fails_at(panda.forward_dynamics(x.q, x.qd, x.tau), 6)) << "q = " << x.q.transpose();
+    EXPECT_TRUE(fails_at(forward_dynamics(panda, x.q, x.qd, x.tau), 6)) << "q = " << x.q.transpose();
   }
   // Eigen's LLT took most of these pivots (double): accelerations of 1e9 and more.
   if (std::is_same<S, double>::value) {
     const PandaState<S> x(rng);
-    EXPECT_EQ(Eigen::LLT<typename Panda<S>::MassMatrix>(panda.mass_matrix(x.q)).info(), Eigen::Success);
+    EXPECT_EQ(Eigen::LLT<typename Panda<S>::MassMatrix>(mass_matrix(panda, x.q)).info(), Eigen::Success);
     EXPECT_GT(max_abs(llt_solve(panda, x.q, x.qd, x.tau)), LD(1e9));
   }
 }
@@ -666,7 +666,7 @@ TYPED_TEST(DynamicsTest, ForwardDynamicsReportsAnIndefiniteInertia) {
   const Panda<S> panda = panda_with<S>(I);
   for (int trial = 0; trial < 50; ++trial) {
     const PandaState<S> x(rng);
-    EXPECT_TRUE(fails_at(panda.forward_dynamics(x.q, x.qd, x.tau), 6)) << "q = " << x.q.transpose();
+    EXPECT_TRUE(fails_at(forward_dynamics(panda, x.q, x.qd, x.tau), 6)) << "q = " << x.q.transpose();
   }
   // An inertia that breaks the triangle inequality (I_zz = 3 (I_xx + I_yy))
   // but is positive definite gives a positive definite M: such inertias are
@@ -677,7 +677,7 @@ TYPED_TEST(DynamicsTest, ForwardDynamicsReportsAnIndefiniteInertia) {
   const Panda<S> triangle = panda_with<S>(I);
   for (int trial = 0; trial < 50; ++trial) {
     const PandaState<S> x(rng);
-    const auto r = triangle.forward_dynamics(x.q, x.qd, x.tau);
+    const auto r = forward_dynamics(triangle, x.q, x.qd, x.tau);
     ASSERT_TRUE(r) << "q = " << x.q.transpose();
     EXPECT_EQ(r.qdd, llt_solve(triangle, x.q, x.qd, x.tau));
   }
@@ -690,33 +690,33 @@ TYPED_TEST(DynamicsTest, ForwardDynamicsThresholdOnBothSides) {
   // (the parallel-axis terms cancel exactly along the axis) and the pivot's
   // scale is s = tr(I_c) + 2 m |c|^2 = 2 J + 2, so d / s = J / (2 J + 2).
   const S tol = S(chasles::ThresholdsOf<S>::mass_matrix_pivot_tolerance);
-  typename Dynamics<S, 1>::Screws screw;
+  typename Chain<S, 1>::Screws screw;
   screw << S(0), S(0), S(0), S(0), S(0), S(1);
   const auto disc = [&](S J) {
-    typename Dynamics<S, 1>::Inertias I;
+    typename Chain<S, 1>::Inertias I;
     I[0] = SpatialInertia<S>(S(1), Eigen::Matrix<S, 3, 1>(S(0), S(0), S(1)),
                              Eigen::Matrix<S, 3, 1>(J / 2, J / 2, J).asDiagonal().toDenseMatrix());
-    return Dynamics<S, 1>(screw, SE3<S>(), I, Eigen::Matrix<S, 3, 1>(S(0), S(0), S(-9.81)));
+    return Chain<S, 1>(screw, SE3<S>(), I, Eigen::Matrix<S, 3, 1>(S(0), S(0), S(-9.81)));
   };
   for (const S q : {S(0), S(0.3), S(-2)}) {
     const Eigen::Matrix<S, 1, 1> q1(q), qd(S(0.5)), tau(S(1e-14));
     // d / s = 1.5 tol: ok, qdd = tau / J (no gravity torque about z, no Coriolis term for one joint).
     const S above = 3 * tol;
-    const auto r = disc(above).forward_dynamics(q1, qd, tau);
+    const auto r = forward_dynamics(disc(above), q1, qd, tau);
     ASSERT_TRUE(r) << "q = " << q;
-    EXPECT_EQ(disc(above).mass_matrix(q1)(0, 0), above);
+    EXPECT_EQ(mass_matrix(disc(above), q1)(0, 0), above);
     EXPECT_TRUE(near<S>(r.qdd, Eigen::Matrix<LD, 1, 1>(LD(tau(0)) / LD(above)), 4)) << r.qdd;
     // d / s = 0.5 tol: not positive definite, though Eigen's LLT takes it.
     const S below = tol;
-    EXPECT_TRUE(fails_at(disc(below).forward_dynamics(q1, qd, tau), 0)) << "q = " << q;
+    EXPECT_TRUE(fails_at(forward_dynamics(disc(below), q1, qd, tau), 0)) << "q = " << q;
     using M1 = Eigen::Matrix<S, 1, 1>;
-    EXPECT_EQ(Eigen::LLT<M1>(disc(below).mass_matrix(q1)).info(), Eigen::Success);
+    EXPECT_EQ(Eigen::LLT<M1>(mass_matrix(disc(below), q1)).info(), Eigen::Success);
   }
   // A pivot of the smallest normal number (a 1 kg disc of J = 1e-38 or
   // 1e-308 kg m^2), and of 0.
   const Eigen::Matrix<S, 1, 1> q0(S(0.1)), qd0(S(0)), tau0(S(1));
-  EXPECT_TRUE(fails_at(disc(S(std::numeric_limits<S>::min())).forward_dynamics(q0, qd0, tau0), 0));
-  EXPECT_TRUE(fails_at(disc(S(0)).forward_dynamics(q0, qd0, tau0), 0));
+  EXPECT_TRUE(fails_at(forward_dynamics(disc(S(std::numeric_limits<S>::min())), q0, qd0, tau0), 0));
+  EXPECT_TRUE(fails_at(forward_dynamics(disc(S(0)), q0, qd0, tau0), 0));
 }
 
 TYPED_TEST(DynamicsTest, ForwardDynamicsOfANaNIsNaNNotAFailure) {
@@ -725,11 +725,11 @@ TYPED_TEST(DynamicsTest, ForwardDynamicsOfANaNIsNaNNotAFailure) {
   const Panda<S> panda = panda_with<S>(PandaLike<S>().inertias);
   PandaState<S> x(rng);
   x.tau(2) = std::numeric_limits<S>::quiet_NaN();
-  auto r = panda.forward_dynamics(x.q, x.qd, x.tau);
+  auto r = forward_dynamics(panda, x.q, x.qd, x.tau);
   EXPECT_TRUE(r);
   EXPECT_TRUE(r.qdd.array().isNaN().any());
   x.q(0) = std::numeric_limits<S>::quiet_NaN();
-  r = panda.forward_dynamics(x.q, x.qd, x.tau);
+  r = forward_dynamics(panda, x.q, x.qd, x.tau);
   EXPECT_TRUE(r);
   EXPECT_TRUE(r.qdd.array().isNaN().all());
 }
@@ -748,7 +748,7 @@ TEST(Dynamics, ForwardDynamicsWithAutomaticDifferentiation) {
     const PandaState<double> x(rng);
     Eigen::Matrix<AD, 7, 1> tau;
     for (int i = 0; i < 7; ++i) tau(i) = AD(x.tau(i), 7, i);
-    const auto r = da.forward_dynamics(x.q.cast<AD>(), x.qd.cast<AD>(), tau);
+    const auto r = forward_dynamics(da, x.q.cast<AD>(), x.qd.cast<AD>(), tau);
     ASSERT_TRUE(r);
     Eigen::Matrix<double, 7, 7> J;
     Eigen::Matrix<double, 7, 1> value;
@@ -756,18 +756,18 @@ TEST(Dynamics, ForwardDynamicsWithAutomaticDifferentiation) {
       J.row(i) = r.qdd(i).derivatives().transpose();
       value(i) = r.qdd(i).value();
     }
-    const Eigen::Matrix<double, 7, 7> Mq = d.mass_matrix(x.q), Minv = Mq.inverse();
+    const Eigen::Matrix<double, 7, 7> Mq = mass_matrix(d, x.q), Minv = Mq.inverse();
     // both sides round to cond(M) eps |M^-1| (the hand's inertia is small: cond ~ 1e4)
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 7, 7>> es(Mq);
     const LD cond = LD(es.eigenvalues().maxCoeff() / es.eigenvalues().minCoeff());
     EXPECT_TRUE(near<double>(J, Minv, 64 * cond, max_abs(Minv)));
     // the value: the double computation, to the rounding of autodiff's own operation order (times cond(M))
-    const Eigen::Matrix<double, 7, 1> qdd = d.forward_dynamics(x.q, x.qd, x.tau).qdd;
+    const Eigen::Matrix<double, 7, 1> qdd = forward_dynamics(d, x.q, x.qd, x.tau).qdd;
     EXPECT_TRUE(near<double>(value, qdd, 64 * cond, max_abs(qdd)));
   }
   Ia[6] = SpatialInertia<AD>();
   const PandaState<double> x(rng);
-  EXPECT_TRUE(fails_at(panda_with<AD>(Ia).forward_dynamics(x.q.cast<AD>(), x.qd.cast<AD>(), x.tau.cast<AD>()), 6));
+  EXPECT_TRUE(fails_at(forward_dynamics(panda_with<AD>(Ia), x.q.cast<AD>(), x.qd.cast<AD>(), x.tau.cast<AD>()), 6));
 }
 
 }  // namespace

@@ -39,7 +39,7 @@ std::pair<LD, LD> reference_error(const C& chain, const SE3<typename C::Scalar>&
   using M4L = Eigen::Matrix<LD, 4, 4>;
   using V6L = Eigen::Matrix<LD, 6, 1>;
   M4L g = M4L::Identity();
-  for (Eigen::Index i = 0; i < chain.joints(); ++i)
+  for (Eigen::Index i = 0; i < chain.n_joints(); ++i)
     g = g * chasles_ref::exp6(V6L(chain.space_screws().col(i).template cast<LD>() * LD(q(i))));
   g = g * chain.home().matrix().template cast<LD>();
   const M4L T = target.matrix().template cast<LD>();

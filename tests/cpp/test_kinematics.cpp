@@ -175,7 +175,7 @@ void check_chain(Arm arm) {
   using S = typename C::Scalar;
   const C chain = make_chain<C>(arm);
   const Eigen::Index n = arm.S.cols();
-  ASSERT_EQ(chain.joints(), n);
+  ASSERT_EQ(chain.n_joints(), n);
   const LD k = k_chain(n);
   EXPECT_TRUE(near<S>(chain.space_screws(), arm.S, 0));
   EXPECT_TRUE(near<S>(chain.home().matrix(), arm.M, 0));
@@ -320,7 +320,7 @@ TYPED_TEST(Kinematics, DynamicLengths) {
   using C = Chain<S, Eigen::Dynamic, 8>;
   Arm a2 = planar({1.5L, 0.75L});
   const C c2 = make_chain<C>(a2);
-  EXPECT_EQ(c2.joints(), 2);
+  EXPECT_EQ(c2.n_joints(), 2);
   const typename C::JointVector th = joint_vector<C>((VecL(2) << 0.3L, -1.1L).finished());
   EXPECT_EQ(c2.jacobian_space(th).cols(), 2);
   EXPECT_TRUE(c2.forward(th).is_approx(c2.forward_body(th), static_cast<S>(k_chain(2) * eps<S>())));

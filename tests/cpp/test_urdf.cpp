@@ -63,7 +63,7 @@ TEST(Urdf, SmallDescription) {
   ASSERT_TRUE(r) << r.error;
   EXPECT_TRUE(r.error.empty());
   const Arm& arm = *r.chain;
-  ASSERT_EQ(arm.joints(), 2);
+  ASSERT_EQ(arm.n_joints(), 2);
   EXPECT_EQ(r.joint_names, (std::vector<std::string>{"j1", "j2"}));
   EXPECT_EQ(arm.joint_type(0), JointType::revolute);
   EXPECT_EQ(arm.joint_type(1), JointType::continuous);
@@ -122,7 +122,7 @@ TEST(Urdf, ForwardKinematicsIsTheCompositionOfTheUrdfTransforms) {
   const Result r = chasles::chain_from_urdf<double, 8>(text, "tool");
   ASSERT_TRUE(r) << r.error;
   const Arm& arm = *r.chain;
-  ASSERT_EQ(arm.joints(), 3);
+  ASSERT_EQ(arm.n_joints(), 3);
   EXPECT_TRUE(static_cast<bool>(arm.validate()));
   EXPECT_EQ(arm.joint_type(1), JointType::prismatic);
   auto O = [&](int k) { return SE3d(chasles::from_rpy(o[k][3], o[k][4], o[k][5]), Vector3d(o[k][0], o[k][1], o[k][2])); };
@@ -192,7 +192,7 @@ TEST(Urdf, FloatChainAndPathSource) {
   std::fclose(f);
   const chasles::UrdfChain<float, 3> r = chasles::chain_from_urdf<float, 3>(path, "c");
   ASSERT_TRUE(r) << r.error;
-  EXPECT_EQ(r.chain->joints(), 2);
+  EXPECT_EQ(r.chain->n_joints(), 2);
   EXPECT_EQ(r.chain->space_screws().col(1), (Eigen::Matrix<float, 6, 1>() << 0, 0, 0, 0, 1, 0).finished());
   std::remove(path.c_str());
   const Result missing = chasles::chain_from_urdf<double, 8>(path, "c");
@@ -270,7 +270,7 @@ TEST(Urdf, MoreJointsThanMaxJointsIsRefused) {
 /// Whether every number of the chain is finite and the chain validates.
 bool sound(const Arm& arm) {
   bool ok = static_cast<bool>(arm.validate()) && arm.space_screws().allFinite() && arm.home().matrix().allFinite();
-  for (Eigen::Index i = 0; i < arm.joints(); ++i) {
+  for (Eigen::Index i = 0; i < arm.n_joints(); ++i) {
     const auto& G = arm.link_inertias()[static_cast<std::size_t>(i)];
     ok = ok && std::isfinite(G.mass()) && G.com().allFinite() && G.inertia().allFinite();
   }

@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
     return 1;
   }
   const auto& c = *r.chain;
-  const Eigen::Index n = c.joints();
+  const Eigen::Index n = c.n_joints();
   static const char* const kTypes[] = {"revolute", "continuous", "prismatic"};
   std::printf("{\"names\": [");
   for (std::size_t i = 0; i < r.joint_names.size(); ++i) {

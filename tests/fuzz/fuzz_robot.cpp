@@ -48,7 +48,7 @@
 //   m (|v| + |c||w|)^2 and |I| |w|^2, times the 3 of a 3-term sum).
 //
 // ---- Part 2, dynamics (dynamics.hpp) ----
-// Byte 1: n = 1 + b % 7 joints of a Panda-like 7R arm (Dynamics<T, Dynamic,
+// Byte 1: n = 1 + b % 7 joints of a Panda-like 7R arm (a Chain<T, Dynamic,
 // 7>, physical box inertias). Values: q (7), qd (7), qdd (7), F_tip (6);
 // forward_dynamics takes qdd as its tau (the input stays within 256 bytes).
 // Properties: with q finite (any size: revolute joints), |qd_i|, |qdd_i| <=
@@ -257,14 +257,14 @@ void fuzz_inertia(Bytes& in) {
 // Dynamics.
 
 template <typename T>
-using Dyn = chasles::Dynamics<T, Eigen::Dynamic, kJoints>;
+using Dyn = chasles::Chain<T, Eigen::Dynamic, kJoints>;
 
 /// The first n joints of the Panda-like arm (tests/cpp/support/arms.hpp).
 template <typename T>
 Dyn<T> panda_like(int n) {
   const chasles_test::PandaLike<T> panda;
   const typename Dyn<T>::Screws S = panda.screws.leftCols(n);
-  return Dyn<T>(S, panda.home, panda.inertias, Vec3<T>(T(0), T(0), T(-9.81)));
+  return Dyn<T>(S, panda.home, typename Dyn<T>::HomeAsGiven(), panda.inertias, Vec3<T>(T(0), T(0), T(-9.81)));
 }
 
 template <typename T>
@@ -282,12 +282,12 @@ void fuzz_dynamics(Bytes& in) {
   const D d = panda_like<T>(n);
   const J q = q_all.head(n), qd = qd_all.head(n), qdd = qdd_all.head(n), tau = qdd;
   const chasles::Wrench<T> F(Fv);
-  const J id = d.inverse_dynamics(q, qd, qdd), id_tip = d.inverse_dynamics(q, qd, qdd, F);
-  const typename D::MassMatrix Mq = d.mass_matrix(q);
-  const J grav = d.gravity_torques(q), cor = d.coriolis(q, qd), bias = d.bias(q, qd);
-  const auto forward = d.forward_dynamics(q, qd, tau, F);
+  const J id = inverse_dynamics(d, q, qd, qdd), id_tip = inverse_dynamics(d, q, qd, qdd, F);
+  const typename D::MassMatrix Mq = mass_matrix(d, q);
+  const J grav = gravity_torques(d, q), cor = coriolis(d, q, qd), bias = chasles::bias(d, q, qd);
+  const auto forward = forward_dynamics(d, q, qd, tau, F);
   const J fd = forward.qdd;
-  const T ke = d.kinetic_energy(q, qd), pe = d.potential_energy(q);
+  const T ke = kinetic_energy(d, q, qd), pe = potential_energy(d, q);
 
   const LD max = LD(std::numeric_limits<T>::max());
   const LD Q = std::sqrt(max) / LD(16777216), B = max / std::pow(LD(2), 48);
@@ -303,7 +303,7 @@ void fuzz_dynamics(Bytes& in) {
   const Eigen::Matrix<LD, Eigen::Dynamic, 1> qdl = qd.template cast<LD>();
   const LD quad = qdl.dot(Mq.template cast<LD>() * qdl) / 2;
   LD G = 0;
-  for (int i = 0; i < n; ++i) G = std::max(G, max_abs(d.inertias()[std::size_t(i)].matrix()));
+  for (int i = 0; i < n; ++i) G = std::max(G, max_abs(d.link_inertias()[std::size_t(i)].matrix()));
   const LD s = 2.5L * qdl.cwiseAbs().sum();
   const LD scale = 64 * n * s * s * G;
   // Products that underflow (qd of subnormal size) are off by a few of the

@@ -41,9 +41,9 @@ void check(const std::string& text, const std::string& tip) {
   }
   const auto& c = *r.chain;
   require(static_cast<bool>(c.validate()), "the chain validates", "");
-  require(static_cast<Eigen::Index>(r.joint_names.size()) == c.joints(), "one name per joint", "");
+  require(static_cast<Eigen::Index>(r.joint_names.size()) == c.n_joints(), "one name per joint", "");
   bool finite = c.space_screws().allFinite() && c.home().matrix().allFinite();
-  for (Eigen::Index i = 0; i < c.joints(); ++i) {
+  for (Eigen::Index i = 0; i < c.n_joints(); ++i) {
     const auto& G = c.link_inertias()[static_cast<std::size_t>(i)];
     finite = finite && std::isfinite(G.mass()) && G.com().allFinite() && G.inertia().allFinite();
     finite = finite && !std::isnan(c.lower()(i)) && !std::isnan(c.upper()(i)) && !std::isnan(c.velocity_limits()(i)) &&

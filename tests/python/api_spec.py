@@ -1363,7 +1363,7 @@ def _build_spec():
             call=lambda *a, m=m: getattr(Chain, m)(*a),
             self_first=True,
         )
-    for p in ("screws", "body_screws", "home", "n_joints", "joint_types", "names", "lower", "upper",
+    for p in ("space_screws", "body_screws", "home", "n_joints", "joint_types", "joint_names", "lower", "upper",
               "velocity_limits", "effort_limits", "base", "tool", "gravity", "link_inertias"):
         spec[f"Chain.{p}"] = _prop(Chain, p)
     spec["Chain.from_urdf"] = Entry(

@@ -641,7 +641,7 @@ def test_uninitialized_objects_are_never_read():
         (Screw, lambda x: x.__copy__()),
         (Screw, lambda x: x.__getstate__()),
         (Chain, lambda x: x.n_joints),
-        (Chain, lambda x: x.screws),
+        (Chain, lambda x: x.space_screws),
         (Chain, lambda x: x.body_screws),
         (Chain, lambda x: x.home),
         (Chain, lambda x: x.__reduce_ex__(2)),

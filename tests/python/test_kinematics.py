@@ -140,7 +140,7 @@ def test_strided_and_integer_input():
         arm.jacobian_body([1, 0, 0, 0, 0, 0]), arm.jacobian_body([1.0, 0, 0, 0, 0, 0])
     )
     fortran = np.asfortranarray(UR5_SCREWS)
-    np.testing.assert_array_equal(Chain(fortran, UR5_HOME).screws, UR5_SCREWS)
+    np.testing.assert_array_equal(Chain(fortran, UR5_HOME).space_screws, UR5_SCREWS)
 
 
 def test_screws_and_properties():
@@ -157,8 +157,8 @@ def test_screws_and_properties():
     )
     arm = Chain(UR5_SCREWS, UR5_HOME)
     assert arm.n_joints == 6
-    np.testing.assert_array_equal(arm.screws, UR5_SCREWS)
-    assert arm.screws.shape == arm.body_screws.shape == (6, 6)
+    np.testing.assert_array_equal(arm.space_screws, UR5_SCREWS)
+    assert arm.space_screws.shape == arm.body_screws.shape == (6, 6)
     np.testing.assert_array_equal(arm.home.as_matrix(), UR5_HOME)
     M_inv = np.linalg.inv(UR5_HOME)
     for s, b in zip(UR5_SCREWS, arm.body_screws):
@@ -260,7 +260,7 @@ def test_docstring_examples_run(name, doc):
 
 def test_model_keywords_properties_and_folding():
     arm = Chain(UR5_SCREWS, UR5_HOME)
-    assert arm.joint_types == ("revolute",) * 6 and arm.names is None and arm.link_inertias is None
+    assert arm.joint_types == ("revolute",) * 6 and arm.joint_names is None and arm.link_inertias is None
     assert np.isinf(arm.lower).all() and (arm.lower < 0).all() and (arm.upper > 0).all()
     np.testing.assert_array_equal(arm.gravity, [0, 0, -9.81])
     base = SE3.exp([0.5, -0.2, 1.0, 0.3, -0.1, 0.7])
@@ -272,7 +272,7 @@ def test_model_keywords_properties_and_folding():
     model = Chain(RAIL_SCREWS, UR5_HOME, joint_types=types, names=names, lower=lo, upper=hi,
                   velocity_limits=np.full(7, 2.0), effort_limits=np.arange(7.0), base=base, tool=tool,
                   gravity=[0, 0.1, -9.8], link_inertias=np.ones((7, 10)))
-    assert model.joint_types == tuple(types) and model.names == tuple(names)
+    assert model.joint_types == tuple(types) and model.joint_names == tuple(names)
     np.testing.assert_array_equal(model.lower, lo)
     np.testing.assert_array_equal(model.upper, hi)
     np.testing.assert_array_equal(model.velocity_limits, np.full(7, 2.0))
@@ -293,10 +293,51 @@ def test_model_keywords_properties_and_folding():
     import pickle
 
     for other in (pickle.loads(pickle.dumps(model)), copy.deepcopy(model)):
-        assert other == model and other.names == model.names
+        assert other == model and other.joint_names == model.joint_names
         np.testing.assert_array_equal(other.link_inertias, model.link_inertias)
     assert pickle.loads(pickle.dumps(arm)) == arm
     assert model != plain
+
+
+def test_one_vocabulary_space_screws_and_joint_names_with_deprecated_aliases():
+    """space_screws and joint_names are the names (C++ Chain::space_screws(),
+    UrdfChain::joint_names); screws and names stay for one release, warning."""
+    arm = Chain(UR5_SCREWS, UR5_HOME, names=[f"j{i}" for i in range(6)])
+    np.testing.assert_array_equal(arm.space_screws, UR5_SCREWS)
+    assert arm.space_screws.shape == (6, 6) and arm.joint_names == tuple(f"j{i}" for i in range(6))
+    with pytest.warns(DeprecationWarning, match=r"Chain.screws is deprecated: use Chain.space_screws"):
+        np.testing.assert_array_equal(arm.screws, arm.space_screws)
+    with pytest.warns(DeprecationWarning, match=r"Chain.names is deprecated: use Chain.joint_names"):
+        assert arm.names == arm.joint_names
+
+
+def test_link_inertias_as_spatial_inertias_or_packed_rows_give_equal_chains():
+    bodies = [chasles.SpatialInertia(1.0 + i, [0.1 * i, 0.0, 0.05], [[0.02, 0.001, 0.0], [0.001, 0.03, 0.0],
+                                                                       [0.0, 0.0, 0.04]]) for i in range(6)]
+    rows = [[b.mass, *b.com, b.inertia[0, 0], b.inertia[0, 1], b.inertia[0, 2], b.inertia[1, 1],
+             b.inertia[1, 2], b.inertia[2, 2]] for b in bodies]
+    base = SE3.exp([0.1, 0.2, 0.3, 0.4, 0.5, 0.6])
+    a = Chain(UR5_SCREWS, UR5_HOME, link_inertias=bodies, base=base)
+    b = Chain(UR5_SCREWS, UR5_HOME, link_inertias=np.array(rows), base=base)
+    assert a == b
+    np.testing.assert_array_equal(a.link_inertias, b.link_inertias)
+    q = np.linspace(-1.0, 1.0, 6)
+    np.testing.assert_array_equal(a.mass_matrix(q), b.mass_matrix(q))
+    np.testing.assert_array_equal(a.inverse_dynamics(q, q, q), b.inverse_dynamics(q, q, q))
+    with pytest.raises(ValueError, match=r"Chain\(link_inertias\): expected shape \(6, 10\)"):
+        Chain(UR5_SCREWS, UR5_HOME, link_inertias=bodies[:5])
+
+
+def test_the_model_is_the_extensions_chain_and_old_pickles_name_it():
+    """chasles.Chain subclasses the private extension class that holds the C++
+    chain; the computing methods are the extension's own (no Python frame per
+    call); chasles 0.1.0's pickles name chasles._core.Chain, which is it."""
+    from chasles import _core
+
+    assert issubclass(Chain, _core._Chain) and _core.Chain is Chain
+    for name in ("forward", "forward_body", "jacobian_space", "jacobian_body", "inverse_dynamics",
+                 "forward_dynamics", "mass_matrix", "gravity_torques", "coriolis"):
+        assert vars(Chain)[name] is vars(_core._Chain)[name]
 
 
 def test_model_validation():

@@ -225,7 +225,7 @@ def pickles_and_chains(i):
     pickle.loads(pickle.dumps(x))
     CHAIN.forward(THETAS[i % 8])
     CHAIN.jacobian_body(THETAS)
-    _ = CHAIN.screws, CHAIN.home
+    _ = CHAIN.space_screws, CHAIN.home
 
 
 def test_pickles_and_kinematics_leave_memory_flat():

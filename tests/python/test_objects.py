@@ -821,7 +821,7 @@ def test_chain_pickles_its_screws_and_home_and_rebuilds_the_rest():
     arm = all_kinds()[-1]
     state = arm.__getstate__()
     assert len(state) == 6 * arm.n_joints + 12
-    assert np.array_equal(np.array(state[:12]).reshape(2, 6), arm.screws)
+    assert np.array_equal(np.array(state[:12]).reshape(2, 6), arm.space_screws)
     back = pickle.loads(pickle.dumps(arm))
     assert back.body_screws.tobytes() == arm.body_screws.tobytes()
     assert (

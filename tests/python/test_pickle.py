@@ -140,6 +140,10 @@ def _chain_screw(i, value):
     """A chain's state with entry i of its first screw (v, w) set to value."""
 
     def change(state):
+        if isinstance(state[0], type):  # the constructor's arguments (class, screws, home, keywords)
+            screws = np.array(state[1])
+            screws.flat[i] = value
+            return (state[0], screws) + tuple(state[2:])
         if isinstance(state[0], tuple):  # (numbers, names, inertias)
             return (_set(i, value)(state[0]),) + tuple(state[1:])
         return _set(i, value)(state)

@@ -334,7 +334,7 @@ def test_chain_points_move_as_the_partial_chains(ax, name):
             if m == 0:
                 expected = home[k]
             else:
-                partial = Chain(arm.screws[:m], SE3(translation=home[k]))
+                partial = Chain(arm.space_screws[:m], SE3(translation=home[k]))
                 expected = partial.forward(q[:m])[:3, 3]
             assert np.allclose(drawn.points[k], expected, atol=TOL, rtol=0), (k, m)
         # The tool frame at chain.forward(q), the base frame at chain.base.

@@ -17,7 +17,7 @@ ARM = chasles.Chain(
     chasles.SE3(translation=[0.6, 0.0, 0.3]),
     link_inertias=[[1.0 + i, 0.1, 0.0, 0.05 * i, 0.02, 0.0, 0.0, 0.02, 0.0, 0.01] for i in range(5)],
 )
-S, M = ARM.screws, np.asarray(ARM.home)
+S, M = ARM.space_screws, np.asarray(ARM.home)
 
 PRIVATE = {
     "_chain_forward": ("(n,6),(4,4),(n)->(4,4)", ["ddd->d"]),

@@ -48,7 +48,7 @@ def arms():
 def reference_forward(chain, q):
     """The product of exponentials by scipy's expm of 4x4 hat matrices."""
     g = np.eye(4)
-    for s, t in zip(chain.screws, q):
+    for s, t in zip(chain.space_screws, q):
         g = g @ expm(hat6(s * t))
     return g @ np.asarray(chain.home)
 
@@ -175,7 +175,7 @@ def to_modern_robotics(chain):
         Mlist.append(np.linalg.inv(previous) @ T)
         previous = T
     Mlist.append(np.linalg.inv(previous) @ np.asarray(chain.home))
-    return chain.screws[:, [3, 4, 5, 0, 1, 2]].T, np.array(Mlist), np.array(Glist)
+    return chain.space_screws[:, [3, 4, 5, 0, 1, 2]].T, np.array(Mlist), np.array(Glist)
 
 
 def assert_close(actual, expected, rtol=1e-12):
@@ -243,9 +243,9 @@ def test_dynamics_one_configuration_gives_the_bits_of_the_gufuncs(arms):
     ur5 = arms["ur5"]
     base = SE3.exp([0.3, -0.2, 0.5, 0.4, -0.7, 1.1])
     chain = Chain(
-        ur5.screws, ur5.home, link_inertias=ur5.link_inertias, base=base, gravity=[0.1, -0.2, -9.7]
+        ur5.space_screws, ur5.home, link_inertias=ur5.link_inertias, base=base, gravity=[0.1, -0.2, -9.7]
     )
-    S, M, G, g = chain.screws, np.asarray(chain.home), world_inertias(chain), chain.gravity
+    S, M, G, g = chain.space_screws, np.asarray(chain.home), world_inertias(chain), chain.gravity
     rng = np.random.default_rng(8)
     q, qd, x = rng.uniform(-2, 2, (3, 6))
     tip = rng.uniform(-5, 5, 6)
@@ -278,9 +278,9 @@ def test_dynamics_base_frame_moves_the_inertias(arms):
     without it under gravity rotated into the base frame."""
     ur5 = arms["ur5"]
     base = SE3.exp([0.3, -0.2, 0.5, 0.4, -0.7, 1.1])
-    based = Chain(ur5.screws, ur5.home, link_inertias=ur5.link_inertias, base=base)
+    based = Chain(ur5.space_screws, ur5.home, link_inertias=ur5.link_inertias, base=base)
     rotated = base.rotation.as_matrix().T @ based.gravity
-    plain = Chain(ur5.screws, ur5.home, link_inertias=ur5.link_inertias, gravity=rotated)
+    plain = Chain(ur5.space_screws, ur5.home, link_inertias=ur5.link_inertias, gravity=rotated)
     rng = np.random.default_rng(9)
     q, qd, qdd = rng.uniform(-2, 2, (3, 4, 6))
     tip = rng.uniform(-5, 5, 6)
@@ -288,7 +288,7 @@ def test_dynamics_base_frame_moves_the_inertias(arms):
     assert_close(based.mass_matrix(q), plain.mass_matrix(q))
     assert_close(based.forward_dynamics(q, qd, qdd), plain.forward_dynamics(q, qd, qdd), 1e-10)
     # and not without rotating gravity
-    unrotated = Chain(ur5.screws, ur5.home, link_inertias=ur5.link_inertias)
+    unrotated = Chain(ur5.space_screws, ur5.home, link_inertias=ur5.link_inertias)
     assert not np.allclose(based.gravity_torques(q), unrotated.gravity_torques(q))
 
 
@@ -299,8 +299,8 @@ def test_a_massless_link_adds_nothing(arms):
     ur5 = arms["ur5"]
     inertias = ur5.link_inertias.copy()
     inertias[5] = 0.0
-    chain = Chain(ur5.screws, ur5.home, link_inertias=inertias)
-    shorter = Chain(ur5.screws[:5], ur5.home, link_inertias=inertias[:5])
+    chain = Chain(ur5.space_screws, ur5.home, link_inertias=inertias)
+    shorter = Chain(ur5.space_screws[:5], ur5.home, link_inertias=inertias[:5])
     rng = np.random.default_rng(10)
     q, qd, qdd = rng.uniform(-2, 2, (3, 6))
     for single in (q, list(q)):  # the fast path
@@ -313,7 +313,7 @@ def test_a_massless_link_adds_nothing(arms):
 
 
 def test_dynamics_need_link_inertias_and_matching_shapes(arms):
-    bare = Chain(arms["ur5"].screws, arms["ur5"].home)
+    bare = Chain(arms["ur5"].space_screws, arms["ur5"].home)
     with pytest.raises(ValueError, match=r"Chain.gravity_torques: the chain has no link inertias"):
         bare.gravity_torques(np.zeros(6))
     with pytest.raises(ValueError, match=r"Chain.mass_matrix\(q\): expected shape \(6,\)"):
@@ -333,12 +333,12 @@ def point_masses_on_axes(chain, offset=0.0):
     their joints' axes (the point nearest the origin, 0.1 m along), `offset`
     off the axis along a normal."""
     rows = chain.link_inertias.copy()
-    for i, s in enumerate(chain.screws):
+    for i, s in enumerate(chain.space_screws):
         v, w = s[:3], s[3:]
         normal = np.cross(w, [1.0, 0.0, 0.0] if abs(w[0]) < 0.9 else [0.0, 1.0, 0.0])
         rows[i, 1:4] = np.cross(w, v) + 0.1 * w + offset * normal / np.linalg.norm(normal)
         rows[i, 4:] = 0.0
-    return Chain(chain.screws, chain.home, link_inertias=rows)
+    return Chain(chain.space_screws, chain.home, link_inertias=rows)
 
 
 # A two-link arm whose second link's I_zz has a sign error (principal moments
@@ -363,7 +363,7 @@ def not_positive_definite_chains(arms):
     massless_hand = ur5.link_inertias.copy()
     massless_hand[5] = 0.0
     return {
-        "massless last link": (Chain(ur5.screws, ur5.home, link_inertias=massless_hand), 5),
+        "massless last link": (Chain(ur5.space_screws, ur5.home, link_inertias=massless_hand), 5),
         "point masses on the joint axes": (point_masses_on_axes(arms["panda"]), 6),
         # 1e-9 m off the axis: M_77 = m d^2 = 1e-18 kg m^2, rounding in the sums of its terms
         "nearly singular": (point_masses_on_axes(arms["panda"], 1e-9), 6),
@@ -398,7 +398,7 @@ def test_forward_dynamics_raises_where_the_mass_matrix_is_not_positive_definite(
         C = np.array([[0, -c[2], c[1]], [c[2], 0, -c[0]], [-c[1], c[0], 0]])
         Ic = np.array([[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]])
         G.append(np.block([[m * np.eye(3), -m * C], [m * C, Ic - m * C @ C]]))
-    qdd, joints = _core._forward_dynamics(chain.screws, np.asarray(chain.home), np.array(G), chain.gravity,
+    qdd, joints = _core._forward_dynamics(chain.space_screws, np.asarray(chain.home), np.array(G), chain.gravity,
                                            Q, qd, tau, np.zeros(6))
     assert joints.dtype == np.int32 and joints.shape == (2, 3) and (joints == joint).all() and np.isnan(qdd).all()
 

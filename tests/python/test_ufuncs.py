@@ -127,9 +127,9 @@ def test_objects_point_actions_equal_the_array_functions_bit_for_bit():
 
 
 def test_chain_methods_equal_their_gufuncs():
-    arm = chasles.Chain(A.GOOD[chasles.Chain]().screws, A.GOOD[chasles.Chain]().home)
+    arm = chasles.Chain(A.GOOD[chasles.Chain]().space_screws, A.GOOD[chasles.Chain]().home)
     theta = np.random.default_rng(5).normal(size=(4, 3, arm.n_joints))
-    S, M = arm.screws, np.asarray(arm.home)
+    S, M = arm.space_screws, np.asarray(arm.home)
     core = chasles._core
     np.testing.assert_array_equal(arm.forward(theta), core._chain_forward(S, M, theta))
     np.testing.assert_array_equal(arm.forward_body(theta), core._chain_forward_body(S, M, theta))

@@ -133,7 +133,7 @@ def test_names_types_and_limits_as_in_the_file(arms, key):
     if key not in arms:
         pytest.skip(f"{ARMS[key][0]} is not in this version of example-robot-data")
     chain, moving, _ = arms[key]
-    assert chain.names == tuple(j.get("name") for j in moving)
+    assert chain.joint_names == tuple(j.get("name") for j in moving)
     assert chain.joint_types == tuple(j.get("type") for j in moving)
     for i, j in enumerate(moving):
         limit = j.find("limit")
@@ -151,7 +151,7 @@ def test_names_types_and_limits_as_in_the_file(arms, key):
 def test_ur5_values_and_link_inertias(arms):
     chain = arms["ur5"][0]
     assert chain.n_joints == 6
-    assert chain.names[0] == "shoulder_pan_joint"
+    assert chain.joint_names[0] == "shoulder_pan_joint"
     np.testing.assert_array_equal(chain.upper[:2], [6.28318530718, 6.28318530718])
     np.testing.assert_array_equal(chain.effort_limits, [150, 150, 150, 28, 28, 28])
     inertias = chain.link_inertias
@@ -238,11 +238,11 @@ GOOD = joint("j1", "revolute", "a", "b") + joint("j2", "continuous", "b", "c", '
 
 def test_small_description_parses():
     arm = Chain.from_urdf(urdf(GOOD), "c")
-    assert arm.names == ("j1", "j2") and arm.joint_types == ("revolute", "continuous")
-    np.testing.assert_array_equal(arm.screws[1], [0, 0, 0, 0, 1, 0])  # the axis normalized
+    assert arm.joint_names == ("j1", "j2") and arm.joint_types == ("revolute", "continuous")
+    np.testing.assert_array_equal(arm.space_screws[1], [0, 0, 0, 0, 1, 0])  # the axis normalized
     np.testing.assert_array_equal(arm.lower, [-1, -np.inf])
     assert arm.link_inertias.shape == (2, 10)
-    assert Chain.from_urdf(urdf(GOOD), "c", "b").names == ("j2",)
+    assert Chain.from_urdf(urdf(GOOD), "c", "b").joint_names == ("j2",)
 
 
 def test_links_hanging_off_the_chain_ride_on_their_chain_link():
@@ -345,7 +345,7 @@ def test_hostile_descriptions_that_load(name):
     case = HOSTILE[name]
     arm = Chain.from_urdf(case.text, case.tip, case.base)
     assert arm.n_joints >= 1
-    assert np.isfinite(arm.screws).all() and np.isfinite(arm.link_inertias).all()
+    assert np.isfinite(arm.space_screws).all() and np.isfinite(arm.link_inertias).all()
 
 
 @pytest.mark.parametrize("name", [n for n, c in HOSTILE.items() if c.error is not None])
@@ -425,9 +425,9 @@ def test_numbers_are_printed_shortest_without_a_trailing_zero():
 
 def test_huge_axis_and_origin():
     arm = Chain.from_urdf(HOSTILE["axis of 1e308"].text, "c")
-    np.testing.assert_allclose(arm.screws[0, 3:], [2**-0.5, 2**-0.5, 0], rtol=0, atol=1e-16)
+    np.testing.assert_allclose(arm.space_screws[0, 3:], [2**-0.5, 2**-0.5, 0], rtol=0, atol=1e-16)
     arm = Chain.from_urdf(HOSTILE["tiny axis"].text, "c")  # subnormal components: scaled before the norm
-    np.testing.assert_allclose(arm.screws[0, :3], [0, 0.6, 0.8], rtol=0, atol=1e-16)
+    np.testing.assert_allclose(arm.space_screws[0, :3], [0, 0.6, 0.8], rtol=0, atol=1e-16)
     arm = Chain.from_urdf(HOSTILE["origin of 1e308 once"].text, "c")
     assert np.asarray(arm.home)[0, 3] == 1e308 + 0.3
 

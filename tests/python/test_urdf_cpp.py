@@ -71,10 +71,10 @@ def dump(*args, timeout=60):
 def assert_same_chain(cpp, py, rtol=0.0):
     """The chain the C++ program printed equals the Python one (to 1e-14,
     and relatively to rtol for huge numbers)."""
-    assert tuple(cpp["names"]) == py.names
+    assert tuple(cpp["names"]) == py.joint_names
     assert tuple(cpp["joint_types"]) == py.joint_types
     close = {"rtol": rtol, "atol": 1e-14}
-    np.testing.assert_allclose(cpp["screws"], py.screws, **close)
+    np.testing.assert_allclose(cpp["screws"], py.space_screws, **close)
     np.testing.assert_allclose(cpp["home"], np.asarray(py.home), **close)
     for name in ("lower", "upper", "velocity_limits", "effort_limits"):
         np.testing.assert_allclose(cpp[name], getattr(py, name), **close, err_msg=name)  # inf == inf

@@ -166,7 +166,7 @@ S exercise_all() noexcept {
   for (int i = 0; i < 6; ++i) th6(i) = S(0.1) * S(i + 1);
   sum += c6.forward(th6).translation().sum() + c6.forward_body(th6).translation().sum();
   sum += c6.jacobian_space(th6).sum() + c6.jacobian_body(th6).sum();
-  sum += S(RealOf<S>(c6.joints())) + c6.space_screws().sum() + c6.body_screws().sum() + c6.home().translation().sum();
+  sum += S(RealOf<S>(c6.n_joints())) + c6.space_screws().sum() + c6.body_screws().sum() + c6.home().translation().sum();
   typename CD::Screws SD(6, 7);
   SD.template leftCols<6>() = S6;
   SD.col(6) = CD::revolute_screw(p, w);
@@ -175,7 +175,7 @@ S exercise_all() noexcept {
   for (int i = 0; i < 7; ++i) thd(i) = S(-0.2) * S(i + 1);
   sum += cd.forward(thd).translation().sum() + cd.forward_body(thd).translation().sum();
   sum += cd.jacobian_space(thd).sum() + cd.jacobian_body(thd).sum();
-  sum += S(RealOf<S>(cd.joints())) + cd.space_screws().sum() + cd.body_screws().sum() + cd.home().translation().sum();
+  sum += S(RealOf<S>(cd.n_joints())) + cd.space_screws().sum() + cd.body_screws().sum() + cd.home().translation().sum();
 
   // Inverse kinematics (inverse_kinematics.hpp): with and without limits.
   const SE3<S> target = c6.forward(typename C6::JointVector(th6 * S(1.1)));
@@ -339,9 +339,9 @@ S exercise_all() noexcept {
     for (const SpatialInertia<S>& b : bodies) sum += S(b.is_physical() ? 1 : 0) + b.symmetry_defect();
   }
 
-  // Dynamics (dynamics.hpp): fixed size, and dynamic with a compile-time bound.
-  using D6 = Dynamics<S, 6>;
-  using DD = Dynamics<S, Eigen::Dynamic, 8>;
+  // Dynamics (dynamics.hpp, free functions of a Chain): fixed size, and dynamic with a compile-time bound.
+  using D6 = Chain<S, 6>;
+  using DD = Chain<S, Eigen::Dynamic, 8>;
   typename D6::Inertias I6;
   typename DD::Inertias ID;
   for (std::size_t i = 0; i < 8; ++i) {
@@ -350,27 +350,26 @@ S exercise_all() noexcept {
   }
   const V3 gravity(S(0), S(0), S(-9.81));
   const Wrench<S> tip(p, w);
-  D6 d6(S6, g, I6, gravity);
+  D6 d6(S6, g, typename D6::HomeAsGiven(), I6, gravity);
   const typename D6::JointVector qd6 = th6 * S(2), qdd6 = th6 * S(-3);
-  sum += d6.inverse_dynamics(th6, qd6, qdd6).sum() + d6.inverse_dynamics(th6, qd6, qdd6, tip).sum();
-  sum += d6.mass_matrix(th6).sum() + d6.gravity_torques(th6).sum() + d6.coriolis(th6, qd6).sum();
-  sum += d6.bias(th6, qd6).sum() + d6.forward_dynamics(th6, qd6, qdd6).qdd.sum() + d6.forward_dynamics(th6, qd6, qdd6, tip).qdd.sum();
-  sum += d6.kinetic_energy(th6, qd6) + d6.potential_energy(th6);
-  d6.set_gravity(V3(gravity * S(2)));
-  sum += S(RealOf<S>(d6.joints())) + d6.space_screws().sum() + d6.home().translation().sum() +
-         d6.inertias()[0].mass() + d6.gravity().sum();
+  sum += inverse_dynamics(d6, th6, qd6, qdd6).sum() + inverse_dynamics(d6, th6, qd6, qdd6, tip).sum();
+  sum += mass_matrix(d6, th6).sum() + gravity_torques(d6, th6).sum() + coriolis(d6, th6, qd6).sum();
+  sum += bias(d6, th6, qd6).sum() + forward_dynamics(d6, th6, qd6, qdd6).qdd.sum() + forward_dynamics(d6, th6, qd6, qdd6, tip).qdd.sum();
+  sum += kinetic_energy(d6, th6, qd6) + potential_energy(d6, th6);
+  sum += S(RealOf<S>(d6.n_joints())) + d6.space_screws().sum() + d6.home().translation().sum() +
+         d6.link_inertias()[0].mass() + d6.gravity().sum();
   const DD dd(SD, h, ID, gravity);
   const typename DD::JointVector qdd = thd * S(2), qddd = thd * S(-3);
-  sum += dd.inverse_dynamics(thd, qdd, qddd, tip).sum() + dd.mass_matrix(thd).sum() + dd.gravity_torques(thd).sum();
-  sum += dd.coriolis(thd, qdd).sum() + dd.bias(thd, qdd).sum() + dd.forward_dynamics(thd, qdd, qddd, tip).qdd.sum();
-  sum += dd.kinetic_energy(thd, qdd) + dd.potential_energy(thd);
+  sum += inverse_dynamics(dd, thd, qdd, qddd, tip).sum() + mass_matrix(dd, thd).sum() + gravity_torques(dd, thd).sum();
+  sum += coriolis(dd, thd, qdd).sum() + bias(dd, thd, qdd).sum() + forward_dynamics(dd, thd, qdd, qddd, tip).qdd.sum();
+  sum += kinetic_energy(dd, thd, qdd) + potential_energy(dd, thd);
   // A Chain carrying its link inertias (moved by its base frame), and its Dynamics.
   const CD heavy(SD, h, types, lo, hi, CD::JointVector::Constant(7, S(3)), CD::JointVector::Constant(7, S(50)), g, h,
                  CD::default_gravity(), ID);
   sum += heavy.link_inertias()[3].com().sum() + model.link_inertias()[0].mass();
   sum += S(RealOf<S>(int(heavy.validate().status)));
   const DD from_chain(heavy);
-  sum += from_chain.inverse_dynamics(thd, qdd, qddd, tip).sum() + from_chain.mass_matrix(thd).sum();
+  sum += inverse_dynamics(from_chain, thd, qdd, qddd, tip).sum() + mass_matrix(from_chain, thd).sum();
   return sum;
 }
 
