@@ -49,21 +49,6 @@ Example:
 
 std::string class_doc() { return std::string(kClassDoc) + kConventions; }
 
-/// The Twist inside h, or nullptr for an object of another type (TypeError
-/// for an uninitialized Twist).
-const Twistd* twist_or_null(py::handle h) {
-  py::detail::make_caster<Obj<Twistd>> caster;
-  if (!caster.load(h, false)) return nullptr;
-  return static_cast<Obj<Twistd>&>(caster).ptr;
-}
-
-/// A twist (v, w) given as a Twist or as anything array-like of shape (6,).
-Vector6 twist_vector(py::handle h, const char* what) {
-  if (is_native_float64_array(h.ptr())) return to_finite_eigen<6>(h, what);
-  if (const Twistd* xi = twist_or_null(h)) return xi->vector();
-  return to_finite_eigen<6>(h, what);
-}
-
 /// Why SE3(...) refused its arguments, and what to call instead (the
 /// constructor takes an SO3 and a translation; raw matrices have their own
 /// checked constructors).
@@ -71,8 +56,7 @@ std::string explain_se3_refusal(const py::args& args, const py::kwargs& kwargs) 
   const char* usage = "SE3(rotation, translation) takes an SO3 and a translation of shape (3,)";
   for (const auto& kw : kwargs) {
     const std::string key = py::str(kw.first);
-    if (key != "rotation" && key != "translation")
-      return "SE3(): unexpected keyword argument '" + key + "'; " + usage;
+    if (key != "rotation" && key != "translation") return "SE3(): unexpected keyword argument '" + key + "'; " + usage;
     if ((key == "rotation" && args.size() >= 1) || (key == "translation" && args.size() >= 2))
       return "SE3(): " + key + " given by position and by keyword; " + usage;
   }
@@ -104,24 +88,23 @@ std::string explain_se3_refusal(const py::args& args, const py::kwargs& kwargs) 
   }
   if (raw && shape == std::vector<Py_intptr_t>{3} && args.size() == 1 && kwargs.empty())
     return msg + ". A translation alone is SE3(translation=p).";
-  if (raw && shape == std::vector<Py_intptr_t>{6})
-    return msg + ". The motion of a twist xi = (v, w) is SE3.exp(xi).";
+  if (raw && shape == std::vector<Py_intptr_t>{6}) return msg + ". The motion of a twist xi = (v, w) is SE3.exp(xi).";
   return msg + ". SO3.exp(w), SO3.from_quat(quat) and SO3.from_matrix(matrix) make one; " + usage + ".";
 }
 
 /// The error of SE3.from_matrix (and of SE3.__setstate__, which has no tol
 /// to pass).
-[[noreturn]] void raise_not_rigid(const Matrix4& M, double tol, const char* fn = "SE3.from_matrix",
-                                  bool tol_argument = true) {
+[[noreturn]] void raise_not_rigid(const Matrix4& M, double tol, const char* fn, bool tol_argument) {
   const double rot = SO3d::rotation_defect(M.topLeftCorner<3, 3>());
   const double det = M.topLeftCorner<3, 3>().determinant();
   double row = 0.0;
   for (int j = 0; j < 4; ++j) row = std::max(row, std::abs(M(3, j) - (j == 3 ? 1.0 : 0.0)));
-  std::string msg = std::string(fn) + ": not a rigid motion: the top-left 3x3 block has rotation defect "
+  std::string msg = std::string(fn) +
+                    ": not a rigid motion: the top-left 3x3 block has rotation defect "
                     "max(|R^T R - I|, |det R - 1|) = " +
                     short_float(rot) + " (det R = " + det_string(det) +
-                    ") and the bottom row differs from (0, 0, 0, 1) by " + short_float(row) + "; tol = " +
-                    short_float(tol) + ". ";
+                    ") and the bottom row differs from (0, 0, 0, 1) by " + short_float(row) +
+                    "; tol = " + short_float(tol) + ". ";
   if (det < 0) msg += "A negative determinant is a reflection, not a rotation. ";
   if (row > tol) msg += "A rigid motion's bottom row is exactly (0, 0, 0, 1). ";
   msg += std::string("Use SE3.from_matrix_projected(matrix) for the nearest rotation (it ignores the bottom row)") +
@@ -142,8 +125,6 @@ void bind_se3(Class<SE3d>& cls) {
   static const std::string doc = class_doc();
   cls.attr("__doc__") = doc;
   hold_inline(cls);
-  // What SO3 and SE3 share (lie_group.hpp), first: the composition comes
-  // before the action on points among the overloads of @.
 
   // ---- scipy and random ---------------------------------------------------
 
@@ -151,18 +132,19 @@ void bind_se3(Class<SE3d>& cls) {
       "from_scipy",
       [](py::object tf) {
         const char* what = "SE3.from_scipy(tf)";
-        check_single_scipy(tf, "RigidTransform", what,
-                           "A stack is an array for the array functions: tf.as_matrix() (shape (..., 4, 4)) for se3_log, se3_compose, "
-    "se3_act, ...; tf[i] is one RigidTransform.");
+        check_single_scipy(
+            tf, "RigidTransform", what,
+            "A stack is an array for the array functions: tf.as_matrix() (shape (..., 4, 4)) for se3_log, se3_compose, "
+            "se3_act, ...; tf[i] is one RigidTransform.");
         const Eigen::Matrix4d M = to_finite_eigen<4, 4>(tf.attr("as_matrix")(), what);
         const auto g = SE3d::from_matrix(M, kRotationTolerance);
         if (!g) {
           // Only a RigidTransform built with normalize=False can get here.
-          raise_value_error(std::string(what) + ": the transform's matrix is not a rigid motion: rotation defect " +
-                            "max(|R^T R - I|, |det R - 1|) = " +
-                            std::to_string(SO3d::rotation_defect(M.topLeftCorner<3, 3>())) + " (tol " +
-                            std::to_string(kRotationTolerance) +
-                            "); use SE3.from_matrix_projected(tf.as_matrix()) for the nearest rotation");
+          raise_value_error(
+              std::string(what) + ": the transform's matrix is not a rigid motion: rotation defect " +
+              "max(|R^T R - I|, |det R - 1|) = " + std::to_string(SO3d::rotation_defect(M.topLeftCorner<3, 3>())) +
+              " (tol " + std::to_string(kRotationTolerance) +
+              "); use SE3.from_matrix_projected(tf.as_matrix()) for the nearest rotation");
         }
         return *g;
       },
@@ -250,8 +232,32 @@ Example:
     True
 )doc");
 
+  // The actions on twists and wrenches before the one on points (def_lie_group; a Twist is array-like too,
+  // through __array__).
+  cls.def(
+      "act", [](Obj<SE3d> g, Obj<Twistd> xi) { return g->act(*xi); }, py::arg("twist"),
+      R"doc(A twist from frame b to frame a: xi_a = Ad_g xi_b = (R v + p x R w, R w).
+
+Args:
+    twist: Twist, xi_b.
+
+Returns:
+    Twist: xi_a.
+)doc");
+  cls.def(
+      "act", [](Obj<SE3d> g, Obj<Wrenchd> F) { return g->act(*F); }, py::arg("wrench"),
+      R"doc(A wrench from frame b to frame a: F_a = Ad_g^-T F_b = (R f, p x R f + R tau).
+
+Args:
+    wrench: Wrench, F_b.
+
+Returns:
+    Wrench: F_a.
+)doc");
+
   // What SO3 and SE3 share (lie_group.hpp), first: the composition comes
-  // before the action on points among the overloads of @. The state: R row by row, then p; checked as SE3.from_matrix checks the matrix.
+  // before the action on points among the overloads of @. The state: R row by row, then p; checked as SE3.from_matrix
+  // checks the matrix.
   def_lie_group<12>(
       cls,
       [](const SE3d& g) {
@@ -275,7 +281,8 @@ Example:
           raise_not_rigid(M, kRotationTolerance, "SE3.__setstate__", false);
         }
         return SE3d(SO3d::from_matrix_unchecked(R), p);
-      });
+      },
+      raise_not_rigid);
   cls.attr("__array_ufunc__") = py::none();  // numpy defers operators to us
 
   cls.def(py::init([](Obj<SO3d> rotation, ArrayLike translation) {
@@ -303,136 +310,6 @@ Returns:
     SE3: the identity.
 )doc");
 
-  // ---- exp and log --------------------------------------------------------
-
-  cls.def_static(
-      "exp", [](ArrayLike xi) { return SE3d::exp(twist_vector(xi.obj, "SE3.exp(xi)")); }, py::arg("xi"),
-      R"doc(The screw motion exp([xi]) of a twist xi = (v, w), linear part first.
-
-In closed form, with theta = |w|: R = exp([w]), p = V v,
-V = I + ((1 - cos theta) / theta^2) [w] + ((theta - sin theta) / theta^3) [w]^2;
-w = 0 (pure translation) and tiny w included, exact to a few ulps.
-
-Args:
-    xi: twist coordinates (v, w), shape (6,), finite; or a Twist.
-
-Returns:
-    SE3: exp([xi]).
-
-Example:
-    >>> g = SE3.exp([1.0, 0.0, 0.0, 0.0, 0.0, np.pi / 2])
-    >>> np.round(g.translation, 12) + 0.0
-    array([0.63661977, 0.63661977, 0.        ])
-)doc");
-
-  cls.def(
-      "log", [](Obj<SE3d> g) { return vec_out<6>(g->log()); },
-      R"doc(The twist xi = (v, w) with exp([xi]) = g, rotation angle |w| in [0, pi].
-
-w = log(R); v = V^-1 p. At a rotation angle of exactly pi either axis sign is
-returned, never NaN.
-
-Returns:
-    ndarray: xi = (v, w), shape (6,), linear part first.
-
-Example:
-    >>> SE3(translation=[1.0, 2.0, 3.0]).log()
-    array([1., 2., 3., 0., 0., 0.])
-)doc");
-
-  cls.def_static(
-      "hat", [](ArrayLike xi) { return mat_out<4, 4>(SE3d::hat(to_eigen<6>(xi.obj, "SE3.hat(xi)"))); },
-      py::arg("xi"),
-      R"doc(The 4x4 matrix [xi] = [[ [w], v ], [0, 0]] of a twist xi = (v, w).
-
-Args:
-    xi: shape (6,), (v, w).
-
-Returns:
-    ndarray: shape (4, 4).
-
-Example:
-    >>> SE3.hat([1.0, 2.0, 3.0, 0.0, 0.0, 1.0])
-    array([[ 0., -1.,  0.,  1.],
-           [ 1.,  0.,  0.,  2.],
-           [ 0.,  0.,  0.,  3.],
-           [ 0.,  0.,  0.,  0.]])
-)doc");
-
-  cls.def_static(
-      "vee", [](ArrayLike X) { return vec_out<6>(SE3d::vee(to_eigen<4, 4>(X.obj, "SE3.vee(matrix)"))); },
-      py::arg("matrix"),
-      R"doc(The twist (v, w) of a 4x4 matrix [[S, v], [*, *]]: the inverse of hat.
-
-w is read from the antisymmetric part of S; the bottom row is ignored.
-
-Args:
-    matrix: shape (4, 4).
-
-Returns:
-    ndarray: xi = (v, w), shape (6,).
-)doc");
-
-  // ---- group operations ---------------------------------------------------
-
-  cls.def(
-      "__matmul__", [](Obj<SE3d> g, ArrayLike points) { return act_points(*g, points, "SE3 @ points"); },
-      py::arg("points"),
-      R"doc(Action on points: q_a = R q_b + p.
-
-The array function se3_act with this motion: numpy's rules for dtypes
-and broadcasting.
-
-Args:
-    points: array_like of shape (..., 3).
-
-Returns:
-    ndarray: the moved points, shape (..., 3).
-)doc");
-
-  // The actions on twists and wrenches before the one on points (a Twist is array-like too, through __array__).
-  cls.def(
-      "act", [](Obj<SE3d> g, Obj<Twistd> xi) { return g->act(*xi); }, py::arg("twist"),
-      R"doc(A twist from frame b to frame a: xi_a = Ad_g xi_b = (R v + p x R w, R w).
-
-Args:
-    twist: Twist, xi_b.
-
-Returns:
-    Twist: xi_a.
-)doc");
-  cls.def(
-      "act", [](Obj<SE3d> g, Obj<Wrenchd> F) { return g->act(*F); }, py::arg("wrench"),
-      R"doc(A wrench from frame b to frame a: F_a = Ad_g^-T F_b = (R f, p x R f + R tau).
-
-Args:
-    wrench: Wrench, F_b.
-
-Returns:
-    Wrench: F_a.
-)doc");
-
-  cls.def(
-      "act", [](Obj<SE3d> g, ArrayLike points) { return act_points(*g, points, "SE3.act(points)"); },
-      py::arg("points"),
-      R"doc(Action on points: q_a = R q_b + p (the same as ``g @ points``).
-
-The array function se3_act with this motion: numpy's rules for dtypes
-and broadcasting.
-
-Args:
-    points: array_like of shape (..., 3).
-
-Returns:
-    ndarray: the moved points, shape (..., 3).
-
-Example:
-    >>> g = SE3(translation=[1.0, 0.0, 0.0])
-    >>> g.act([[0.0, 0.0, 0.0], [1.0, 1.0, 1.0]])
-    array([[1., 0., 0.],
-           [2., 1., 1.]])
-)doc");
-
   cls.def(
       "act_inv", [](Obj<SE3d> g, Obj<Twistd> xi) { return g->act_inv(*xi); }, py::arg("twist"),
       R"doc(A twist from frame a to frame b: xi_b = Ad_g^-1 xi_a = (R^T (v - p x w), R^T w).
@@ -455,8 +332,7 @@ Returns:
 )doc");
 
   cls.def(
-      "act_inv",
-      [](Obj<SE3d> g, ArrayLike points) { return act_points(g->inverse(), points, "SE3.act_inv(points)"); },
+      "act_inv", [](Obj<SE3d> g, ArrayLike points) { return act_points(g->inverse(), points, "SE3.act_inv(points)"); },
       py::arg("points"),
       R"doc(Inverse action on points: q_b = R^T (q_a - p), i.e. g^-1 @ q_a.
 
@@ -480,73 +356,6 @@ Returns:
   cls.def_property_readonly(
       "translation", [](Obj<SE3d> g) { return vec_out<3>(g->translation()); },
       R"doc(ndarray: the translation p of g = [[R, p], [0, 1]], shape (3,) (a stored part; a new array).)doc");
-
-  cls.def_static(
-      "from_matrix",
-      [](ArrayLike matrix, RealLike tol) {
-        const Matrix4 M = to_finite_eigen<4, 4>(matrix.obj, "SE3.from_matrix(matrix)");
-        const double t = to_tolerance(tol.obj, "SE3.from_matrix(tol)");
-        const auto g = SE3d::from_matrix(M, t);
-        if (!g) raise_not_rigid(M, t);
-        return *g;
-      },
-      py::arg("matrix"), py::arg_v("tol", kRotationTolerance),
-      R"doc(Checked construction from a 4x4 homogeneous matrix [[R, p], [0, 1]].
-
-Accepts M when the rotation defect of its top-left block,
-max(|R^T R - I|_max, |det R - 1|), and the deviation of its bottom row from
-(0, 0, 0, 1) are both at most tol (default sqrt(eps) = 1.49e-08).
-
-Args:
-    matrix: shape (4, 4), finite.
-    tol: the largest accepted defect.
-
-Returns:
-    SE3: the motion.
-
-Raises:
-    ValueError: M is not a rigid motion within tol (the message gives both
-        defects; use ``SE3.from_matrix_projected`` for the nearest rotation),
-        or M is not finite, or not of shape (4, 4).
-
-Example:
-    >>> SE3.from_matrix(np.eye(4)).is_approx(SE3())
-    True
-)doc");
-
-  cls.def_static(
-      "from_matrix_projected",
-      [](ArrayLike matrix) {
-        return SE3d::from_matrix_projected(to_finite_eigen<4, 4>(matrix.obj, "SE3.from_matrix_projected(matrix)"));
-      },
-      py::arg("matrix"),
-      R"doc(The nearest rotation to the top-left block, and the translation column.
-
-The bottom row is not read.
-
-Args:
-    matrix: shape (4, 4), finite.
-
-Returns:
-    SE3: the projected motion.
-)doc");
-
-  cls.def_static(
-      "from_matrix_unchecked",
-      [](ArrayLike matrix) {
-        return SE3d::from_matrix_unchecked(to_finite_eigen<4, 4>(matrix.obj, "SE3.from_matrix_unchecked(matrix)"));
-      },
-      py::arg("matrix"),
-      R"doc(Construction without a check from [[R, p], [*, *]], for valid data.
-
-Only the shape and finiteness are checked; the bottom row is not read.
-
-Args:
-    matrix: shape (4, 4), finite.
-
-Returns:
-    SE3: the motion.
-)doc");
 
   cls.def_static(
       "transform_defect",
@@ -599,7 +408,6 @@ Example:
     >>> np.round(g @ [0.0, 2.0, 5.0], 12) + 0.0
     array([0., 2., 5.])
 )doc");
-
 }
 
 }  // namespace chasles_py

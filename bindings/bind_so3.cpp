@@ -49,8 +49,7 @@ std::string class_doc() { return std::string(kClassDoc) + kConventions; }
   const double defect = SO3d::rotation_defect(M);
   const double det = M.determinant();
   std::string msg = std::string(fn) + ": not a rotation matrix: its rotation defect max(|M^T M - I|, |det M - 1|) is " +
-                    short_float(defect) + " (det M = " + det_string(det) + "), above tol = " + short_float(tol) +
-                    ". ";
+                    short_float(defect) + " (det M = " + det_string(det) + "), above tol = " + short_float(tol) + ". ";
   if (det < 0) msg += "A negative determinant is a reflection, not a rotation. ";
   msg += std::string("Use SO3.from_matrix_projected(matrix) for the nearest rotation") +
          (tol_argument ? ", or pass a larger tol." : ".");
@@ -92,7 +91,8 @@ void bind_so3(Class<SO3d>& cls) {
   cls.attr("__doc__") = doc;
   hold_inline(cls);
   // What SO3 and SE3 share (lie_group.hpp), first: the composition comes
-  // before the action on points among the overloads of @. The state: the matrix row by row, checked as SO3.from_matrix checks one.
+  // before the action on points among the overloads of @. The state: the matrix row by row, checked as SO3.from_matrix
+  // checks one.
   def_lie_group<9>(
       cls, [](const SO3d& R) { return "SO3(matrix=" + array_repr(mat_out<3, 3>(R.matrix())) + ")"; },
       [](const SO3d& R) { return row_major(R.matrix()); },
@@ -102,7 +102,8 @@ void bind_so3(Class<SO3d>& cls) {
         if (!SO3d::from_matrix(M, kRotationTolerance))
           raise_not_rotation(M, kRotationTolerance, "SO3.__setstate__", false);
         return SO3d::from_matrix_unchecked(M);
-      });
+      },
+      raise_not_rotation);
   cls.attr("__array_ufunc__") = py::none();  // numpy defers operators (2.0 * x, p @ R) to us
 
   cls.def(py::init<>(), R"doc(The identity rotation.
@@ -137,48 +138,6 @@ Example:
     True
 )doc");
 
-  // ---- exp and log --------------------------------------------------------
-
-  cls.def_static(
-      "exp", [](ArrayLike w) { return SO3d::exp(to_finite_eigen<3>(w.obj, "SO3.exp(w)")); }, py::arg("w"),
-      R"doc(The rotation exp([w]) of a rotation vector, by Rodrigues' formula.
-
-R = I + (sin theta / theta) [w] + ((1 - cos theta) / theta^2) [w]^2 with
-theta = |w|, exact to a few ulps for every w (Taylor series near 0).
-
-Args:
-    w: rotation vector, shape (3,): unit axis times angle in radians.
-
-Returns:
-    SO3: exp([w]).
-
-Raises:
-    ValueError: w is not of shape (3,), or not finite.
-    TypeError: w is not real (complex, object, str, None).
-
-Example:
-    >>> R = SO3.exp([0.0, 0.0, np.pi / 2])
-    >>> np.round(R.as_matrix(), 12) + 0.0
-    array([[ 0., -1.,  0.],
-           [ 1.,  0.,  0.],
-           [ 0.,  0.,  1.]])
-)doc");
-
-  cls.def(
-      "log", [](Obj<SO3d> R) { return vec_out<3>(R->log()); },
-      R"doc(The rotation vector w with exp([w]) = R and |w| in [0, pi].
-
-At exactly pi both axis signs are correct; one of them is returned, never
-NaN. Accurate to a few ulps, and to O(d) for a matrix off SO(3) by d.
-
-Returns:
-    ndarray: w, shape (3,), float64.
-
-Example:
-    >>> SO3.exp([0.1, -0.2, 0.3]).log()
-    array([ 0.1, -0.2,  0.3])
-)doc");
-
   cls.def(
       "angle", [](Obj<SO3d> R) { return R->angle(); },
       R"doc(The rotation angle theta = |log()| in [0, pi], radians.
@@ -195,156 +154,7 @@ Example:
     0.5
 )doc");
 
-  cls.def_static(
-      "hat", [](ArrayLike w) { return mat_out<3, 3>(SO3d::hat(to_eigen<3>(w.obj, "SO3.hat(w)"))); }, py::arg("w"),
-      R"doc(The skew-symmetric matrix [w] of w, so that [w] @ p = w x p.
-
-Args:
-    w: vector, shape (3,).
-
-Returns:
-    ndarray: [w] = [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]], shape (3, 3).
-
-Example:
-    >>> SO3.hat([1.0, 2.0, 3.0])
-    array([[ 0., -3.,  2.],
-           [ 3.,  0., -1.],
-           [-2.,  1.,  0.]])
-)doc");
-
-  cls.def_static(
-      "vee", [](ArrayLike W) { return vec_out<3>(SO3d::vee(to_eigen<3, 3>(W.obj, "SO3.vee(matrix)"))); },
-      py::arg("matrix"),
-      R"doc(The vector w of a skew-symmetric matrix [w]: the inverse of hat.
-
-Reads the antisymmetric part (W - W^T)/2, so a matrix that is not exactly
-skew gives the w of its nearest skew matrix.
-
-Args:
-    matrix: shape (3, 3).
-
-Returns:
-    ndarray: w, shape (3,).
-
-Example:
-    >>> SO3.vee(SO3.hat([1.0, 2.0, 3.0]))
-    array([1., 2., 3.])
-)doc");
-
-  // ---- group operations ---------------------------------------------------
-
-  cls.def(
-      "__matmul__", [](Obj<SO3d> R, ArrayLike p) { return act_points(*R, p, "SO3 @ points"); },
-      py::arg("points"),
-      R"doc(Action on points or vectors: p_a = R_ab @ p_b.
-
-The array function so3_act with this rotation: numpy's rules for
-dtypes and broadcasting.
-
-Args:
-    points: array_like of shape (..., 3).
-
-Returns:
-    ndarray: the rotated points, shape (..., 3).
-)doc");
-
-  cls.def(
-      "act", [](Obj<SO3d> R, ArrayLike p) { return act_points(*R, p, "SO3.act(points)"); },
-      py::arg("points"),
-      R"doc(Action on points or vectors: p_a = R_ab p_b (the same as ``R @ points``).
-
-The array function so3_act with this rotation: numpy's rules for
-dtypes and broadcasting.
-
-Args:
-    points: array_like of shape (..., 3).
-
-Returns:
-    ndarray: the rotated points, shape (..., 3).
-
-Example:
-    >>> R = SO3.exp([0.0, 0.0, np.pi])
-    >>> np.round(R.act([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]), 12) + 0.0
-    array([[-1.,  0.,  0.],
-           [ 0.,  0.,  1.]])
-)doc");
-
   // ---- conversions ------------------------------------------------------
-
-  cls.def_static(
-      "from_matrix",
-      [](ArrayLike matrix, RealLike tol) {
-        const Matrix3 M = to_finite_eigen<3, 3>(matrix.obj, "SO3.from_matrix(matrix)");
-        const double t = to_tolerance(tol.obj, "SO3.from_matrix(tol)");
-        const auto R = SO3d::from_matrix(M, t);
-        if (!R) raise_not_rotation(M, t, "SO3.from_matrix");
-        return *R;
-      },
-      py::arg("matrix"), py::arg_v("tol", kRotationTolerance),
-      R"doc(Checked construction from a rotation matrix.
-
-Accepts M when its rotation defect max(|M^T M - I|_max, |det M - 1|) is at
-most tol (default sqrt(eps) = 1.49e-08: data printed with about 9 significant
-digits passes). Keeps M as it is (no projection).
-
-Args:
-    matrix: shape (3, 3), finite.
-    tol: the largest accepted defect.
-
-Returns:
-    SO3: the rotation M.
-
-Raises:
-    ValueError: M is not a rotation within tol (the message gives the defect
-        and det M; use ``SO3.from_matrix_projected`` for the nearest
-        rotation), or M is not finite, or not of shape (3, 3).
-
-Example:
-    >>> R = SO3.from_matrix([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
-    >>> np.round(R.log(), 12) + 0.0
-    array([0.        , 0.        , 1.57079633])
-)doc");
-
-  cls.def_static(
-      "from_matrix_projected",
-      [](ArrayLike matrix) {
-        return SO3d::from_matrix_projected(to_finite_eigen<3, 3>(matrix.obj, "SO3.from_matrix_projected(matrix)"));
-      },
-      py::arg("matrix"),
-      R"doc(The rotation nearest to a matrix in the Frobenius norm.
-
-For det M > 0 this is the orthogonal polar factor; it is defined for every
-finite M, reflections and singular matrices included.
-
-Args:
-    matrix: shape (3, 3), finite.
-
-Returns:
-    SO3: the nearest rotation.
-
-Example:
-    >>> M = SO3.exp([0.1, 0.2, 0.3]).as_matrix() + 1e-4
-    >>> SO3.from_matrix_projected(M).is_approx(SO3.exp([0.1, 0.2, 0.3]), tol=1e-3)
-    True
-)doc");
-
-  cls.def_static(
-      "from_matrix_unchecked",
-      [](ArrayLike matrix) {
-        return SO3d::from_matrix_unchecked(to_finite_eigen<3, 3>(matrix.obj, "SO3.from_matrix_unchecked(matrix)"));
-      },
-      py::arg("matrix"),
-      R"doc(Construction without a check, for data known to be a rotation.
-
-Only the shape and finiteness are checked. Operations on an SO3 built from a
-matrix that is not a rotation give meaningless results.
-
-Args:
-    matrix: shape (3, 3), finite.
-
-Returns:
-    SO3: the matrix as it is.
-)doc");
 
   cls.def_static(
       "rotation_defect",
@@ -373,8 +183,8 @@ Example:
         const double scale = q.cwiseAbs().maxCoeff();
         if (!(scale > 0.0)) raise_value_error("SO3.from_quat(quat): the zero quaternion is not a rotation");
         const Eigen::Vector4d u = q / scale;  // the C++ kernel normalizes; this keeps |q|^2 in range
-        const Eigen::Quaterniond e = scalar_first ? Eigen::Quaterniond(u[0], u[1], u[2], u[3])
-                                                  : Eigen::Quaterniond(u[3], u[0], u[1], u[2]);
+        const Eigen::Quaterniond e =
+            scalar_first ? Eigen::Quaterniond(u[0], u[1], u[2], u[3]) : Eigen::Quaterniond(u[3], u[0], u[1], u[2]);
         return SO3d::from_quaternion(e);
       },
       py::arg("quat"), py::kw_only(), py::arg("scalar_first") = false,
@@ -532,8 +342,8 @@ Example:
     for (const auto& kw : kwargs)
       got += (got.empty() ? "" : ", ") + py::str(kw.first).cast<std::string>() + "=" + describe_argument(kw.second);
     return "SO3.from_rpy(rpy, degrees=False): expected rpy, one array_like of shape (3,) (roll, pitch, yaw), and "
-           "degrees, a bool; got (" + got + ")" +
-           (args.size() == 3 ? ". Three angles are one argument: SO3.from_rpy([roll, pitch, yaw])" : "");
+           "degrees, a bool; got (" +
+           got + ")" + (args.size() == 3 ? ". Three angles are one argument: SO3.from_rpy([roll, pitch, yaw])" : "");
   });
 
   cls.def(
@@ -568,9 +378,10 @@ Example:
       "from_scipy",
       [](py::object r) {
         const char* what = "SO3.from_scipy(r)";
-        check_single_scipy(r, "Rotation", what,
-                           "A stack is an array for the array functions: r.as_matrix() (shape (..., 3, 3)) for so3_log, so3_compose, "
-    "so3_act, ..., or chasles.so3_from_quat(r.as_quat()); r[i] is one Rotation.");
+        check_single_scipy(
+            r, "Rotation", what,
+            "A stack is an array for the array functions: r.as_matrix() (shape (..., 3, 3)) for so3_log, so3_compose, "
+            "so3_act, ..., or chasles.so3_from_quat(r.as_quat()); r[i] is one Rotation.");
         // scipy keeps a unit quaternion (x, y, z, w): its rotation, by the same
         // conversion as SO3.from_quat.
         const Eigen::Vector4d q = to_finite_eigen<4>(r.attr("as_quat")(), what);
@@ -650,7 +461,6 @@ Example:
     >>> SO3.random(rng=7).is_approx(SO3.random(rng=7), 0.0)
     True
 )doc");
-
 }
 
 }  // namespace chasles_py

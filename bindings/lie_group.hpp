@@ -11,12 +11,13 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
-#include <utility>
 #include <string>
+#include <utility>
 
 #include <chasles/jacobians.hpp>
 #include <chasles/se3.hpp>
 #include <chasles/so3.hpp>
+#include <chasles/twist.hpp>
 
 #include "bindings.hpp"
 #include "convert.hpp"
@@ -40,7 +41,8 @@ struct Lie<chasles::SO3d> {
   static constexpr const char* matrix = "The rotation matrix R";
   static constexpr const char* example = "[0.3, 0.2, 0.1]";
   static constexpr const char* adjoint = "Ad_R = R (3x3), so that R exp([w]) R^T = exp([R w]).";
-  static constexpr const char* between = "in between, the rotation about one fixed axis\n(slerp). Values outside [0, 1] extrapolate";
+  static constexpr const char* between =
+      "in between, the rotation about one fixed axis\n(slerp). Values outside [0, 1] extrapolate";
   static constexpr const char* approx = "max |R_a - R_b| <= tol";
   static constexpr const char* tol = "the largest accepted difference of matrix entries (>= 0)";
   static constexpr Jacobian (*jacobians[4])(const Tangent&) = {
@@ -48,6 +50,132 @@ struct Lie<chasles::SO3d> {
       [](const Tangent& w) { return chasles::so3_left_jacobian(w); },
       [](const Tangent& w) { return chasles::so3_right_jacobian_inverse(w); },
       [](const Tangent& w) { return chasles::so3_left_jacobian_inverse(w); }};
+  static constexpr const char* acted = "points or vectors";
+  static constexpr const char* action = "p_a = R_ab p_b";
+  static constexpr const char* symbol = "R";
+  static constexpr const char* moved = "rotated";
+  static constexpr const char* act_example = R"doc(
+Example:
+    >>> R = SO3.exp([0.0, 0.0, np.pi])
+    >>> np.round(R.act([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]), 12) + 0.0
+    array([[-1.,  0.,  0.],
+           [ 0.,  0.,  1.]])
+)doc";
+  /// The tangent argument of exp: shape (3,), finite.
+  static Tangent tangent_arg(py::handle h, const char* what) { return to_finite_eigen<D>(h, what); }
+  static constexpr const char* exp_doc = R"doc(The rotation exp([w]) of a rotation vector, by Rodrigues' formula.
+
+R = I + (sin theta / theta) [w] + ((1 - cos theta) / theta^2) [w]^2 with
+theta = |w|, exact to a few ulps for every w (Taylor series near 0).
+
+Args:
+    w: rotation vector, shape (3,): unit axis times angle in radians.
+
+Returns:
+    SO3: exp([w]).
+
+Raises:
+    ValueError: w is not of shape (3,), or not finite.
+    TypeError: w is not real (complex, object, str, None).
+
+Example:
+    >>> R = SO3.exp([0.0, 0.0, np.pi / 2])
+    >>> np.round(R.as_matrix(), 12) + 0.0
+    array([[ 0., -1.,  0.],
+           [ 1.,  0.,  0.],
+           [ 0.,  0.,  1.]])
+)doc";
+  static constexpr const char* log_doc = R"doc(The rotation vector w with exp([w]) = R and |w| in [0, pi].
+
+At exactly pi both axis signs are correct; one of them is returned, never
+NaN. Accurate to a few ulps, and to O(d) for a matrix off SO(3) by d.
+
+Returns:
+    ndarray: w, shape (3,), float64.
+
+Example:
+    >>> SO3.exp([0.1, -0.2, 0.3]).log()
+    array([ 0.1, -0.2,  0.3])
+)doc";
+  static constexpr const char* hat_doc = R"doc(The skew-symmetric matrix [w] of w, so that [w] @ p = w x p.
+
+Args:
+    w: vector, shape (3,).
+
+Returns:
+    ndarray: [w] = [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]], shape (3, 3).
+
+Example:
+    >>> SO3.hat([1.0, 2.0, 3.0])
+    array([[ 0., -3.,  2.],
+           [ 3.,  0., -1.],
+           [-2.,  1.,  0.]])
+)doc";
+  static constexpr const char* vee_doc = R"doc(The vector w of a skew-symmetric matrix [w]: the inverse of hat.
+
+Reads the antisymmetric part (W - W^T)/2, so a matrix that is not exactly
+skew gives the w of its nearest skew matrix.
+
+Args:
+    matrix: shape (3, 3).
+
+Returns:
+    ndarray: w, shape (3,).
+
+Example:
+    >>> SO3.vee(SO3.hat([1.0, 2.0, 3.0]))
+    array([1., 2., 3.])
+)doc";
+  static constexpr const char* from_matrix_doc = R"doc(Checked construction from a rotation matrix.
+
+Accepts M when its rotation defect max(|M^T M - I|_max, |det M - 1|) is at
+most tol (default sqrt(eps) = 1.49e-08: data printed with about 9 significant
+digits passes). Keeps M as it is (no projection).
+
+Args:
+    matrix: shape (3, 3), finite.
+    tol: the largest accepted defect.
+
+Returns:
+    SO3: the rotation M.
+
+Raises:
+    ValueError: M is not a rotation within tol (the message gives the defect
+        and det M; use ``SO3.from_matrix_projected`` for the nearest
+        rotation), or M is not finite, or not of shape (3, 3).
+
+Example:
+    >>> R = SO3.from_matrix([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+    >>> np.round(R.log(), 12) + 0.0
+    array([0.        , 0.        , 1.57079633])
+)doc";
+  static constexpr const char* projected_doc = R"doc(The rotation nearest to a matrix in the Frobenius norm.
+
+For det M > 0 this is the orthogonal polar factor; it is defined for every
+finite M, reflections and singular matrices included.
+
+Args:
+    matrix: shape (3, 3), finite.
+
+Returns:
+    SO3: the nearest rotation.
+
+Example:
+    >>> M = SO3.exp([0.1, 0.2, 0.3]).as_matrix() + 1e-4
+    >>> SO3.from_matrix_projected(M).is_approx(SO3.exp([0.1, 0.2, 0.3]), tol=1e-3)
+    True
+)doc";
+  static constexpr const char* unchecked_doc = R"doc(Construction without a check, for data known to be a rotation.
+
+Only the shape and finiteness are checked. Operations on an SO3 built from a
+matrix that is not a rotation give meaningless results.
+
+Args:
+    matrix: shape (3, 3), finite.
+
+Returns:
+    SO3: the matrix as it is.
+)doc";
   static constexpr const char* jacobian_doc = R"doc(The %s of SO(3) at the rotation vector w, shape (3, 3).
 
 Right (local) convention, as manif and Pinocchio:
@@ -84,18 +212,136 @@ struct Lie<chasles::SE3d> {
   static constexpr const char* inverse = "g^-1 = [[R^T, -R^T p], [0, 1]]";
   static constexpr const char* matrix = "The homogeneous matrix g = [[R, p], [0, 1]]";
   static constexpr const char* example = "[0.1, 0.2, 0.3, 0.4, 0.5, 0.6]";
-  static constexpr const char* adjoint = "Ad_g = [[R, [p] R], [0, R]] (6x6, Murray-Li-Sastry order).\n\n"
-                                         "g [xi] g^-1 = [Ad_g xi]: twists change frame by xi_a = Ad_g xi_b; wrenches\n"
-                                         "by F_b = Ad_g^T F_a.";
+  static constexpr const char* adjoint =
+      "Ad_g = [[R, [p] R], [0, R]] (6x6, Murray-Li-Sastry order).\n\n"
+      "g [xi] g^-1 = [Ad_g xi]: twists change frame by xi_a = Ad_g xi_b; wrenches\n"
+      "by F_b = Ad_g^T F_a.";
   static constexpr const char* between = "and the motion in between is one screw motion";
   static constexpr const char* approx =
-      "rotation matrices within tol (absolute), translations within\ntol * max(1, |p|_max) (relative beyond unit scale)";
+      "rotation matrices within tol (absolute), translations within\ntol * max(1, |p|_max) (relative beyond unit "
+      "scale)";
   static constexpr const char* tol = "the tolerance (>= 0)";
   static constexpr Jacobian (*jacobians[4])(const Tangent&) = {
       [](const Tangent& xi) { return chasles::se3_right_jacobian(xi); },
       [](const Tangent& xi) { return chasles::se3_left_jacobian(xi); },
       [](const Tangent& xi) { return chasles::se3_right_jacobian_inverse(xi); },
       [](const Tangent& xi) { return chasles::se3_left_jacobian_inverse(xi); }};
+  static constexpr const char* acted = "points";
+  static constexpr const char* action = "q_a = R q_b + p";
+  static constexpr const char* symbol = "g";
+  static constexpr const char* moved = "moved";
+  static constexpr const char* act_example = R"doc(
+Example:
+    >>> g = SE3(translation=[1.0, 0.0, 0.0])
+    >>> g.act([[0.0, 0.0, 0.0], [1.0, 1.0, 1.0]])
+    array([[1., 0., 0.],
+           [2., 1., 1.]])
+)doc";
+  /// The tangent argument of exp: a Twist, or anything array-like of shape (6,), finite.
+  static Tangent tangent_arg(py::handle h, const char* what) {
+    if (is_native_float64_array(h.ptr())) return to_finite_eigen<D>(h, what);
+    py::detail::make_caster<Obj<chasles::Twistd>> twist;
+    if (twist.load(h, false)) return static_cast<Obj<chasles::Twistd>&>(twist).ptr->vector();
+    return to_finite_eigen<D>(h, what);
+  }
+  static constexpr const char* exp_doc = R"doc(The screw motion exp([xi]) of a twist xi = (v, w), linear part first.
+
+In closed form, with theta = |w|: R = exp([w]), p = V v,
+V = I + ((1 - cos theta) / theta^2) [w] + ((theta - sin theta) / theta^3) [w]^2;
+w = 0 (pure translation) and tiny w included, exact to a few ulps.
+
+Args:
+    xi: twist coordinates (v, w), shape (6,), finite; or a Twist.
+
+Returns:
+    SE3: exp([xi]).
+
+Example:
+    >>> g = SE3.exp([1.0, 0.0, 0.0, 0.0, 0.0, np.pi / 2])
+    >>> np.round(g.translation, 12) + 0.0
+    array([0.63661977, 0.63661977, 0.        ])
+)doc";
+  static constexpr const char* log_doc = R"doc(The twist xi = (v, w) with exp([xi]) = g, rotation angle |w| in [0, pi].
+
+w = log(R); v = V^-1 p. At a rotation angle of exactly pi either axis sign is
+returned, never NaN.
+
+Returns:
+    ndarray: xi = (v, w), shape (6,), linear part first.
+
+Example:
+    >>> SE3(translation=[1.0, 2.0, 3.0]).log()
+    array([1., 2., 3., 0., 0., 0.])
+)doc";
+  static constexpr const char* hat_doc = R"doc(The 4x4 matrix [xi] = [[ [w], v ], [0, 0]] of a twist xi = (v, w).
+
+Args:
+    xi: shape (6,), (v, w).
+
+Returns:
+    ndarray: shape (4, 4).
+
+Example:
+    >>> SE3.hat([1.0, 2.0, 3.0, 0.0, 0.0, 1.0])
+    array([[ 0., -1.,  0.,  1.],
+           [ 1.,  0.,  0.,  2.],
+           [ 0.,  0.,  0.,  3.],
+           [ 0.,  0.,  0.,  0.]])
+)doc";
+  static constexpr const char* vee_doc = R"doc(The twist (v, w) of a 4x4 matrix [[S, v], [*, *]]: the inverse of hat.
+
+w is read from the antisymmetric part of S; the bottom row is ignored.
+
+Args:
+    matrix: shape (4, 4).
+
+Returns:
+    ndarray: xi = (v, w), shape (6,).
+)doc";
+  static constexpr const char* from_matrix_doc =
+      R"doc(Checked construction from a 4x4 homogeneous matrix [[R, p], [0, 1]].
+
+Accepts M when the rotation defect of its top-left block,
+max(|R^T R - I|_max, |det R - 1|), and the deviation of its bottom row from
+(0, 0, 0, 1) are both at most tol (default sqrt(eps) = 1.49e-08).
+
+Args:
+    matrix: shape (4, 4), finite.
+    tol: the largest accepted defect.
+
+Returns:
+    SE3: the motion.
+
+Raises:
+    ValueError: M is not a rigid motion within tol (the message gives both
+        defects; use ``SE3.from_matrix_projected`` for the nearest rotation),
+        or M is not finite, or not of shape (4, 4).
+
+Example:
+    >>> SE3.from_matrix(np.eye(4)).is_approx(SE3())
+    True
+)doc";
+  static constexpr const char* projected_doc =
+      R"doc(The nearest rotation to the top-left block, and the translation column.
+
+The bottom row is not read.
+
+Args:
+    matrix: shape (4, 4), finite.
+
+Returns:
+    SE3: the projected motion.
+)doc";
+  static constexpr const char* unchecked_doc = R"doc(Construction without a check from [[R, p], [*, *]], for valid data.
+
+Only the shape and finiteness are checked; the bottom row is not read.
+
+Args:
+    matrix: shape (4, 4), finite.
+
+Returns:
+    SE3: the motion.
+)doc";
   static constexpr const char* jacobian_doc = R"doc(The %s of SE(3) at the twist xi = (v, w), shape (6, 6).
 
 Linear part first. Right (local) convention, as manif and Pinocchio:
@@ -146,7 +392,8 @@ py::object act_points(const G& g, ArrayLike points, const char* what) {
 /// Generator (used, and advanced, as is); numpy's TypeError or ValueError
 /// re-raised naming `name`.
 inline py::object numpy_generator(py::handle rng, const char* name) {
-  static PyObject* const default_rng = py::handle(numpy_attr("random")).attr("default_rng").cast<py::object>().release().ptr();
+  static PyObject* const default_rng =
+      py::handle(numpy_attr("random")).attr("default_rng").cast<py::object>().release().ptr();
   PyObject* g = PyObject_CallOneArg(default_rng, rng.ptr());
   if (g != nullptr) return py::reinterpret_steal<py::object>(g);
   py::error_already_set e;
@@ -171,10 +418,10 @@ inline py::object scipy_class(const char* name, const char* what) {
   PyObject* mod = PyImport_ImportModule("scipy.spatial.transform");
   if (mod == nullptr) {
     if (!PyErr_ExceptionMatches(PyExc_ImportError)) throw py::error_already_set();
-    py::raise_from(PyExc_ImportError, (std::string(what) +
-                                       " needs scipy (scipy.spatial.transform), which could not be imported; "
-                                       "install it with `pip install scipy`")
-                                          .c_str());
+    py::raise_from(PyExc_ImportError,
+                   (std::string(what) + " needs scipy (scipy.spatial.transform), which could not be imported; "
+                                        "install it with `pip install scipy`")
+                       .c_str());
     throw py::error_already_set();
   }
   const py::module_ transform = py::reinterpret_steal<py::module_>(mod);
@@ -200,14 +447,28 @@ inline void check_single_scipy(py::handle obj, const char* kind, const char* wha
 }
 
 /// `text` with {G} (the class), {kind}, {inverse}, {matrix}, {example},
-/// {adjoint}, {between}, {approx}, {tol}, {N} and {D} of the group G.
+/// {adjoint}, {between}, {approx}, {tol}, {N}, {D}, {t} (the tangent's name), {acted},
+/// {action}, {g} (the element's symbol), {moved} and {act} (the array function) of the group G.
 template <typename G>
 std::string group_text(std::string text) {
   using L = Lie<G>;
-  const std::pair<const char*, std::string> fields[] = {
-      {"{G}", L::name},         {"{kind}", L::kind},         {"{inverse}", L::inverse}, {"{matrix}", L::matrix},
-      {"{example}", L::example}, {"{adjoint}", L::adjoint}, {"{between}", L::between}, {"{approx}", L::approx},
-      {"{tol}", L::tol},         {"{N}", std::to_string(L::N)}, {"{D}", std::to_string(L::D)}};
+  const std::pair<const char*, std::string> fields[] = {{"{G}", L::name},
+                                                        {"{kind}", L::kind},
+                                                        {"{inverse}", L::inverse},
+                                                        {"{matrix}", L::matrix},
+                                                        {"{example}", L::example},
+                                                        {"{adjoint}", L::adjoint},
+                                                        {"{between}", L::between},
+                                                        {"{approx}", L::approx},
+                                                        {"{tol}", L::tol},
+                                                        {"{N}", std::to_string(L::N)},
+                                                        {"{D}", std::to_string(L::D)},
+                                                        {"{t}", L::tangent},
+                                                        {"{acted}", L::acted},
+                                                        {"{action}", L::action},
+                                                        {"{g}", L::symbol},
+                                                        {"{moved}", L::moved},
+                                                        {"{act}", L::act_ufunc}};
   for (const auto& [key, value] : fields)
     for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + value.size()))
       text.replace(at, std::strlen(key), value);
@@ -223,11 +484,55 @@ const char* group_doc(const char* text) {
 /// What SO3 and SE3 share: the group operations (inverse, @, the action on
 /// points, adjoint, as_matrix, normalized, interpolate, is_approx) with one
 /// docstring for both, the Jacobians of exp (static methods), the matrix as
-/// __array__, and the value protocol over the state of `state(g)`
-/// (def_value_protocol), made back by `from_state`.
+/// __array__, exp, log, hat, vee, the three constructions from a matrix
+/// (from_matrix refuses with `invalid(M, tol, fn, tol_argument)`), and the
+/// value protocol over the state of `state(g)` (def_value_protocol), made
+/// back by `from_state`.
 template <int S, typename G, typename Repr, typename State, typename FromState>
-void def_lie_group(Class<G>& cls, Repr repr, State state, FromState from_state) {
+void def_lie_group(Class<G>& cls, Repr repr, State state, FromState from_state,
+                   void (*invalid)(const Eigen::Matrix<double, Lie<G>::N, Lie<G>::N>&, double, const char*, bool)) {
   using L = Lie<G>;
+  using Matrix = Eigen::Matrix<double, L::N, L::N>;
+  static const char* const exp_what = group_doc<G>("{G}.exp({t})");
+  cls.def_static(
+      "exp", [](ArrayLike x) { return G::exp(L::tangent_arg(x.obj, exp_what)); }, py::arg(L::tangent), L::exp_doc);
+  cls.def("log", [](Obj<G> g) { return vec_out<L::D>(g->log()); }, L::log_doc);
+  static const char* const hat_what = group_doc<G>("{G}.hat({t})");
+  cls.def_static(
+      "hat", [](ArrayLike x) { return mat_out<L::N, L::N>(G::hat(to_eigen<L::D>(x.obj, hat_what))); },
+      py::arg(L::tangent), L::hat_doc);
+  static const char* const vee_what = group_doc<G>("{G}.vee(matrix)");
+  cls.def_static(
+      "vee", [](ArrayLike X) { return vec_out<L::D>(G::vee(to_eigen<L::N, L::N>(X.obj, vee_what))); },
+      py::arg("matrix"), L::vee_doc);
+  static const char* const matrix_what = group_doc<G>("{G}.from_matrix(matrix)");
+  static const char* const tol_arg_what = group_doc<G>("{G}.from_matrix(tol)");
+  static const char* const fn_what = group_doc<G>("{G}.from_matrix");
+  static auto* const refuse = invalid;
+  cls.def_static(
+      "from_matrix",
+      [](ArrayLike matrix, RealLike tol) {
+        const Matrix M = to_finite_eigen<L::N, L::N>(matrix.obj, matrix_what);
+        const double t = to_tolerance(tol.obj, tol_arg_what);
+        const auto g = G::from_matrix(M, t);
+        if (!g) refuse(M, t, fn_what, true);
+        return *g;
+      },
+      py::arg("matrix"), py::arg_v("tol", chasles::Thresholds<double>::rotation_tolerance), L::from_matrix_doc);
+  static const char* const projected_what = group_doc<G>("{G}.from_matrix_projected(matrix)");
+  cls.def_static(
+      "from_matrix_projected",
+      [](ArrayLike matrix) {
+        return G::from_matrix_projected(to_finite_eigen<L::N, L::N>(matrix.obj, projected_what));
+      },
+      py::arg("matrix"), L::projected_doc);
+  static const char* const unchecked_what = group_doc<G>("{G}.from_matrix_unchecked(matrix)");
+  cls.def_static(
+      "from_matrix_unchecked",
+      [](ArrayLike matrix) {
+        return G::from_matrix_unchecked(to_finite_eigen<L::N, L::N>(matrix.obj, unchecked_what));
+      },
+      py::arg("matrix"), L::unchecked_doc);
   cls.def("inverse", [](Obj<G> g) { return g->inverse(); }, group_doc<G>(R"doc(The inverse {kind} {inverse}.
 
 Returns:
@@ -248,7 +553,30 @@ Args:
 Returns:
     {G}: the composed {kind}.
 )doc"));
-  cls.def("adjoint", [](Obj<G> g) { return mat_out<L::D, L::D>(g->adjoint()); }, group_doc<G>(R"doc(The adjoint {adjoint}
+  static const std::string act_doc = group_text<G>(R"doc(
+
+The array function {act} with this {kind}: numpy's rules for dtypes and
+broadcasting.
+
+Args:
+    points: array_like of shape (..., 3).
+
+Returns:
+    ndarray: the {moved} points, shape (..., 3).
+)doc");
+  static const std::string matmul_doc = group_text<G>("Action on {acted}: {action}.") + act_doc;
+  static const char* const matmul_what = group_doc<G>("{G} @ points");
+  cls.def(
+      "__matmul__", [](Obj<G> g, ArrayLike p) { return act_points(*g, p, matmul_what); }, py::arg("points"),
+      matmul_doc.c_str());
+  static const std::string act_full_doc =
+      group_text<G>("Action on {acted}: {action} (the same as ``{g} @ points``).") + act_doc + L::act_example;
+  static const char* const act_what = group_doc<G>("{G}.act(points)");
+  cls.def(
+      "act", [](Obj<G> g, ArrayLike p) { return act_points(*g, p, act_what); }, py::arg("points"),
+      act_full_doc.c_str());
+  cls.def(
+      "adjoint", [](Obj<G> g) { return mat_out<L::D, L::D>(g->adjoint()); }, group_doc<G>(R"doc(The adjoint {adjoint}
 
 Returns:
     ndarray: shape ({D}, {D}).
@@ -258,7 +586,9 @@ Returns:
 Returns:
     ndarray: shape ({N}, {N}), float64 (a new array).
 )doc"));
-  cls.def("normalized", [](Obj<G> g) { return g->normalized(); }, group_doc<G>(R"doc(The same {kind} with the nearest rotation.
+  cls.def(
+      "normalized", [](Obj<G> g) { return g->normalized(); },
+      group_doc<G>(R"doc(The same {kind} with the nearest rotation.
 
 Removes the drift that accumulates over many compositions.
 

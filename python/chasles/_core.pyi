@@ -572,10 +572,10 @@ class SO3:
     @typing.overload
     def __matmul__(self, points: numpy.typing.ArrayLike) -> typing.Any:
         """
-        Action on points or vectors: p_a = R_ab @ p_b.
+        Action on points or vectors: p_a = R_ab p_b.
         
-        The array function so3_act with this rotation: numpy's rules for
-        dtypes and broadcasting.
+        The array function so3_act with this rotation: numpy's rules for dtypes and
+        broadcasting.
         
         Args:
             points: array_like of shape (..., 3).
@@ -609,8 +609,8 @@ class SO3:
         """
         Action on points or vectors: p_a = R_ab p_b (the same as ``R @ points``).
         
-        The array function so3_act with this rotation: numpy's rules for
-        dtypes and broadcasting.
+        The array function so3_act with this rotation: numpy's rules for dtypes and
+        broadcasting.
         
         Args:
             points: array_like of shape (..., 3).
@@ -1196,8 +1196,8 @@ class SE3:
         """
         Action on points: q_a = R q_b + p.
         
-        The array function se3_act with this motion: numpy's rules for dtypes
-        and broadcasting.
+        The array function se3_act with this motion: numpy's rules for dtypes and
+        broadcasting.
         
         Args:
             points: array_like of shape (..., 3).
@@ -1254,8 +1254,8 @@ class SE3:
         """
         Action on points: q_a = R q_b + p (the same as ``g @ points``).
         
-        The array function se3_act with this motion: numpy's rules for dtypes
-        and broadcasting.
+        The array function se3_act with this motion: numpy's rules for dtypes and
+        broadcasting.
         
         Args:
             points: array_like of shape (..., 3).
