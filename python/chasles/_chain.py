@@ -641,9 +641,11 @@ class Chain(_core._Chain):
             _setstate(self, state)
         except (TypeError, ValueError) as e:
             text = str(e)
-            if not text.startswith("Chain.__setstate__: "):
-                text = f"Chain.__setstate__: {text}"
-            raise type(e)(text) from None
+            for prefix in ("Chain.__setstate__: ", "Chain.__init__: "):  # the constructor's own name
+                if text.startswith(prefix):
+                    text = text[len(prefix):]
+                    break
+            raise type(e)(f"Chain.__setstate__: {text}") from None
 
 
 def _make(self: Any, screws: Any, home: Any, *, home_as_given: bool = False, joint_types: Any = None,

@@ -374,7 +374,7 @@ STORED = {
     Twist: {"vector", "linear", "angular"},
     Wrench: {"vector", "force", "torque"},
     Screw: {"point", "direction", "pitch", "magnitude"},
-    Chain: {"screws", "body_screws", "home", "n_joints", "joint_types", "names", "lower", "upper",
+    Chain: {"space_screws", "body_screws", "home", "n_joints", "joint_types", "joint_names", "lower", "upper",
             "velocity_limits", "effort_limits", "base", "tool", "gravity", "link_inertias"},
 }
 COMPUTED = {
@@ -766,7 +766,7 @@ def arrays_of(x):
         if hasattr(x, name) and not isinstance(x, Chain):
             with np.errstate(all="ignore"):
                 out[name] = getattr(x, name)()
-    for name in ("translation", "vector", "point", "direction", "screws", "body_screws"):
+    for name in ("translation", "vector", "point", "direction", "space_screws", "body_screws"):
         if hasattr(type(x), name):
             out[name] = np.asarray(getattr(x, name))
     if isinstance(x, Chain):
