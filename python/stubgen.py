@@ -96,6 +96,10 @@ def type_array_functions(stub: str) -> str:
 
     import numpy as np
 
+    # The installed chasles: python/chasles beside this script (sys.path[0]
+    # when it runs as a script) has no compiled _core.
+    here = Path(__file__).resolve().parent
+    sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != here]
     from chasles import _core
 
     lines = stub.splitlines(keepends=True)
