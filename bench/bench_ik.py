@@ -78,8 +78,10 @@ def main() -> None:
             mean, r = batched_mean(chain, targets, seeds, **kw)
             median = per_call_median(chain, targets[:200], seeds[:200], **kw)
             its = np.asarray(r.iterations)
-            print(f"{name:7} {label:28} {100 * np.mean(r.converged):7.1f}% "
-                  f"{int(np.median(its)):>6}/{int(np.percentile(its, 99)):<6} {1e6 * median:9.1f} {1e6 * mean:8.1f}")
+            print(
+                f"{name:7} {label:28} {100 * np.mean(r.converged):7.1f}% "
+                f"{int(np.median(its)):>6}/{int(np.percentile(its, 99)):<6} {1e6 * median:9.1f} {1e6 * mean:8.1f}"
+            )
 
 
 if __name__ == "__main__":

@@ -115,7 +115,6 @@ ld se3_log(const chasles::SE3<S>& g, const Eigen::Matrix<S, 6, 1>& xi) {
 }
 }  // namespace error
 
-
 /// Chain/<op>/<input>/<scalar> over joint vectors uniform in [-pi, pi].
 template <typename S, typename C>
 void register_chain(const std::string& input, const std::string& sn, int n) {
@@ -253,10 +252,12 @@ void register_dynamics(const std::string& input, const std::string& sn, int n) {
     states.push_back(st);
   }
   const std::string tail = "/" + input + "/" + sn;
-  add("Dynamics/inverse_dynamics" + tail, states, [dyn](const State& x) { return inverse_dynamics(dyn, x.q, x.qd, x.qdd); });
+  add("Dynamics/inverse_dynamics" + tail, states,
+      [dyn](const State& x) { return inverse_dynamics(dyn, x.q, x.qd, x.qdd); });
   add("Dynamics/mass_matrix" + tail, states, [dyn](const State& x) { return mass_matrix(dyn, x.q); });
   add("Dynamics/gravity_torques" + tail, states, [dyn](const State& x) { return gravity_torques(dyn, x.q); });
-  add("Dynamics/forward_dynamics" + tail, states, [dyn](const State& x) { return forward_dynamics(dyn, x.q, x.qd, x.qdd); });
+  add("Dynamics/forward_dynamics" + tail, states,
+      [dyn](const State& x) { return forward_dynamics(dyn, x.q, x.qd, x.qdd); });
 }
 
 template <typename S>
@@ -326,8 +327,7 @@ void register_all(const std::string& sn) {
   add("SO3/act/generic/" + sn, Rpoints, [](const auto& p) { return V3(p.first * p.second); });
   add("SO3/as_quaternion/generic/" + sn, Rs, [](const SO3<S>& R) { return R.quaternion(); });
   add("SO3/from_quaternion/generic/" + sn, Qs, [](const Q& q) { return SO3<S>::from_quaternion(q); });
-  add("SO3/interpolate/generic/" + sn, Rpairs,
-      [](const auto& p) { return interpolate(p.first, p.second, S(0.3)); });
+  add("SO3/interpolate/generic/" + sn, Rpairs, [](const auto& p) { return interpolate(p.first, p.second, S(0.3)); });
   add("SO3/normalized/generic/" + sn, Rs, [](const SO3<S>& R) { return R.normalized(); });
   // Euler angles: intrinsic ZYX (= extrinsic xyz, RPY) and ZXZ beside Eigen's
   // AngleAxis product and eulerAngles (the same sequences, Eigen's ranges).
@@ -451,7 +451,8 @@ void register_statistics(const std::string& sn) {
   add("SE3/distance/generic/" + sn, gpairs, [](const auto& p) { return distance(p.first, p.second); });
   add("SO3/rminus_jacobians/generic/" + sn, Rpairs, [](const auto& p) { return rminus_jacobians(p.first, p.second); });
   add("SE3/rminus_jacobians/generic/" + sn, gpairs, [](const auto& p) { return rminus_jacobians(p.first, p.second); });
-  add("SE3/between_jacobians/generic/" + sn, gpairs, [](const auto& p) { return between_jacobians(p.first, p.second); });
+  add("SE3/between_jacobians/generic/" + sn, gpairs,
+      [](const auto& p) { return between_jacobians(p.first, p.second); });
   add("SE3/act_jacobians/generic/" + sn, gpoints, [](const auto& p) { return act_jacobians(p.first, p.second); });
 
   // Sampling: one draw per iteration from a generator kept across iterations.

@@ -31,8 +31,14 @@ import chasles
 # Targets of the speed issues (double precision): every SO3 and SE3 object
 # operation per call, and the array functions per element.
 CALL_TARGET_US = 0.13
-ARRAY_TARGET_NS = {"SO3 exp": 25, "SO3 log": 30, "SE3 exp": 45, "SE3 log": 60, "SE3 compose": 15,
-                   "SE3 act (1 pose, N points)": 5}
+ARRAY_TARGET_NS = {
+    "SO3 exp": 25,
+    "SO3 log": 30,
+    "SE3 exp": 45,
+    "SE3 log": 60,
+    "SE3 compose": 15,
+    "SE3 act (1 pose, N points)": 5,
+}
 
 
 def optional(name: str) -> Any:
@@ -80,8 +86,9 @@ def row(op: str, ours: float | None, peers: dict[str, float | None], scale: floa
     present = [(t, name) for name, t in peers.items() if t is not None]
     best = min(present) if present else None
     ratio = f"{ours / best[0]:.2f} ({best[1]})" if best and ours else ""
-    return "| {} | {} | {} | {} | {} |".format(op, f"{ours * scale:.3g}" if ours else "", " | ".join(cells), ratio,
-                                               f"{target:g}" if target else "")
+    return "| {} | {} | {} | {} | {} |".format(
+        op, f"{ours * scale:.3g}" if ours else "", " | ".join(cells), ratio, f"{target:g}" if target else ""
+    )
 
 
 # ---------------------------------------------------------------------------
@@ -117,9 +124,17 @@ def np_so3_log(R: np.ndarray) -> np.ndarray:
 
 _W1, _W2, _L1, _L2, _H1, _H2 = 0.109, 0.082, 0.425, 0.392, 0.089, 0.095
 # Space screws (v, w), one row per joint (Modern Robotics lists (w, v)).
-UR5_SCREWS = np.array([[0, 0, 0, 0, 0, 1], [-_H1, 0, 0, 0, 1, 0], [-_H1, 0, _L1, 0, 1, 0],
-                       [-_H1, 0, _L1 + _L2, 0, 1, 0], [-_W1, _L1 + _L2, 0, 0, 0, -1],
-                       [_H2 - _H1, 0, _L1 + _L2, 0, 1, 0]], dtype=float)
+UR5_SCREWS = np.array(
+    [
+        [0, 0, 0, 0, 0, 1],
+        [-_H1, 0, 0, 0, 1, 0],
+        [-_H1, 0, _L1, 0, 1, 0],
+        [-_H1, 0, _L1 + _L2, 0, 1, 0],
+        [-_W1, _L1 + _L2, 0, 0, 0, -1],
+        [_H2 - _H1, 0, _L1 + _L2, 0, 1, 0],
+    ],
+    dtype=float,
+)
 UR5_HOME = np.array([[-1, 0, 0, _L1 + _L2], [0, 0, 1, _W1 + _W2], [0, 1, 0, _H1 - _H2], [0, 0, 0, 1]], dtype=float)
 RAIL_SCREWS = np.vstack([[1 / np.sqrt(5), 2 / np.sqrt(5), 0, 0, 0, 0], UR5_SCREWS])
 CHAIN_N = 10_000
@@ -152,8 +167,9 @@ def np_adjoint(g: np.ndarray) -> np.ndarray:
     return A
 
 
-def expm_forward(expm: Callable[[np.ndarray], np.ndarray], screws: np.ndarray, home: np.ndarray,
-                 theta: np.ndarray) -> np.ndarray:
+def expm_forward(
+    expm: Callable[[np.ndarray], np.ndarray], screws: np.ndarray, home: np.ndarray, theta: np.ndarray
+) -> np.ndarray:
     """The naive product of exponentials: a loop of scipy.linalg.expm of 4x4 hat matrices."""
     g = np.eye(4)
     for s, t in zip(screws, theta):
@@ -161,8 +177,7 @@ def expm_forward(expm: Callable[[np.ndarray], np.ndarray], screws: np.ndarray, h
     return g @ home
 
 
-def expm_jacobian_space(expm: Callable[[np.ndarray], np.ndarray], screws: np.ndarray,
-                        theta: np.ndarray) -> np.ndarray:
+def expm_jacobian_space(expm: Callable[[np.ndarray], np.ndarray], screws: np.ndarray, theta: np.ndarray) -> np.ndarray:
     J = np.empty((6, len(screws)))
     g = np.eye(4)
     for i, (s, t) in enumerate(zip(screws, theta)):
@@ -183,12 +198,17 @@ def kinematics_table(rep: int) -> None:
     rng = np.random.default_rng(2)
     peer_names = ["modern_robotics", "numpy + scipy expm"]
     print(f"### Python kinematics, per configuration (median of {rep})\n")
-    print(f"chasles batched over N = {CHAIN_N} joint vectors (ns per configuration) and per call for one "
-          "configuration (us). The peers have no batch form: a loop over N costs N of their calls, so their "
-          "per-call figure is also their per-configuration cost (1 us = 1000 ns). Ratios: chasles per call, "
-          "and chasles batched, to the best peer's call (< 1: chasles is faster).\n")
-    print("| arm | op | chasles batch ns | chasles call us | " + " | ".join(f"{n} call us" for n in peer_names)
-          + " | ratio per call | ratio batch |")
+    print(
+        f"chasles batched over N = {CHAIN_N} joint vectors (ns per configuration) and per call for one "
+        "configuration (us). The peers have no batch form: a loop over N costs N of their calls, so their "
+        "per-call figure is also their per-configuration cost (1 us = 1000 ns). Ratios: chasles per call, "
+        "and chasles batched, to the best peer's call (< 1: chasles is faster).\n"
+    )
+    print(
+        "| arm | op | chasles batch ns | chasles call us | "
+        + " | ".join(f"{n} call us" for n in peer_names)
+        + " | ratio per call | ratio batch |"
+    )
     print("| --- | --- | ---: | ---: | " + " | ".join("---:" for _ in peer_names) + " | ---: | ---: |")
     for arm_name, screws in (("UR5 (6 joints)", UR5_SCREWS), ("UR5 on a rail (7 joints)", RAIL_SCREWS)):
         n = len(screws)
@@ -209,12 +229,22 @@ def kinematics_table(rep: int) -> None:
             assert np.allclose(expm_forward(expm, screws, UR5_HOME, th), arm.forward(th), atol=1e-9)
             assert np.allclose(expm_jacobian_space(expm, screws, th), arm.jacobian_space(th), atol=1e-9)
         ops = {
-            "forward": (lambda: arm.forward(TH), lambda: arm.forward(th), {
-                "modern_robotics": (lambda: mr.FKinSpace(UR5_HOME, Slist, th)) if mr else None,
-                "numpy + scipy expm": (lambda: expm_forward(expm, screws, UR5_HOME, th)) if expm else None}),
-            "jacobian_space": (lambda: arm.jacobian_space(TH), lambda: arm.jacobian_space(th), {
-                "modern_robotics": (lambda: mr.JacobianSpace(Slist, th)) if mr else None,
-                "numpy + scipy expm": (lambda: expm_jacobian_space(expm, screws, th)) if expm else None}),
+            "forward": (
+                lambda: arm.forward(TH),
+                lambda: arm.forward(th),
+                {
+                    "modern_robotics": (lambda: mr.FKinSpace(UR5_HOME, Slist, th)) if mr else None,
+                    "numpy + scipy expm": (lambda: expm_forward(expm, screws, UR5_HOME, th)) if expm else None,
+                },
+            ),
+            "jacobian_space": (
+                lambda: arm.jacobian_space(TH),
+                lambda: arm.jacobian_space(th),
+                {
+                    "modern_robotics": (lambda: mr.JacobianSpace(Slist, th)) if mr else None,
+                    "numpy + scipy expm": (lambda: expm_jacobian_space(expm, screws, th)) if expm else None,
+                },
+            ),
         }
         for op, (batch, call, peer_fns) in ops.items():
             ours_batch = measure(batch, rep, 0.2)
@@ -225,8 +255,11 @@ def kinematics_table(rep: int) -> None:
             cells = [fig(peers[k] * 1e6) if peers[k] is not None else "" for k in peer_names]
             r_call = f"{ours_call / best[0]:.3g} ({best[1]})" if best and ours_call else ""
             r_batch = f"{ours_batch / CHAIN_N / best[0]:.3g} ({best[1]})" if best and ours_batch else ""
-            print(f"| {arm_name} | {op} | {fig(ours_batch / CHAIN_N * 1e9)} | {fig(ours_call * 1e6)} | "
-                  + " | ".join(cells) + f" | {r_call} | {r_batch} |")
+            print(
+                f"| {arm_name} | {op} | {fig(ours_batch / CHAIN_N * 1e9)} | {fig(ours_call * 1e6)} | "
+                + " | ".join(cells)
+                + f" | {r_call} | {r_batch} |"
+            )
     print()
 
 
@@ -247,9 +280,13 @@ def threads_table(rep: int) -> None:
         W = rng.normal(size=(n, 3))
         XI = np.concatenate([rng.normal(size=(n, 3)), W], axis=1)
         Rs, Gs = chasles.so3_exp(W), chasles.se3_exp(XI)
-        ops = {"SO3 exp": lambda: chasles.so3_exp(W), "SO3 log": lambda: chasles.so3_log(Rs),
-               "SE3 exp": lambda: chasles.se3_exp(XI), "SE3 log": lambda: chasles.se3_log(Gs),
-               "SE3 compose": lambda: chasles.se3_compose(Gs, Gs)}
+        ops = {
+            "SO3 exp": lambda: chasles.so3_exp(W),
+            "SO3 log": lambda: chasles.so3_log(Rs),
+            "SE3 exp": lambda: chasles.se3_exp(XI),
+            "SE3 log": lambda: chasles.se3_log(Gs),
+            "SE3 compose": lambda: chasles.se3_compose(Gs, Gs),
+        }
         for op, fn in ops.items():
             times = []
             for k in (1, 2):
@@ -258,8 +295,10 @@ def threads_table(rep: int) -> None:
             chasles.set_num_threads(before)
             target = ONE_THREAD_TARGET_NS.get(op, "") if n == 100_000 else ""
             speedup_target = THREADS_TARGET_SPEEDUP if n == 1_000_000 and op != "SE3 compose" else ""
-            print(f"| {op} | {n:.0e} | {times[0] * 1e9:.3g} | {times[1] * 1e9:.3g} | {times[0] / times[1]:.2f} | "
-                  f"{speedup_target} | {target} |")
+            print(
+                f"| {op} | {n:.0e} | {times[0] * 1e9:.3g} | {times[1] * 1e9:.3g} | {times[0] / times[1]:.2f} | "
+                f"{speedup_target} | {target} |"
+            )
     print()
 
 
@@ -297,8 +336,13 @@ def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--repeats", type=int, default=7)
     ap.add_argument("--sizes", type=int, nargs="+", default=[100_000, 1_000_000])
-    ap.add_argument("--spline-keys", type=int, nargs="+", default=[10, 1_000, 100_000, 1_000_000],
-                    help="the numbers of keys of the spline evaluation table")
+    ap.add_argument(
+        "--spline-keys",
+        type=int,
+        nargs="+",
+        default=[10, 1_000, 100_000, 1_000_000],
+        help="the numbers of keys of the spline evaluation table",
+    )
     ap.add_argument("--splines-only", action="store_true", help="only the spline evaluation table")
     args = ap.parse_args()
     rep = args.repeats
@@ -316,10 +360,13 @@ def main() -> int:
     pt3b = optional("pytransform3d.batch_rotations")
     pt3j = optional("pytransform3d.trajectories")
     scipy_version = getattr(optional("scipy"), "__version__", None)
-    print(f"chasles {chasles.__version__}, numpy {np.__version__}, scipy {scipy_version or 'absent'}, "
-          f"pinocchio {getattr(pin, '__version__', 'absent')}, "
-          f"pytransform3d {getattr(optional('pytransform3d'), '__version__', 'absent')}, "
-          f"modern_robotics {getattr(optional('modern_robotics'), '__version__', 'absent')}, Python {sys.version.split()[0]}\n")
+    print(
+        f"chasles {chasles.__version__}, numpy {np.__version__}, scipy {scipy_version or 'absent'}, "
+        f"pinocchio {getattr(pin, '__version__', 'absent')}, "
+        f"pytransform3d {getattr(optional('pytransform3d'), '__version__', 'absent')}, "
+        f"modern_robotics {getattr(optional('modern_robotics'), '__version__', 'absent')}, "
+        f"Python {sys.version.split()[0]}\n"
+    )
 
     rng = np.random.default_rng(1)
     w = rng.normal(size=3)
@@ -335,47 +382,83 @@ def main() -> int:
     sr = Rotation.from_rotvec(w) if Rotation else None
     sr2 = Rotation.from_rotvec(0.7 * w[::-1]) if Rotation else None
     st = RigidTransform.from_exp_coords(np.concatenate([w, xi[:3]])) if RigidTransform else None
-    st2 = RigidTransform.from_exp_coords(np.concatenate([0.5 * xi[::-1][3:], 0.5 * xi[::-1][:3]])) if RigidTransform else None
+    st2 = (
+        RigidTransform.from_exp_coords(np.concatenate([0.5 * xi[::-1][3:], 0.5 * xi[::-1][:3]]))
+        if RigidTransform
+        else None
+    )
     pR, pR2 = (pin.exp3(w), pin.exp3(0.7 * w[::-1])) if pin else (None, None)
     pg = pin.exp6(pin.Motion(xi[:3], xi[3:])) if pin else None
     pg2 = pin.exp6(pin.Motion(0.5 * xi[::-1][:3], 0.5 * xi[::-1][3:])) if pin else None
     S6 = np.concatenate([w, xi[:3]])  # pytransform3d's exponential coordinates: (omega, v)
     T2 = gm @ gm
 
-    peers_call["SO3 exp"] = {"scipy": (lambda: Rotation.from_rotvec(w).as_matrix()) if Rotation else None,
-                             "pin": (lambda: pin.exp3(w)) if pin else None,
-                             "pytransform3d": (lambda: pt3r.matrix_from_compact_axis_angle(w)) if pt3r else None}
-    peers_call["SO3 log"] = {"scipy": (lambda: Rotation.from_matrix(Rm).as_rotvec()) if Rotation else None,
-                             "pin": (lambda: pin.log3(Rm)) if pin else None,
-                             "pytransform3d": (lambda: pt3r.compact_axis_angle_from_matrix(Rm)) if pt3r else None}
-    peers_call["SO3 compose"] = {"scipy": (lambda: sr * sr2) if Rotation else None,
-                                 "pin": (lambda: pR @ pR2) if pin else None, "pytransform3d": None}
-    peers_call["SO3 inverse"] = {"scipy": (lambda: sr.inv()) if Rotation else None,
-                                 "pin": (lambda: pR.T) if pin else None, "pytransform3d": None}
-    peers_call["SO3 act"] = {"scipy": (lambda: sr.apply(p)) if Rotation else None,
-                             "pin": (lambda: pR @ p) if pin else None, "pytransform3d": None}
-    peers_call["SE3 exp"] = {"scipy": (lambda: RigidTransform.from_exp_coords(S6)) if RigidTransform else None,
-                             "pin": (lambda: pin.exp6(xi)) if pin else None,
-                             "pytransform3d": (lambda: pt3t.transform_from_exponential_coordinates(S6)) if pt3t else None}
-    peers_call["SE3 log"] = {"scipy": (lambda: st.as_exp_coords()) if RigidTransform else None,
-                             "pin": (lambda: pin.log6(gm)) if pin else None,
-                             "pytransform3d": (lambda: pt3t.exponential_coordinates_from_transform(gm)) if pt3t else None}
-    peers_call["SE3 compose"] = {"scipy": (lambda: st * st2) if RigidTransform else None,
-                                 "pin": (lambda: pg * pg2) if pin else None,
-                                 "pytransform3d": (lambda: pt3t.concat(gm, T2)) if pt3t else None}
-    peers_call["SE3 inverse"] = {"scipy": (lambda: st.inv()) if RigidTransform else None,
-                                 "pin": (lambda: pg.inverse()) if pin else None,
-                                 "pytransform3d": (lambda: pt3t.invert_transform(gm)) if pt3t else None}
-    peers_call["SE3 act"] = {"scipy": (lambda: st.apply(p)) if RigidTransform else None,
-                             "pin": (lambda: pg.act(p)) if pin else None,
-                             "pytransform3d": (lambda: pt3t.transform(gm, np.append(p, 1.0))) if pt3t else None}
-    peers_call["SE3 adjoint"] = {"scipy": None, "pin": (lambda: pg.action) if pin else None,
-                                 "pytransform3d": (lambda: pt3t.adjoint_from_transform(gm)) if pt3t else None}
+    peers_call["SO3 exp"] = {
+        "scipy": (lambda: Rotation.from_rotvec(w).as_matrix()) if Rotation else None,
+        "pin": (lambda: pin.exp3(w)) if pin else None,
+        "pytransform3d": (lambda: pt3r.matrix_from_compact_axis_angle(w)) if pt3r else None,
+    }
+    peers_call["SO3 log"] = {
+        "scipy": (lambda: Rotation.from_matrix(Rm).as_rotvec()) if Rotation else None,
+        "pin": (lambda: pin.log3(Rm)) if pin else None,
+        "pytransform3d": (lambda: pt3r.compact_axis_angle_from_matrix(Rm)) if pt3r else None,
+    }
+    peers_call["SO3 compose"] = {
+        "scipy": (lambda: sr * sr2) if Rotation else None,
+        "pin": (lambda: pR @ pR2) if pin else None,
+        "pytransform3d": None,
+    }
+    peers_call["SO3 inverse"] = {
+        "scipy": (lambda: sr.inv()) if Rotation else None,
+        "pin": (lambda: pR.T) if pin else None,
+        "pytransform3d": None,
+    }
+    peers_call["SO3 act"] = {
+        "scipy": (lambda: sr.apply(p)) if Rotation else None,
+        "pin": (lambda: pR @ p) if pin else None,
+        "pytransform3d": None,
+    }
+    peers_call["SE3 exp"] = {
+        "scipy": (lambda: RigidTransform.from_exp_coords(S6)) if RigidTransform else None,
+        "pin": (lambda: pin.exp6(xi)) if pin else None,
+        "pytransform3d": (lambda: pt3t.transform_from_exponential_coordinates(S6)) if pt3t else None,
+    }
+    peers_call["SE3 log"] = {
+        "scipy": (lambda: st.as_exp_coords()) if RigidTransform else None,
+        "pin": (lambda: pin.log6(gm)) if pin else None,
+        "pytransform3d": (lambda: pt3t.exponential_coordinates_from_transform(gm)) if pt3t else None,
+    }
+    peers_call["SE3 compose"] = {
+        "scipy": (lambda: st * st2) if RigidTransform else None,
+        "pin": (lambda: pg * pg2) if pin else None,
+        "pytransform3d": (lambda: pt3t.concat(gm, T2)) if pt3t else None,
+    }
+    peers_call["SE3 inverse"] = {
+        "scipy": (lambda: st.inv()) if RigidTransform else None,
+        "pin": (lambda: pg.inverse()) if pin else None,
+        "pytransform3d": (lambda: pt3t.invert_transform(gm)) if pt3t else None,
+    }
+    peers_call["SE3 act"] = {
+        "scipy": (lambda: st.apply(p)) if RigidTransform else None,
+        "pin": (lambda: pg.act(p)) if pin else None,
+        "pytransform3d": (lambda: pt3t.transform(gm, np.append(p, 1.0))) if pt3t else None,
+    }
+    peers_call["SE3 adjoint"] = {
+        "scipy": None,
+        "pin": (lambda: pg.action) if pin else None,
+        "pytransform3d": (lambda: pt3t.adjoint_from_transform(gm)) if pt3t else None,
+    }
     eul = R.as_euler("xyz")
-    peers_call["SO3 from_euler"] = {"scipy": (lambda: Rotation.from_euler("xyz", eul).as_matrix()) if Rotation else None,
-                                    "pin": (lambda: pin.rpy.rpyToMatrix(eul)) if pin else None, "pytransform3d": None}
-    peers_call["SO3 as_euler"] = {"scipy": (lambda: sr.as_euler("xyz")) if Rotation else None,
-                                  "pin": (lambda: pin.rpy.matrixToRpy(pR)) if pin else None, "pytransform3d": None}
+    peers_call["SO3 from_euler"] = {
+        "scipy": (lambda: Rotation.from_euler("xyz", eul).as_matrix()) if Rotation else None,
+        "pin": (lambda: pin.rpy.rpyToMatrix(eul)) if pin else None,
+        "pytransform3d": None,
+    }
+    peers_call["SO3 as_euler"] = {
+        "scipy": (lambda: sr.as_euler("xyz")) if Rotation else None,
+        "pin": (lambda: pin.rpy.matrixToRpy(pR)) if pin else None,
+        "pytransform3d": None,
+    }
     # B-splines: 64 control elements (random steps), one time per call
     bs_rng = np.random.default_rng(5)
     bs_so3 = chasles.SO3BSpline(0.0, 1.0, chasles.so3_exp(np.cumsum(0.3 * bs_rng.normal(size=(64, 3)), axis=0)))
@@ -387,8 +470,11 @@ def main() -> int:
     # and on Screw, which keeps pybind11's own instance path (the value
     # allocated with operator new, the instance registered in pybind11's map).
     screw = chasles.Screw([0.0, 0.0, 1.0], [0.0, 0.0, 0.0], 0.5, 1.0)
-    peers_call["floor: new SE3, no math"] = {"scipy": None, "pin": (lambda: pg.copy()) if pin else None,
-                                             "pytransform3d": None}
+    peers_call["floor: new SE3, no math"] = {
+        "scipy": None,
+        "pin": (lambda: pg.copy()) if pin else None,
+        "pytransform3d": None,
+    }
     peers_call["floor: pybind11's own path"] = {"scipy": None, "pin": None, "pytransform3d": None}
     ours_call: dict[str, Callable[[], object]] = {
         "SO3 B-spline value": lambda: bs_so3(30.3),
@@ -416,11 +502,14 @@ def main() -> int:
     # measured the same way and subtracted from every figure, chasles' and
     # the peers': what remains is what the call costs in a user's code.
     harness = median_time(lambda: None, rep)
-    print("### Python objects, per call (us, median of %d)\n" % rep)
-    print(f"Each figure less the harness's own cost per call (a loop calling an empty lambda), "
-          f"{harness * 1e9:.0f} ns in this run.\n")
+    print(f"### Python objects, per call (us, median of {rep})\n")
+    print(
+        f"Each figure less the harness's own cost per call (a loop calling an empty lambda), "
+        f"{harness * 1e9:.0f} ns in this run.\n"
+    )
     print("| op | chasles | " + " | ".join(names) + " | ratio to best peer | target us |")
     print("| --- | ---: | " + " | ".join("---:" for _ in names) + " | ---: | ---: |")
+
     def net(t: float | None) -> float | None:
         return None if t is None else t - harness
 
@@ -450,74 +539,154 @@ def main() -> int:
         st1 = RigidTransform.from_matrix(gm) if RigidTransform else None
         # splines through 100 keys (steps ~0.6 rad, 0.3 to 1 s apart), evaluated at n times inside their range
         key_t = np.cumsum(rng.uniform(0.3, 1.0, 100))
-        key_R = chasles.so3_compose(chasles.so3_exp(rng.normal(size=3)),
-                                    chasles.so3_exp(np.cumsum(rng.normal(scale=0.35, size=(100, 3)), axis=0)))
+        key_R = chasles.so3_compose(
+            chasles.so3_exp(rng.normal(size=3)),
+            chasles.so3_exp(np.cumsum(rng.normal(scale=0.35, size=(100, 3)), axis=0)),
+        )
         key_G = chasles.se3_exp(np.cumsum(rng.normal(scale=0.35, size=(100, 6)), axis=0))
         spline_so3, spline_se3 = chasles.SO3Spline(key_t, key_R), chasles.SE3Spline(key_t, key_G)
         spline_scipy = RotationSpline(key_t, Rotation.from_matrix(key_R)) if RotationSpline else None
         ts = rng.uniform(key_t[0], key_t[-1], n)
         ops: dict[str, tuple[Callable[[], object], dict[str, Callable[[], object] | None]]] = {
-            "SO3 exp": (lambda: chasles.so3_exp(W), {
-                "scipy": (lambda: Rotation.from_rotvec(W).as_matrix()) if Rotation else None,
-                "numpy": lambda: np_so3_exp(W),
-                "pytransform3d": (lambda: pt3b.matrices_from_compact_axis_angles(W)) if pt3b else None}),
-            "SO3 log": (lambda: chasles.so3_log(Rs), {
-                "scipy": (lambda: Rotation.from_matrix(Rs).as_rotvec()) if Rotation else None,
-                "numpy": lambda: np_so3_log(Rs),
-                "pytransform3d": (lambda: pt3b.axis_angles_from_matrices(Rs)) if pt3b else None}),
-            "SO3 compose": (lambda: chasles.so3_compose(Rs, Rs), {
-                "scipy": (lambda: srs * srs) if Rotation else None, "numpy": lambda: np.matmul(Rs, Rs),
-                "pytransform3d": None}),
-            "SO3 from_euler": (lambda: chasles.so3_from_euler("xyz", E), {
-                "scipy": (lambda: Rotation.from_euler("xyz", E).as_matrix()) if Rotation else None,
-                "numpy": None, "pytransform3d": None}),
-            "SO3 as_euler": (lambda: chasles.so3_as_euler("xyz", Rs), {
-                "scipy": (lambda: srs.as_euler("xyz")) if Rotation else None,
-                "numpy": None, "pytransform3d": None}),
-            "SE3 exp": (lambda: chasles.se3_exp(XI), {
-                "scipy": (lambda: RigidTransform.from_exp_coords(S6s).as_matrix()) if RigidTransform else None,
-                "numpy": None,
-                "pytransform3d": (lambda: pt3j.transforms_from_exponential_coordinates(S6s)) if pt3j else None}),
-            "SE3 log": (lambda: chasles.se3_log(Gs), {
-                "scipy": (lambda: RigidTransform.from_matrix(Gs).as_exp_coords()) if RigidTransform else None,
-                "numpy": None,
-                "pytransform3d": (lambda: pt3j.exponential_coordinates_from_transforms(Gs)) if pt3j else None}),
-            "SE3 compose": (lambda: chasles.se3_compose(Gs, Gs2), {
-                "scipy": (lambda: sts * sts2) if RigidTransform else None, "numpy": lambda: np.matmul(Gs, Gs2),
-                "pytransform3d": (lambda: pt3j.concat_many_to_many(Gs, Gs2)) if pt3j else None}),
-            "SO3 random (uniform)": (lambda: chasles.so3_random(n, rng=7), {
-                "scipy": (lambda: Rotation.random(n, rng=np.random.default_rng(7)).as_matrix()) if Rotation else None,
-                "numpy": None, "pytransform3d": None}),
-            "SO3 angle": (lambda: chasles.so3_angle(Rs), {
-                "scipy": (lambda: Rotation.from_matrix(Rs).magnitude()) if Rotation else None,
-                "numpy": lambda: np.arccos(np.clip((np.trace(Rs, axis1=1, axis2=2) - 1) / 2, -1, 1)),
-                "pytransform3d": None}),
-            "SO3 distance": (lambda: chasles.so3_distance(Rs, Rs[::-1]), {
-                "scipy": (lambda: (srs.inv() * srs[::-1]).magnitude()) if Rotation else None,
-                "numpy": None, "pytransform3d": None}),
-            "SO3 mean (chordal)": (lambda: chasles.so3_mean(Rc, method="chordal"), {
-                # from the matrices, as chasles takes them (with the quaternions held: ~8 ns)
-                "scipy": (lambda: Rotation.from_matrix(Rc).mean()) if Rotation else None, "numpy": None,
-                "pytransform3d": None}),
-            "SO3 mean (geodesic)": (lambda: chasles.so3_mean(Rc), {
-                "scipy": None, "numpy": None, "pytransform3d": None}),
-            "SO3 spline at N times (100 keys)": (lambda: spline_so3(ts), {
-                "scipy": (lambda: spline_scipy(ts).as_matrix()) if spline_scipy else None,
-                "numpy": None, "pytransform3d": None}),
-            "SO3 spline body velocity": (lambda: spline_so3.body_velocity(ts), {
-                "scipy": (lambda: spline_scipy(ts, 1)) if spline_scipy else None,
-                "numpy": None, "pytransform3d": None}),
-            "SO3 spline body acceleration": (lambda: spline_so3.body_acceleration(ts), {
-                "scipy": (lambda: spline_scipy(ts, 2)) if spline_scipy else None,
-                "numpy": None, "pytransform3d": None}),
-            "SE3 spline at N times (100 keys)": (lambda: spline_se3(ts), {
-                "scipy": None, "numpy": None, "pytransform3d": None}),
-            "SE3 act (1 pose, N points)": (lambda: chasles.se3_act(gm, P), {
-                "scipy": (lambda: st1.apply(P)) if RigidTransform else None,
-                "numpy": lambda: P @ gm[:3, :3].T + gm[:3, 3],
-                "pytransform3d": None}),
-            "SE3 act Jacobian (1 pose, N points)": (lambda: chasles.se3_act_jacobian(gm, P), {
-                "scipy": None, "numpy": lambda: np_act_jacobian(gm, P), "pytransform3d": None}),
+            "SO3 exp": (
+                lambda: chasles.so3_exp(W),
+                {
+                    "scipy": (lambda: Rotation.from_rotvec(W).as_matrix()) if Rotation else None,
+                    "numpy": lambda: np_so3_exp(W),
+                    "pytransform3d": (lambda: pt3b.matrices_from_compact_axis_angles(W)) if pt3b else None,
+                },
+            ),
+            "SO3 log": (
+                lambda: chasles.so3_log(Rs),
+                {
+                    "scipy": (lambda: Rotation.from_matrix(Rs).as_rotvec()) if Rotation else None,
+                    "numpy": lambda: np_so3_log(Rs),
+                    "pytransform3d": (lambda: pt3b.axis_angles_from_matrices(Rs)) if pt3b else None,
+                },
+            ),
+            "SO3 compose": (
+                lambda: chasles.so3_compose(Rs, Rs),
+                {
+                    "scipy": (lambda: srs * srs) if Rotation else None,
+                    "numpy": lambda: np.matmul(Rs, Rs),
+                    "pytransform3d": None,
+                },
+            ),
+            "SO3 from_euler": (
+                lambda: chasles.so3_from_euler("xyz", E),
+                {
+                    "scipy": (lambda: Rotation.from_euler("xyz", E).as_matrix()) if Rotation else None,
+                    "numpy": None,
+                    "pytransform3d": None,
+                },
+            ),
+            "SO3 as_euler": (
+                lambda: chasles.so3_as_euler("xyz", Rs),
+                {"scipy": (lambda: srs.as_euler("xyz")) if Rotation else None, "numpy": None, "pytransform3d": None},
+            ),
+            "SE3 exp": (
+                lambda: chasles.se3_exp(XI),
+                {
+                    "scipy": (lambda: RigidTransform.from_exp_coords(S6s).as_matrix()) if RigidTransform else None,
+                    "numpy": None,
+                    "pytransform3d": (lambda: pt3j.transforms_from_exponential_coordinates(S6s)) if pt3j else None,
+                },
+            ),
+            "SE3 log": (
+                lambda: chasles.se3_log(Gs),
+                {
+                    "scipy": (lambda: RigidTransform.from_matrix(Gs).as_exp_coords()) if RigidTransform else None,
+                    "numpy": None,
+                    "pytransform3d": (lambda: pt3j.exponential_coordinates_from_transforms(Gs)) if pt3j else None,
+                },
+            ),
+            "SE3 compose": (
+                lambda: chasles.se3_compose(Gs, Gs2),
+                {
+                    "scipy": (lambda: sts * sts2) if RigidTransform else None,
+                    "numpy": lambda: np.matmul(Gs, Gs2),
+                    "pytransform3d": (lambda: pt3j.concat_many_to_many(Gs, Gs2)) if pt3j else None,
+                },
+            ),
+            "SO3 random (uniform)": (
+                lambda: chasles.so3_random(n, rng=7),
+                {
+                    "scipy": (lambda: Rotation.random(n, rng=np.random.default_rng(7)).as_matrix())
+                    if Rotation
+                    else None,
+                    "numpy": None,
+                    "pytransform3d": None,
+                },
+            ),
+            "SO3 angle": (
+                lambda: chasles.so3_angle(Rs),
+                {
+                    "scipy": (lambda: Rotation.from_matrix(Rs).magnitude()) if Rotation else None,
+                    "numpy": lambda: np.arccos(np.clip((np.trace(Rs, axis1=1, axis2=2) - 1) / 2, -1, 1)),
+                    "pytransform3d": None,
+                },
+            ),
+            "SO3 distance": (
+                lambda: chasles.so3_distance(Rs, Rs[::-1]),
+                {
+                    "scipy": (lambda: (srs.inv() * srs[::-1]).magnitude()) if Rotation else None,
+                    "numpy": None,
+                    "pytransform3d": None,
+                },
+            ),
+            "SO3 mean (chordal)": (
+                lambda: chasles.so3_mean(Rc, method="chordal"),
+                {
+                    # from the matrices, as chasles takes them (with the quaternions held: ~8 ns)
+                    "scipy": (lambda: Rotation.from_matrix(Rc).mean()) if Rotation else None,
+                    "numpy": None,
+                    "pytransform3d": None,
+                },
+            ),
+            "SO3 mean (geodesic)": (
+                lambda: chasles.so3_mean(Rc),
+                {"scipy": None, "numpy": None, "pytransform3d": None},
+            ),
+            "SO3 spline at N times (100 keys)": (
+                lambda: spline_so3(ts),
+                {
+                    "scipy": (lambda: spline_scipy(ts).as_matrix()) if spline_scipy else None,
+                    "numpy": None,
+                    "pytransform3d": None,
+                },
+            ),
+            "SO3 spline body velocity": (
+                lambda: spline_so3.body_velocity(ts),
+                {
+                    "scipy": (lambda: spline_scipy(ts, 1)) if spline_scipy else None,
+                    "numpy": None,
+                    "pytransform3d": None,
+                },
+            ),
+            "SO3 spline body acceleration": (
+                lambda: spline_so3.body_acceleration(ts),
+                {
+                    "scipy": (lambda: spline_scipy(ts, 2)) if spline_scipy else None,
+                    "numpy": None,
+                    "pytransform3d": None,
+                },
+            ),
+            "SE3 spline at N times (100 keys)": (
+                lambda: spline_se3(ts),
+                {"scipy": None, "numpy": None, "pytransform3d": None},
+            ),
+            "SE3 act (1 pose, N points)": (
+                lambda: chasles.se3_act(gm, P),
+                {
+                    "scipy": (lambda: st1.apply(P)) if RigidTransform else None,
+                    "numpy": lambda: P @ gm[:3, :3].T + gm[:3, 3],
+                    "pytransform3d": None,
+                },
+            ),
+            "SE3 act Jacobian (1 pose, N points)": (
+                lambda: chasles.se3_act_jacobian(gm, P),
+                {"scipy": None, "numpy": lambda: np_act_jacobian(gm, P), "pytransform3d": None},
+            ),
             "SO3 B-spline value (N times)": (lambda: bs_so3(TB), {}),
             "SO3 B-spline velocity (N times)": (lambda: bs_so3.body_velocity(TB), {}),
             "SE3 B-spline value (N times)": (lambda: bs_se3(TB), {}),
@@ -531,8 +700,15 @@ def main() -> int:
         for op, (fn, peer_fns) in ops.items():
             ours = measure(fn, rep, budget)
             peers = {k: measure(peer_fns.get(k), rep, budget) for k in names}
-            print(row(op, ours and ours / n, {k: (t / n if t else None) for k, t in peers.items()}, 1e9,
-                      ARRAY_TARGET_NS.get(op) if n == 100_000 or op.startswith("SE3 act") else None))
+            print(
+                row(
+                    op,
+                    ours and ours / n,
+                    {k: (t / n if t else None) for k, t in peers.items()},
+                    1e9,
+                    ARRAY_TARGET_NS.get(op) if n == 100_000 or op.startswith("SE3 act") else None,
+                )
+            )
         print()
 
     # ---- spline fits ---------------------------------------------------------
@@ -544,8 +720,11 @@ def main() -> int:
     print("| op | chasles | scipy | ratio |")
     print("| --- | ---: | ---: | ---: |")
     for op, ours_fn, peer_fn in (
-        ("SO3Spline / RotationSpline", lambda: chasles.SO3Spline(key_t, key_R),
-         (lambda: RotationSpline(key_t, Rotation.from_matrix(key_R))) if RotationSpline else None),
+        (
+            "SO3Spline / RotationSpline",
+            lambda: chasles.SO3Spline(key_t, key_R),
+            (lambda: RotationSpline(key_t, Rotation.from_matrix(key_R))) if RotationSpline else None,
+        ),
         ("SE3Spline", lambda: chasles.SE3Spline(key_t, key_G), None),
     ):
         ours, peer = measure(ours_fn, rep), measure(peer_fn, rep)

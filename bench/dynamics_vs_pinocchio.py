@@ -98,18 +98,32 @@ def timings(chain: Chain, model, data, rng):
     Q, QD, QDD = rng.uniform(-1, 1, (3, BATCH, n))
     batch = lambda fn: tuple(t / BATCH for t in per_call(fn, repeats=3))  # noqa: E731
     return {
-        "rnea": (per_call(lambda: chain.inverse_dynamics(q, qd, qdd)), per_call(lambda: pin.rnea(model, data, qp, qd, qdd)),
-                 batch(lambda: chain.inverse_dynamics(Q, QD, QDD))),
-        "crba": (per_call(lambda: chain.mass_matrix(q)), per_call(lambda: pin.crba(model, data, qp)),
-                 batch(lambda: chain.mass_matrix(Q))),
-        "gravity": (per_call(lambda: chain.gravity_torques(q)),
-                    per_call(lambda: pin.computeGeneralizedGravity(model, data, qp)),
-                    batch(lambda: chain.gravity_torques(Q))),
+        "rnea": (
+            per_call(lambda: chain.inverse_dynamics(q, qd, qdd)),
+            per_call(lambda: pin.rnea(model, data, qp, qd, qdd)),
+            batch(lambda: chain.inverse_dynamics(Q, QD, QDD)),
+        ),
+        "crba": (
+            per_call(lambda: chain.mass_matrix(q)),
+            per_call(lambda: pin.crba(model, data, qp)),
+            batch(lambda: chain.mass_matrix(Q)),
+        ),
+        "gravity": (
+            per_call(lambda: chain.gravity_torques(q)),
+            per_call(lambda: pin.computeGeneralizedGravity(model, data, qp)),
+            batch(lambda: chain.gravity_torques(Q)),
+        ),
         # Pinocchio's C(q, qd) qd: nonLinearEffects (with gravity; no call without it)
-        "coriolis": (per_call(lambda: chain.coriolis(q, qd)), per_call(lambda: pin.nonLinearEffects(model, data, qp, qd)),
-                     batch(lambda: chain.coriolis(Q, QD))),
-        "aba": (per_call(lambda: chain.forward_dynamics(q, qd, qdd)), per_call(lambda: pin.aba(model, data, qp, qd, qdd)),
-                batch(lambda: chain.forward_dynamics(Q, QD, QDD))),
+        "coriolis": (
+            per_call(lambda: chain.coriolis(q, qd)),
+            per_call(lambda: pin.nonLinearEffects(model, data, qp, qd)),
+            batch(lambda: chain.coriolis(Q, QD)),
+        ),
+        "aba": (
+            per_call(lambda: chain.forward_dynamics(q, qd, qdd)),
+            per_call(lambda: pin.aba(model, data, qp, qd, qdd)),
+            batch(lambda: chain.forward_dynamics(Q, QD, QDD)),
+        ),
         "floor": (per_call(lambda: chain.lower), (np.nan, np.nan), (np.nan, np.nan)),
     }
 
@@ -137,13 +151,17 @@ def main() -> None:
             qp, q = pin_configuration(model, q), q
             pin.framesForwardKinematics(model, data, qp)
             worst["forward"] = max(worst["forward"], rel(chain.forward(q), data.oMf[frame].homogeneous))
-            worst["rnea"] = max(worst["rnea"], rel(chain.inverse_dynamics(q, qd, qdd), pin.rnea(model, data, qp, qd, qdd)))
+            worst["rnea"] = max(
+                worst["rnea"], rel(chain.inverse_dynamics(q, qd, qdd), pin.rnea(model, data, qp, qd, qdd))
+            )
             M = pin.crba(model, data, qp)
             M = np.triu(M) + np.triu(M, 1).T
             worst["crba"] = max(worst["crba"], rel(chain.mass_matrix(q), M))
             g = pin.computeGeneralizedGravity(model, data, qp)
             worst["gravity"] = max(worst["gravity"], rel(chain.gravity_torques(q), g))
-            worst["coriolis"] = max(worst["coriolis"], rel(chain.coriolis(q, qd), pin.nonLinearEffects(model, data, qp, qd) - g))
+            worst["coriolis"] = max(
+                worst["coriolis"], rel(chain.coriolis(q, qd), pin.nonLinearEffects(model, data, qp, qd) - g)
+            )
             worst["aba"] = max(worst["aba"], rel(chain.forward_dynamics(q, qd, tau), pin.aba(model, data, qp, qd, tau)))
         print(f"{name:6} {n:>2} " + " ".join(f"{worst[k]:8.1e}" for k in worst))
         if name in ("UR5", "Panda"):
@@ -154,11 +172,15 @@ def main() -> None:
     for name, rows in timing.items():
         for op, (a, b, c) in rows.items():
             if op == "floor":
-                print(f"{name:6} {'floor':9} {1e6 * a[0]:6.2f} ({1e6 * a[1]:5.2f})"
-                      "  (Chain.lower: a pybind11 call returning a new (n,) array)")
+                print(
+                    f"{name:6} {'floor':9} {1e6 * a[0]:6.2f} ({1e6 * a[1]:5.2f})"
+                    "  (Chain.lower: a pybind11 call returning a new (n,) array)"
+                )
             else:
-                print(f"{name:6} {op:9} {1e6 * a[0]:6.2f} ({1e6 * a[1]:5.2f}) {1e6 * b[0]:6.2f} ({1e6 * b[1]:5.2f})"
-                      f" {a[0] / b[0]:5.2f} ({a[1] / b[1]:4.2f}) {1e6 * c[0]:6.3f} ({1e6 * c[1]:5.3f})")
+                print(
+                    f"{name:6} {op:9} {1e6 * a[0]:6.2f} ({1e6 * a[1]:5.2f}) {1e6 * b[0]:6.2f} ({1e6 * b[1]:5.2f})"
+                    f" {a[0] / b[0]:5.2f} ({a[1] / b[1]:4.2f}) {1e6 * c[0]:6.3f} ({1e6 * c[1]:5.3f})"
+                )
 
 
 if __name__ == "__main__":

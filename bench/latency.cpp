@@ -37,14 +37,14 @@
 
 #include <benchmark/benchmark.h>  // DoNotOptimize only
 
+#include "chasles/bspline.hpp"
 #include "chasles/chasles.hpp"
-#include "chasles/jacobians.hpp"
-#include "chasles/kinematics.hpp"
 #include "chasles/dynamics.hpp"
 #include "chasles/inverse_kinematics.hpp"
+#include "chasles/jacobians.hpp"
+#include "chasles/kinematics.hpp"
 #include "chasles/spatial_inertia.hpp"
 #include "chasles/spline.hpp"
-#include "chasles/bspline.hpp"
 #include "support/arms.hpp"
 
 #if defined(__x86_64__) || defined(__i386__)
@@ -146,9 +146,8 @@ struct Timer {
 /// shuffled inputs; returns the row. `kinds[i]` indexes `kind_names` (the
 /// rotation kinds above unless given).
 template <typename In, typename Op, typename K>
-Row measure(const std::string& name, const std::vector<In>& in, const std::vector<K>& kinds, Op op,
-            std::size_t calls, const Timer& timer, const char* const* kind_names = kKindNames,
-            int kind_count = kKinds) {
+Row measure(const std::string& name, const std::vector<In>& in, const std::vector<K>& kinds, Op op, std::size_t calls,
+            const Timer& timer, const char* const* kind_names = kKindNames, int kind_count = kKinds) {
   std::vector<double> t(calls);
   std::vector<std::vector<double>> by_kind(static_cast<std::size_t>(kind_count));
   for (std::size_t i = 0; i < std::min<std::size_t>(calls, 4096); ++i) {  // warm up
@@ -249,51 +248,51 @@ std::vector<Row> run_all(std::size_t calls, const Timer& timer) {
   std::vector<Row> rows;
   rows.push_back(measure("SO3/exp", ws, kinds, [](const V3& w) { return SO3<S>::exp(w); }, calls, timer));
   rows.push_back(measure("SO3/log", Rs, kinds, [](const SO3<S>& R) { return R.log(); }, calls, timer));
-  rows.push_back(measure("SO3/compose", Rpairs, kinds, [](const auto& p) { return p.first * p.second; }, calls,
-                         timer));
-  rows.push_back(measure("SO3/act", Rpoints, kinds, [](const auto& p) { return V3(p.first * p.second); }, calls,
-                         timer));
-  rows.push_back(measure("SO3/as_quaternion", Rs, kinds, [](const SO3<S>& R) { return R.quaternion(); }, calls,
-                         timer));
-  rows.push_back(measure("SO3/from_quaternion", qs, kinds,
-                         [](const Eigen::Quaternion<S>& q) { return SO3<S>::from_quaternion(q); }, calls, timer));
-  rows.push_back(measure("SO3/from_matrix (checked)", Ms, kinds, [](const M3& M) { return SO3<S>::from_matrix(M); },
-                         calls, timer));
-  rows.push_back(measure("SO3/from_matrix_projected", Ms, kinds,
-                         [](const M3& M) { return SO3<S>::from_matrix_projected(M); }, calls, timer));
+  rows.push_back(measure("SO3/compose", Rpairs, kinds, [](const auto& p) { return p.first * p.second; }, calls, timer));
+  rows.push_back(
+      measure("SO3/act", Rpoints, kinds, [](const auto& p) { return V3(p.first * p.second); }, calls, timer));
+  rows.push_back(measure("SO3/as_quaternion", Rs, kinds, [](const SO3<S>& R) { return R.quaternion(); }, calls, timer));
+  rows.push_back(measure(
+      "SO3/from_quaternion", qs, kinds, [](const Eigen::Quaternion<S>& q) { return SO3<S>::from_quaternion(q); }, calls,
+      timer));
+  rows.push_back(measure(
+      "SO3/from_matrix (checked)", Ms, kinds, [](const M3& M) { return SO3<S>::from_matrix(M); }, calls, timer));
+  rows.push_back(measure(
+      "SO3/from_matrix_projected", Ms, kinds, [](const M3& M) { return SO3<S>::from_matrix_projected(M); }, calls,
+      timer));
   // Projection of arbitrary matrices (Gaussian entries: reflections, near
   // singular ones), where the Jacobi sweeps (at most 12) take longest.
-  rows.push_back(measure("SO3/from_matrix_projected (any matrix)", arbitrary, kinds,
-                         [](const M3& M) { return SO3<S>::from_matrix_projected(M); }, calls, timer));
-  rows.push_back(measure("SO3/interpolate", Rpairs, kinds,
-                         [](const auto& p) { return interpolate(p.first, p.second, S(0.3)); }, calls, timer));
+  rows.push_back(measure(
+      "SO3/from_matrix_projected (any matrix)", arbitrary, kinds,
+      [](const M3& M) { return SO3<S>::from_matrix_projected(M); }, calls, timer));
+  rows.push_back(measure(
+      "SO3/interpolate", Rpairs, kinds, [](const auto& p) { return interpolate(p.first, p.second, S(0.3)); }, calls,
+      timer));
   rows.push_back(measure("SE3/exp", xis, kinds, [](const V6& xi) { return SE3<S>::exp(xi); }, calls, timer));
   rows.push_back(measure("SE3/log", gs, kinds, [](const SE3<S>& g) { return g.log(); }, calls, timer));
-  rows.push_back(measure("SE3/compose", gpairs, kinds, [](const auto& p) { return p.first * p.second; }, calls,
-                         timer));
+  rows.push_back(measure("SE3/compose", gpairs, kinds, [](const auto& p) { return p.first * p.second; }, calls, timer));
   rows.push_back(measure("SE3/inverse", gs, kinds, [](const SE3<S>& g) { return g.inverse(); }, calls, timer));
-  rows.push_back(measure("SE3/act", gpoints, kinds, [](const auto& p) { return V3(p.first * p.second); }, calls,
-                         timer));
+  rows.push_back(
+      measure("SE3/act", gpoints, kinds, [](const auto& p) { return V3(p.first * p.second); }, calls, timer));
   rows.push_back(measure("SE3/adjoint", gs, kinds, [](const SE3<S>& g) { return g.adjoint(); }, calls, timer));
-  rows.push_back(measure("SE3/interpolate", gpairs, kinds,
-                         [](const auto& p) { return interpolate(p.first, p.second, S(0.3)); }, calls, timer));
-  rows.push_back(measure("Twist/screw", xis, kinds, [](const V6& xi) { return Twist<S>(xi).screw(); }, calls,
-                         timer));
-  rows.push_back(measure("SE3/right_jacobian", xis, kinds, [](const V6& xi) { return se3_right_jacobian(xi); },
-                         calls, timer));
-  rows.push_back(measure("Chain/forward (6 joints)", joints, kinds,
-                         [&chain](const typename C::JointVector& q) { return chain.forward(q); }, calls, timer));
-  rows.push_back(measure("Chain/jacobian_space (6 joints)", joints, kinds,
-                         [&chain](const typename C::JointVector& q) { return chain.jacobian_space(q); }, calls,
-                         timer));
+  rows.push_back(measure(
+      "SE3/interpolate", gpairs, kinds, [](const auto& p) { return interpolate(p.first, p.second, S(0.3)); }, calls,
+      timer));
+  rows.push_back(measure("Twist/screw", xis, kinds, [](const V6& xi) { return Twist<S>(xi).screw(); }, calls, timer));
+  rows.push_back(
+      measure("SE3/right_jacobian", xis, kinds, [](const V6& xi) { return se3_right_jacobian(xi); }, calls, timer));
+  rows.push_back(measure(
+      "Chain/forward (6 joints)", joints, kinds,
+      [&chain](const typename C::JointVector& q) { return chain.forward(q); }, calls, timer));
+  rows.push_back(measure(
+      "Chain/jacobian_space (6 joints)", joints, kinds,
+      [&chain](const typename C::JointVector& q) { return chain.jacobian_space(q); }, calls, timer));
   return rows;
 }
 
 // ---------------------------------------------------------------------------
 // Robot-arm operations: inverse kinematics, dynamics, spatial inertia,
 // splines.
-
-
 
 /// The kinds of inverse kinematics problem.
 enum IKKind { kNear, kAway, kUnreachable, kAtLimits, kIKKinds };
@@ -328,7 +327,9 @@ void ik_rows(const std::string& arm, const C& chain, const typename C::JointVect
   const chasles::IKOptions<S> options;
   std::mt19937_64 rng(7 + std::uint64_t(n));
   std::uniform_real_distribution<double> u(0, 1), near(-0.01, 0.01), away(-0.3, 0.3);
-  const auto solve = [&](const Problem& p) { return chasles::inverse_kinematics(chain, p.target, p.seed, lower, upper, options); };
+  const auto solve = [&](const Problem& p) {
+    return chasles::inverse_kinematics(chain, p.target, p.seed, lower, upper, options);
+  };
   const auto inside = [&] {
     JV q(n);
     for (int i = 0; i < n; ++i) {
@@ -394,8 +395,8 @@ void ik_rows(const std::string& arm, const C& chain, const typename C::JointVect
     }
     std::sort(its.begin(), its.end());
     table.push_back({op, its.front(), its.back(), double(its[its.size() / 2]), converged, int(ps.size())});
-    rows.push_back(measure(op, ps, kinds, [&](const Problem& p) { return solve(p).q; }, ik_calls, timer,
-                           kIKKindNames, kIKKinds));
+    rows.push_back(
+        measure(op, ps, kinds, [&](const Problem& p) { return solve(p).q; }, ik_calls, timer, kIKKindNames, kIKKinds));
     for (const Problem& p : ps) mixed.push_back(p), mixed_kinds.push_back(k);
   }
   // The same problems shuffled together: the tail of a mix.
@@ -405,8 +406,9 @@ void ik_rows(const std::string& arm, const C& chain, const typename C::JointVect
   std::vector<Problem> shuffled;
   std::vector<int> shuffled_kinds;
   for (std::size_t i : order) shuffled.push_back(mixed[i]), shuffled_kinds.push_back(mixed_kinds[i]);
-  rows.push_back(measure("IK/" + arm + " mixed", shuffled, shuffled_kinds,
-                         [&](const Problem& p) { return solve(p).q; }, ik_calls, timer, kIKKindNames, kIKKinds));
+  rows.push_back(measure(
+      "IK/" + arm + " mixed", shuffled, shuffled_kinds, [&](const Problem& p) { return solve(p).q; }, ik_calls, timer,
+      kIKKindNames, kIKKinds));
 }
 
 /// The kinds of dynamics input.
@@ -467,18 +469,20 @@ std::vector<Row> run_robot(std::size_t calls, const Timer& timer, std::vector<IK
     std::vector<State> xs;
     std::vector<int> ks;
     for (std::size_t i : order) xs.push_back(states[i]), ks.push_back(kinds[i]);
-    rows.push_back(measure("Dynamics/inverse_dynamics (7 joints)", xs, ks,
-                           [&dyn](const State& s) { return inverse_dynamics(dyn, s.q, s.qd, s.qdd); }, calls, timer,
-                           kDynKindNames, kDynKinds));
-    rows.push_back(measure("Dynamics/mass_matrix (7 joints)", xs, ks,
-                           [&dyn](const State& s) { return mass_matrix(dyn, s.q); }, calls, timer, kDynKindNames,
-                           kDynKinds));
-    rows.push_back(measure("Dynamics/gravity_torques (7 joints)", xs, ks,
-                           [&dyn](const State& s) { return gravity_torques(dyn, s.q); }, calls, timer, kDynKindNames,
-                           kDynKinds));
-    rows.push_back(measure("Dynamics/forward_dynamics (7 joints)", xs, ks,
-                           [&dyn](const State& s) { return forward_dynamics(dyn, s.q, s.qd, s.tau); }, calls, timer,
-                           kDynKindNames, kDynKinds));
+    rows.push_back(measure(
+        "Dynamics/inverse_dynamics (7 joints)", xs, ks,
+        [&dyn](const State& s) { return inverse_dynamics(dyn, s.q, s.qd, s.qdd); }, calls, timer, kDynKindNames,
+        kDynKinds));
+    rows.push_back(measure(
+        "Dynamics/mass_matrix (7 joints)", xs, ks, [&dyn](const State& s) { return mass_matrix(dyn, s.q); }, calls,
+        timer, kDynKindNames, kDynKinds));
+    rows.push_back(measure(
+        "Dynamics/gravity_torques (7 joints)", xs, ks, [&dyn](const State& s) { return gravity_torques(dyn, s.q); },
+        calls, timer, kDynKindNames, kDynKinds));
+    rows.push_back(measure(
+        "Dynamics/forward_dynamics (7 joints)", xs, ks,
+        [&dyn](const State& s) { return forward_dynamics(dyn, s.q, s.qd, s.tau); }, calls, timer, kDynKindNames,
+        kDynKinds));
   }
 
   // SpatialInertia::transform over poses of every rotation kind, and splines
@@ -497,8 +501,8 @@ std::vector<Row> run_robot(std::size_t calls, const Timer& timer, std::vector<IK
       gs.push_back(SE3<S>::exp(xi));
     }
     const SpatialInertia<S>& body = panda.inertias[3];
-    rows.push_back(measure("SpatialInertia/transform", gs, kinds,
-                           [&body](const SE3<S>& g) { return body.transform(g); }, calls, timer));
+    rows.push_back(measure(
+        "SpatialInertia/transform", gs, kinds, [&body](const SE3<S>& g) { return body.transform(g); }, calls, timer));
 
     // Keys: X_{i+1} = X_i exp(xi_i) with xi_i of kind i % kKinds; times 0, 0.5, 1, ...
     std::vector<SE3<S>> keys{SE3<S>::identity()};
@@ -533,18 +537,23 @@ std::vector<Row> run_robot(std::size_t calls, const Timer& timer, std::vector<IK
       ts[i] = S(0.5 * (double(s) + within(rng)));
       tkinds[i] = segment_kind[s];
     }
-    rows.push_back(measure("SE3Spline/operator() (64 keys)", ts, tkinds,
-                           [&spline](const S& t) { return spline(t).velocity; }, calls, timer));
-    rows.push_back(measure("SE3Spline/element (64 keys)", ts, tkinds,
-                           [&spline](const S& t) { return spline.element(t); }, calls, timer));
-    rows.push_back(measure("SO3Spline/operator() (64 keys)", ts, tkinds,
-                           [&rspline](const S& t) { return rspline(t).velocity; }, calls, timer));
-    rows.push_back(measure("SE3BSplineView/evaluate (64 points)", ts, tkinds,
-                           [&bspline](const S& t) { return bspline.evaluate(t).velocity; }, calls, timer));
-    rows.push_back(measure("SE3BSplineView/operator() (64 points)", ts, tkinds,
-                           [&bspline](const S& t) { return bspline(t); }, calls, timer));
-    rows.push_back(measure("SO3BSplineView/evaluate (64 points)", ts, tkinds,
-                           [&rbspline](const S& t) { return rbspline.evaluate(t).velocity; }, calls, timer));
+    rows.push_back(measure(
+        "SE3Spline/operator() (64 keys)", ts, tkinds, [&spline](const S& t) { return spline(t).velocity; }, calls,
+        timer));
+    rows.push_back(measure(
+        "SE3Spline/element (64 keys)", ts, tkinds, [&spline](const S& t) { return spline.element(t); }, calls, timer));
+    rows.push_back(measure(
+        "SO3Spline/operator() (64 keys)", ts, tkinds, [&rspline](const S& t) { return rspline(t).velocity; }, calls,
+        timer));
+    rows.push_back(measure(
+        "SE3BSplineView/evaluate (64 points)", ts, tkinds,
+        [&bspline](const S& t) { return bspline.evaluate(t).velocity; }, calls, timer));
+    rows.push_back(measure(
+        "SE3BSplineView/operator() (64 points)", ts, tkinds, [&bspline](const S& t) { return bspline(t); }, calls,
+        timer));
+    rows.push_back(measure(
+        "SO3BSplineView/evaluate (64 points)", ts, tkinds,
+        [&rbspline](const S& t) { return rbspline.evaluate(t).velocity; }, calls, timer));
   }
   return rows;
 }
@@ -565,8 +574,7 @@ void print(const char* scalar, const std::vector<Row>& rows, std::size_t calls) 
   std::printf("| --- | ---: | ---: | ---: | ---: | --- | ---: | ---: |\n");
   for (const Row& r : rows)
     std::printf("| %s | %.1f | %.1f | %.1f | %.0f | %s | %.1f | %.2f |\n", r.op.c_str(), r.median, r.p99, r.p9999,
-                r.max, r.worst_kind.c_str(), r.worst_kind_median,
-                r.median > 0 ? r.worst_kind_median / r.median : 0.0);
+                r.max, r.worst_kind.c_str(), r.worst_kind_median, r.median > 0 ? r.worst_kind_median / r.median : 0.0);
   std::printf("\n");
 }
 

@@ -36,8 +36,11 @@ ROOT = Path(__file__).resolve().parent.parent
 
 # op -> (Eigen baselines that do the same job, floor, target ns for double).
 CPP_OPS: dict[str, tuple[list[str], str | None, float | None]] = {
-    "SO3/exp": (["Eigen/AngleAxis_to_matrix", "Eigen/quaternion_exp_to_matrix", "Eigen/quaternion_exp"],
-                "floor/sincos", 17),
+    "SO3/exp": (
+        ["Eigen/AngleAxis_to_matrix", "Eigen/quaternion_exp_to_matrix", "Eigen/quaternion_exp"],
+        "floor/sincos",
+        17,
+    ),
     "SO3/log": (["Eigen/AngleAxis_from_matrix", "Eigen/AngleAxis_from_quaternion"], "floor/atan2", 22),
     "SO3/compose": (["Eigen/quaternion_compose"], "floor/matmul_3x3_3x3", 4),
     "SO3/inverse": ([], None, None),
@@ -63,10 +66,14 @@ CPP_OPS: dict[str, tuple[list[str], str | None, float | None]] = {
 
 def build_cpp(build_dir: Path) -> None:
     """Configures and builds bench/ (both benchmark binaries and the latency table)."""
-    subprocess.run(["cmake", "-S", str(ROOT), "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release",
-                    "-DCHASLES_BUILD_BENCH=ON"], check=True, stdout=subprocess.DEVNULL)
-    subprocess.run(["cmake", "--build", str(build_dir), "-j", str(os.cpu_count() or 2)], check=True,
-                   stdout=subprocess.DEVNULL)
+    subprocess.run(
+        ["cmake", "-S", str(ROOT), "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release", "-DCHASLES_BUILD_BENCH=ON"],
+        check=True,
+        stdout=subprocess.DEVNULL,
+    )
+    subprocess.run(
+        ["cmake", "--build", str(build_dir), "-j", str(os.cpu_count() or 2)], check=True, stdout=subprocess.DEVNULL
+    )
 
 
 def run_cpp(build_dir: Path, repetitions: int, min_time: float) -> dict[str, dict[str, float]]:
@@ -75,9 +82,18 @@ def run_cpp(build_dir: Path, repetitions: int, min_time: float) -> dict[str, dic
     results: dict[str, dict[str, float]] = {}
     for variant in ("portable", "native"):
         exe = build_dir / "bench" / f"chasles_bench_{variant}"
-        out = subprocess.run([str(exe), "--benchmark_format=json", f"--benchmark_repetitions={repetitions}",
-                              f"--benchmark_min_time={min_time}", "--benchmark_report_aggregates_only=true"],
-                             check=True, capture_output=True, text=True).stdout
+        out = subprocess.run(
+            [
+                str(exe),
+                "--benchmark_format=json",
+                f"--benchmark_repetitions={repetitions}",
+                f"--benchmark_min_time={min_time}",
+                "--benchmark_report_aggregates_only=true",
+            ],
+            check=True,
+            capture_output=True,
+            text=True,
+        ).stdout
         medians = {}
         for b in json.loads(out)["benchmarks"]:
             if b.get("aggregate_name") == "median":
@@ -89,25 +105,39 @@ def run_cpp(build_dir: Path, repetitions: int, min_time: float) -> dict[str, dic
 
 
 def cpp_table(medians: dict[str, float], scalar: str) -> str:
-    rows = ["| op | input | chasles ns | worst error (eps) | best Eigen peer | peer ns | ratio | floor ns | x floor | "
-            "target ns |",
-            "| --- | --- | ---: | ---: | --- | ---: | ---: | ---: | ---: | ---: |"]
+    rows = [
+        "| op | input | chasles ns | worst error (eps) | best Eigen peer | peer ns | ratio | floor ns | x floor | "
+        "target ns |",
+        "| --- | --- | ---: | ---: | --- | ---: | ---: | ---: | ---: | ---: |",
+    ]
     for op, (peers, floor, target) in CPP_OPS.items():
         for kind in ("generic", "tiny", "near_pi"):
             name = f"{op}/{kind}/{scalar}"
             if name not in medians:
                 continue
             t = medians[name]
-            peer_times = [(medians[f"{p}/{kind}/{scalar}"], p.split("/", 1)[1]) for p in peers
-                          if f"{p}/{kind}/{scalar}" in medians]
+            peer_times = [
+                (medians[f"{p}/{kind}/{scalar}"], p.split("/", 1)[1])
+                for p in peers
+                if f"{p}/{kind}/{scalar}" in medians
+            ]
             best = min(peer_times) if peer_times else None
             f = medians.get(f"{floor}/generic/{scalar}") if floor else None
             err = medians.get("err_eps:" + name)
-            rows.append("| {} | {} | {:.1f} | {} | {} | {} | {} | {} | {} | {} |".format(
-                op, kind, t, f"{err:.2f}" if err is not None else "", best[1] if best else "",
-                f"{best[0]:.1f}" if best else "",
-                f"{t / best[0]:.2f}" if best else "", f"{f:.1f}" if f else "", f"{t / f:.1f}" if f else "",
-                (f"{target:g}" if target and scalar == "double" and kind == "generic" else "")))
+            rows.append(
+                "| {} | {} | {:.1f} | {} | {} | {} | {} | {} | {} | {} |".format(
+                    op,
+                    kind,
+                    t,
+                    f"{err:.2f}" if err is not None else "",
+                    best[1] if best else "",
+                    f"{best[0]:.1f}" if best else "",
+                    f"{t / best[0]:.2f}" if best else "",
+                    f"{f:.1f}" if f else "",
+                    f"{t / f:.1f}" if f else "",
+                    (f"{target:g}" if target and scalar == "double" and kind == "generic" else ""),
+                )
+            )
     return "\n".join(rows)
 
 
@@ -208,8 +238,12 @@ def main() -> int:
     ap.add_argument("--build-dir", type=Path, default=ROOT / "build" / "bench")
     ap.add_argument("--repetitions", type=int, default=5)
     ap.add_argument("--min-time", type=float, default=0.1, help="seconds per repetition (C++)")
-    ap.add_argument("--write", type=Path, metavar="PAGE",
-                    help="also write the page (docs/performance.md) with the tables of this run")
+    ap.add_argument(
+        "--write",
+        type=Path,
+        metavar="PAGE",
+        help="also write the page (docs/performance.md) with the tables of this run",
+    )
     args = ap.parse_args()
     report = Report()
     report.emit(f"Machine: {machine()}\n")

@@ -22,8 +22,8 @@ namespace chasles_py {
 
 namespace {
 
-using ufunc::Core;
 using ufunc::array_doc;
+using ufunc::Core;
 using ufunc::def_ufunc;
 using ufunc::ScalarOf;
 
@@ -43,8 +43,8 @@ auto from_quat_kernel() {
     if (!q.allFinite() || !(q.squaredNorm() > T(0))) {
       R.setConstant(std::numeric_limits<T>::quiet_NaN());
     } else {
-      const Eigen::Quaternion<T> e = ScalarFirst ? Eigen::Quaternion<T>(q[0], q[1], q[2], q[3])
-                                                 : Eigen::Quaternion<T>(q[3], q[0], q[1], q[2]);
+      const Eigen::Quaternion<T> e =
+          ScalarFirst ? Eigen::Quaternion<T>(q[0], q[1], q[2], q[3]) : Eigen::Quaternion<T>(q[3], q[0], q[1], q[2]);
       R = SO3<T>::from_quaternion(e).matrix();
     }
     return R;
@@ -101,9 +101,10 @@ Args:
 
 Returns:
     numpy.ndarray of shape (..., 3, 3): the rotation matrices.)"),
-      [](const auto& w) { return SO3<ScalarOf<decltype(w)>>::exp(w).matrix(); });
+                                 [](const auto& w) { return SO3<ScalarOf<decltype(w)>>::exp(w).matrix(); });
 
-  def_ufunc<Core<3>(Core<3, 3>)>(m, "so3_log", "R", array_doc(R"(Rotation vectors of rotation matrices: w = log(R)^vee.
+  def_ufunc<Core<3>(Core<3, 3>)>(
+      m, "so3_log", "R", array_doc(R"(Rotation vectors of rotation matrices: w = log(R)^vee.
 
 The angle |w| is in [0, pi]; at exactly pi either axis sign is returned,
 never NaN. Robust near 0 and near pi, and as accurate for a matrix slightly
@@ -116,7 +117,8 @@ Returns:
     numpy.ndarray of shape (..., 3): the rotation vectors (axis times angle).)"),
       [](const auto& R) { return SO3<ScalarOf<decltype(R)>>::from_matrix_unchecked(R).log(); });
 
-  def_ufunc<Core<3, 3>(Core<3, 3>, Core<3, 3>)>(m, "so3_compose", "a, b", array_doc(R"(Composition of rotations: a @ b (R_ac = R_ab R_bc).
+  def_ufunc<Core<3, 3>(Core<3, 3>, Core<3, 3>)>(
+      m, "so3_compose", "a, b", array_doc(R"(Composition of rotations: a @ b (R_ac = R_ab R_bc).
 
 Args:
     a: array_like of shape (..., 3, 3): rotation matrices.
@@ -130,7 +132,8 @@ Returns:
         return (SO3<T>::from_matrix_unchecked(a) * SO3<T>::from_matrix_unchecked(b)).matrix();
       });
 
-  def_ufunc<Core<3, 3>(Core<3, 3>)>(m, "so3_inverse", "R", array_doc(R"(Inverse rotations: R^-1 = R^T.
+  def_ufunc<Core<3, 3>(Core<3, 3>)>(
+      m, "so3_inverse", "R", array_doc(R"(Inverse rotations: R^-1 = R^T.
 
 Args:
     R: array_like of shape (..., 3, 3): rotation matrices.
@@ -139,7 +142,8 @@ Returns:
     numpy.ndarray of shape (..., 3, 3): the inverses.)"),
       [](const auto& R) { return SO3<ScalarOf<decltype(R)>>::from_matrix_unchecked(R).inverse().matrix(); });
 
-  def_ufunc<Core<3>(Core<3, 3>, Core<3>)>(m, "so3_act", "R, points", array_doc(R"(Rotated points or vectors: p_a = R_ab p_b.
+  def_ufunc<Core<3>(Core<3, 3>, Core<3>)>(
+      m, "so3_act", "R, points", array_doc(R"(Rotated points or vectors: p_a = R_ab p_b.
 
 Broadcasts: one rotation of shape (3, 3) with points of shape (N, 3), N
 rotations with N points, (N, 1, 3, 3) with (M, 3) for every pair, ...
@@ -150,11 +154,10 @@ Args:
 
 Returns:
     numpy.ndarray of shape (..., 3): the rotated points.)"),
-      [](const auto& R, const auto& p) {
-        return SO3<ScalarOf<decltype(R)>>::from_matrix_unchecked(R).act(p);
-      });
+      [](const auto& R, const auto& p) { return SO3<ScalarOf<decltype(R)>>::from_matrix_unchecked(R).act(p); });
 
-  def_ufunc<Core<3, 3>(Core<3>)>(m, "so3_hat", "w", array_doc(R"(Skew-symmetric matrices: [w] = [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]].
+  def_ufunc<Core<3, 3>(Core<3>)>(m, "so3_hat", "w",
+                                 array_doc(R"(Skew-symmetric matrices: [w] = [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]].
 
 So that [w] p = w x p.
 
@@ -163,9 +166,10 @@ Args:
 
 Returns:
     numpy.ndarray of shape (..., 3, 3): the matrices [w].)"),
-      [](const auto& w) { return SO3<ScalarOf<decltype(w)>>::hat(w); });
+                                 [](const auto& w) { return SO3<ScalarOf<decltype(w)>>::hat(w); });
 
-  def_ufunc<Core<3>(Core<3, 3>)>(m, "so3_vee", "matrix", array_doc(R"(The vectors of skew-symmetric matrices: vee([w]) = w.
+  def_ufunc<Core<3>(Core<3, 3>)>(m, "so3_vee", "matrix",
+                                 array_doc(R"(The vectors of skew-symmetric matrices: vee([w]) = w.
 
 Reads the antisymmetric part (W - W^T) / 2, so a matrix that is not exactly
 skew gives the w of its nearest skew matrix.
@@ -175,9 +179,10 @@ Args:
 
 Returns:
     numpy.ndarray of shape (..., 3): the vectors w.)"),
-      [](const auto& W) { return SO3<ScalarOf<decltype(W)>>::vee(W); });
+                                 [](const auto& W) { return SO3<ScalarOf<decltype(W)>>::vee(W); });
 
-  def_ufunc<Core<3, 3>(Core<3, 3>, Core<3, 3>, Core<>)>(m, "so3_interpolate", "a, b, t", array_doc(R"(Geodesic interpolation of rotations: a exp(t log(a^-1 b)).
+  def_ufunc<Core<3, 3>(Core<3, 3>, Core<3, 3>, Core<>)>(
+      m, "so3_interpolate", "a, b, t", array_doc(R"(Geodesic interpolation of rotations: a exp(t log(a^-1 b)).
 
 t = 0 gives a, t = 1 gives b, constant angular velocity in between.
 
@@ -191,8 +196,7 @@ Returns:
     numpy.ndarray of shape (..., 3, 3): the interpolated rotations.)"),
       [](const auto& a, const auto& b, const auto& t) {
         using T = ScalarOf<decltype(a)>;
-        return chasles::interpolate(SO3<T>::from_matrix_unchecked(a), SO3<T>::from_matrix_unchecked(b), t)
-            .matrix();
+        return chasles::interpolate(SO3<T>::from_matrix_unchecked(a), SO3<T>::from_matrix_unchecked(b), t).matrix();
       });
   def_ufunc<Core<3, 3>(Core<4>)>(m, "_so3_from_quat_xyzw", "quat", array_doc(kFromQuatDoc), from_quat_kernel<false>());
   def_ufunc<Core<3, 3>(Core<4>)>(m, "_so3_from_quat_wxyz", "quat", array_doc(kFromQuatDoc), from_quat_kernel<true>());
@@ -215,9 +219,10 @@ Args:
 Returns:
     numpy.ndarray of shape (..., 4, 4): the homogeneous matrices
     [[R, p], [0, 1]].)"),
-      [](const auto& xi) { return SE3<ScalarOf<decltype(xi)>>::exp(xi); });
+                                 [](const auto& xi) { return SE3<ScalarOf<decltype(xi)>>::exp(xi); });
 
-  def_ufunc<Core<6>(Core<4, 4>)>(m, "se3_log", "g", array_doc(R"(Twists of rigid motions: xi = log(g)^vee, xi = (v, w).
+  def_ufunc<Core<6>(Core<4, 4>)>(
+      m, "se3_log", "g", array_doc(R"(Twists of rigid motions: xi = log(g)^vee, xi = (v, w).
 
 Rotation angle |w| in [0, pi] (at exactly pi, either axis sign); v = V^-1 p.
 
@@ -228,7 +233,8 @@ Returns:
     numpy.ndarray of shape (..., 6): the twists (v, w), linear part first.)"),
       [](const auto& g) { return SE3<ScalarOf<decltype(g)>>::from_matrix_unchecked(g).log(); });
 
-  def_ufunc<Core<4, 4>(Core<4, 4>, Core<4, 4>)>(m, "se3_compose", "a, b", array_doc(R"(Composition of rigid motions: a @ b (g_ac = g_ab g_bc).
+  def_ufunc<Core<4, 4>(Core<4, 4>, Core<4, 4>)>(
+      m, "se3_compose", "a, b", array_doc(R"(Composition of rigid motions: a @ b (g_ac = g_ab g_bc).
 
 Args:
     a: array_like of shape (..., 4, 4): homogeneous matrices.
@@ -242,7 +248,8 @@ Returns:
         return SE3<T>::from_matrix_unchecked(a) * SE3<T>::from_matrix_unchecked(b);
       });
 
-  def_ufunc<Core<4, 4>(Core<4, 4>)>(m, "se3_inverse", "g", array_doc(R"(Inverse rigid motions: g^-1 = [[R^T, -R^T p], [0, 1]].
+  def_ufunc<Core<4, 4>(Core<4, 4>)>(
+      m, "se3_inverse", "g", array_doc(R"(Inverse rigid motions: g^-1 = [[R^T, -R^T p], [0, 1]].
 
 Args:
     g: array_like of shape (..., 4, 4): homogeneous matrices.
@@ -251,7 +258,8 @@ Returns:
     numpy.ndarray of shape (..., 4, 4): the inverses.)"),
       [](const auto& g) { return SE3<ScalarOf<decltype(g)>>::from_matrix_unchecked(g).inverse(); });
 
-  def_ufunc<Core<3>(Core<4, 4>, Core<3>)>(m, "se3_act", "g, points", array_doc(R"(Transformed points: q_a = R_ab q_b + p_ab.
+  def_ufunc<Core<3>(Core<4, 4>, Core<3>)>(
+      m, "se3_act", "g, points", array_doc(R"(Transformed points: q_a = R_ab q_b + p_ab.
 
 Broadcasts: one pose of shape (4, 4) with points of shape (N, 3), N poses
 with N points, (N, 1, 4, 4) with (M, 3) for every pair, ...
@@ -262,11 +270,10 @@ Args:
 
 Returns:
     numpy.ndarray of shape (..., 3): the transformed points.)"),
-      [](const auto& g, const auto& p) {
-        return SE3<ScalarOf<decltype(g)>>::from_matrix_unchecked(g).act(p);
-      });
+      [](const auto& g, const auto& p) { return SE3<ScalarOf<decltype(g)>>::from_matrix_unchecked(g).act(p); });
 
-  def_ufunc<Core<6, 6>(Core<4, 4>)>(m, "se3_adjoint", "g", array_doc(R"(Adjoint matrices: Ad_g = [[R, [p] R], [0, R]] (6x6).
+  def_ufunc<Core<6, 6>(Core<4, 4>)>(
+      m, "se3_adjoint", "g", array_doc(R"(Adjoint matrices: Ad_g = [[R, [p] R], [0, R]] (6x6).
 
 Twist order (v, w), linear part first: twists change frame by
 xi_a = Ad_g xi_b, wrenches by F_b = Ad_g^T F_a.
@@ -278,7 +285,8 @@ Returns:
     numpy.ndarray of shape (..., 6, 6): the adjoint matrices.)"),
       [](const auto& g) { return SE3<ScalarOf<decltype(g)>>::from_matrix_unchecked(g).adjoint(); });
 
-  def_ufunc<Core<6>(Core<4, 4>, Core<6>)>(m, "se3_act_twist", "g, xi", array_doc(R"(Twists changed from frame b to frame a: xi_a = Ad_g xi_b.
+  def_ufunc<Core<6>(Core<4, 4>, Core<6>)>(m, "se3_act_twist", "g, xi",
+                                          array_doc(R"(Twists changed from frame b to frame a: xi_a = Ad_g xi_b.
 
 xi_a = (R v + p x R w, R w) for xi_b = (v, w), linear part first.
 
@@ -288,12 +296,13 @@ Args:
 
 Returns:
     numpy.ndarray of shape (..., 6): the twists (v, w) in frame a.)"),
-      [](const auto& g, const auto& xi) {
-        using T = ScalarOf<decltype(g)>;
-        return SE3<T>::from_matrix_unchecked(g).act(chasles::Twist<T>(xi)).vector();
-      });
+                                          [](const auto& g, const auto& xi) {
+                                            using T = ScalarOf<decltype(g)>;
+                                            return SE3<T>::from_matrix_unchecked(g).act(chasles::Twist<T>(xi)).vector();
+                                          });
 
-  def_ufunc<Core<6>(Core<4, 4>, Core<6>)>(m, "se3_act_wrench", "g, F", array_doc(R"(Wrenches changed from frame b to frame a: F_a = Ad_g^-T F_b.
+  def_ufunc<Core<6>(Core<4, 4>, Core<6>)>(m, "se3_act_wrench", "g, F",
+                                          array_doc(R"(Wrenches changed from frame b to frame a: F_a = Ad_g^-T F_b.
 
 F_a = (R f, p x R f + R tau) for F_b = (f, tau), force first, so that the
 power xi . F is the same in both frames.
@@ -304,12 +313,13 @@ Args:
 
 Returns:
     numpy.ndarray of shape (..., 6): the wrenches (f, tau) in frame a.)"),
-      [](const auto& g, const auto& F) {
-        using T = ScalarOf<decltype(g)>;
-        return SE3<T>::from_matrix_unchecked(g).act(chasles::Wrench<T>(F)).vector();
-      });
+                                          [](const auto& g, const auto& F) {
+                                            using T = ScalarOf<decltype(g)>;
+                                            return SE3<T>::from_matrix_unchecked(g).act(chasles::Wrench<T>(F)).vector();
+                                          });
 
-  def_ufunc<Core<4, 4>(Core<4, 4>, Core<4, 4>, Core<>)>(m, "se3_interpolate", "a, b, t", array_doc(R"(Screw interpolation of rigid motions: a exp(t log(a^-1 b)).
+  def_ufunc<Core<4, 4>(Core<4, 4>, Core<4, 4>, Core<>)>(
+      m, "se3_interpolate", "a, b, t", array_doc(R"(Screw interpolation of rigid motions: a exp(t log(a^-1 b)).
 
 t = 0 gives a, t = 1 gives b, one screw motion in between.
 
@@ -333,9 +343,10 @@ Args:
 
 Returns:
     numpy.ndarray of shape (..., 4, 4): the matrices [xi].)"),
-      [](const auto& xi) { return chasles::Twist<ScalarOf<decltype(xi)>>(xi).hat(); });
+                                 [](const auto& xi) { return chasles::Twist<ScalarOf<decltype(xi)>>(xi).hat(); });
 
-  def_ufunc<Core<6>(Core<4, 4>)>(m, "se3_vee", "matrix", array_doc(R"(Twists of 4x4 matrices: [xi]^vee = (v, w), linear part first.
+  def_ufunc<Core<6>(Core<4, 4>)>(m, "se3_vee", "matrix",
+                                 array_doc(R"(Twists of 4x4 matrices: [xi]^vee = (v, w), linear part first.
 
 v is the last column's top three entries, w the vee of the antisymmetric
 part of the top-left 3x3 block; the bottom row is not read.
@@ -345,7 +356,7 @@ Args:
 
 Returns:
     numpy.ndarray of shape (..., 6): the twists (v, w).)"),
-      [](const auto& X) { return chasles::Twist<ScalarOf<decltype(X)>>::vee(X).vector(); });
+                                 [](const auto& X) { return chasles::Twist<ScalarOf<decltype(X)>>::vee(X).vector(); });
 }
 
 }  // namespace

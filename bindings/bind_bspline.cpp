@@ -86,8 +86,8 @@ Group element_from_matrix(const double* m, std::ptrdiff_t index, const std::stri
   constexpr int n = Names<Group>::rows;
   const Eigen::Map<const Eigen::Matrix<double, n, n, Eigen::RowMajor>> M(m);
   const Eigen::Matrix<double, n, n> A = M;
-  const double tolerance = single ? double(chasles::Thresholds<float>::rotation_tolerance)
-                                  : chasles::Thresholds<double>::rotation_tolerance;
+  const double tolerance =
+      single ? double(chasles::Thresholds<float>::rotation_tolerance) : chasles::Thresholds<double>::rotation_tolerance;
   std::optional<Group> g;
   double defect;
   if constexpr (n == 3) {
@@ -242,8 +242,8 @@ py::object times_operand(const BSpline<Group>& s, py::handle t, const char* what
   const double t0 = s.start_time, t1 = s.end_time();
   for (py::ssize_t i = 0; i < count; ++i) {
     if (tp[i] < t0 || tp[i] > t1) {  // NaN passes: NaN result
-      raise_value_error(std::string(what) + ": expected times in [start_time, end_time] = [" + float_repr(t0) +
-                        ", " + float_repr(t1) + "], got " + float_repr(tp[i]));
+      raise_value_error(std::string(what) + ": expected times in [start_time, end_time] = [" + float_repr(t0) + ", " +
+                        float_repr(t1) + "], got " + float_repr(tp[i]));
     }
   }
   return std::move(times);
@@ -278,7 +278,8 @@ void bind_one(py::module_& m) {
         s.start_time = to_finite_real(start_time.obj, label<Group>("start_time").c_str());
         s.spacing = to_finite_real(spacing.obj, label<Group>("spacing").c_str());
         if (!(s.spacing > 0))
-          raise_value_error(label<Group>("spacing") + ": expected a positive spacing (> 0), got " + float_repr(s.spacing));
+          raise_value_error(label<Group>("spacing") + ": expected a positive spacing (> 0), got " +
+                            float_repr(s.spacing));
         s.control = control_array(control_of<Group>(control.obj));
         return py::make_tuple(s.start_time, s.spacing, s.control);
       },
@@ -286,8 +287,8 @@ void bind_one(py::module_& m) {
       (std::string("The checked arguments of ") + Names<Group>::cls +
        "(start_time, spacing, control): (start_time, spacing, the control elements as a new read-only (N, " +
        std::to_string(rows) + ", " + std::to_string(rows) + ") float64 array of " + what + "), or the " +
-       Names<Group>::cls + " constructor's ValueError / TypeError. A private function of chasles." +
-       Names<Group>::cls + " (python/chasles/_bspline.py).")
+       Names<Group>::cls + " constructor's ValueError / TypeError. A private function of chasles." + Names<Group>::cls +
+       " (python/chasles/_bspline.py).")
           .c_str());
 
   using ufunc::Core;
@@ -297,7 +298,8 @@ void bind_one(py::module_& m) {
   const std::string operands = std::string("\n\nOperands (float64): start_time (), spacing () > 0, control (n, ") +
                                std::to_string(rows) + ", " + std::to_string(rows) +
                                "), n >= 4 (NaN results otherwise), t (), clamped to [start_time, end_time]. "
-                               "A private ufunc of chasles." + Names<Group>::cls + ".";
+                               "A private ufunc of chasles." +
+                               Names<Group>::cls + ".";
   const py::object u_element = ufunc::def_ufunc<Core<rows, rows>(Core<>, Core<>, Control, Core<>), ufunc::Float64>(
       m, element_name.c_str(), "start_time, spacing, control, t", "The spline's element at t." + operands,
       ufunc::model<3>(BSplineOf<Group>()), Element<Group>());
@@ -334,8 +336,11 @@ void bind_one(py::module_& m) {
       py::arg("start_time"), py::arg("spacing"), py::arg("control"), py::arg("t"), py::arg("order"),
       (std::string("The methods of ") + Names<Group>::cls +
        " at the times t: the elements (order 0), body velocities (1) or body accelerations (2) of the spline of "
-       "start_time, spacing and control (from " + new_name + "), the times checked to lie in [start_time, "
-       "end_time]. A private function of chasles." + Names<Group>::cls + " (python/chasles/_bspline.py).")
+       "start_time, spacing and control (from " +
+       new_name +
+       "), the times checked to lie in [start_time, "
+       "end_time]. A private function of chasles." +
+       Names<Group>::cls + " (python/chasles/_bspline.py).")
           .c_str());
 }
 

@@ -1,8 +1,8 @@
 // chasles._core: class SpatialInertia over chasles::SpatialInertia<double>
 // (include/chasles/spatial_inertia.hpp). The dynamics of chains are in
 // bind_kinematics.cpp, with the chain.
-#include <chasles/spatial_inertia.hpp>
 #include <chasles/se3.hpp>
+#include <chasles/spatial_inertia.hpp>
 #include <chasles/twist.hpp>
 
 #include <Eigen/Eigenvalues>
@@ -122,8 +122,8 @@ Example:
 )doc");
 
   cls.def_property_readonly("mass", [](Obj<InertiaD> I) { return I->mass(); }, "float: m, the mass.");
-  cls.def_property_readonly("com", [](Obj<InertiaD> I) { return vec_out<3>(I->com()); },
-                            "ndarray: c, the center of mass, shape (3,).");
+  cls.def_property_readonly(
+      "com", [](Obj<InertiaD> I) { return vec_out<3>(I->com()); }, "ndarray: c, the center of mass, shape (3,).");
   cls.def_property_readonly(
       "inertia", [](Obj<InertiaD> I) { return mat_out<3, 3>(I->inertia()); },
       "ndarray: I_c, the rotational inertia about the center of mass, shape (3, 3).");
@@ -132,9 +132,7 @@ Example:
       R"doc(ndarray: G, shape (6, 6), order (v, w): [[m 1, -m [c]], [m [c], I_c - m [c]^2]].)doc");
 
   cls.def(
-      "transform",
-      [](Obj<InertiaD> I, Obj<SE3d> g) { return I->transform(*g); },
-      py::arg("g"),
+      "transform", [](Obj<InertiaD> I, Obj<SE3d> g) { return I->transform(*g); }, py::arg("g"),
       R"doc(The same body described in frame a, this one describing it in frame b; g = g_ab (SE3).
 
 c_a = R c + p, I_a = R I_c R^T, G_a = Ad_g^-T G Ad_g^-1: the kinetic energy of
@@ -221,9 +219,10 @@ Example:
         Eigen::Matrix<double, 13, 1> x;
         read_state(state_tuple(state, 13, "SpatialInertia"), 0, 13, x.data(), "SpatialInertia");
         // The constructor's checks and errors (a pickle is data from outside).
-        return checked_inertia(py::float_(x(0)), vec_out<3>(Vector3(x.segment<3>(1))),
-                               mat_out<3, 3>(Matrix3(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(x.data() + 4))),
-                               "SpatialInertia.__setstate__");
+        return checked_inertia(
+            py::float_(x(0)), vec_out<3>(Vector3(x.segment<3>(1))),
+            mat_out<3, 3>(Matrix3(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(x.data() + 4))),
+            "SpatialInertia.__setstate__");
       }));
   add_reduce(cls);
 }

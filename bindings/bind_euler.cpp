@@ -85,8 +85,8 @@ struct AsEuler {
   template <typename C, typename M>
   auto operator()(C, const M& R, int) const {
     using T = typename M::Scalar;
-    const auto e = chasles::as_euler<static_cast<EulerSequence>(kSequenceOf(C::value))>(
-        chasles::SO3<T>::from_matrix_unchecked(R));
+    const auto e =
+        chasles::as_euler<static_cast<EulerSequence>(kSequenceOf(C::value))>(chasles::SO3<T>::from_matrix_unchecked(R));
     Eigen::Matrix<T, 3, 1> t = e.angles;
     if constexpr (kDegrees(C::value)) t *= T(kRadToDeg);
     if constexpr (Lock)
@@ -132,35 +132,40 @@ chasles::EulerAngles<double> euler_of(int seq, const SO3d& R) { return kAs[stati
 
 void bind_euler(py::module_& m) {
   const char* const unit = "    unit: 1 for angles in degrees, 0 for radians.\n";
-  const std::string returns_lock = "\nReturns:\n    tuple of numpy.ndarray of shapes (..., 3) and (...): the angles, and whether the first "
-                                   "and third axes coincide (the gimbal lock).";
+  const std::string returns_lock =
+      "\nReturns:\n    tuple of numpy.ndarray of shapes (..., 3) and (...): the angles, and whether the first "
+      "and third axes coincide (the gimbal lock).";
   def_ufunc<Core<3, 3>(Core<3>, Code)>(
       m, "_so3_from_euler", "angles, code",
       "Rotation matrices of Euler angles, as scipy's Rotation.from_euler.\n\nArgs:\n    angles: array_like of "
-      "shape (..., 3).\n" + kCodeArg + "\nReturns:\n    numpy.ndarray of shape (..., 3, 3): the rotation matrices." +
-          kUfuncNote,
+      "shape (..., 3).\n" +
+          kCodeArg + "\nReturns:\n    numpy.ndarray of shape (..., 3, 3): the rotation matrices." + kUfuncNote,
       ufunc::cases<48, 1>(FromEuler()));
-  const std::string as_doc = "Euler angles of rotation matrices, as scipy's Rotation.as_euler (third angle zero at the "
-                             "gimbal lock).\n\nArgs:\n    R: array_like of shape (..., 3, 3): rotation matrices.\n" + kCodeArg;
+  const std::string as_doc =
+      "Euler angles of rotation matrices, as scipy's Rotation.as_euler (third angle zero at the "
+      "gimbal lock).\n\nArgs:\n    R: array_like of shape (..., 3, 3): rotation matrices.\n" +
+      kCodeArg;
   def_ufunc<Core<3>(Core<3, 3>, Code)>(
       m, "_so3_as_euler", "R, code",
       as_doc + "\nReturns:\n    numpy.ndarray of shape (..., 3): the angles." + kUfuncNote,
       ufunc::cases<48, 1>(AsEuler<false>()));
-  def_ufunc<std::tuple<Core<3>, Flag>(Core<3, 3>, Code)>(m, "_so3_as_euler_lock", "R, code",
-                                                         as_doc + returns_lock + kUfuncNote,
-                                                         ufunc::cases<48, 1>(AsEuler<true>()));
+  def_ufunc<std::tuple<Core<3>, Flag>(Core<3, 3>, Code)>(
+      m, "_so3_as_euler_lock", "R, code", as_doc + returns_lock + kUfuncNote, ufunc::cases<48, 1>(AsEuler<true>()));
   // The kernels of "xyz" (code 0 or 24), under the names that numpy's errors show for so3_from_rpy / so3_as_rpy.
   def_ufunc<Core<3, 3>(Core<3>, Code)>(
       m, "_so3_from_rpy", "rpy, unit",
       std::string("Rotation matrices of roll, pitch, yaw (URDF, ROS): R = Rz(yaw) Ry(pitch) Rx(roll), extrinsic "
-                  "'xyz'.\n\nArgs:\n    rpy: array_like of shape (..., 3): (roll, pitch, yaw).\n") + unit +
-          "\nReturns:\n    numpy.ndarray of shape (..., 3, 3): the rotation matrices." + kUfuncNote,
+                  "'xyz'.\n\nArgs:\n    rpy: array_like of shape (..., 3): (roll, pitch, yaw).\n") +
+          unit + "\nReturns:\n    numpy.ndarray of shape (..., 3, 3): the rotation matrices." + kUfuncNote,
       ufunc::cases<2, 1>([](auto u, const auto& a, int) { return FromEuler()(Xyz<decltype(u)::value>(), a, 0); }));
-  const std::string as_rpy = std::string("Roll, pitch, yaw of rotation matrices (URDF, ROS): extrinsic 'xyz', yaw zero "
-                                         "at the gimbal lock.\n\nArgs:\n    R: array_like of shape (..., 3, 3): "
-                                         "rotation matrices.\n") + unit;
+  const std::string as_rpy = std::string(
+                                 "Roll, pitch, yaw of rotation matrices (URDF, ROS): extrinsic 'xyz', yaw zero "
+                                 "at the gimbal lock.\n\nArgs:\n    R: array_like of shape (..., 3, 3): "
+                                 "rotation matrices.\n") +
+                             unit;
   def_ufunc<Core<3>(Core<3, 3>, Code)>(
-      m, "_so3_as_rpy", "R, unit", as_rpy + "\nReturns:\n    numpy.ndarray of shape (..., 3): (roll, pitch, yaw)." + kUfuncNote,
+      m, "_so3_as_rpy", "R, unit",
+      as_rpy + "\nReturns:\n    numpy.ndarray of shape (..., 3): (roll, pitch, yaw)." + kUfuncNote,
       ufunc::cases<2, 1>([](auto u, const auto& R, int) { return AsEuler<false>()(Xyz<decltype(u)::value>(), R, 0); }));
   def_ufunc<std::tuple<Core<3>, Flag>(Core<3, 3>, Code)>(
       m, "_so3_as_rpy_lock", "R, unit", as_rpy + returns_lock + kUfuncNote,

@@ -140,7 +140,7 @@ Example:
     >>> chasles.rplus(g, [0.0, 2.0, 0.0, 0.0, 0.0, 0.0]).translation
     array([1., 2., 0.])
 )doc",
-                             nullptr, py::arg("g"), py::arg("xi"));
+                       nullptr, py::arg("g"), py::arg("xi"));
   def_overloads<Rminus>(m, "rminus", R"doc(g rminus h = log(h^-1 g): the xi with rplus(h, xi) == g ("g minus h").
 
 The order is manif's g.rminus(h); jaxlie's rminus(a, b) = log(a^-1 b) takes
@@ -159,7 +159,7 @@ Example:
     >>> np.round(chasles.rminus(g, h), 12) + 0.0
     array([0.3, 0. , 0. ])
 )doc",
-                             nullptr, py::arg("g"), py::arg("h"));
+                        nullptr, py::arg("g"), py::arg("h"));
   def_overloads<Lplus>(m, "lplus", R"doc(xi lplus g = exp(xi) g: a perturbation in the fixed (global, left) frame.
 
 Args:
@@ -172,7 +172,7 @@ Returns:
 Raises:
     ValueError: xi has the wrong shape for g, or is not finite.
 )doc",
-                             nullptr, py::arg("xi"), py::arg("g"));
+                       nullptr, py::arg("xi"), py::arg("g"));
   def_overloads<Lminus>(m, "lminus", R"doc(g lminus h = log(g h^-1): the xi with lplus(xi, h) == g.
 
 Args:
@@ -182,7 +182,7 @@ Args:
 Returns:
     ndarray: shape (3,) for SO3, (6,) for SE3 ((v, w), linear part first).
 )doc",
-                             nullptr, py::arg("g"), py::arg("h"));
+                        nullptr, py::arg("g"), py::arg("h"));
   def_overloads<Between>(m, "between", R"doc(between(a, b) = a^-1 b: b seen from a (manif's a.between(b)).
 
 Args:
@@ -201,8 +201,9 @@ Example:
     >>> chasles.between(a, b).translation
     array([0., 2., 0.])
 )doc",
-                             nullptr, py::arg("a"), py::arg("b"));
-  def_overloads<Interpolate>(m, "interpolate", R"doc(Screw interpolation of rigid motions a exp(t log(a^-1 b)) (as SE3.interpolate).
+                         nullptr, py::arg("a"), py::arg("b"));
+  def_overloads<Interpolate>(m, "interpolate",
+                             R"doc(Screw interpolation of rigid motions a exp(t log(a^-1 b)) (as SE3.interpolate).
 
 Args:
     a: SE3, the start (t = 0).
@@ -226,7 +227,8 @@ Args:
 
 Returns:
     SO3: the interpolated rotation.
-)doc", py::arg("a"), py::arg("b"), py::arg("t"));
+)doc",
+                             py::arg("a"), py::arg("b"), py::arg("t"));
   def_overloads<LogJacobian>(m, "log_jacobian", R"doc(The Jacobian of g -> log(g), in the right-local convention.
 
 For a map f to the tangent space the right-local Jacobian J is defined by
@@ -249,7 +251,8 @@ Example:
     True
 )doc",
                              nullptr, py::arg("g"));
-  def_overloads<InverseJacobian>(m, "inverse_jacobian", R"doc(The Jacobian of g -> g^-1, in the right-local convention: -Ad_g.
+  def_overloads<InverseJacobian>(m, "inverse_jacobian",
+                                 R"doc(The Jacobian of g -> g^-1, in the right-local convention: -Ad_g.
 
 Right-local: f(g exp(dx)) = f(g) exp(J dx + o(dx)); here
 (g exp(dx))^-1 = g^-1 exp(-Ad_g dx), so J = -Ad_g (Sola et al. 2018,
@@ -269,8 +272,9 @@ Example:
            [-1.,  0.,  0.],
            [ 0.,  0., -1.]])
 )doc",
-                             nullptr, py::arg("g"));
-  def_overloads<ComposeJacobians>(m, "compose_jacobians", R"doc(The Jacobians (J_a, J_b) of (a, b) -> a b, in the right-local convention.
+                                 nullptr, py::arg("g"));
+  def_overloads<ComposeJacobians>(m, "compose_jacobians",
+                                  R"doc(The Jacobians (J_a, J_b) of (a, b) -> a b, in the right-local convention.
 
 Right-local: (a exp(da)) (b exp(db)) = a b exp(J_a da + J_b db + o(da, db)),
 with J_a = Ad_{b^-1} and J_b = I (Sola et al. 2018, section IV).
@@ -292,8 +296,9 @@ Example:
     >>> bool(np.allclose(J_a, b.inverse().as_matrix())), bool(np.array_equal(J_b, np.eye(3)))
     (True, True)
 )doc",
-                             nullptr, py::arg("a"), py::arg("b"));
-  def_overloads<ActJacobians>(m, "act_jacobians", R"doc(The Jacobians (J_g, J_p) of (g, p) -> g p (the action on a point).
+                                  nullptr, py::arg("a"), py::arg("b"));
+  def_overloads<ActJacobians>(m, "act_jacobians",
+                              R"doc(The Jacobians (J_g, J_p) of (g, p) -> g p (the action on a point).
 
 Right-local in g: (g exp(dx)) (p + dp) = g p + J_g dx + J_p dp + o(dx, dp).
 SO3: J_g = -R [p], J_p = R; SE3: J_g = [R, -R [p]] (columns (v, w), linear
@@ -318,8 +323,9 @@ Example:
            [ 0.,  1.,  0., -1.,  0.,  0.],
            [ 0.,  0.,  1.,  0.,  0.,  0.]])
 )doc",
-                             nullptr, py::arg("g"), py::arg("p"));
-  def_overloads<RplusJacobians>(m, "rplus_jacobians", R"doc(The Jacobians (J_g, J_xi) of (g, xi) -> rplus(g, xi) = g exp(xi).
+                              nullptr, py::arg("g"), py::arg("p"));
+  def_overloads<RplusJacobians>(m, "rplus_jacobians",
+                                R"doc(The Jacobians (J_g, J_xi) of (g, xi) -> rplus(g, xi) = g exp(xi).
 
 Right-local: rplus(g exp(dg), xi + dxi) = rplus(g, xi) exp(J_g dg + J_xi dxi
 + o), with J_g = Ad_{exp(xi)}^-1 = Ad_{exp(-xi)} and J_xi = J_r(xi) (Sola et
@@ -342,8 +348,9 @@ Example:
     >>> bool(np.array_equal(J_g, np.eye(3))), bool(np.array_equal(J_xi, np.eye(3)))
     (True, True)
 )doc",
-                             nullptr, py::arg("g"), py::arg("xi"));
-  def_overloads<RminusJacobians>(m, "rminus_jacobians", R"doc(The Jacobians (J_g, J_h) of (g, h) -> rminus(g, h) = log(h^-1 g).
+                                nullptr, py::arg("g"), py::arg("xi"));
+  def_overloads<RminusJacobians>(m, "rminus_jacobians",
+                                 R"doc(The Jacobians (J_g, J_h) of (g, h) -> rminus(g, h) = log(h^-1 g).
 
 Right-local: rminus(g exp(dg), h exp(dh)) = rminus(g, h) + J_g dg + J_h dh
 + o, with xi = rminus(g, h), J_g = J_r(xi)^-1 and J_h = -J_l(xi)^-1 (Sola et
@@ -366,8 +373,9 @@ Example:
     >>> bool(np.array_equal(J_g, np.eye(6))), bool(np.array_equal(J_h, -np.eye(6)))
     (True, True)
 )doc",
-                             nullptr, py::arg("g"), py::arg("h"));
-  def_overloads<LplusJacobians>(m, "lplus_jacobians", R"doc(The Jacobians (J_xi, J_g) of (xi, g) -> lplus(xi, g) = exp(xi) g.
+                                 nullptr, py::arg("g"), py::arg("h"));
+  def_overloads<LplusJacobians>(m, "lplus_jacobians",
+                                R"doc(The Jacobians (J_xi, J_g) of (xi, g) -> lplus(xi, g) = exp(xi) g.
 
 Right-local in the result and in g: lplus(xi + dxi, g exp(dg)) =
 lplus(xi, g) exp(J_xi dxi + J_g dg + o), with J_xi = Ad_{g^-1} J_r(xi) and
@@ -391,8 +399,9 @@ Example:
     >>> bool(np.allclose(J_xi, g.inverse().as_matrix())), bool(np.array_equal(J_g, np.eye(3)))
     (True, True)
 )doc",
-                             nullptr, py::arg("xi"), py::arg("g"));
-  def_overloads<LminusJacobians>(m, "lminus_jacobians", R"doc(The Jacobians (J_g, J_h) of (g, h) -> lminus(g, h) = log(g h^-1).
+                                nullptr, py::arg("xi"), py::arg("g"));
+  def_overloads<LminusJacobians>(m, "lminus_jacobians",
+                                 R"doc(The Jacobians (J_g, J_h) of (g, h) -> lminus(g, h) = log(g h^-1).
 
 Right-local in the arguments: lminus(g exp(dg), h exp(dh)) = lminus(g, h) +
 J_g dg + J_h dh + o, with xi = lminus(g, h), J_g = J_r(xi)^-1 Ad_h and
@@ -416,8 +425,9 @@ Example:
     >>> bool(np.allclose(J_g, h.as_matrix())), bool(np.array_equal(J_h, -J_g))
     (True, True)
 )doc",
-                             nullptr, py::arg("g"), py::arg("h"));
-  def_overloads<BetweenJacobians>(m, "between_jacobians", R"doc(The Jacobians (J_a, J_b) of (a, b) -> between(a, b) = a^-1 b.
+                                 nullptr, py::arg("g"), py::arg("h"));
+  def_overloads<BetweenJacobians>(m, "between_jacobians",
+                                  R"doc(The Jacobians (J_a, J_b) of (a, b) -> between(a, b) = a^-1 b.
 
 Right-local: between(a exp(da), b exp(db)) = between(a, b) exp(J_a da +
 J_b db + o), with J_a = -Ad_{b^-1 a} and J_b = I (Sola et al. 2018,
@@ -440,8 +450,9 @@ Example:
     >>> bool(np.allclose(J_a, -a.as_matrix())), bool(np.array_equal(J_b, np.eye(3)))
     (True, True)
 )doc",
-                             nullptr, py::arg("a"), py::arg("b"));
-  def_overloads<InterpolateJacobianT>(m, "interpolate_jacobian_t", R"doc(The derivative in t of interpolate(a, b, t) = a exp(t log(a^-1 b)).
+                                  nullptr, py::arg("a"), py::arg("b"));
+  def_overloads<InterpolateJacobianT>(m, "interpolate_jacobian_t",
+                                      R"doc(The derivative in t of interpolate(a, b, t) = a exp(t log(a^-1 b)).
 
 Right-local: interpolate(a, b, t + dt) = interpolate(a, b, t) exp(J dt + o(dt)),
 and J = J_r(t xi) xi = xi = rminus(b, a) = log(a^-1 b), the same for every t
@@ -465,14 +476,15 @@ Example:
     >>> chasles.interpolate_jacobian_t(a, b, 0.5)
     array([2., 0., 0., 0., 0., 0.])
 )doc",
-                             nullptr, py::arg("a"), py::arg("b"), py::arg("t"));
+                                      nullptr, py::arg("a"), py::arg("b"), py::arg("t"));
 
   // ---- the Jacobian of the point action for many points (array functions) ----
 
   using ufunc::Core;
   using ufunc::def_ufunc;
-  def_ufunc<Core<3, 3>(Core<3, 3>, Core<3>)>(m, "so3_act_jacobian", "R, points",
-                                              ufunc::array_doc(R"(Jacobians d(R p)/dR = -R [p] of rotated points, right-local in R.
+  def_ufunc<Core<3, 3>(Core<3, 3>, Core<3>)>(
+      m, "so3_act_jacobian", "R, points",
+      ufunc::array_doc(R"(Jacobians d(R p)/dR = -R [p] of rotated points, right-local in R.
 
 (R exp(dw)) p = R p - R [p] dw + o(dw) (Sola et al. 2018, appendix B), as
 act_jacobians(R, p)[0] for one rotation. The Jacobian with respect to the
@@ -488,15 +500,13 @@ Args:
 Returns:
     numpy.ndarray of shape (..., 3, 3): the Jacobians (columns: the rotation
     vector dw).)"),
-                                              [](const auto& R, const auto& p) {
-                                                using T = typename std::decay_t<decltype(R)>::Scalar;
-                                                return chasles::act_jacobians<T>(
-                                                           chasles::SO3<T>::from_matrix_unchecked(R),
-                                                           chasles::Vector3Of<T>(p))
-                                                    .group;
-                                              });
-  def_ufunc<Core<3, 6>(Core<4, 4>, Core<3>)>(m, "se3_act_jacobian", "g, points",
-                                              ufunc::array_doc(R"(Jacobians d(g p)/dg = [R, -R [p]] of transformed points, right-local in g.
+      [](const auto& R, const auto& p) {
+        using T = typename std::decay_t<decltype(R)>::Scalar;
+        return chasles::act_jacobians<T>(chasles::SO3<T>::from_matrix_unchecked(R), chasles::Vector3Of<T>(p)).group;
+      });
+  def_ufunc<Core<3, 6>(Core<4, 4>, Core<3>)>(
+      m, "se3_act_jacobian", "g, points",
+      ufunc::array_doc(R"(Jacobians d(g p)/dg = [R, -R [p]] of transformed points, right-local in g.
 
 (g exp(dxi)) p = g p + [R, -R [p]] dxi + o(dxi), dxi = (v, w) linear part
 first (Sola et al. 2018, appendix D), as act_jacobians(g, p)[0] for one
@@ -513,13 +523,10 @@ Args:
 Returns:
     numpy.ndarray of shape (..., 3, 6): the Jacobians (columns: the twist
     (v, w)).)"),
-                                              [](const auto& g, const auto& p) {
-                                                using T = typename std::decay_t<decltype(g)>::Scalar;
-                                                return chasles::act_jacobians<T>(
-                                                           chasles::SE3<T>::from_matrix_unchecked(g),
-                                                           chasles::Vector3Of<T>(p))
-                                                    .group;
-                                              });
+      [](const auto& g, const auto& p) {
+        using T = typename std::decay_t<decltype(g)>::Scalar;
+        return chasles::act_jacobians<T>(chasles::SE3<T>::from_matrix_unchecked(g), chasles::Vector3Of<T>(p)).group;
+      });
 }
 
 }  // namespace chasles_py

@@ -76,8 +76,8 @@ template <typename Out>
 Out table_of(py::handle h, py::ssize_t n, py::ssize_t cols, const char* what, const char* expected) {
   const py::array a = as_float64_array(h, what);
   if (cols == 0 ? (a.ndim() != 1 || a.shape(0) != n) : (a.ndim() != 2 || a.shape(0) != n || a.shape(1) != cols))
-    raise_value_error(std::string(what) + ": expected shape (" + std::to_string(n) + (cols ? ", " + std::to_string(cols) : ",") +
-                      ")" + expected + ", got " + array_shape(a));
+    raise_value_error(std::string(what) + ": expected shape (" + std::to_string(n) +
+                      (cols ? ", " + std::to_string(cols) : ",") + ")" + expected + ", got " + array_shape(a));
   Out out(n, std::max<py::ssize_t>(cols, 1));
   const char* data = static_cast<const char*>(a.data());
   for (py::ssize_t i = 0; i < n; ++i)
@@ -116,16 +116,17 @@ PyChain make_chain(py::handle screws, py::handle home, py::handle types, py::han
     raise_value_error("Chain(screws): at most " + std::to_string(kMaxJoints) + " joints, got " +
                       std::to_string(a.shape(0)));
   const py::ssize_t n = a.shape(0);
-  const ChainD::Screws S = table_of<Eigen::Matrix<double, Eigen::Dynamic, 6, 0, kMaxJoints, 6>>(a, n, 6, "", "")
-                               .transpose();
+  const ChainD::Screws S =
+      table_of<Eigen::Matrix<double, Eigen::Dynamic, 6, 0, kMaxJoints, 6>>(a, n, 6, "", "").transpose();
   require_finite(S, "Chain(screws)");
   const SE3d M = pose_of(home, "Chain(home)");
   ChainD::JointTypes t{};
   for (py::ssize_t i = 0; i < n; ++i)
-    t[static_cast<std::size_t>(i)] = types.is_none() ? (S.col(i).tail<3>().squaredNorm() > 0 ? chasles::JointType::revolute
-                                                                                          : chasles::JointType::prismatic)
-                                                     : static_cast<chasles::JointType>(
-                                                           py::reinterpret_borrow<py::sequence>(types)[static_cast<std::size_t>(i)].cast<int>());
+    t[static_cast<std::size_t>(i)] =
+        types.is_none()
+            ? (S.col(i).tail<3>().squaredNorm() > 0 ? chasles::JointType::revolute : chasles::JointType::prismatic)
+            : static_cast<chasles::JointType>(
+                  py::reinterpret_borrow<py::sequence>(types)[static_cast<std::size_t>(i)].cast<int>());
   const auto lo = limits_of(lower, n, -INFINITY, "Chain(lower)"), hi = limits_of(upper, n, INFINITY, "Chain(upper)");
   const auto vel = limits_of(velocity, n, INFINITY, "Chain(velocity_limits)");
   const auto eff = limits_of(effort, n, INFINITY, "Chain(effort_limits)");
@@ -185,7 +186,8 @@ using Joints = ChainD::JointVector;
 struct ChainOf {
   template <typename S, typename M>
   ChainD operator()(const S& screws, const M& home) const noexcept {
-    return ChainD(ChainD::Screws(screws.transpose()), SE3d::from_matrix_unchecked(Matrix4(home)), ChainD::HomeAsGiven());
+    return ChainD(ChainD::Screws(screws.transpose()), SE3d::from_matrix_unchecked(Matrix4(home)),
+                  ChainD::HomeAsGiven());
   }
   template <typename S, typename M, typename G>
   ChainD operator()(const S& screws, const M& home, const G& inertias) const noexcept {
@@ -202,20 +204,39 @@ struct ChainOf {
 };
 
 /// The computations, one configuration each (the ufuncs' kernels and the fast path).
-enum class Op { forward, forward_body, jacobian_space, jacobian_body, inverse, forward_dynamics, mass, gravity, coriolis };
+enum class Op {
+  forward,
+  forward_body,
+  jacobian_space,
+  jacobian_body,
+  inverse,
+  forward_dynamics,
+  mass,
+  gravity,
+  coriolis
+};
 
 template <Op op>
 auto compute(const ChainD& c, const Joints* x, const chasles::Wrenchd& tip) {
   static_cast<void>(tip);  // (the kinematics have none)
-  if constexpr (op == Op::forward) return c.forward(x[0]).matrix();
-  else if constexpr (op == Op::forward_body) return c.forward_body(x[0]).matrix();
-  else if constexpr (op == Op::jacobian_space) return c.jacobian_space(x[0]);
-  else if constexpr (op == Op::jacobian_body) return c.jacobian_body(x[0]);
-  else if constexpr (op == Op::inverse) return chasles::inverse_dynamics(c, x[0], x[1], x[2], tip);
-  else if constexpr (op == Op::forward_dynamics) return chasles::forward_dynamics(c, x[0], x[1], x[2], tip);
-  else if constexpr (op == Op::mass) return chasles::mass_matrix(c, x[0]);
-  else if constexpr (op == Op::gravity) return chasles::gravity_torques(c, x[0]);
-  else return chasles::coriolis(c, x[0], x[1]);
+  if constexpr (op == Op::forward)
+    return c.forward(x[0]).matrix();
+  else if constexpr (op == Op::forward_body)
+    return c.forward_body(x[0]).matrix();
+  else if constexpr (op == Op::jacobian_space)
+    return c.jacobian_space(x[0]);
+  else if constexpr (op == Op::jacobian_body)
+    return c.jacobian_body(x[0]);
+  else if constexpr (op == Op::inverse)
+    return chasles::inverse_dynamics(c, x[0], x[1], x[2], tip);
+  else if constexpr (op == Op::forward_dynamics)
+    return chasles::forward_dynamics(c, x[0], x[1], x[2], tip);
+  else if constexpr (op == Op::mass)
+    return chasles::mass_matrix(c, x[0]);
+  else if constexpr (op == Op::gravity)
+    return chasles::gravity_torques(c, x[0]);
+  else
+    return chasles::coriolis(c, x[0], x[1]);
 }
 
 template <typename Tuple, std::size_t... k>
@@ -261,19 +282,23 @@ Ufuncs register_ufuncs(py::module_& m) {
   using G = Core<upto<kMaxJoints>, 6, 6>;
   const char* kin = "screws, home, theta";
   Ufuncs u;
-  u.forward = def_ufunc<Pose, Float64>(m, "_chain_forward", kin, private_doc("g(theta).", "forward"), model<2>(ChainOf()),
-                                       Kernel<Op::forward>());
-  u.forward_body = def_ufunc<Pose, Float64>(m, "_chain_forward_body", kin, private_doc("g(theta), body form.", "forward_body"),
-                                            model<2>(ChainOf()), Kernel<Op::forward_body>());
-  u.jacobian_space = def_ufunc<Jac, Float64>(m, "_chain_jacobian_space", kin, private_doc("J_s(theta).", "jacobian_space"),
-                                             model<2>(ChainOf()), Kernel<Op::jacobian_space>());
+  u.forward = def_ufunc<Pose, Float64>(m, "_chain_forward", kin, private_doc("g(theta).", "forward"),
+                                       model<2>(ChainOf()), Kernel<Op::forward>());
+  u.forward_body =
+      def_ufunc<Pose, Float64>(m, "_chain_forward_body", kin, private_doc("g(theta), body form.", "forward_body"),
+                               model<2>(ChainOf()), Kernel<Op::forward_body>());
+  u.jacobian_space =
+      def_ufunc<Jac, Float64>(m, "_chain_jacobian_space", kin, private_doc("J_s(theta).", "jacobian_space"),
+                              model<2>(ChainOf()), Kernel<Op::jacobian_space>());
   u.jacobian_body = def_ufunc<Jac, Float64>(m, "_chain_jacobian_body", kin, private_doc("J_b(theta).", "jacobian_body"),
                                             model<2>(ChainOf()), Kernel<Op::jacobian_body>());
   // (n,6),(4,4),(n,6,6),(3),(n),(n),(n),(6)->(n) [,()]: screws, home, inertias, gravity, q, qd, qdd (tau), tip wrench
-  u.inverse = def_ufunc<JointsCore(ScrewsCore, Core<4, 4>, G, Core<3>, JointsCore, JointsCore, JointsCore, Core<6>), Float64>(
-      m, "_inverse_dynamics", "screws, home, inertias, gravity, q, qd, qdd, tip_wrench",
-      private_doc("tau = M(q) qdd + C(q, qd) qd + g(q) + J_b^T F_tip (recursive Newton-Euler).", "inverse_dynamics"),
-      model<4>(ChainOf()), Kernel<Op::inverse>());
+  u.inverse =
+      def_ufunc<JointsCore(ScrewsCore, Core<4, 4>, G, Core<3>, JointsCore, JointsCore, JointsCore, Core<6>), Float64>(
+          m, "_inverse_dynamics", "screws, home, inertias, gravity, q, qd, qdd, tip_wrench",
+          private_doc("tau = M(q) qdd + C(q, qd) qd + g(q) + J_b^T F_tip (recursive Newton-Euler).",
+                      "inverse_dynamics"),
+          model<4>(ChainOf()), Kernel<Op::inverse>());
   u.forward_dynamics =
       def_ufunc<std::tuple<JointsCore, ufunc::Typed<Core<>, int>>(ScrewsCore, Core<4, 4>, G, Core<3>, JointsCore,
                                                                   JointsCore, JointsCore, Core<6>),
@@ -407,12 +432,13 @@ py::object checked_accelerations(const py::object& result, bool raise) {
 template <Op op, std::size_t J>
 py::object call(PyObject* u, const PyChain& c, const char* method, const std::array<py::handle, J>& x,
                 const py::handle* tip, bool raise = true) {
-  constexpr bool dynamics = op >= Op::inverse, with_gravity = op == Op::inverse || op == Op::forward_dynamics ||
-                                                              op == Op::gravity;
+  constexpr bool dynamics = op >= Op::inverse,
+                 with_gravity = op == Op::inverse || op == Op::forward_dynamics || op == Op::gravity;
   static_cast<void>(raise);  // (forward dynamics only)
   if (dynamics && c.operands.is_none())
-    raise_value_error(std::string("Chain.") + method + ": the chain has no link inertias (give Chain(..., link_inertias=...), or load it with "
-                             "Chain.from_urdf)");
+    raise_value_error(std::string("Chain.") + method +
+                      ": the chain has no link inertias (give Chain(..., link_inertias=...), or load it with "
+                      "Chain.from_urdf)");
   const py::ssize_t n = c.chain.n_joints();
   Joints one[3];
   bool single = true;
@@ -446,7 +472,8 @@ py::object call(PyObject* u, const PyChain& c, const char* method, const std::ar
   std::size_t k = 0;
   if constexpr (dynamics) {
     const py::tuple ops = py::reinterpret_borrow<py::tuple>(c.operands);
-    for (int i = 0; i < (with_gravity ? 4 : 3); ++i) keep[k] = ops[static_cast<std::size_t>(i)], args[k] = keep[k].ptr(), ++k;
+    for (int i = 0; i < (with_gravity ? 4 : 3); ++i)
+      keep[k] = ops[static_cast<std::size_t>(i)], args[k] = keep[k].ptr(), ++k;
   } else {
     const Py_intptr_t dims[2] = {n, 6};
     py::array_t<double> S = new_array(2, dims);
@@ -461,7 +488,8 @@ py::object call(PyObject* u, const PyChain& c, const char* method, const std::ar
     args[k] = keep[k].ptr(), ++k;
   }
   if (tip != nullptr) {
-    keep[k] = tip->is_none() ? py::object(vec_out<6>(Vector6::Zero())) : ufunc_operand(*tip, (what + "(tip_wrench)").c_str());
+    keep[k] =
+        tip->is_none() ? py::object(vec_out<6>(Vector6::Zero())) : ufunc_operand(*tip, (what + "(tip_wrench)").c_str());
     args[k] = keep[k].ptr(), ++k;
   }
   PyObject* r = PyObject_Vectorcall(u, args.data(), k, nullptr);
@@ -486,7 +514,8 @@ bool failure_raises(py::handle on_failure) {
 
 Vector3 nonzero_vector(py::handle h, const char* what) {
   const Vector3 v = to_finite_eigen<3>(h, what);
-  if (!(v.squaredNorm() > 0)) raise_value_error(std::string(what) + ": expected a nonzero vector, got " + values_string(v));
+  if (!(v.squaredNorm() > 0))
+    raise_value_error(std::string(what) + ": expected a nonzero vector, got " + values_string(v));
   return v;
 }
 
@@ -561,10 +590,14 @@ Returns shape (6,), (v, w).)doc");
   const auto kinematics = [&](auto op, const char* name, const char* doc) {
     constexpr Op o = decltype(op)::value;
     PyObject* f = [&] {
-      if constexpr (o == Op::forward) return u.forward.ptr();
-      else if constexpr (o == Op::forward_body) return u.forward_body.ptr();
-      else if constexpr (o == Op::jacobian_space) return u.jacobian_space.ptr();
-      else return u.jacobian_body.ptr();
+      if constexpr (o == Op::forward)
+        return u.forward.ptr();
+      else if constexpr (o == Op::forward_body)
+        return u.forward_body.ptr();
+      else if constexpr (o == Op::jacobian_space)
+        return u.jacobian_space.ptr();
+      else
+        return u.jacobian_body.ptr();
     }();
     cls.def(
         name, [f, name](Obj<PyChain> c, ArrayLike theta) { return call<o, 1>(f, *c, name, {theta.obj}, nullptr); },
@@ -592,7 +625,7 @@ theta: array_like (..., n); returns (..., 6, n).)doc");
   // ---- dynamics (chasles/dynamics.hpp)
   const char* const kRaises = R"doc( ValueError: a chain without link inertias, shapes that do not match.)doc";
   PyObject *f_inverse = u.inverse.ptr(), *f_forward = u.forward_dynamics.ptr(), *f_mass = u.mass.ptr(),
-                 *f_gravity = u.gravity.ptr(), *f_coriolis = u.coriolis.ptr();
+           *f_gravity = u.gravity.ptr(), *f_coriolis = u.coriolis.ptr();
   cls.def(
       "inverse_dynamics",
       [f_inverse](Obj<PyChain> c, py::object q, py::object qd, py::object qdd, py::object tip) {
@@ -603,7 +636,9 @@ theta: array_like (..., n); returns (..., 6, n).)doc");
 
 q, qd, qdd: array_like (..., n); tip_wrench: (..., 6) or a Wrench, (f, tau) that the tool
 applies on the environment, in the tool frame (Modern Robotics' F_tip); None: zero.
-Returns (..., n), N m for revolute joints and N for prismatic ones.)doc") + kArrayFunction + kRaises).c_str());
+Returns (..., n), N m for revolute joints and N for prismatic ones.)doc") +
+       kArrayFunction + kRaises)
+          .c_str());
   cls.def(
       "forward_dynamics",
       [f_forward](Obj<PyChain> c, py::object q, py::object qd, py::object tau, py::object tip, py::object on_failure) {
@@ -618,14 +653,17 @@ q, qd, tau: array_like (..., n); tip_wrench as in inverse_dynamics. Where M(q) i
 positive definite (a massless link, a point mass on its axis, an inertia no rigid body has:
 chasles::DynamicsStatus) there are no accelerations: ValueError naming the joint (and the
 first such batch index), or with on_failure="nan" NaN there only. Returns (..., n).)doc") +
-       kArrayFunction + kRaises).c_str());
+       kArrayFunction + kRaises)
+          .c_str());
   cls.def(
       "mass_matrix",
       [f_mass](Obj<PyChain> c, py::object q) { return call<Op::mass, 1>(f_mass, *c, "mass_matrix", {q}, nullptr); },
       py::arg("q"),
       (std::string(R"doc(The joint-space mass matrix M(q), symmetric positive definite (composite rigid bodies).
 
-q: array_like (..., n); returns (..., n, n).)doc") + kArrayFunction + kRaises).c_str());
+q: array_like (..., n); returns (..., n, n).)doc") +
+       kArrayFunction + kRaises)
+          .c_str());
   cls.def(
       "gravity_torques",
       [f_gravity](Obj<PyChain> c, py::object q) {
@@ -634,7 +672,9 @@ q: array_like (..., n); returns (..., n, n).)doc") + kArrayFunction + kRaises).c
       py::arg("q"),
       (std::string(R"doc(The torques g(q) that hold the chain still against gravity: inverse_dynamics(q, 0, 0).
 
-q: array_like (..., n); returns (..., n).)doc") + kArrayFunction + kRaises).c_str());
+q: array_like (..., n); returns (..., n).)doc") +
+       kArrayFunction + kRaises)
+          .c_str());
   cls.def(
       "coriolis",
       [f_coriolis](Obj<PyChain> c, py::object q, py::object qd) {
@@ -643,7 +683,9 @@ q: array_like (..., n); returns (..., n).)doc") + kArrayFunction + kRaises).c_st
       py::arg("q"), py::arg("qd"),
       (std::string(R"doc(The Coriolis and centrifugal torques C(q, qd) qd (no gravity).
 
-q, qd: array_like (..., n); returns (..., n).)doc") + kArrayFunction + kRaises).c_str());
+q, qd: array_like (..., n); returns (..., n).)doc") +
+       kArrayFunction + kRaises)
+          .c_str());
 }
 
 }  // namespace chasles_py

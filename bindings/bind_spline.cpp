@@ -64,17 +64,18 @@ struct Traits<SE3d> {
   for (py::ssize_t i = 0; i + 1 < n; ++i) {
     const double h = t[i + 1] - t[i];
     const std::string at = "times[" + std::to_string(i + 1) + "] - times[" + std::to_string(i) + "] = ";
-    const std::string values =
-        " (times[" + std::to_string(i) + "] = " + float_repr(t[i]) + ", times[" + std::to_string(i + 1) + "] = " +
-        float_repr(t[i + 1]) + ")";
-    if (status == chasles::SplineStatus::times_not_increasing && !(h > 0 && h < std::numeric_limits<double>::infinity()))
+    const std::string values = " (times[" + std::to_string(i) + "] = " + float_repr(t[i]) + ", times[" +
+                               std::to_string(i + 1) + "] = " + float_repr(t[i + 1]) + ")";
+    if (status == chasles::SplineStatus::times_not_increasing &&
+        !(h > 0 && h < std::numeric_limits<double>::infinity()))
       raise_value_error(std::string(what) + ": expected strictly increasing finite times, got " + at + float_repr(h) +
                         values);
     if (status == chasles::SplineStatus::step_out_of_range && !(h >= lo && h <= hi))
       raise_value_error(std::string(what) + ": expected time steps between " + float_repr(lo) + " and " +
                         float_repr(hi) +
                         " (the cubics' coefficients per unit of time, ~D/h^3, and the accelerations, ~D/h^2, "
-                        "leave float64's range beyond), got " + at + float_repr(h) + values);
+                        "leave float64's range beyond), got " +
+                        at + float_repr(h) + values);
   }
   raise_value_error(std::string(what) + ": the spline could not be fitted");
 }
@@ -107,9 +108,9 @@ py::array fit(const CArray& times, const CArray& keys, bool natural) {
     if (!(defect <= tolerance)) {
       char text[400];
       std::snprintf(text, sizeof text,
-                    "%s: key %zd is not a %s: defect = %.3g > %.3g (project it first: %s.from_matrix_projected)",
-                    name, static_cast<Py_ssize_t>(i), D == 3 ? "rotation" : "rigid motion [[R, p], [0, 0, 0, 1]]",
-                    defect, tolerance, D == 3 ? "SO3" : "SE3");
+                    "%s: key %zd is not a %s: defect = %.3g > %.3g (project it first: %s.from_matrix_projected)", name,
+                    static_cast<Py_ssize_t>(i), D == 3 ? "rotation" : "rigid motion [[R, p], [0, 0, 0, 1]]", defect,
+                    tolerance, D == 3 ? "SO3" : "SE3");
       throw py::value_error(text);
     }
     key.push_back(Group::from_matrix_unchecked(Eigen::Matrix<double, D, D>(M)));
@@ -130,7 +131,8 @@ py::array fit(const CArray& times, const CArray& keys, bool natural) {
                   name, result.iterations);
     throw py::value_error(text);
   }
-  if (result.status != chasles::SplineStatus::ok) raise_times_error(Traits<Group>::times, result.status, times.data(), n);
+  if (result.status != chasles::SplineStatus::ok)
+    raise_times_error(Traits<Group>::times, result.status, times.data(), n);
   const Py_intptr_t dims[2] = {static_cast<Py_intptr_t>(n), 3 * DoF};
   py::array_t<double> out = new_array(2, dims);
   double* o = array_data(out);
@@ -191,8 +193,7 @@ using Tangent = Eigen::Matrix<double, Group::DoF, 1>;
 template <typename Group>
 Group nan_element() {
   constexpr int D = Traits<Group>::D;
-  return Group::from_matrix_unchecked(
-      Eigen::Matrix<double, D, D>::Constant(std::numeric_limits<double>::quiet_NaN()));
+  return Group::from_matrix_unchecked(Eigen::Matrix<double, D, D>::Constant(std::numeric_limits<double>::quiet_NaN()));
 }
 
 /// The element at t: X_i exp(r(t - t_i)).
@@ -221,8 +222,8 @@ struct Rates {
     constexpr int D = Traits<Group>::D;
     if (!m.valid()) {
       const Tangent<Group> nan = Tangent<Group>::Constant(std::numeric_limits<double>::quiet_NaN());
-      return std::tuple<Eigen::Matrix<double, D, D>, Tangent<Group>, Tangent<Group>>(nan_element<Group>().matrix(),
-                                                                                     nan, nan);
+      return std::tuple<Eigen::Matrix<double, D, D>, Tangent<Group>, Tangent<Group>>(nan_element<Group>().matrix(), nan,
+                                                                                     nan);
     }
     double tau;
     const int i = m.segment(t, tau);
@@ -242,9 +243,9 @@ void bind_one(py::module_& m, const char* fit_name, const char* element_name, co
   m.def(
       fit_name, [](const CArray& times, const CArray& keys, bool natural) { return fit<Group>(times, keys, natural); },
       py::arg("times"), py::arg("keys"), py::arg("natural"),
-      ("The coefficients (n, " + std::to_string(3 * DoF) + ") of the spline through checked (n,) float64 times and (n, " +
-       std::to_string(D) + ", " + std::to_string(D) + ") " + what +
-       " (row i: c1, c2, c3 of segment i; the last row zero).")
+      ("The coefficients (n, " + std::to_string(3 * DoF) +
+       ") of the spline through checked (n,) float64 times and (n, " + std::to_string(D) + ", " + std::to_string(D) +
+       ") " + what + " (row i: c1, c2, c3 of segment i; the last row zero).")
           .c_str());
   const std::string operands = "\n\nOperands (float64): times (n,), n >= 2 (NaN results below), keys (n, " +
                                std::to_string(D) + ", " + std::to_string(D) + "), coefficients (n, " +
@@ -256,8 +257,8 @@ void bind_one(py::module_& m, const char* fit_name, const char* element_name, co
       ufunc::model<3>(SplineOf<Group>()), Element<Group>());
   ufunc::def_ufunc<std::tuple<Core<D, D>, Core<DoF>, Core<DoF>>(Times, Keys, Coefficients, Core<>), ufunc::Float64>(
       m, rates_name, "times, keys, coefficients, t",
-      "The spline's element, body velocity and body acceleration at t." + operands,
-      ufunc::model<3>(SplineOf<Group>()), Rates<Group>());
+      "The spline's element, body velocity and body acceleration at t." + operands, ufunc::model<3>(SplineOf<Group>()),
+      Rates<Group>());
 }
 
 }  // namespace

@@ -5,8 +5,8 @@
 // C++ API on one element.
 #include <cstdio>
 #include <string>
-#include <vector>
 #include <type_traits>
+#include <vector>
 
 #include <chasles/distance.hpp>
 #include <chasles/mean.hpp>
@@ -22,15 +22,16 @@ namespace chasles_py {
 
 namespace {
 
-using ufunc::Core;
 using ufunc::array_doc;
+using ufunc::Core;
 using ufunc::def_ufunc;
 using ufunc::ScalarOf;
 using SO3d = chasles::SO3<double>;
 using SE3d = chasles::SE3<double>;
 
 void bind_distances(py::module_& m) {
-  def_ufunc<Core<>(Core<3, 3>)>(m, "so3_angle", "R", array_doc(R"(Rotation angles of rotation matrices: theta = |log(R)| in [0, pi].
+  def_ufunc<Core<>(Core<3, 3>)>(m, "so3_angle", "R",
+                                array_doc(R"(Rotation angles of rotation matrices: theta = |log(R)| in [0, pi].
 
 From the halves of the quaternion, theta = 2 atan2(|q_v|, |q_w|): a few
 ulps near 0 and near pi, where acos((tr R - 1) / 2) loses half the digits.
@@ -41,12 +42,13 @@ Args:
 
 Returns:
     numpy.ndarray of shape (...): the angles, radians.)"),
-      [](const auto& R) {
-        using T = ScalarOf<decltype(R)>;
-        return chasles::SO3<T>::from_matrix_unchecked(R).angle();
-      });
+                                [](const auto& R) {
+                                  using T = ScalarOf<decltype(R)>;
+                                  return chasles::SO3<T>::from_matrix_unchecked(R).angle();
+                                });
 
-  def_ufunc<Core<>(Core<3, 3>, Core<3, 3>)>(m, "so3_distance", "a, b", array_doc(R"(Geodesic distances of rotations: the angle of a^-1 b, in [0, pi].
+  def_ufunc<Core<>(Core<3, 3>, Core<3, 3>)>(
+      m, "so3_distance", "a, b", array_doc(R"(Geodesic distances of rotations: the angle of a^-1 b, in [0, pi].
 
 d(a, b) = |log(a^T b)|, the bi-invariant (angular) distance: symmetric and
 unchanged by d(g a, g b) and d(a g, b g). scipy:
@@ -64,7 +66,8 @@ Returns:
         return chasles::distance(chasles::SO3<T>::from_matrix_unchecked(a), chasles::SO3<T>::from_matrix_unchecked(b));
       });
 
-  def_ufunc<Core<2>(Core<4, 4>, Core<4, 4>)>(m, "se3_distance", "a, b", array_doc(R"(Distances of rigid motions: (rotation angle, translation distance).
+  def_ufunc<Core<2>(Core<4, 4>, Core<4, 4>)>(
+      m, "se3_distance", "a, b", array_doc(R"(Distances of rigid motions: (rotation angle, translation distance).
 
 [angle, translation] with angle = |log(R_a^T R_b)| in [0, pi] (so3_distance
 of the rotations) and translation = |p_b - p_a|, the Euclidean distance
@@ -89,7 +92,9 @@ Returns:
 }
 
 void bind_sampling(py::module_& m) {
-  def_ufunc<Core<3, 3>(Core<3>)>(m, "so3_from_uniforms", "u", array_doc(R"(Rotations of three uniforms each, by Shoemake's method (uniform rotations).
+  def_ufunc<Core<3, 3>(Core<3>)>(
+      m, "so3_from_uniforms", "u",
+      array_doc(R"(Rotations of three uniforms each, by Shoemake's method (uniform rotations).
 
 q = (sqrt(1 - u0) sin(2 pi u1), sqrt(1 - u0) cos(2 pi u1), sqrt(u0) sin(2 pi u2),
 sqrt(u0) cos(2 pi u2)) (x, y, z, w), so that u uniform in [0, 1)^3 gives a
@@ -163,8 +168,7 @@ py::tuple mean_of(const py::array_t<double, py::array::c_style | py::array::forc
         r.weights_valid = chasles::mean_weights_valid(X.begin(), X.end(), w);
     }
   }
-  if (!r.weights_valid)
-    throw py::value_error(std::string(name) + "(weights): expected finite weights >= 0, not all 0");
+  if (!r.weights_valid) throw py::value_error(std::string(name) + "(weights): expected finite weights >= 0, not all 0");
   return py::make_tuple(mat_out<D, D>(Eigen::Matrix<double, D, D>(r.mean.matrix())), r.iterations, r.converged);
 }
 

@@ -111,17 +111,18 @@ Example:
 /// Arithmetic, comparison, copy, pickle, __array__ and __repr__ of a
 /// 6-vector type (Twist or Wrench). `a` and `b` are the names of its halves.
 template <typename T>
-void bind_six_vector_protocols(py::class_<T, InlineHolder<T>>& cls, const char* cls_name, const char* a, const char* b) {
+void bind_six_vector_protocols(py::class_<T, InlineHolder<T>>& cls, const char* cls_name, const char* a,
+                               const char* b) {
   cls.attr("__array_ufunc__") = py::none();  // numpy defers 2.0 * x to x.__rmul__
   // Arithmetic keeps the invariant of the constructors: finite numbers only.
   const std::string add_what = std::string(cls_name) + " + " + cls_name;
   const std::string sub_what = std::string(cls_name) + " - " + cls_name;
   cls.def(
-      "__add__", [add_what](Obj<T> x, Obj<T> y) { return finite_result(*x + *y, add_what.c_str()); },
-      py::arg("other"), py::is_operator());
+      "__add__", [add_what](Obj<T> x, Obj<T> y) { return finite_result(*x + *y, add_what.c_str()); }, py::arg("other"),
+      py::is_operator());
   cls.def(
-      "__sub__", [sub_what](Obj<T> x, Obj<T> y) { return finite_result(*x - *y, sub_what.c_str()); },
-      py::arg("other"), py::is_operator());
+      "__sub__", [sub_what](Obj<T> x, Obj<T> y) { return finite_result(*x - *y, sub_what.c_str()); }, py::arg("other"),
+      py::is_operator());
   cls.def("__neg__", [](Obj<T> x) { return -*x; });
   cls.def("__pos__", [](Obj<T> x) { return *x; });
   const std::string mul_what = std::string(cls_name) + " * scalar";
@@ -164,8 +165,9 @@ Returns:
     bool.
 )doc");
   const std::string name(cls_name), an(a), bn(b), setstate = name + ".__setstate__";
-  def_array(cls, [](const T& x) { return vec_out<6>(x.vector()); },
-            "The 6-vector, shape (6,), for np.asarray (numpy's dtype and copy keywords).");
+  def_array(
+      cls, [](const T& x) { return vec_out<6>(x.vector()); },
+      "The 6-vector, shape (6,), for np.asarray (numpy's dtype and copy keywords).");
   // The state: the 6-vector, finite as the constructor takes it.
   def_value_protocol<6>(
       cls,
@@ -210,8 +212,7 @@ Args:
       "ndarray: the unit direction of the axis, shape (3,).");
   cls.def_property_readonly(
       "pitch", [](Obj<Screwd> s) { return s->pitch; }, "float: the pitch (inf for a translation or a couple).");
-  cls.def_property_readonly(
-      "magnitude", [](Obj<Screwd> s) { return s->magnitude; }, "float: the magnitude.");
+  cls.def_property_readonly("magnitude", [](Obj<Screwd> s) { return s->magnitude; }, "float: the magnitude.");
   cls.def("__iter__", [](Obj<Screwd> s_) {
     const Screwd& s = *s_;
     return py::iter(py::make_tuple(vec_out<3>(s.point), vec_out<3>(s.direction), s.pitch, s.magnitude));
@@ -362,7 +363,7 @@ Returns:
 )doc");
   cls.def(
       "bracket", [](Obj<Twistd> xi, Obj<Twistd> eta) { return xi->bracket(*eta); }, py::arg("other"),
-          R"doc(The Lie bracket [xi, eta] = ([xi][eta] - [eta][xi])^vee = (w1 x v2 + v1 x w2, w1 x w2).
+      R"doc(The Lie bracket [xi, eta] = ([xi][eta] - [eta][xi])^vee = (w1 x v2 + v1 x w2, w1 x w2).
 
 Args:
     other: Twist, eta.
@@ -371,8 +372,7 @@ Returns:
     Twist.
 )doc");
 
-  cls.def(
-      "screw", [](Obj<Twistd> xi) { return xi->screw(); }, R"doc(The screw of the twist (Chasles).
+  cls.def("screw", [](Obj<Twistd> xi) { return xi->screw(); }, R"doc(The screw of the twist (Chasles).
 
 With w != 0: pitch w.v / |w|^2, axis through w x v / |w|^2 along w / |w|,
 magnitude |w|; with w = 0: pitch inf, direction v / |v|, magnitude |v|.
@@ -519,7 +519,7 @@ Returns:
 
   cls.def(
       "power", [](Obj<Wrenchd> F, Obj<Twistd> V) { return F->power(*V); }, py::arg("twist"),
-          R"doc(The power V . F = v.f + w.tau of a twist on this wrench (same frame).
+      R"doc(The power V . F = v.f + w.tau of a twist on this wrench (same frame).
 
 Args:
     twist: Twist, V.
@@ -528,8 +528,7 @@ Returns:
     float.
 )doc");
 
-  cls.def(
-      "screw", [](Obj<Wrenchd> F) { return F->screw(); }, R"doc(The screw of the wrench (Poinsot).
+  cls.def("screw", [](Obj<Wrenchd> F) { return F->screw(); }, R"doc(The screw of the wrench (Poinsot).
 
 With f != 0, a force along the line through f x tau / |f|^2 with direction
 f / |f|, magnitude |f|, plus a torque pitch * f about it,

@@ -48,9 +48,9 @@
 #include <unordered_map>
 #include <vector>
 
-#include <Eigen/Core>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <Eigen/Core>
 
 #include "instance.hpp"
 
@@ -154,17 +154,13 @@ struct type_caster<chasles_py::AnyObject<Name>> {
     value.obj = src;
     return static_cast<bool>(src);
   }
-  static handle cast(const chasles_py::AnyObject<Name>& src, return_value_policy, handle) {
-    return src.obj.inc_ref();
-  }
+  static handle cast(const chasles_py::AnyObject<Name>& src, return_value_policy, handle) { return src.obj.inc_ref(); }
 };
 
 template <typename T>
 struct type_caster<chasles_py::Returns<T>> {
   static constexpr auto name = make_caster<T>::name;
-  static handle cast(const chasles_py::Returns<T>& src, return_value_policy, handle) {
-    return src.obj.inc_ref();
-  }
+  static handle cast(const chasles_py::Returns<T>& src, return_value_policy, handle) { return src.obj.inc_ref(); }
 };
 
 template <typename T>
@@ -176,8 +172,7 @@ struct type_caster<chasles_py::Obj<T>> {
   /// TypeError for an instance of T that holds no value yet.
   bool load(handle src, bool /*convert*/) {
     switch (chasles_py::instance_state<T>(src, &value.ptr)) {
-      case chasles_py::InstanceState::other_type:
-        return false;
+      case chasles_py::InstanceState::other_type: return false;
       case chasles_py::InstanceState::uninitialized: {
         const char* name = Py_TYPE(src.ptr())->tp_name;
         const char* dot = std::strrchr(name, '.');
@@ -185,8 +180,7 @@ struct type_caster<chasles_py::Obj<T>> {
                          " object is not initialized: it was made by __new__ alone, without __init__ or "
                          "__setstate__");
       }
-      case chasles_py::InstanceState::initialized:
-        break;
+      case chasles_py::InstanceState::initialized: break;
     }
     value.handle = src;
     return true;
@@ -321,8 +315,8 @@ inline py::array as_float64_array(py::handle h, const char* what) {
   const py::dtype dt = a.dtype();
   const char kind = dt.kind();
   if (kind != 'b' && kind != 'i' && kind != 'u' && kind != 'f') {
-    raise_type_error(std::string(what) + ": expected real numbers (float64), got dtype " +
-                     std::string(py::str(dt)) + " (" + type_name(h) + ")");
+    raise_type_error(std::string(what) + ": expected real numbers (float64), got dtype " + std::string(py::str(dt)) +
+                     " (" + type_name(h) + ")");
   }
   if (is_native_float64_array(a.ptr())) return a;
   return py::reinterpret_steal<py::array>(a.attr("astype")(py::dtype::of<double>()).release());
@@ -391,16 +385,26 @@ inline std::string shape_hint(const std::string& what, const Py_intptr_t* dims, 
   for (int k = 0; batch && k < core_nd; ++k) batch = dims[nd - core_nd + k] == core.begin()[k];
   if (batch) {
     std::string f;
-    if (what == "SO3.exp(w)") f = "chasles.so3_exp";
-    else if (what == "SO3.hat(w)") f = "chasles.so3_hat";
-    else if (what == "SO3.vee(matrix)") f = "chasles.so3_vee";
-    else if (what == "SO3.from_quat(quat)") f = "chasles.so3_from_quat";
-    else if (what == "SE3.exp(xi)") f = "chasles.se3_exp";
-    else if (what == "SE3.hat(xi)") f = "chasles.se3_hat";
-    else if (what == "SE3.vee(matrix)" || what == "Twist.vee(matrix)") f = "chasles.se3_vee";
-    else if (what == "SO3.interpolate(t)") f = "chasles.so3_interpolate";
-    else if (what == "SE3.interpolate(t)") f = "chasles.se3_interpolate";
-    else if (what == "interpolate(t)") f = "chasles.so3_interpolate or chasles.se3_interpolate";
+    if (what == "SO3.exp(w)")
+      f = "chasles.so3_exp";
+    else if (what == "SO3.hat(w)")
+      f = "chasles.so3_hat";
+    else if (what == "SO3.vee(matrix)")
+      f = "chasles.so3_vee";
+    else if (what == "SO3.from_quat(quat)")
+      f = "chasles.so3_from_quat";
+    else if (what == "SE3.exp(xi)")
+      f = "chasles.se3_exp";
+    else if (what == "SE3.hat(xi)")
+      f = "chasles.se3_hat";
+    else if (what == "SE3.vee(matrix)" || what == "Twist.vee(matrix)")
+      f = "chasles.se3_vee";
+    else if (what == "SO3.interpolate(t)")
+      f = "chasles.so3_interpolate";
+    else if (what == "SE3.interpolate(t)")
+      f = "chasles.se3_interpolate";
+    else if (what == "interpolate(t)")
+      f = "chasles.so3_interpolate or chasles.se3_interpolate";
     if (!f.empty())
       return "; for a batch, call the array function " + f + " (array functions broadcast over leading axes)";
   }
@@ -518,17 +522,15 @@ inline double to_tolerance(py::handle h, const char* what) {
 /// True for an instance of a class bound with pybind11 (an SO3, an SE3, a
 /// Twist, ...): such objects are never taken as points, even when they
 /// support __array__.
-inline bool is_bound_object(py::handle h) {
-  return py::detail::get_type_info(Py_TYPE(h.ptr())) != nullptr;
-}
+inline bool is_bound_object(py::handle h) { return py::detail::get_type_info(Py_TYPE(h.ptr())) != nullptr; }
 
 /// The shape numpy gives `h` when it is raw numbers (an ndarray, a list or
 /// tuple, an object with __array__, a bound object excepted), into `shape`;
 /// false for anything else, or when numpy cannot convert it.
 inline bool raw_shape(py::handle h, std::vector<Py_intptr_t>& shape) {
   PyObject* o = h.ptr();
-  if (is_bound_object(h) || !(npy().PyArray_Check_(o) || PyList_Check(o) || PyTuple_Check(o) ||
-                              PyObject_HasAttrString(o, "__array__")))
+  if (is_bound_object(h) ||
+      !(npy().PyArray_Check_(o) || PyList_Check(o) || PyTuple_Check(o) || PyObject_HasAttrString(o, "__array__")))
     return false;
   static PyObject* asarray = numpy_attr("asarray");
   PyObject* a = PyObject_CallOneArg(asarray, o);
@@ -715,33 +717,30 @@ void def_equality(Class& cls, Equal equal) {
       "For a tolerance, use ``is_approx(other, tol)``. An object of another type gives\n"
       "NotImplemented, so ``==`` is False. " +
       name + "s are unhashable.\n\nArgs:\n    other: any object.\n\nReturns:\n    bool.";
-  const std::string ne_doc =
-      "The negation of ``==``: some stored number differs (or is NaN), or other is not a " + name +
-      ".\n\nArgs:\n    other: any object.\n\nReturns:\n    bool.";
+  const std::string ne_doc = "The negation of ``==``: some stored number differs (or is NaN), or other is not a " +
+                             name + ".\n\nArgs:\n    other: any object.\n\nReturns:\n    bool.";
   // `other` is any object (as object.__eq__ takes it, and as the stub says):
   // NotImplemented for another type, TypeError for an uninitialized T.
   const auto name_of = [](py::handle h) { return type_name(h); };
   const auto compare = [equal, name_of](Obj<T> a, py::handle b, bool want_equal) -> Returns<bool> {
     const T* value = nullptr;
     switch (instance_state<T>(b, &value)) {
-      case InstanceState::other_type:
-        return {py::reinterpret_borrow<py::object>(Py_NotImplemented)};
+      case InstanceState::other_type: return {py::reinterpret_borrow<py::object>(Py_NotImplemented)};
       case InstanceState::uninitialized: {
         py::detail::make_caster<Obj<T>> caster;
         caster.load(b, false);  // raises the TypeError every method raises for it
         raise_type_error(name_of(b) + " object is not initialized");
       }
-      case InstanceState::initialized:
-        break;
+      case InstanceState::initialized: break;
     }
     return {py::bool_(static_cast<bool>(equal(*a, *value)) == want_equal)};
   };
   cls.def(
-      "__eq__", [compare](Obj<T> a, const py::object& other) { return compare(a, other, true); },
-      py::arg("other"), py::is_operator(), eq_doc.c_str());
+      "__eq__", [compare](Obj<T> a, const py::object& other) { return compare(a, other, true); }, py::arg("other"),
+      py::is_operator(), eq_doc.c_str());
   cls.def(
-      "__ne__", [compare](Obj<T> a, const py::object& other) { return compare(a, other, false); },
-      py::arg("other"), py::is_operator(), ne_doc.c_str());
+      "__ne__", [compare](Obj<T> a, const py::object& other) { return compare(a, other, false); }, py::arg("other"),
+      py::is_operator(), ne_doc.c_str());
   cls.attr("__hash__") = py::none();
 }
 
@@ -758,10 +757,8 @@ void def_repr(Class& cls, F f) {
     switch (instance_state<T>(self, &value)) {
       case InstanceState::other_type:
         raise_type_error(name + ".__repr__: expected a " + name + ", got " + type_name(self));
-      case InstanceState::uninitialized:
-        return "<uninitialized " + name + ">";
-      case InstanceState::initialized:
-        break;
+      case InstanceState::uninitialized: return "<uninitialized " + name + ">";
+      case InstanceState::initialized: break;
     }
     return f(*value);
   });
@@ -804,8 +801,8 @@ inline void read_state(const py::tuple& t, py::ssize_t offset, py::ssize_t n, do
   for (py::ssize_t k = 0; k < n; ++k) {
     PyObject* x = PyTuple_GET_ITEM(t.ptr(), offset + k);
     if (!PyFloat_Check(x))
-      raise_type_error(std::string(cls) + ".__setstate__: expected a tuple of floats, got " +
-                       type_name(py::handle(x)) + " at position " + std::to_string(offset + k));
+      raise_type_error(std::string(cls) + ".__setstate__: expected a tuple of floats, got " + type_name(py::handle(x)) +
+                       " at position " + std::to_string(offset + k));
     out[k] = PyFloat_AS_DOUBLE(x);
   }
 }

@@ -132,10 +132,8 @@ struct InlineCaster : py::detail::type_caster_base<T> {
       case py::return_value_policy::automatic:
       case py::return_value_policy::automatic_reference:
       case py::return_value_policy::copy:
-      case py::return_value_policy::move:
-        return cast(T(src), policy, parent);
-      default:
-        return Base::cast(src, policy, parent);
+      case py::return_value_policy::move: return cast(T(src), policy, parent);
+      default: return Base::cast(src, policy, parent);
     }
   }
 };

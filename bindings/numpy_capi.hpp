@@ -11,6 +11,6 @@
 #endif
 #define NPY_NO_DEPRECATED_API NPY_2_0_API_VERSION
 
-#include <numpy/ndarraytypes.h>
 #include <numpy/ndarrayobject.h>
+#include <numpy/ndarraytypes.h>
 #include <numpy/ufuncobject.h>

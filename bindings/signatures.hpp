@@ -208,8 +208,7 @@ inline std::string text_signature(const std::vector<Param>& params) {
     if (p.kind == Param::var_keyword) s += "**";
     s += p.name;
     if (!p.default_text.empty()) s += "=" + p.default_text;
-    if (p.kind == Param::positional_only &&
-        (i + 1 == params.size() || params[i + 1].kind != Param::positional_only)) {
+    if (p.kind == Param::positional_only && (i + 1 == params.size() || params[i + 1].kind != Param::positional_only)) {
       s += ", /";
     }
   }
@@ -225,8 +224,10 @@ inline std::string visible_doc(const char* name, const std::vector<const detail:
   int index = 0;
   for (const auto* rec : overloads) {
     if (index > 0) doc += '\n';
-    if (chain) doc += std::to_string(++index) + ". ";
-    else ++index;
+    if (chain)
+      doc += std::to_string(++index) + ". ";
+    else
+      ++index;
     doc += std::string(name) + rec->signature + "\n";
     if (rec->doc != nullptr && rec->doc[0] != '\0') doc += "\n" + std::string(rec->doc) + "\n";
   }
@@ -393,9 +394,8 @@ inline void hide_last_overload(PyObject* fn, const char* what) {
 template <typename Class, typename Explain>
 void def_refusal(Class& cls, Explain explain) {
   using T = typename Class::type;
-  cls.def(py::init([explain](const py::args& args, const py::kwargs& kwargs) -> T {
-    raise_type_error(explain(args, kwargs));
-  }));
+  cls.def(py::init(
+      [explain](const py::args& args, const py::kwargs& kwargs) -> T { raise_type_error(explain(args, kwargs)); }));
   // The overload just added is the last of __init__'s chain.
   const py::object init = cls.attr("__init__");
   hide_last_overload(PyInstanceMethod_Check(init.ptr()) ? PyInstanceMethod_GET_FUNCTION(init.ptr()) : init.ptr(),

@@ -40,8 +40,8 @@
 //   loop only (`Float64`: the chain is double).
 #pragma once
 
-#include <Eigen/Core>
 #include <pybind11/pybind11.h>
+#include <Eigen/Core>
 
 #include <algorithm>
 #include <array>
@@ -194,7 +194,7 @@ struct Stack {
   Eigen::Map<const Matrix, Eigen::Unaligned, Strides> operator[](ssize i) const noexcept {
     constexpr ssize t = sizeof(E);
     return Eigen::Map<const Matrix, Eigen::Unaligned, Strides>(reinterpret_cast<const E*>(data + i * strides[0]),
-                                                              Strides(strides[1] / t, strides[2] / t));
+                                                               Strides(strides[1] / t, strides[2] / t));
   }
 };
 
@@ -400,7 +400,7 @@ inline void store_results(const R& r, char** args, ssize i, const ssize* steps, 
     store<typename P::template At<N>, T, Contiguous>(r, args[N] + i * steps[N], core[N], n);
   else
     (store<typename P::template At<N + K>, T, Contiguous>(std::get<K>(r), args[N + K] + i * steps[N + K], core[N + K],
-                                                         n),
+                                                          n),
      ...);
 }
 
@@ -431,8 +431,8 @@ CHASLES_PY_FLATTEN void run(char** args, ssize count, const ssize* steps, const 
   } else {
     for (ssize i = 0; i < count; ++i)
       store_results<P, T, Contiguous>(
-          kernel(view<typename P::template At<I>, T, Contiguous>(args[I] + i * steps[I], core[I], n)...), args, i, steps,
-          core, n, outs);
+          kernel(view<typename P::template At<I>, T, Contiguous>(args[I] + i * steps[I], core[I], n)...), args, i,
+          steps, core, n, outs);
   }
 }
 
@@ -581,7 +581,6 @@ constexpr std::index_sequence<Offset + I...> shifted(std::index_sequence<I...>) 
   return {};
 }
 
-
 /// The numpy loop (PyUFuncGenericFunction) of a kernel for T: reads the
 /// core strides numpy passes after the outer ones and n, and runs the
 /// layout's instantiation, split across threads for a large batch
@@ -615,8 +614,7 @@ void loop(char** args, const ssize* dims, const ssize* steps, void* data) noexce
       run_model<P, T>(at.data(), end - begin, steps, core, n, entry.model.make, entry.kernel,
                       std::make_index_sequence<K>(), shifted<K>(std::make_index_sequence<N - K>()));
     } else if constexpr (IsCases<typename E::KernelType>::value) {
-      dispatch_cases<P, T>(at.data(), end - begin, steps, core, n, entry.kernel,
-                           typename E::KernelType::Sequence());
+      dispatch_cases<P, T>(at.data(), end - begin, steps, core, n, entry.kernel, typename E::KernelType::Sequence());
     } else {
       dispatch<P, T>(at.data(), end - begin, steps, core, n, entry.kernel, std::make_index_sequence<N>(),
                      std::make_index_sequence<P::nout>());
@@ -651,10 +649,14 @@ using Float64 = Loops<double>;
 /// numpy's type number of a core's scalar type.
 template <typename E>
 constexpr char type_number() {
-  if constexpr (std::is_same_v<E, float>) return NPY_FLOAT;
-  else if constexpr (std::is_same_v<E, double>) return NPY_DOUBLE;
-  else if constexpr (std::is_same_v<E, bool>) return NPY_BOOL;
-  else if constexpr (std::is_same_v<E, int>) return NPY_INT;
+  if constexpr (std::is_same_v<E, float>)
+    return NPY_FLOAT;
+  else if constexpr (std::is_same_v<E, double>)
+    return NPY_DOUBLE;
+  else if constexpr (std::is_same_v<E, bool>)
+    return NPY_BOOL;
+  else if constexpr (std::is_same_v<E, int>)
+    return NPY_INT;
   else {
     static_assert(std::is_same_v<E, npy_uint64>, "a core of float, double, bool, int or npy_uint64");
     return NPY_UINT64;
@@ -742,8 +744,8 @@ py::object def_ufunc(py::module_& m, const char* name, const char* params, const
 ///
 /// is (n,6),(4,4),(n)->(4,4) with n <= 32 (NaN results beyond).
 template <typename Signature, typename L = Loops<float, double>, std::size_t K, typename Make, typename Kernel>
-py::object def_ufunc(py::module_& m, const char* name, const char* params, const std::string& doc,
-                     Model<K, Make> made, Kernel kernel) {
+py::object def_ufunc(py::module_& m, const char* name, const char* params, const std::string& doc, Model<K, Make> made,
+                     Kernel kernel) {
   static_assert(std::is_empty_v<Kernel> && std::is_empty_v<Make>,
                 "a ufunc kernel captures nothing: it runs without the GIL, on any thread");
   static_assert(K <= Parts<Signature>::nin, "the model is made of operands");

@@ -100,7 +100,7 @@ std::string read_source(const std::string& source) {
     return source.substr(start);
   }
   const std::string path = quoted(source);
-  struct stat st {};
+  struct stat st{};
   if (::stat(source.c_str(), &st) != 0) fail("cannot open the file " + path);
   if (S_ISDIR(st.st_mode)) fail(path + " is a directory, not a URDF file");
   if (!S_ISREG(st.st_mode)) fail(path + " is not a regular file");
@@ -275,8 +275,22 @@ std::string decode(std::string_view raw) {
 
 /// The elements the scan reads (an index into the path of names below the
 /// <robot>), so that the attributes of no other element are decoded.
-enum class Role { none, robot, link, inertial, link_origin, mass, inertia, joint, joint_origin, axis, limit, parent,
-                  child, other };
+enum class Role {
+  none,
+  robot,
+  link,
+  inertial,
+  link_origin,
+  mass,
+  inertia,
+  joint,
+  joint_origin,
+  axis,
+  limit,
+  parent,
+  child,
+  other
+};
 
 /// One linear pass over the text (see the top of this file). Refuses a
 /// document nested more than max_depth deep; reads the elements of Role.
@@ -289,8 +303,7 @@ enum class Role { none, robot, link, inertial, link_origin, mass, inertia, joint
 /// from the count.
 Scan scan(const std::string& text) {
   const std::size_t utf8 = utf8_end(text);
-  if (utf8 != text.size())
-    fail("the description is not UTF-8 text (byte " + std::to_string(utf8) + " of the text)");
+  if (utf8 != text.size()) fail("the description is not UTF-8 text (byte " + std::to_string(utf8) + " of the text)");
   Scan out;
   const char* const begin = text.data();
   const char* const end = begin + text.size();
@@ -337,8 +350,7 @@ Scan scan(const std::string& text) {
     while (p < end && !stop_tables.name[static_cast<unsigned char>(*p)]) ++p;
     const std::string_view name(name_begin, static_cast<std::size_t>(p - name_begin));
     if (depth + 1 > max_depth)
-      fail("the XML nests elements more than " + std::to_string(max_depth) +
-           " deep, the bound on a URDF description");
+      fail("the XML nests elements more than " + std::to_string(max_depth) + " deep, the bound on a URDF description");
     const Role up = depth > 0 ? roles[depth - 1] : Role::none;
     Role role = Role::other;
     Element* element = nullptr;
@@ -360,7 +372,10 @@ Scan scan(const std::string& text) {
       }
     } else if (up == Role::inertial) {
       ScannedLink& link = out.links.back();
-      element = name == "origin" ? &link.origin : name == "mass" ? &link.mass : name == "inertia" ? &link.inertia : nullptr;
+      element = name == "origin"    ? &link.origin
+                : name == "mass"    ? &link.mass
+                : name == "inertia" ? &link.inertia
+                                    : nullptr;
     } else if (up == Role::joint) {
       ScannedJoint& joint = out.joints.back();
       element = name == "origin"   ? &joint.origin
@@ -490,8 +505,7 @@ bool parse_number(std::string_view s, double& x) {
   while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
   while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);
-  if (s.empty() || !((s.front() >= '0' && s.front() <= '9') || s.front() == '.' || s.front() == '-'))
-    return false;
+  if (s.empty() || !((s.front() >= '0' && s.front() <= '9') || s.front() == '.' || s.front() == '-')) return false;
   const auto r = std::from_chars(s.data(), s.data() + s.size(), x, std::chars_format::general);
   if (r.ptr != s.data() + s.size()) return false;
   if (r.ec == std::errc::result_out_of_range && underflows(s)) {
@@ -589,7 +603,8 @@ Inertials check(const Scan& s) {
     Inertial in{0.0, origin_pose(s, link.origin, "link", link.name, " <inertial>"), Matrix3::Zero()};
     const std::string_view* mass = s.get(link.mass, "value");
     if (!mass || !parse_number(*mass, in.mass)) fail(named("link", link.name, " <mass>: expected finite numbers"));
-    if (in.mass < 0) fail(named("link", link.name, " <mass>: negative mass ") + shortest(in.mass) + " (a mass is >= 0)");
+    if (in.mass < 0)
+      fail(named("link", link.name, " <mass>: negative mass ") + shortest(in.mass) + " (a mass is >= 0)");
     double I[6];
     static const char* const kNames[6] = {"ixx", "ixy", "ixz", "iyy", "iyz", "izz"};
     for (int k = 0; k < 6; ++k) {
@@ -702,9 +717,9 @@ urdf::ModelInterfaceSharedPtr parse(const std::string& text) {
   }
   console_bridge::restorePreviousOutputHandler();
   if (!model)
-    fail("urdfdom refused the description: " +
-         (capture.messages.empty() ? "no reason given (console_bridge's log level hides its messages)"
-                                   : capture.messages));
+    fail("urdfdom refused the description: " + (capture.messages.empty()
+                                                    ? "no reason given (console_bridge's log level hides its messages)"
+                                                    : capture.messages));
   return model;
 }
 
@@ -876,8 +891,8 @@ UrdfDescription read(const std::string& source, const std::string& tip_link, con
       const urdf::JointLimitsSharedPtr& limit = joint->limits;
       double lo = -inf, hi = inf;
       if (kind != urdf::Joint::CONTINUOUS) {
-        if (!limit) fail(what + ": a " + (kind == urdf::Joint::PRISMATIC ? "prismatic" : "revolute") +
-                         " joint needs a <limit>");
+        if (!limit)
+          fail(what + ": a " + (kind == urdf::Joint::PRISMATIC ? "prismatic" : "revolute") + " joint needs a <limit>");
         lo = limit->lower;
         hi = limit->upper;
         if (!(std::isfinite(lo) && std::isfinite(hi))) fail(what + " <limit>: expected finite numbers");

@@ -39,8 +39,8 @@ int main() {
   const SE3d g_minus = arm.forward(Arm::JointVector(theta - e * theta_dot));
   const Eigen::Matrix<double, 6, 1> numeric = (g_plus * g_minus.inverse()).log() / (2 * e);
   const Eigen::Matrix<double, 6, 1> twist = arm.jacobian_space(theta) * theta_dot;
-  std::printf("spatial twist J_s theta' = (%.6f, %.6f, %.6f, %.6f, %.6f, %.6f), difference %.1e\n", twist[0],
-              twist[1], twist[2], twist[3], twist[4], twist[5], (twist - numeric).cwiseAbs().maxCoeff());
+  std::printf("spatial twist J_s theta' = (%.6f, %.6f, %.6f, %.6f, %.6f, %.6f), difference %.1e\n", twist[0], twist[1],
+              twist[2], twist[3], twist[4], twist[5], (twist - numeric).cwiseAbs().maxCoeff());
   ok = ok && (twist - numeric).cwiseAbs().maxCoeff() < 1e-8;
   std::printf("%s\n", ok ? "all checks passed" : "FAILED");
   return ok ? 0 : 1;

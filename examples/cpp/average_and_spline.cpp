@@ -33,8 +33,8 @@ SE3d truth(double t) { return SE3d::exp(Vector6d(t * V0)) * SE3d::exp(Vector6d(t
 
 void print_row(double t, const SE3d& g, const Vector6d& v, const Vector6d& a) {
   const Eigen::Vector3d p = g.translation();
-  std::printf("%4.2f | %6.3f %6.3f %6.3f | %6.3f %6.3f %6.3f %6.3f %6.3f %6.3f |", t, p.x(), p.y(), p.z(), v[0],
-              v[1], v[2], v[3], v[4], v[5]);
+  std::printf("%4.2f | %6.3f %6.3f %6.3f | %6.3f %6.3f %6.3f %6.3f %6.3f %6.3f |", t, p.x(), p.y(), p.z(), v[0], v[1],
+              v[2], v[3], v[4], v[5]);
   std::printf(" %5.2f %5.2f %5.2f %5.2f %5.2f %5.2f\n", a[0], a[1], a[2], a[3], a[4], a[5]);
 }
 

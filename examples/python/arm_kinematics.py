@@ -9,8 +9,9 @@ the arm's closed form and its space Jacobian against finite differences.
     python examples/python/arm_kinematics.py
 """
 
-import chasles
 import numpy as np
+
+import chasles
 from chasles import SE3, Chain
 
 l1, l2, h = 0.4, 0.3, 0.5  # link lengths and the tool's height at home (m)
@@ -57,6 +58,4 @@ print(f"10000 configurations: the tool stays between {radius.min():.3f} and {rad
 assert np.all(radius <= l1 + l2 + 1e-12) and np.all(radius >= abs(l1 - l2) - 1e-12)
 assert np.array_equal(poses[0], arm.forward(thetas[0]))
 # The body form gives the same poses.
-assert np.allclose(
-    chasles.se3_inverse(poses[:5]) @ arm.forward_body(thetas[:5]), np.eye(4), atol=1e-13
-)
+assert np.allclose(chasles.se3_inverse(poses[:5]) @ arm.forward_body(thetas[:5]), np.eye(4), atol=1e-13)

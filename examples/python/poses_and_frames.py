@@ -9,6 +9,7 @@ g_wc = g_wb @ g_bc.
 """
 
 import numpy as np
+
 from chasles import SE3, SO3
 
 # The base: 2 m along x and 1 m along y of the world, turned 90 degrees about z.

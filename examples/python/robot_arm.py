@@ -108,10 +108,11 @@ def main():
     angle_error = (reached.inverse() @ TARGET).rotation.angle()
     assert position_error < 1e-10 and angle_error < 1e-10, (position_error, angle_error)
     assert np.all((arm.lower <= ik.q) & (ik.q <= arm.upper))
-    print(f"1. IK from 'ready' to the target: converged in {ik.iterations} iterations "
-          f"({elapsed * 1e6:.0f} us)")
-    print(f"   |error twist| = {np.linalg.norm(ik.error):.1e}; forward kinematics of the "
-          f"solution is {position_error:.1e} m and {angle_error:.1e} rad from the target")
+    print(f"1. IK from 'ready' to the target: converged in {ik.iterations} iterations ({elapsed * 1e6:.0f} us)")
+    print(
+        f"   |error twist| = {np.linalg.norm(ik.error):.1e}; forward kinematics of the "
+        f"solution is {position_error:.1e} m and {angle_error:.1e} rad from the target"
+    )
     print(f"   q = {np.array2string(ik.q, precision=4)} rad, within the joint limits")
 
     # 2. Joint torques along the trajectory, in one batched call.
@@ -126,10 +127,14 @@ def main():
     assembled += arm.gravity_torques(q)
     identity = np.abs(tau - assembled).max()
     assert identity < 1e-9, identity
-    print(f"2. Inverse dynamics of {len(t)} samples of a {args.duration:g} s quintic motion "
-          f"in one call ({elapsed * 1e6:.0f} us)")
-    print(f"   at rest at both ends tau equals the gravity torques (to {at_ends:.1e} N m); "
-          f"tau = M qdd + C qd + g to {identity:.1e} N m")
+    print(
+        f"2. Inverse dynamics of {len(t)} samples of a {args.duration:g} s quintic motion "
+        f"in one call ({elapsed * 1e6:.0f} us)"
+    )
+    print(
+        f"   at rest at both ends tau equals the gravity torques (to {at_ends:.1e} N m); "
+        f"tau = M qdd + C qd + g to {identity:.1e} N m"
+    )
     peak = np.abs(tau).max(axis=0)
     print("   joint           peak |tau|   effort limit   peak / limit")
     for name, p, limit in zip(arm.joint_names, peak, arm.effort_limits):
@@ -152,8 +157,7 @@ def main():
             png = Path(tmp) / "robot_arm.png"
             drawn = draw(arm, ik.q, q, png)
             size = png.stat().st_size
-        print(f"3. Picture of the arm at the solution drawn ({size} bytes, to a temporary "
-              "file; --png PATH keeps it)")
+        print(f"3. Picture of the arm at the solution drawn ({size} bytes, to a temporary file; --png PATH keeps it)")
     tool = drawn.points[-1]
     assert np.allclose(tool, TARGET.translation, atol=1e-10, rtol=0)
     print(f"   the drawn tool is at {np.array2string(tool, precision=4)}, the target")

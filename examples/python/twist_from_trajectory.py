@@ -9,8 +9,9 @@ midpoint is O(dt^2). The spatial twist is Ad_g times the body twist.
     python examples/python/twist_from_trajectory.py
 """
 
-import chasles
 import numpy as np
+
+import chasles
 from chasles import SE3, Twist
 
 # A trajectory with a known velocity: a screw motion at a constant body twist

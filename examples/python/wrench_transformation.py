@@ -10,6 +10,7 @@ twists do, and that is what keeps the power V . F the same in every frame.
 """
 
 import numpy as np
+
 from chasles import SE3, SO3, Twist, Wrench
 
 # The tool tip is 0.2 m along the sensor's z axis, turned 30 degrees about it.

@@ -212,8 +212,7 @@ class CubicBSplineView {
   using Real = RealOf<Scalar>;
   using Tangent = typename BSplinePoint<Group>::Tangent;
 
-  CubicBSplineView(const Group* control, std::ptrdiff_t count, const Scalar& start_time,
-                   const Scalar& spacing) noexcept
+  CubicBSplineView(const Group* control, std::ptrdiff_t count, const Scalar& start_time, const Scalar& spacing) noexcept
       : control_(control), count_(count), t0_(start_time), dt_(spacing) {
     CHASLES_ASSERT(control != nullptr && count >= 4);
     CHASLES_ASSERT(detail::real_value(spacing) > Real(0) &&

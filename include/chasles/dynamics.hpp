@@ -102,10 +102,11 @@ struct DynamicsPass {
   template <typename Q>
   DynamicsPass(const ChainT& chain, const Eigen::MatrixBase<Q>& q) noexcept : S(6, chain.n_joints()) {
     const typename ChainT::Inertias& G = chain.link_inertias();
-    tool = space_pass(chain, q, &S, [&](Eigen::Index i, const SE3<Scalar>& g) {
-             const auto k = static_cast<std::size_t>(i);
-             I[k] = G[k].transform(g);
-           }) *
+    tool = space_pass(chain, q, &S,
+                      [&](Eigen::Index i, const SE3<Scalar>& g) {
+                        const auto k = static_cast<std::size_t>(i);
+                        I[k] = G[k].transform(g);
+                      }) *
            chain.home();
   }
   typename ChainT::Jacobian S;
@@ -219,11 +220,9 @@ Eigen::Index factorize(MassMatrix& A, const JointVector& floor) noexcept {
 /// that give the accelerations qdd at (q, qd) while the tool applies the
 /// wrench F_tip (tool frame) on the environment. Recursive Newton-Euler.
 template <typename Scalar, int N, int MaxN, typename Q, typename Qd, typename Qdd>
-typename Chain<Scalar, N, MaxN>::JointVector inverse_dynamics(const Chain<Scalar, N, MaxN>& chain,
-                                                              const Eigen::MatrixBase<Q>& q,
-                                                              const Eigen::MatrixBase<Qd>& qd,
-                                                              const Eigen::MatrixBase<Qdd>& qdd,
-                                                              const Wrench<Scalar>& tip_wrench = Wrench<Scalar>()) noexcept {
+typename Chain<Scalar, N, MaxN>::JointVector inverse_dynamics(
+    const Chain<Scalar, N, MaxN>& chain, const Eigen::MatrixBase<Q>& q, const Eigen::MatrixBase<Qd>& qd,
+    const Eigen::MatrixBase<Qdd>& qdd, const Wrench<Scalar>& tip_wrench = Wrench<Scalar>()) noexcept {
   detail::check_joint_vector(chain, q);
   detail::check_joint_vector(chain, qd);
   detail::check_joint_vector(chain, qdd);

@@ -23,8 +23,30 @@ namespace chasles {
 /// [-pi/2, pi/2], proper Euler sequences (first axis = last) in [0, pi]; the
 /// other two angles are in [-pi, pi]. As scipy.
 enum class EulerSequence {
-  xyz, xzy, yxz, yzx, zxy, zyx, xyx, xzx, yxy, yzy, zxz, zyz,  // extrinsic
-  XYZ, XZY, YXZ, YZX, ZXY, ZYX, XYX, XZX, YXY, YZY, ZXZ, ZYZ,  // intrinsic
+  xyz,
+  xzy,
+  yxz,
+  yzx,
+  zxy,
+  zyx,
+  xyx,
+  xzx,
+  yxy,
+  yzy,
+  zxz,
+  zyz,  // extrinsic
+  XYZ,
+  XZY,
+  YXZ,
+  YZX,
+  ZXY,
+  ZYX,
+  XYX,
+  XZX,
+  YXY,
+  YZY,
+  ZXZ,
+  ZYZ,  // intrinsic
 };
 
 /// Euler angles of a rotation, and whether the gimbal lock was hit.

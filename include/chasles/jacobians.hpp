@@ -399,13 +399,11 @@ inline Vector6Of<Scalar> interpolate_jacobian_t(const SE3<Scalar>& a, const SE3<
 }
 /// (t of another arithmetic type, as for interpolate.)
 template <typename Scalar, typename T, detail::EnableIfOtherArithmetic<Scalar, T> = 0>
-inline Vector3Of<Scalar> interpolate_jacobian_t(const SO3<Scalar>& a, const SO3<Scalar>& b,
-                                                const T& /*t*/) noexcept {
+inline Vector3Of<Scalar> interpolate_jacobian_t(const SO3<Scalar>& a, const SO3<Scalar>& b, const T& /*t*/) noexcept {
   return rminus(b, a);
 }
 template <typename Scalar, typename T, detail::EnableIfOtherArithmetic<Scalar, T> = 0>
-inline Vector6Of<Scalar> interpolate_jacobian_t(const SE3<Scalar>& a, const SE3<Scalar>& b,
-                                                const T& /*t*/) noexcept {
+inline Vector6Of<Scalar> interpolate_jacobian_t(const SE3<Scalar>& a, const SE3<Scalar>& b, const T& /*t*/) noexcept {
   return rminus(b, a);
 }
 

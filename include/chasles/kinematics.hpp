@@ -53,8 +53,8 @@ SE3<Scalar> projected(const SE3<Scalar>& g) noexcept {
 /// eigen_assert (as Eigen checks sizes) when n or its size is dynamic.
 template <typename ChainT, typename Derived>
 void check_joint_vector(const ChainT& chain, const Eigen::MatrixBase<Derived>& v) noexcept {
-  static_assert(JointVectorSize<ChainT::JointsAtCompileTime, ChainT::MaxJointsAtCompileTime,
-                                Derived::SizeAtCompileTime>::ok);
+  static_assert(
+      JointVectorSize<ChainT::JointsAtCompileTime, ChainT::MaxJointsAtCompileTime, Derived::SizeAtCompileTime>::ok);
   static_cast<void>(chain);  // (both unused when assertions are off)
   static_cast<void>(v);
   CHASLES_ASSERT(v.size() == chain.n_joints());
@@ -69,7 +69,8 @@ void check_joint_vector(const ChainT& chain, const Eigen::MatrixBase<Derived>& v
 /// Jacobian alone has no use for it) and returns g_{n-1}.
 template <typename ChainT, typename Q, typename Link>
 EIGEN_ALWAYS_INLINE SE3<typename ChainT::Scalar> space_pass(const ChainT& chain, const Eigen::MatrixBase<Q>& q,
-                                        typename ChainT::Jacobian* J, Link&& link, bool last = true) noexcept {
+                                                            typename ChainT::Jacobian* J, Link&& link,
+                                                            bool last = true) noexcept {
   using Scalar = typename ChainT::Scalar;
   using Group = SE3<Scalar>;
   using Vector6 = Eigen::Matrix<Scalar, 6, 1>;
@@ -92,7 +93,7 @@ EIGEN_ALWAYS_INLINE SE3<typename ChainT::Scalar> space_pass(const ChainT& chain,
 /// Jacobian alone needs, and returns M h_2).
 template <typename ChainT, typename Q>
 EIGEN_ALWAYS_INLINE SE3<typename ChainT::Scalar> body_pass(const ChainT& chain, const Eigen::MatrixBase<Q>& q,
-                                       typename ChainT::Jacobian* J, bool last = true) noexcept {
+                                                           typename ChainT::Jacobian* J, bool last = true) noexcept {
   using Scalar = typename ChainT::Scalar;
   using Group = SE3<Scalar>;
   using Vector6 = Eigen::Matrix<Scalar, 6, 1>;
@@ -233,7 +234,9 @@ class Chain {
   /// limits (+-inf), identity base and tool, default gravity, massless links.
   template <typename Derived>
   Chain(const Eigen::MatrixBase<Derived>& space_screws, const Group& home) noexcept
-      : S_(space_screws), B_(6, space_screws.cols()), M_(detail::projected(home)),
+      : S_(space_screws),
+        B_(6, space_screws.cols()),
+        M_(detail::projected(home)),
         lower_(JointVector::Constant(space_screws.cols(), -infinity())),
         upper_(JointVector::Constant(space_screws.cols(), infinity())),
         velocity_(JointVector::Constant(space_screws.cols(), infinity())),
@@ -241,7 +244,8 @@ class Chain {
         gravity_(default_gravity()) {
     types_.fill(JointType::revolute);
     for (Eigen::Index i = 0; i < S_.cols(); ++i)
-      if (!(S_.col(i).template tail<3>().squaredNorm() > Scalar(0))) types_[static_cast<std::size_t>(i)] = JointType::prismatic;
+      if (!(S_.col(i).template tail<3>().squaredNorm() > Scalar(0)))
+        types_[static_cast<std::size_t>(i)] = JointType::prismatic;
     compute_body_screws();
   }
 
@@ -287,9 +291,16 @@ class Chain {
         const JointVector& lower, const JointVector& upper, const JointVector& velocity_limits,
         const JointVector& effort_limits, const Group& base = Group(), const Group& tool = Group(),
         const Vector3& gravity = default_gravity(), const Inertias& link_inertias = Inertias()) noexcept
-      : S_(space_screws), B_(6, space_screws.cols()), types_(types), lower_(lower), upper_(upper),
-        velocity_(velocity_limits), effort_(effort_limits), base_(detail::projected(base)),
-        tool_(detail::projected(tool)), gravity_(gravity) {
+      : S_(space_screws),
+        B_(6, space_screws.cols()),
+        types_(types),
+        lower_(lower),
+        upper_(upper),
+        velocity_(velocity_limits),
+        effort_(effort_limits),
+        base_(detail::projected(base)),
+        tool_(detail::projected(tool)),
+        gravity_(gravity) {
     CHASLES_ASSERT(lower.size() == S_.cols() && upper.size() == S_.cols() && velocity_limits.size() == S_.cols() &&
                    effort_limits.size() == S_.cols());
     for (Eigen::Index i = 0; i < S_.cols(); ++i) {
@@ -312,8 +323,17 @@ class Chain {
         const JointVector& lower, const JointVector& upper, const JointVector& velocity_limits,
         const JointVector& effort_limits, const Group& base, const Group& tool, const Vector3& gravity,
         const Inertias& link_inertias) noexcept
-      : S_(space_screws), B_(6, space_screws.cols()), M_(home), types_(types), lower_(lower), upper_(upper),
-        velocity_(velocity_limits), effort_(effort_limits), base_(base), tool_(tool), gravity_(gravity),
+      : S_(space_screws),
+        B_(6, space_screws.cols()),
+        M_(home),
+        types_(types),
+        lower_(lower),
+        upper_(upper),
+        velocity_(velocity_limits),
+        effort_(effort_limits),
+        base_(base),
+        tool_(tool),
+        gravity_(gravity),
         inertias_(link_inertias) {
     compute_body_screws();
   }
@@ -448,7 +468,8 @@ class Chain {
       if (!(velocity_(i) >= Scalar(0)) || !(effort_(i) >= Scalar(0)))
         return {ChainStatus::velocity_or_effort_limit_invalid, i};
     }
-    if (!(abs(gravity_(0)) + abs(gravity_(1)) + abs(gravity_(2)) < infinity())) return {ChainStatus::gravity_not_finite, -1};
+    if (!(abs(gravity_(0)) + abs(gravity_(1)) + abs(gravity_(2)) < infinity()))
+      return {ChainStatus::gravity_not_finite, -1};
     for (Eigen::Index i = 0; i < n_joints(); ++i) {
       const Inertia& G = inertias_[static_cast<std::size_t>(i)];
       bool finite = G.mass() >= Scalar(0) && G.mass() < infinity();  // false for NaN

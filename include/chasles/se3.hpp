@@ -51,8 +51,8 @@ class SE3 {
   /// explicit forms, `from_matrix` (checked), `from_matrix_projected` or
   /// `from_matrix_unchecked`. This declaration only turns `SE3 g(M);` and
   /// `SE3 g = M;` into a compile error that says so.
-  template <typename Derived, std::enable_if_t<Derived::RowsAtCompileTime == 4 && Derived::ColsAtCompileTime == 4,
-                                               int> = 0>
+  template <typename Derived,
+            std::enable_if_t<Derived::RowsAtCompileTime == 4 && Derived::ColsAtCompileTime == 4, int> = 0>
   SE3(const Eigen::MatrixBase<Derived>& /*M*/) noexcept : R_(), p_() {
     static_assert(detail::always_false<Derived>::value,
                   "chasles::SE3 is not constructible from a matrix: use SE3::from_matrix(M) (checked: an "
@@ -102,8 +102,7 @@ class SE3 {
     // |C w| |w| <= 1.2, so no intermediate exceeds a few |v| (w x v itself
     // would overflow for |w| |v| past the largest finite value).
     const Vector3 bw = k.b * w, cw = k.c * w;
-    return SE3(Rotation::from_matrix_unchecked(detail::rodrigues(w, k.a, k.b)),
-               k.a * v + bw.cross(v) + cw.dot(v) * w);
+    return SE3(Rotation::from_matrix_unchecked(detail::rodrigues(w, k.a, k.b)), k.a * v + bw.cross(v) + cw.dot(v) * w);
   }
   static SE3 exp(const Twist<Scalar>& xi) noexcept { return exp(xi.vector()); }
 
@@ -128,9 +127,7 @@ class SE3 {
   }
 
   /// Composition g_ab * g_bc = g_ac = [[R_ab R_bc, R_ab p_bc + p_ab], [0, 1]].
-  SE3 operator*(const SE3& other) const noexcept {
-    return SE3(R_ * other.R_, R_.matrix() * other.p_ + p_);
-  }
+  SE3 operator*(const SE3& other) const noexcept { return SE3(R_ * other.R_, R_.matrix() * other.p_ + p_); }
   SE3& operator*=(const SE3& other) noexcept {
     p_ = R_.matrix() * other.p_ + p_;
     R_ *= other.R_;
@@ -215,16 +212,14 @@ class SE3 {
   /// Unchecked construction from [[R, p], [*, *]]: for valid data; the
   /// bottom row is not read.
   static SE3 from_matrix_unchecked(const Matrix4& M) noexcept {
-    return SE3(Rotation::from_matrix_unchecked(M.template topLeftCorner<3, 3>()),
-               M.template topRightCorner<3, 1>());
+    return SE3(Rotation::from_matrix_unchecked(M.template topLeftCorner<3, 3>()), M.template topRightCorner<3, 1>());
   }
 
   /// Projecting construction: the nearest rotation to the top-left block
   /// (SO3::from_matrix_projected) and the translation column; the bottom row
   /// is not read.
   static SE3 from_matrix_projected(const Matrix4& M) noexcept {
-    return SE3(Rotation::from_matrix_projected(M.template topLeftCorner<3, 3>()),
-               M.template topRightCorner<3, 1>());
+    return SE3(Rotation::from_matrix_projected(M.template topLeftCorner<3, 3>()), M.template topRightCorner<3, 1>());
   }
 
   /// The screw motion about the axis through `point` q along `direction`

@@ -55,8 +55,8 @@ class SO3 {
   /// explicit forms, `from_matrix` (checked), `from_matrix_projected` or
   /// `from_matrix_unchecked`. This declaration only turns `SO3 R(M);` and
   /// `SO3 R = M;` into a compile error that says so.
-  template <typename Derived, std::enable_if_t<Derived::RowsAtCompileTime == 3 && Derived::ColsAtCompileTime == 3,
-                                               int> = 0>
+  template <typename Derived,
+            std::enable_if_t<Derived::RowsAtCompileTime == 3 && Derived::ColsAtCompileTime == 3, int> = 0>
   SO3(const Eigen::MatrixBase<Derived>& /*M*/) noexcept : R_() {
     static_assert(detail::always_false<Derived>::value,
                   "chasles::SO3 is not constructible from a matrix: use SO3::from_matrix(M) (checked: an "
@@ -79,8 +79,7 @@ class SO3 {
   /// is not exactly skew gives the w of its nearest skew matrix.
   static Vector3 vee(const Matrix3& W) noexcept {
     const Scalar half(0.5);
-    return Vector3(half * W(2, 1) - half * W(1, 2), half * W(0, 2) - half * W(2, 0),
-                   half * W(1, 0) - half * W(0, 1));
+    return Vector3(half * W(2, 1) - half * W(1, 2), half * W(0, 2) - half * W(2, 0), half * W(1, 0) - half * W(0, 1));
   }
 
   /// Adjoint of the algebra: ad(w) = [w] (3x3), so ad(a) b = [a, b].
@@ -245,9 +244,7 @@ class SO3 {
   }
 
   /// max |R_this - R_other| <= tol. `==` is deliberately not defined.
-  bool is_approx(const SO3& other, const Real& tol) const noexcept {
-    return detail::approx_equal(R_, other.R_, tol);
-  }
+  bool is_approx(const SO3& other, const Real& tol) const noexcept { return detail::approx_equal(R_, other.R_, tol); }
 
  private:
   struct Unchecked {};

@@ -123,8 +123,7 @@ class SpatialInertia {
   /// a, g = g_ab: (m, R^T (c - p), R^T I_c R); transform(g.inverse()).
   SpatialInertia transform_inv(const SE3<Scalar>& g) const noexcept {
     const Matrix3& R = g.rotation().matrix();
-    return SpatialInertia(m_, Vector3(R.transpose() * (c_ - g.translation())),
-                          Matrix3(R.transpose() * I_ * R));
+    return SpatialInertia(m_, Vector3(R.transpose() * (c_ - g.translation())), Matrix3(R.transpose() * I_ * R));
   }
 
   /// The inertia of the two bodies rigidly joined (both described in the
@@ -190,10 +189,9 @@ class SpatialInertia {
   bool is_approx(const SpatialInertia& other, const RealOf<Scalar>& tol) const noexcept {
     using std::abs;
     using std::max;
-    const RealOf<Scalar> scale =
-        max({RealOf<Scalar>(1), value(abs(m_)), value(abs(other.m_)), value(c_.cwiseAbs().maxCoeff()),
-             value(other.c_.cwiseAbs().maxCoeff()), value(I_.cwiseAbs().maxCoeff()),
-             value(other.I_.cwiseAbs().maxCoeff())});
+    const RealOf<Scalar> scale = max({RealOf<Scalar>(1), value(abs(m_)), value(abs(other.m_)),
+                                      value(c_.cwiseAbs().maxCoeff()), value(other.c_.cwiseAbs().maxCoeff()),
+                                      value(I_.cwiseAbs().maxCoeff()), value(other.I_.cwiseAbs().maxCoeff())});
     const RealOf<Scalar> diff = max({value(abs(m_ - other.m_)), value((c_ - other.c_).cwiseAbs().maxCoeff()),
                                      value((I_ - other.I_).cwiseAbs().maxCoeff())});
     return diff <= tol * scale;

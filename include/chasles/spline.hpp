@@ -94,7 +94,7 @@ enum class SplineStatus {
   too_few_keys,          ///< N < 2
   times_not_increasing,  ///< some t_{i+1} - t_i is not > 0 and finite (or a time is NaN)
   step_out_of_range,     ///< some t_{i+1} - t_i is outside [spline_min_step, spline_max_step] (constants.hpp)
-  not_converged,         ///< the fixed point did not converge in spline_max_iterations (coefficients are the last iterate)
+  not_converged,  ///< the fixed point did not converge in spline_max_iterations (coefficients are the last iterate)
 };
 
 /// Result of fit_spline.
@@ -116,14 +116,14 @@ struct SplineWork {
   using Scalar = typename Group::Scalar;
   using Tangent = Eigen::Matrix<Scalar, Group::DoF, 1>;
   using Matrix = Eigen::Matrix<Scalar, Group::DoF, Group::DoF>;
-  Tangent delta;   ///< D_i = log(X_i^-1 X_{i+1}) (unused for the last key)
-  Tangent rate;    ///< w_i, the body velocity at key i
-  Tangent rhs;     ///< g_i, the part of the right-hand side that does not depend on w
-  Tangent tmp;     ///< forward-sweep values
-  Matrix jr_inv;   ///< Jr(D_i)^-1
-  Matrix lower;    ///< the block left of the diagonal in row i
-  Matrix diag_inv; ///< inverse of the eliminated diagonal block
-  Matrix upper;    ///< the eliminated block right of the diagonal, diag_inv * C_i
+  Tangent delta;  ///< D_i = log(X_i^-1 X_{i+1}) (unused for the last key)
+  Tangent rate;  ///< w_i, the body velocity at key i
+  Tangent rhs;  ///< g_i, the part of the right-hand side that does not depend on w
+  Tangent tmp;  ///< forward-sweep values
+  Matrix jr_inv;  ///< Jr(D_i)^-1
+  Matrix lower;  ///< the block left of the diagonal in row i
+  Matrix diag_inv;  ///< inverse of the eliminated diagonal block
+  Matrix upper;  ///< the eliminated block right of the diagonal, diag_inv * C_i
 };
 
 /// Pose (or rotation), body velocity and body acceleration at one time.
@@ -131,7 +131,7 @@ template <typename Group>
 struct SplineSample {
   using Tangent = Eigen::Matrix<typename Group::Scalar, Group::DoF, 1>;
   Group element;
-  Tangent velocity;      ///< (X^-1 X')^vee: w (SO3) or the twist (v, w) (SE3)
+  Tangent velocity;  ///< (X^-1 X')^vee: w (SO3) or the twist (v, w) (SE3)
   Tangent acceleration;  ///< d/dt of velocity
 };
 
@@ -152,8 +152,24 @@ struct JacobianCoefficients {
 };
 
 /// The Taylor coefficients (-1)^k / (2k+2)! of a and (-1)^k / (2k+3)! of b, k = 0..12.
-constexpr double kSplineSeriesA[13] = {0.5, -0.041666666666666664, 0.001388888888888889, -2.48015873015873e-05, 2.755731922398589e-07, -2.08767569878681e-09, 1.1470745597729725e-11, -4.779477332387385e-14, 1.5619206968586225e-16, -4.110317623312165e-19, 8.896791392450574e-22, -1.6117375710961184e-24, 2.4795962632247976e-27};
-constexpr double kSplineSeriesB[13] = {0.16666666666666666, -0.008333333333333333, 0.0001984126984126984, -2.7557319223985893e-06, 2.505210838544172e-08, -1.6059043836821613e-10, 7.647163731819816e-13, -2.8114572543455206e-15, 8.22063524662433e-18, -1.9572941063391263e-20, 3.868170170630684e-23, -6.446950284384474e-26, 9.183689863795546e-29};
+constexpr double kSplineSeriesA[13] = {0.5,
+                                       -0.041666666666666664,
+                                       0.001388888888888889,
+                                       -2.48015873015873e-05,
+                                       2.755731922398589e-07,
+                                       -2.08767569878681e-09,
+                                       1.1470745597729725e-11,
+                                       -4.779477332387385e-14,
+                                       1.5619206968586225e-16,
+                                       -4.110317623312165e-19,
+                                       8.896791392450574e-22,
+                                       -1.6117375710961184e-24,
+                                       2.4795962632247976e-27};
+constexpr double kSplineSeriesB[13] = {0.16666666666666666,     -0.008333333333333333,   0.0001984126984126984,
+                                       -2.7557319223985893e-06, 2.505210838544172e-08,   -1.6059043836821613e-10,
+                                       7.647163731819816e-13,   -2.8114572543455206e-15, 8.22063524662433e-18,
+                                       -1.9572941063391263e-20, 3.868170170630684e-23,   -6.446950284384474e-26,
+                                       9.183689863795546e-29};
 
 template <typename Scalar>
 inline JacobianCoefficients<Scalar> jacobian_coefficients(const Scalar& s) noexcept {
@@ -258,19 +274,23 @@ inline void spline_rates(const SE3<Scalar>* /*tag*/, const Eigen::Matrix<Scalar,
 }
 
 template <typename Scalar>
-inline Eigen::Matrix<Scalar, 3, 3> spline_jr(const SO3<Scalar>* /*tag*/, const Eigen::Matrix<Scalar, 3, 1>& d) noexcept {
+inline Eigen::Matrix<Scalar, 3, 3> spline_jr(const SO3<Scalar>* /*tag*/,
+                                             const Eigen::Matrix<Scalar, 3, 1>& d) noexcept {
   return so3_right_jacobian(d);
 }
 template <typename Scalar>
-inline Eigen::Matrix<Scalar, 3, 3> spline_jr_inv(const SO3<Scalar>* /*tag*/, const Eigen::Matrix<Scalar, 3, 1>& d) noexcept {
+inline Eigen::Matrix<Scalar, 3, 3> spline_jr_inv(const SO3<Scalar>* /*tag*/,
+                                                 const Eigen::Matrix<Scalar, 3, 1>& d) noexcept {
   return so3_right_jacobian_inverse(d);
 }
 template <typename Scalar>
-inline Eigen::Matrix<Scalar, 6, 6> spline_jr(const SE3<Scalar>* /*tag*/, const Eigen::Matrix<Scalar, 6, 1>& d) noexcept {
+inline Eigen::Matrix<Scalar, 6, 6> spline_jr(const SE3<Scalar>* /*tag*/,
+                                             const Eigen::Matrix<Scalar, 6, 1>& d) noexcept {
   return se3_right_jacobian(d);
 }
 template <typename Scalar>
-inline Eigen::Matrix<Scalar, 6, 6> spline_jr_inv(const SE3<Scalar>* /*tag*/, const Eigen::Matrix<Scalar, 6, 1>& d) noexcept {
+inline Eigen::Matrix<Scalar, 6, 6> spline_jr_inv(const SE3<Scalar>* /*tag*/,
+                                                 const Eigen::Matrix<Scalar, 6, 1>& d) noexcept {
   return se3_right_jacobian_inverse(d);
 }
 

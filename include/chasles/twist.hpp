@@ -47,9 +47,7 @@ class Twist {
   auto angular() noexcept { return xi_.template segment<3>(angular_offset); }
 
   /// (w, v), the Modern Robotics order.
-  Vector6 to_modern_robotics() const noexcept {
-    return detail::stack<Scalar>(angular(), linear());
-  }
+  Vector6 to_modern_robotics() const noexcept { return detail::stack<Scalar>(angular(), linear()); }
   /// From (w, v), the Modern Robotics order.
   static Twist from_modern_robotics(const Vector6& wv) noexcept {
     return Twist(Vector3(wv.template tail<3>()), Vector3(wv.template head<3>()));
@@ -65,8 +63,7 @@ class Twist {
   /// The twist of a 4x4 matrix [[S, v], [*, *]]: v and vee of S's
   /// antisymmetric part; the bottom row is ignored.
   static Twist vee(const Matrix4& X) noexcept {
-    return Twist(Vector3(X.template topRightCorner<3, 1>()),
-                 SO3<Scalar>::vee(X.template topLeftCorner<3, 3>()));
+    return Twist(Vector3(X.template topRightCorner<3, 1>()), SO3<Scalar>::vee(X.template topLeftCorner<3, 3>()));
   }
 
   /// ad_xi = [[ [w], [v] ], [0, [w]]] (6x6), so ad_xi eta = [xi, eta].

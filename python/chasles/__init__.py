@@ -52,6 +52,16 @@ example of the documentation and the screw of a random rigid motion, printed,
 checked and drawn into a PNG.
 """
 
+from chasles._arrays import (
+    so3_as_euler,
+    so3_as_quat,
+    so3_as_rpy,
+    so3_from_euler,
+    so3_from_quat,
+    so3_from_rpy,
+)
+from chasles._bspline import SE3BSpline, SO3BSpline
+from chasles._chain import Chain
 from chasles._core import (
     SE3,
     SO3,
@@ -85,10 +95,10 @@ from chasles._core import (
     se3_compose,
     se3_distance,
     se3_exp,
+    se3_hat,
     se3_interpolate,
     se3_inverse,
     se3_log,
-    se3_hat,
     se3_vee,
     set_num_threads,
     so3_act,
@@ -107,16 +117,6 @@ from chasles._core import (
 from chasles._mean import se3_mean, so3_mean
 from chasles._random import se3_gaussian, se3_random, so3_gaussian, so3_random
 from chasles._spline import SE3Spline, SO3Spline
-from chasles._chain import Chain
-from chasles._bspline import SE3BSpline, SO3BSpline
-from chasles._arrays import (
-    so3_as_euler,
-    so3_as_quat,
-    so3_as_rpy,
-    so3_from_euler,
-    so3_from_quat,
-    so3_from_rpy,
-)
 
 __all__ = [
     "Chain",

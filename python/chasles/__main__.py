@@ -51,17 +51,13 @@ def _fmt(a: np.ndarray) -> str:
 
 def _check(label: str, error: float, tol: float = TOLERANCE) -> bool:
     ok = bool(error <= tol)
-    print(
-        f"  {'ok' if ok else 'FAILED'}: {label} (max difference {error:.1e}, tolerance {tol:.0e})"
-    )
+    print(f"  {'ok' if ok else 'FAILED'}: {label} (max difference {error:.1e}, tolerance {tol:.0e})")
     return ok
 
 
 def worked_example(l1: float, theta: float) -> bool:
     """Part 1: the seed's screw motion, printed and checked. True if it agrees."""
-    print(
-        "1. Worked example: rotation by theta about the z axis through q = (0, l1, 0), pitch h = 0"
-    )
+    print("1. Worked example: rotation by theta about the z axis through q = (0, l1, 0), pitch h = 0")
     print(f"   l1 = {l1}, theta = {theta}")
     q = np.array([0.0, l1, 0.0])
     w = np.array([0.0, 0.0, 1.0])
@@ -130,9 +126,7 @@ def screw_of_random_motion(seed: int) -> bool:
     print(f"     magnitude theta (radians):       {screw.magnitude: .6f}")
     print(f"     slide along the axis, h theta:   {screw.pitch * screw.magnitude: .6f}")
 
-    ok = _check(
-        "exp(log(g)) equals g", float(np.max(np.abs(SE3.exp(xi).as_matrix() - g.as_matrix())))
-    )
+    ok = _check("exp(log(g)) equals g", float(np.max(np.abs(SE3.exp(xi).as_matrix() - g.as_matrix()))))
     rebuilt = SE3.from_screw(screw.point, screw.direction, screw.pitch, screw.magnitude)
     print("   SE3.from_screw(point, direction, pitch, theta) =")
     print("    " + _fmt(rebuilt.as_matrix()))
@@ -190,9 +184,7 @@ def picture(l1: float, seed: int) -> Picture:
         length=0.4 * scale,
         path=False,
     )
-    worked_screw = plot.screw(
-        xi, ax=left, theta=(0.0, 2.0 * np.pi), point=[0.0, 0.0, 0.0], axis_margin=1.2 * scale
-    )
+    worked_screw = plot.screw(xi, ax=left, theta=(0.0, 2.0 * np.pi), point=[0.0, 0.0, 0.0], axis_margin=1.2 * scale)
     left.plot([0.0], [l1], [0.0], color="k", marker="o", linestyle="none")
     left.text(0.0, l1, 0.0, "  q = (0, l1, 0)")
     left.set_title(
@@ -247,12 +239,8 @@ def main(argv: list[str] | None = None) -> int:
         description="The worked screw-motion example, and the screw of a random rigid motion.",
     )
     parser.add_argument("--seed", type=int, default=0, help="seed of the random motion (default 0)")
-    parser.add_argument(
-        "--l1", type=float, default=2.0, help="distance of the axis from the origin (default 2)"
-    )
-    parser.add_argument(
-        "--theta", type=float, default=np.pi / 3, help="rotation angle in radians (default pi/3)"
-    )
+    parser.add_argument("--l1", type=float, default=2.0, help="distance of the axis from the origin (default 2)")
+    parser.add_argument("--theta", type=float, default=np.pi / 3, help="rotation angle in radians (default pi/3)")
     where = parser.add_mutually_exclusive_group()
     where.add_argument(
         "--png",

@@ -66,18 +66,37 @@ def so3_as_quat(R: ArrayLike, /, *, scalar_first: bool = False, **kwargs: Any) -
 # The 24 Euler sequences, as scipy (lowercase extrinsic, uppercase intrinsic),
 # in the order of chasles::EulerSequence: the index is the ufuncs' operand.
 _EULER_SEQUENCES = (
-    "xyz", "xzy", "yxz", "yzx", "zxy", "zyx", "xyx", "xzx", "yxy", "yzy", "zxz", "zyz",
-    "XYZ", "XZY", "YXZ", "YZX", "ZXY", "ZYX", "XYX", "XZX", "YXY", "YZY", "ZXZ", "ZYZ",
+    "xyz",
+    "xzy",
+    "yxz",
+    "yzx",
+    "zxy",
+    "zyx",
+    "xyx",
+    "xzx",
+    "yxy",
+    "yzy",
+    "zxz",
+    "zyz",
+    "XYZ",
+    "XZY",
+    "YXZ",
+    "YZX",
+    "ZXY",
+    "ZYX",
+    "XYX",
+    "XZX",
+    "YXY",
+    "YZY",
+    "ZXZ",
+    "ZYZ",
 )
 
 
 def _euler_sequence(seq: Any, name: str) -> np.intc:
     """The index of `seq` in _EULER_SEQUENCES, or the error naming `name`."""
     if not isinstance(seq, str):
-        raise TypeError(
-            f"{name}(seq): expected a str of three axes such as 'xyz' or 'ZYX', "
-            f"got {type(seq).__name__}"
-        )
+        raise TypeError(f"{name}(seq): expected a str of three axes such as 'xyz' or 'ZYX', got {type(seq).__name__}")
     if seq not in _EULER_SEQUENCES:
         raise ValueError(
             f"{name}(seq): expected three axes of 'xyz', all lowercase (extrinsic) or all "
@@ -121,9 +140,7 @@ def _angles_and_flag(ufunc: np.ufunc, operands: tuple, kwargs: dict, return_gimb
     return ufunc(*operands, **kwargs)
 
 
-def so3_from_euler(
-    seq: str, angles: ArrayLike, /, degrees: bool = False, **kwargs: Any
-) -> np.ndarray:
+def so3_from_euler(seq: str, angles: ArrayLike, /, degrees: bool = False, **kwargs: Any) -> np.ndarray:
     """Rotation matrices of Euler angles, as scipy's ``Rotation.from_euler``.
 
     ``seq`` is one of the 12 axis sequences, lowercase for extrinsic (fixed

@@ -22,11 +22,15 @@ from numpy.typing import ArrayLike
 from chasles import _core
 from chasles._value import Value
 
+
 def _class_doc(group: str, name: str) -> str:
     so3 = group == "SO3"
     m, k = ("3, 3", "3") if so3 else ("4, 4", "6")
-    rates = ("they are angular velocities w (rad per unit of time)." if so3
-             else "twists (v, w), linear part first (Murray, Li and Sastry).")
+    rates = (
+        "they are angular velocities w (rad per unit of time)."
+        if so3
+        else "twists (v, w), linear part first (Murray, Li and Sastry)."
+    )
     example_w = "" if so3 else " + [0.0] * 3"
     velocity = "0. , 0. , 0.2" if so3 else "0. , 0. , 0.2, 0. , 0. , 0. "
     return f"""The uniform cumulative cubic B-spline on {"SO(3)" if so3 else "SE(3)"} (Kim, Kim and Shin 1995;
@@ -111,12 +115,16 @@ class _BSpline(Value):
 
     def _init(self, start_time: Any, spacing: Any, control: Any) -> None:
         if "_control" in self.__dict__:
-            raise TypeError(f"{self._name}.__init__: the spline is already initialized (splines are immutable; "
-                            f"make a new {self._name})")
+            raise TypeError(
+                f"{self._name}.__init__: the spline is already initialized (splines are immutable; "
+                f"make a new {self._name})"
+            )
         if isinstance(control, (list, tuple)) and control and isinstance(control[0], _BSpline):
             group = self._name[:3]
-            raise TypeError(f"{self._name}(control): element 0 is a {type(control[0]).__name__}, expected an {group} "
-                            f"(a sequence of them, or an array of matrices)")
+            raise TypeError(
+                f"{self._name}(control): element 0 is a {type(control[0]).__name__}, expected an {group} "
+                f"(a sequence of them, or an array of matrices)"
+            )
         start, step, array = getattr(_core, self._new)(start_time, spacing, control)
         self._start_time, self._spacing, self._control = start, step, array
 
@@ -157,7 +165,11 @@ def _methods(group: str) -> tuple[Any, Any, Any]:
     what = "the rotation matrices" if so3 else "the homogeneous matrices"
     velocity = "the angular velocity w in the body frame" if so3 else "the body twist (v, w), linear part first"
     return (
-        _evaluation(group, 0, "__call__", f"""The elements X(t).
+        _evaluation(
+            group,
+            0,
+            "__call__",
+            f"""The elements X(t).
 
 Args:
     {_TIMES}
@@ -166,8 +178,13 @@ Returns:
     numpy.ndarray: shape t.shape + ({core}), {what}.
 
 {_RAISES}
-"""),
-        _evaluation(group, 1, "body_velocity", f"""The body velocity (X^-1 X')^vee at the times t, per unit of time.
+""",
+        ),
+        _evaluation(
+            group,
+            1,
+            "body_velocity",
+            f"""The body velocity (X^-1 X')^vee at the times t, per unit of time.
 
 omega_j = Ad_{{A_j^-1}} omega_{{j-1}} + B_j' d_j over the factors A_j = exp(B_j d_j).
 
@@ -178,8 +195,13 @@ Returns:
     numpy.ndarray: shape t.shape + ({k},), {velocity}.
 
 {_RAISES}
-"""),
-        _evaluation(group, 2, "body_acceleration", f"""The body acceleration, the time derivative of body_velocity, at the times t.
+""",
+        ),
+        _evaluation(
+            group,
+            2,
+            "body_acceleration",
+            f"""The body acceleration, the time derivative of body_velocity, at the times t.
 
 omega_j' = Ad_{{A_j^-1}} omega_{{j-1}}' + B_j'' d_j + [omega_j, B_j' d_j].
 
@@ -190,7 +212,8 @@ Returns:
     numpy.ndarray: shape t.shape + ({k},), per unit of time squared.
 
 {_RAISES}
-"""),
+""",
+        ),
     )
 
 
@@ -220,8 +243,7 @@ def _properties(group: str) -> tuple[property, property, property, property, Any
         s = _self(self, group, "__repr__")
         if "_control" not in s.__dict__:
             return f"<uninitialized {type(s).__name__}>"
-        return (f"{type(s)._name}(start_time={s._start_time!r}, spacing={s._spacing!r}, "
-                f"n_control={s._control.shape[0]})")
+        return f"{type(s)._name}(start_time={s._start_time!r}, spacing={s._spacing!r}, n_control={s._control.shape[0]})"
 
     return property(start_time), property(spacing), property(end_time), property(control), __repr__
 

@@ -21,7 +21,7 @@ from __future__ import annotations
 import math
 import operator
 import warnings
-from typing import Any, Optional, Sequence
+from typing import Any, Optional
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -40,7 +40,7 @@ _NONE = object()
 
 
 def _short(x: float) -> str:
-    return "%.3g" % x
+    return f"{x:.3g}"
 
 
 def _tp_name(x: Any) -> str:
@@ -67,8 +67,10 @@ def _is_sequence(x: Any) -> bool:
 
 def _type_codes(joint_types: Any, n: int) -> tuple:
     if isinstance(joint_types, str) or not _is_sequence(joint_types):
-        raise TypeError(f"Chain(joint_types): expected a sequence of {n} of 'revolute', 'continuous', 'prismatic', "
-                        f"got {_tp_name(joint_types)}")
+        raise TypeError(
+            f"Chain(joint_types): expected a sequence of {n} of 'revolute', 'continuous', 'prismatic', "
+            f"got {_tp_name(joint_types)}"
+        )
     items = list(joint_types)
     if len(items) != n:
         raise ValueError(f"Chain(joint_types): expected {n} types (one per joint), got {len(items)}")
@@ -77,8 +79,9 @@ def _type_codes(joint_types: Any, n: int) -> tuple:
         if not isinstance(t, str):
             raise TypeError(f"Chain(joint_types): expected strings, got {_tp_name(t)} for joint {i}")
         if t not in _TYPES:
-            raise ValueError(f"Chain(joint_types): expected 'revolute', 'continuous' or 'prismatic', got '{t}' "
-                             f"for joint {i}")
+            raise ValueError(
+                f"Chain(joint_types): expected 'revolute', 'continuous' or 'prismatic', got '{t}' for joint {i}"
+            )
         codes.append(_TYPES.index(t))
     return tuple(codes)
 
@@ -86,8 +89,10 @@ def _type_codes(joint_types: Any, n: int) -> tuple:
 def _inertia_rows(link_inertias: Any) -> Any:
     """A sequence of SpatialInertia as the packed (n, 10) rows (mass, com,
     ixx, ixy, ixz, iyy, iyz, izz); anything else as it is."""
-    if isinstance(link_inertias, (list, tuple)) and link_inertias and all(
-        isinstance(x, _core.SpatialInertia) for x in link_inertias
+    if (
+        isinstance(link_inertias, (list, tuple))
+        and link_inertias
+        and all(isinstance(x, _core.SpatialInertia) for x in link_inertias)
     ):
         rows = []
         for body in link_inertias:
@@ -133,40 +138,56 @@ def _invalid_message(chain: Any, status: int, joint: int, screws: np.ndarray, co
     j = f"joint {joint}"
     v, w = screws[joint, :3], screws[joint, 3:] if joint >= 0 else (None, None)
     if status == 1:
-        message = (f"Chain(screws): {j} is revolute but its angular part w is not a unit vector "
-                   f"(|w| = {_short(math.sqrt(w @ w))})")
+        message = (
+            f"Chain(screws): {j} is revolute but its angular part w is not a unit vector "
+            f"(|w| = {_short(math.sqrt(w @ w))})"
+        )
     elif status == 2:
-        message = (f"Chain(screws): {j} is revolute but its screw has a pitch: w . v = {_short(w @ v)} "
-                   f"(a revolute screw is (-w x q, w))")
+        message = (
+            f"Chain(screws): {j} is revolute but its screw has a pitch: w . v = {_short(w @ v)} "
+            f"(a revolute screw is (-w x q, w))"
+        )
     elif status == 3:
         message = f"Chain(screws): {j} is prismatic but its angular part w is not zero"
     elif status == 4:
-        message = (f"Chain(screws): {j} is prismatic but its linear part v is not a unit vector "
-                   f"(|v| = {_short(math.sqrt(v @ v))})")
+        message = (
+            f"Chain(screws): {j} is prismatic but its linear part v is not a unit vector "
+            f"(|v| = {_short(math.sqrt(v @ v))})"
+        )
     else:
         arrays = chain._arrays()
         if status == 5:
-            return ValueError(f"Chain(lower, upper): {j}: expected lower <= upper (-inf and inf for a continuous "
-                              f"joint), got {float(arrays[3][joint])!r} and {float(arrays[4][joint])!r}")
+            return ValueError(
+                f"Chain(lower, upper): {j}: expected lower <= upper (-inf and inf for a continuous "
+                f"joint), got {float(arrays[3][joint])!r} and {float(arrays[4][joint])!r}"
+            )
         if status == 6:
-            return ValueError(f"Chain(velocity_limits, effort_limits): {j}: expected limits >= 0, got "
-                              f"{float(arrays[5][joint])!r} and {float(arrays[6][joint])!r}")
+            return ValueError(
+                f"Chain(velocity_limits, effort_limits): {j}: expected limits >= 0, got "
+                f"{float(arrays[5][joint])!r} and {float(arrays[6][joint])!r}"
+            )
         if status == 8:
-            return ValueError(f"Chain(link_inertias): {j}: expected finite numbers and a mass >= 0 (moved into the "
-                              f"world frame by the base frame)")
+            return ValueError(
+                f"Chain(link_inertias): {j}: expected finite numbers and a mass >= 0 (moved into the "
+                f"world frame by the base frame)"
+            )
         return ValueError("Chain(gravity): expected finite numbers")
     message += f" (tolerance {_short(_SCREW_TOLERANCE)})"
     swapped = np.concatenate([screws[:, 3:], screws[:, :3]], axis=1)
     if _model_valid(swapped, codes):
-        message += ("; these rows read as Modern Robotics' (w, v) order: convert each with "
-                    "Twist.from_modern_robotics(row).vector")
+        message += (
+            "; these rows read as Modern Robotics' (w, v) order: convert each with "
+            "Twist.from_modern_robotics(row).vector"
+        )
     elif screws.shape[0] == 6:
         T = np.ascontiguousarray(screws.T)
         if _model_valid(T, codes):
             message += "; the table reads as transposed (one column per joint): pass screws.T"
         elif _model_valid(np.concatenate([T[:, 3:], T[:, :3]], axis=1), codes):
-            message += ("; the table reads as Modern Robotics' Slist (6 x n, one column (w, v) per joint): pass "
-                        "[Twist.from_modern_robotics(s).vector for s in Slist.T]")
+            message += (
+                "; the table reads as Modern Robotics' Slist (6 x n, one column (w, v) per joint): pass "
+                "[Twist.from_modern_robotics(s).vector for s in Slist.T]"
+            )
     return ValueError(message)
 
 
@@ -254,8 +275,22 @@ class Chain(_core._Chain):
     revolute_screw = vars(_core._Chain)["revolute_screw"]
     prismatic_screw = vars(_core._Chain)["prismatic_screw"]
 
-    def __init__(self, screws, home, *, joint_types=None, names=None, lower=None, upper=None,  # type: ignore[no-untyped-def]
-                 velocity_limits=None, effort_limits=None, base=None, tool=None, gravity=None, link_inertias=None):
+    def __init__(
+        self,
+        screws,
+        home,
+        *,
+        joint_types=None,
+        names=None,
+        lower=None,
+        upper=None,  # type: ignore[no-untyped-def]
+        velocity_limits=None,
+        effort_limits=None,
+        base=None,
+        tool=None,
+        gravity=None,
+        link_inertias=None,
+    ):
         # (no annotations: help() and inspect.signature show the parameters as the documentation writes
         # them, as for the extension's functions)
         """A serial chain from its space screws and its home pose, with its robot model.
@@ -308,9 +343,21 @@ class Chain(_core._Chain):
             >>> arm
             Chain(n_joints=1, names=('shoulder',))
         """
-        _make(self, screws, home, joint_types=joint_types, names=names, lower=lower, upper=upper,
-                   velocity_limits=velocity_limits, effort_limits=effort_limits, base=base, tool=tool,
-                   gravity=gravity, link_inertias=link_inertias)
+        _make(
+            self,
+            screws,
+            home,
+            joint_types=joint_types,
+            names=names,
+            lower=lower,
+            upper=upper,
+            velocity_limits=velocity_limits,
+            effort_limits=effort_limits,
+            base=base,
+            tool=tool,
+            gravity=gravity,
+            link_inertias=link_inertias,
+        )
 
     # ---- properties ------------------------------------------------------------------------
 
@@ -456,20 +503,25 @@ class Chain(_core._Chain):
         if restarts < 0:
             raise ValueError(f"{what}(restarts): expected >= 0, got {restarts}")
         if not (position_tolerance >= 0) or not (orientation_tolerance >= 0):
-            raise ValueError(f"{what}: expected tolerances >= 0, got {_short(position_tolerance)} and "
-                             f"{_short(orientation_tolerance)}")
+            raise ValueError(
+                f"{what}: expected tolerances >= 0, got {_short(position_tolerance)} and "
+                f"{_short(orientation_tolerance)}"
+            )
         n = self.n_joints
         T = _float64(target, f"{what}(target)")
         if T.ndim < 2 or T.shape[-2:] != (4, 4):
             raise ValueError(f"{what}(target): expected an SE3 or shape (4, 4) or (..., 4, 4), got {T.shape}")
         Q = _float64(q0, f"{what}(q0)")
         if Q.ndim < 1 or Q.shape[-1] != n:
-            raise ValueError(f"{what}(q0): expected shape ({n},) or (..., {n}) for a chain of {n} joints, got {Q.shape}")
+            raise ValueError(
+                f"{what}(q0): expected shape ({n},) or (..., {n}) for a chain of {n} joints, got {Q.shape}"
+            )
         try:
             batch = np.broadcast_shapes(T.shape[:-2], Q.shape[:-1])
         except ValueError:
-            raise ValueError(f"{what}: the batch shapes of target {T.shape} and q0 {Q.shape} do not broadcast "
-                             f"together") from None
+            raise ValueError(
+                f"{what}: the batch shapes of target {T.shape} and q0 {Q.shape} do not broadcast together"
+            ) from None
         Tb = np.ascontiguousarray(np.broadcast_to(T, batch + (4, 4)))
         Qb = np.ascontiguousarray(np.broadcast_to(Q, batch + (n,)))
         flat = Tb.reshape(-1, 4, 4)
@@ -477,15 +529,26 @@ class Chain(_core._Chain):
             d = _core.SE3.transform_defect(Ti)
             if not d <= _ROTATION_TOLERANCE:
                 at = f" at index {i}" if len(flat) > 1 else ""
-                raise ValueError(f"{what}(target): not a rigid motion (defect {_short(d)}{at}); "
-                                 f"SE3.from_matrix_projected makes one")
+                raise ValueError(
+                    f"{what}(target): not a rigid motion (defect {_short(d)}{at}); SE3.from_matrix_projected makes one"
+                )
         if not np.isfinite(Qb).all():
             raise ValueError(f"{what}(q0): expected finite numbers")
         seeds = (np.uint64(seed) + np.arange(math.prod(batch), dtype=np.uint64)).reshape(batch)
         S, M = self._model[0], np.asarray(self.home)
         q, converged, iterations, error = _core._inverse_kinematics(
-            S, M, self._model[3], self._model[4], position_tolerance, orientation_tolerance,
-            np.int32(max_iterations), Tb, Qb, np.int32(restarts), seeds)
+            S,
+            M,
+            self._model[3],
+            self._model[4],
+            position_tolerance,
+            orientation_tolerance,
+            np.int32(max_iterations),
+            Tb,
+            Qb,
+            np.int32(restarts),
+            seeds,
+        )
         if not batch:
             return IKResult(q, bool(converged), int(iterations), error)
         return IKResult(q, converged, iterations, error)
@@ -493,7 +556,7 @@ class Chain(_core._Chain):
     # ---- URDF --------------------------------------------------------------------------------
 
     @staticmethod
-    def from_urdf(source: Any, tip_link: str, base_link: Optional[str] = None) -> "Chain":
+    def from_urdf(source: Any, tip_link: str, base_link: Optional[str] = None) -> Chain:
         """The chain from base_link to tip_link of a URDF robot description.
 
         Revolute, continuous and prismatic joints become the chain's joints (their
@@ -563,10 +626,16 @@ class Chain(_core._Chain):
         _require(other)
         a, b = self._model, other._model
         same = lambda x, y: x is None and y is None or x is not None and y is not None and np.array_equal(x, y)  # noqa: E731
-        return (a[2] == b[2] and all(np.array_equal(a[k], b[k]) for k in (0, 3, 4, 5, 6, 9))
-                and all(np.array_equal(np.asarray(x), np.asarray(y)) for x, y in
-                        ((self.home, other.home), (a[7], b[7]), (a[8], b[8])))
-                and self._names == other._names and same(self._inertias, other._inertias))
+        return (
+            a[2] == b[2]
+            and all(np.array_equal(a[k], b[k]) for k in (0, 3, 4, 5, 6, 9))
+            and all(
+                np.array_equal(np.asarray(x), np.asarray(y))
+                for x, y in ((self.home, other.home), (a[7], b[7]), (a[8], b[8]))
+            )
+            and self._names == other._names
+            and same(self._inertias, other._inertias)
+        )
 
     def __ne__(self, other: object) -> Any:
         """The negation of ``==``."""
@@ -594,12 +663,12 @@ class Chain(_core._Chain):
         """Pickle support at every protocol: as __reduce__."""
         return Chain.__reduce__(self)
 
-    def __copy__(self) -> "Chain":
+    def __copy__(self) -> Chain:
         """A Chain equal to this one (of the class Chain, as the extension's copies were)."""
         f, args = Chain.__reduce__(self)
         return f(Chain, *args[1:])
 
-    def __deepcopy__(self, memo: dict) -> "Chain":
+    def __deepcopy__(self, memo: dict) -> Chain:
         return Chain.__copy__(self)
 
     def __getstate__(self) -> tuple:
@@ -619,10 +688,18 @@ class Chain(_core._Chain):
             return [float(x) for x in m[:3, :3].ravel()] + [float(x) for x in m[:3, 3]]
 
         identity = lambda g: g is None or np.array_equal(np.asarray(g)[:3], np.eye(4)[:3])  # noqa: E731
-        plain = (self._names is None and self._inertias is None and identity(arguments["base"])
-                 and identity(arguments["tool"]) and tuple(gravity) == _DEFAULT_GRAVITY and codes == inferred
-                 and np.all(lower == -np.inf) and np.all(upper == np.inf) and np.all(velocity == np.inf)
-                 and np.all(effort == np.inf))
+        plain = (
+            self._names is None
+            and self._inertias is None
+            and identity(arguments["base"])
+            and identity(arguments["tool"])
+            and tuple(gravity) == _DEFAULT_GRAVITY
+            and codes == inferred
+            and np.all(lower == -np.inf)
+            and np.all(upper == np.inf)
+            and np.all(velocity == np.inf)
+            and np.all(effort == np.inf)
+        )
         if plain:
             return tuple(float(x) for x in S.ravel()) + tuple(pose(self.home))
         numbers = [float(x) for x in screws.ravel()] + pose(home) + [float(c) for c in codes]
@@ -643,20 +720,46 @@ class Chain(_core._Chain):
             text = str(e)
             for prefix in ("Chain.__setstate__: ", "Chain.__init__: "):  # the constructor's own name
                 if text.startswith(prefix):
-                    text = text[len(prefix):]
+                    text = text[len(prefix) :]
                     break
             raise type(e)(f"Chain.__setstate__: {text}") from None
 
 
-def _make(self: Any, screws: Any, home: Any, *, home_as_given: bool = False, joint_types: Any = None,
-          names: Any = None, lower: Any = None, upper: Any = None, velocity_limits: Any = None,
-          effort_limits: Any = None, base: Any = None, tool: Any = None, gravity: Any = None,
-          link_inertias: Any = None) -> None:
+def _make(
+    self: Any,
+    screws: Any,
+    home: Any,
+    *,
+    home_as_given: bool = False,
+    joint_types: Any = None,
+    names: Any = None,
+    lower: Any = None,
+    upper: Any = None,
+    velocity_limits: Any = None,
+    effort_limits: Any = None,
+    base: Any = None,
+    tool: Any = None,
+    gravity: Any = None,
+    link_inertias: Any = None,
+) -> None:
     n = _joint_count(screws)
     codes = None if joint_types is None or n is None else _type_codes(joint_types, n)
     inertias = _inertia_rows(link_inertias)
-    _core._Chain.__init__(self, screws, home, codes, lower, upper, velocity_limits, effort_limits, base, tool,
-                          gravity, inertias, home_as_given)
+    _core._Chain.__init__(
+        self,
+        screws,
+        home,
+        codes,
+        lower,
+        upper,
+        velocity_limits,
+        effort_limits,
+        base,
+        tool,
+        gravity,
+        inertias,
+        home_as_given,
+    )
     given = np.array(screws, dtype=np.float64)
     status, joint = self._check()
     if status != 0:
@@ -679,27 +782,37 @@ def _make(self: Any, screws: Any, home: Any, *, home_as_given: bool = False, joi
     self._names = names
     self._inertias = None if inertias is None else _frozen(inertias)
     given.flags.writeable = False
-    self._given = (given, _pose_array(home), {
-        "_home_as_given": home_as_given,
-        "joint_types": None if joint_types is None else tuple(_TYPES[c] for c in codes),
-        "names": names, "lower": _frozen(lower), "upper": _frozen(upper),
-        "velocity_limits": _frozen(velocity_limits), "effort_limits": _frozen(effort_limits),
-        "base": _pose_array(base), "tool": _pose_array(tool), "gravity": _frozen(gravity),
-        "link_inertias": self._inertias,
-    })
+    self._given = (
+        given,
+        _pose_array(home),
+        {
+            "_home_as_given": home_as_given,
+            "joint_types": None if joint_types is None else tuple(_TYPES[c] for c in codes),
+            "names": names,
+            "lower": _frozen(lower),
+            "upper": _frozen(upper),
+            "velocity_limits": _frozen(velocity_limits),
+            "effort_limits": _frozen(effort_limits),
+            "base": _pose_array(base),
+            "tool": _pose_array(tool),
+            "gravity": _frozen(gravity),
+            "link_inertias": self._inertias,
+        },
+    )
 
 
 def _setstate(self: Any, state: Any) -> None:
     def bad() -> ValueError:
-        return ValueError(f"Chain.__setstate__: expected a tuple of 6 n + 12 floats, 1 <= n <= {_MAX_JOINTS}, "
-                          f"or (numbers, names, inertias): a tuple of 11 n + 39 floats, None or n str, None "
-                          f"or 10 n floats")
+        return ValueError(
+            f"Chain.__setstate__: expected a tuple of 6 n + 12 floats, 1 <= n <= {_MAX_JOINTS}, "
+            f"or (numbers, names, inertias): a tuple of 11 n + 39 floats, None or n str, None "
+            f"or 10 n floats"
+        )
 
     def floats(t: tuple) -> np.ndarray:
         for k, x in enumerate(t):
             if not isinstance(x, float):
-                raise TypeError(f"Chain.__setstate__: expected a tuple of floats, got {_tp_name(x)} at "
-                                f"position {k}")
+                raise TypeError(f"Chain.__setstate__: expected a tuple of floats, got {_tp_name(x)} at position {k}")
         return np.array(t, dtype=np.float64)
 
     def pose(x: np.ndarray) -> np.ndarray:
@@ -733,10 +846,21 @@ def _setstate(self: Any, state: Any) -> None:
         if not isinstance(inertias, tuple) or len(inertias) != 10 * n:
             raise bad()
         inertias = floats(inertias).reshape(n, 10)
-    _make(self, x[: 6 * n].reshape(n, 6), pose(x[6 * n : 6 * n + 12]),
-               joint_types=[_TYPES[int(c)] for c in codes], names=names, lower=limits[0], upper=limits[1],
-               velocity_limits=limits[2], effort_limits=limits[3], base=pose(x[k : k + 12]),
-               tool=pose(x[k + 12 : k + 24]), gravity=x[k + 24 : k + 27], link_inertias=inertias)
+    _make(
+        self,
+        x[: 6 * n].reshape(n, 6),
+        pose(x[6 * n : 6 * n + 12]),
+        joint_types=[_TYPES[int(c)] for c in codes],
+        names=names,
+        lower=limits[0],
+        upper=limits[1],
+        velocity_limits=limits[2],
+        effort_limits=limits[3],
+        base=pose(x[k : k + 12]),
+        tool=pose(x[k + 12 : k + 24]),
+        gravity=x[k + 24 : k + 27],
+        link_inertias=inertias,
+    )
 
 
 def _is_chain(chain: Any) -> None:
@@ -767,7 +891,8 @@ def _float64(a: Any, what: str) -> np.ndarray:
             raise
         raise (TypeError if isinstance(e, TypeError) else ValueError)(
             f"{what}: expected an array-like of real numbers (float64), could not convert {_tp_name(a)} to an "
-            f"array: {e}") from e
+            f"array: {e}"
+        ) from e
     if m.dtype.kind not in "biuf":
         raise TypeError(f"{what}: expected real numbers (float64), got dtype {m.dtype} ({_tp_name(a)})")
     return m.astype(np.float64)

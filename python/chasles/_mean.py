@@ -48,8 +48,16 @@ def _check_weights(name: str, w: np.ndarray) -> None:
         raise ValueError(f"{name}(weights): expected at least one weight > 0, got all {w.shape[0]} weights 0")
 
 
-def _mean(name: str, core: int, matrices: ArrayLike, weights: Optional[ArrayLike], method: Any,
-          max_iterations: Any, return_info: bool, reduce) -> Any:
+def _mean(
+    name: str,
+    core: int,
+    matrices: ArrayLike,
+    weights: Optional[ArrayLike],
+    method: Any,
+    max_iterations: Any,
+    return_info: bool,
+    reduce,
+) -> Any:
     if not isinstance(method, str) or method not in METHODS:
         raise ValueError(f"{name}(method): expected 'geodesic' or 'chordal', got {method!r}")
     if isinstance(max_iterations, (bool, np.bool_)) or not isinstance(max_iterations, (numbers.Integral, np.integer)):
@@ -86,8 +94,14 @@ def _mean(name: str, core: int, matrices: ArrayLike, weights: Optional[ArrayLike
     return mean
 
 
-def so3_mean(matrices: ArrayLike, weights: Optional[ArrayLike] = None, method: str = "geodesic", *,
-             max_iterations: int = 20, return_info: bool = False) -> Any:
+def so3_mean(
+    matrices: ArrayLike,
+    weights: Optional[ArrayLike] = None,
+    method: str = "geodesic",
+    *,
+    max_iterations: int = 20,
+    return_info: bool = False,
+) -> Any:
     """The weighted mean of rotations.
 
     ``method="geodesic"`` (default): the Karcher mean M with
@@ -127,8 +141,14 @@ def so3_mean(matrices: ArrayLike, weights: Optional[ArrayLike] = None, method: s
     return _mean("so3_mean", 3, matrices, weights, method, max_iterations, return_info, _core._so3_mean)
 
 
-def se3_mean(matrices: ArrayLike, weights: Optional[ArrayLike] = None, method: str = "geodesic", *,
-             max_iterations: int = 20, return_info: bool = False) -> Any:
+def se3_mean(
+    matrices: ArrayLike,
+    weights: Optional[ArrayLike] = None,
+    method: str = "geodesic",
+    *,
+    max_iterations: int = 20,
+    return_info: bool = False,
+) -> Any:
     """The weighted mean of rigid motions.
 
     ``method="geodesic"`` (default): the bi-invariant exponential barycenter

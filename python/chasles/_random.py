@@ -13,7 +13,8 @@ or a Generator (used, and advanced, as is).
 from __future__ import annotations
 
 import numbers
-from typing import Any, Optional, Sequence, Union
+from collections.abc import Sequence
+from typing import Any, Union
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -55,18 +56,16 @@ def _batch(n: Size, name: str) -> tuple:
         return ()
     if isinstance(n, (str, bytes)):
         raise TypeError(f"{name}(n): expected None, an int or a tuple of ints, got {type(n).__name__}")
-    items = (n,) if isinstance(n, numbers.Integral) or (
-        isinstance(n, np.ndarray) and n.ndim == 0
-    ) else n
+    items = (n,) if isinstance(n, numbers.Integral) or (isinstance(n, np.ndarray) and n.ndim == 0) else n
     try:
         shape = tuple(items)
     except TypeError:
-        raise TypeError(
-            f"{name}(n): expected None, an int or a tuple of ints, got {type(n).__name__}"
-        ) from None
+        raise TypeError(f"{name}(n): expected None, an int or a tuple of ints, got {type(n).__name__}") from None
     for k in shape:
-        if isinstance(k, (bool, np.bool_)) or not isinstance(k, (numbers.Integral, np.integer)) and not (
-            isinstance(k, np.ndarray) and k.ndim == 0 and k.dtype.kind in "iu"
+        if (
+            isinstance(k, (bool, np.bool_))
+            or not isinstance(k, (numbers.Integral, np.integer))
+            and not (isinstance(k, np.ndarray) and k.ndim == 0 and k.dtype.kind in "iu")
         ):
             raise TypeError(f"{name}(n): expected None, an int or a tuple of ints, got {n!r}")
         if int(k) < 0:
@@ -108,7 +107,7 @@ def _group_element(a: ArrayLike, group: Any, what: str) -> np.ndarray:
     except ValueError as e:
         text = str(e)
         prefix = f"{group.__name__}.from_matrix: "
-        text = text[len(prefix):] if text.startswith(prefix) else text
+        text = text[len(prefix) :] if text.startswith(prefix) else text
         raise ValueError(f"{what}: {text.replace(', or pass a larger tol.', '.')}") from None
     return m
 
@@ -125,9 +124,7 @@ def _covariance_factor(cov: ArrayLike, n: int, name: str) -> np.ndarray:
     except np.linalg.LinAlgError:
         lam, V = np.linalg.eigh(c)
         if lam.min() < -1e-12 * scale:
-            raise ValueError(
-                f"{name}(cov): expected a positive semidefinite matrix, got eigenvalues {lam!r}"
-            ) from None
+            raise ValueError(f"{name}(cov): expected a positive semidefinite matrix, got eigenvalues {lam!r}") from None
         return V * np.sqrt(np.clip(lam, 0.0, None))
 
 

@@ -66,8 +66,10 @@ def _times(times: ArrayLike, name: str) -> np.ndarray:
     steps = np.diff(t)
     if not np.all(steps > 0):
         i = int(np.argmax(~(steps > 0)))
-        raise ValueError(f"{name}(times): expected strictly increasing times, got times[{i}] = {float(t[i])!r} "
-                         f"and times[{i + 1}] = {float(t[i + 1])!r}")
+        raise ValueError(
+            f"{name}(times): expected strictly increasing times, got times[{i}] = {float(t[i])!r} "
+            f"and times[{i + 1}] = {float(t[i + 1])!r}"
+        )
     return t
 
 
@@ -99,8 +101,9 @@ class _Spline(Value):
     def _fit(self, times: ArrayLike, keys: ArrayLike, ends: str) -> None:
         name = self._name
         if "_coefficients" in self.__dict__:
-            raise TypeError(f"{name}.__init__: the spline is already initialized (splines are immutable; "
-                            f"make a new {name})")
+            raise TypeError(
+                f"{name}.__init__: the spline is already initialized (splines are immutable; make a new {name})"
+            )
         if not isinstance(ends, str) or ends not in ENDS:
             raise ValueError(f"{name}(ends): expected 'natural' or 'chord', got {ends!r}")
         t = _times(times, name)
@@ -125,8 +128,10 @@ class _Spline(Value):
         bit."""
         name = self._name
         if not isinstance(state, dict) or not {"_t", "_keys", "_ends"} <= state.keys():
-            raise ValueError(f"{name}.__setstate__: expected a dict of the times '_t', the keys '_keys' and "
-                             f"the ends '_ends', got {type(state).__name__}")
+            raise ValueError(
+                f"{name}.__setstate__: expected a dict of the times '_t', the keys '_keys' and "
+                f"the ends '_ends', got {type(state).__name__}"
+            )
         try:
             self._fit(state["_t"], state["_keys"], state["_ends"])
         except (TypeError, ValueError) as e:
@@ -167,12 +172,15 @@ class _Spline(Value):
     def __repr__(self) -> str:
         if "_coefficients" not in self.__dict__:
             return f"<uninitialized {type(self).__name__}>"
-        return (f"{self._name}(N={len(self)}, times=[{float(self._t[0])!r}, ..., {float(self._t[-1])!r}], "
-                f"ends={self._ends!r})")
+        return (
+            f"{self._name}(N={len(self)}, times=[{float(self._t[0])!r}, ..., {float(self._t[-1])!r}], "
+            f"ends={self._ends!r})"
+        )
 
 
 class SO3Spline(_Spline):
-    __doc__ = """Interpolating C2 spline through key rotations (scipy's ``RotationSpline``).
+    __doc__ = (
+        """Interpolating C2 spline through key rotations (scipy's ``RotationSpline``).
 
     Args:
         times: (N,) strictly increasing finite key times, N >= 2, steps
@@ -180,7 +188,9 @@ class SO3Spline(_Spline):
         rotations: (N, 3, 3) rotation matrices, or a sequence of N ``SO3``.
         ends: ``"natural"`` (zero angular acceleration at both ends, the
             default) or ``"chord"`` (scipy's end rates).
-""" + _MATH + """
+"""
+        + _MATH
+        + """
     Calling the spline at t (a float or an array of any shape) gives the
     rotation matrices (..., 3, 3); ``body_velocity(t)`` the angular rate in
     the body frame, w = (R^T dR/dt)^vee, shape (..., 3);
@@ -197,6 +207,7 @@ class SO3Spline(_Spline):
         >>> spline(np.linspace(0.0, 3.0, 7)).shape, spline.body_velocity([[0.5, 2.0]]).shape
         ((7, 3, 3), (1, 2, 3))
     """
+    )
     _name = "SO3Spline"
     _what = "rotations"
     _matrix = 3
@@ -247,7 +258,8 @@ class SO3Spline(_Spline):
 
 
 class SE3Spline(_Spline):
-    __doc__ = """Interpolating C2 spline through key poses.
+    __doc__ = (
+        """Interpolating C2 spline through key poses.
 
     Args:
         times: (N,) strictly increasing finite key times, N >= 2, steps
@@ -256,7 +268,9 @@ class SE3Spline(_Spline):
             of N ``SE3``.
         ends: ``"natural"`` (zero body acceleration at both ends, the
             default) or ``"chord"``.
-""" + _MATH + """
+"""
+        + _MATH
+        + """
     Calling the spline at t (a float or an array of any shape) gives the
     poses (..., 4, 4); ``body_velocity(t)`` the body twist
     V = (g^-1 dg/dt)^vee = (v, w), linear part first, shape (..., 6);
@@ -271,6 +285,7 @@ class SE3Spline(_Spline):
         >>> np.round(spline.body_velocity(0.5), 12) + 0.0
         array([1. , 0. , 0. , 0. , 0. , 0.5])
     """
+    )
     _name = "SE3Spline"
     _what = "poses"
     _matrix = 4

@@ -44,12 +44,12 @@ from __future__ import annotations
 import itertools
 import math
 import os
+import pyexpat
 import re
 import stat
 import xml.etree.ElementTree as ET
 
 import numpy as np
-import pyexpat
 
 from . import _core
 
@@ -446,7 +446,7 @@ def _chain_from_tree(root, tip_link, base_link):
         if name in links:
             raise _error(f"duplicate link name {_q(name)}")
         links[name] = link
-    inertials = (i for i in map(lambda link: link.find("inertial"), links.values()) if i is not None)
+    inertials = (i for i in (link.find("inertial") for link in links.values()) if i is not None)
     if not _numbers_plainly_fine(inertials, _LINK_NUMBERS):
         for name, link in links.items():
             _check_numbers(link, f"link {_q(name)}")

@@ -18,8 +18,9 @@ class Value:
         # Only reached when an attribute is missing: the state of an object
         # made by __new__ alone, whose __init__ has not run.
         if name in type(self)._state:
-            raise TypeError(f"{type(self).__name__} object is not initialized: it was made by __new__ alone, "
-                            f"without __init__")
+            raise TypeError(
+                f"{type(self).__name__} object is not initialized: it was made by __new__ alone, without __init__"
+            )
         raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
 
     def __copy__(self) -> Any:

@@ -139,9 +139,7 @@ def _poses(gs: SE3 | Sequence[PoseLike] | np.ndarray) -> np.ndarray:
     return m
 
 
-def _draw_frame(
-    ax: Axes3D, g: np.ndarray, label: str | None, length: float, linewidth: float
-) -> FrameArtists:
+def _draw_frame(ax: Axes3D, g: np.ndarray, label: str | None, length: float, linewidth: float) -> FrameArtists:
     origin = g[:3, 3]
     lines = []
     for i, color in enumerate(AXIS_COLORS):
@@ -239,10 +237,7 @@ def frames(
     if labels is not None and len(labels) != len(m):
         raise ValueError(f"{len(labels)} labels for {len(m)} poses")
     ax = _axes(ax)
-    drawn = [
-        _draw_frame(ax, g, None if labels is None else labels[i], length, linewidth)
-        for i, g in enumerate(m)
-    ]
+    drawn = [_draw_frame(ax, g, None if labels is None else labels[i], length, linewidth) for i, g in enumerate(m)]
     line = None
     if path:
         (line,) = ax.plot(*m[:, :3, 3].T, color=path_color, linewidth=1.0, linestyle=":")
@@ -391,9 +386,7 @@ def _project(point: np.ndarray, through: np.ndarray, d: np.ndarray) -> np.ndarra
     return through + ((point - through) @ d) * d
 
 
-def _common_normal(
-    a: np.ndarray, da: np.ndarray, b: np.ndarray, db: np.ndarray
-) -> tuple[np.ndarray, np.ndarray]:
+def _common_normal(a: np.ndarray, da: np.ndarray, b: np.ndarray, db: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The feet, on line A (through a, unit da) and on line B (through b, unit db),
     of their common normal; for parallel lines the normal through a."""
     c = float(da @ db)
@@ -424,9 +417,7 @@ def _home_geometry(arm: Chain) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         if i == 0:
             origins[0] = _project(previous, through, directions[0])
         else:
-            exits[i - 1], origins[i] = _common_normal(
-                origins[i - 1], directions[i - 1], through, directions[i]
-            )
+            exits[i - 1], origins[i] = _common_normal(origins[i - 1], directions[i - 1], through, directions[i])
     if n:
         exits[n - 1] = _project(arm.home.translation, origins[n - 1], directions[n - 1])
     return origins, exits, directions
@@ -540,8 +531,7 @@ def chain(
 
     if length is None:
         at_home = np.concatenate(
-            [base[None, :3, 3], np.stack([origins, exits], axis=1).reshape(-1, 3),
-             arm.home.translation[None]]
+            [base[None, :3, 3], np.stack([origins, exits], axis=1).reshape(-1, 3), arm.home.translation[None]]
         )
         span = float(np.sum(np.linalg.norm(np.diff(at_home, axis=0), axis=1)))
         length = 0.1 * span if span > 0.0 else 1.0

@@ -14,8 +14,7 @@ int main() {
 #include "readme_quick_start.inc"
 
   const Eigen::Vector3d p = g.translation();
-  double err = std::abs(p.x() - l1 * std::sin(theta)) + std::abs(p.y() - l1 * (1 - std::cos(theta))) +
-               std::abs(p.z());
+  double err = std::abs(p.x() - l1 * std::sin(theta)) + std::abs(p.y() - l1 * (1 - std::cos(theta))) + std::abs(p.z());
   err += (xi.vector() - theta * (Eigen::Matrix<double, 6, 1>() << l1, 0, 0, 0, 0, 1).finished()).norm();
   err += (s.point - Eigen::Vector3d(0, l1, 0)).norm() + std::abs(s.pitch) + std::abs(s.magnitude - theta);
   err += (q - Eigen::Vector3d(0, l1, 5)).norm();

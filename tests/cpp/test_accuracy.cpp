@@ -38,12 +38,12 @@
 
 namespace {
 
+using chasles_ref::kPi;
 using chasles_ref::ld;
 using chasles_ref::M3;
 using chasles_ref::M4;
 using chasles_ref::V3;
 using chasles_ref::V6;
-using chasles_ref::kPi;
 
 using chasles_test::eps;
 using chasles_test::Mat3;
@@ -112,8 +112,11 @@ std::vector<ld> contract_angles() {
 /// Axes: coordinate axes, diagonals, and a few random ones (all rounded to T).
 template <typename T>
 std::vector<Vec3<T>> contract_axes(int n_random = 6) {
-  std::vector<Vec3<T>> ax = {Vec3<T>::UnitX(), Vec3<T>::UnitY(), Vec3<T>::UnitZ(),
-                             Vec3<T>(1, 1, 0).normalized(), Vec3<T>(1, -2, 3).normalized(),
+  std::vector<Vec3<T>> ax = {Vec3<T>::UnitX(),
+                             Vec3<T>::UnitY(),
+                             Vec3<T>::UnitZ(),
+                             Vec3<T>(1, 1, 0).normalized(),
+                             Vec3<T>(1, -2, 3).normalized(),
                              Vec3<T>(1, 1, 1).normalized()};
   std::mt19937_64 rng(chasles_test::kSeed + 7);
   for (int i = 0; i < n_random; ++i) ax.push_back(chasles_test::random_unit<T>(rng));
@@ -142,8 +145,13 @@ ld angle_of(const Vec3<T>& w) {
 TEST(Oracle, MatrixExponentialAgreesWithTaylorSum) {
   std::mt19937_64 rng(chasles_test::kSeed);
   ld worst3 = 0, worst4 = 0;
-  std::vector<V3> ws = {V3::Zero(), V3(1e-300L, 0, 0), V3(1e-8L, -2e-8L, 3e-8L), V3(0.3L, -0.2L, 0.1L),
-                        V3(1, 0, 0), kPi * V3(1, 1, 0).normalized(), (kPi - 1e-12L) * V3(1, -2, 3).normalized()};
+  std::vector<V3> ws = {V3::Zero(),
+                        V3(1e-300L, 0, 0),
+                        V3(1e-8L, -2e-8L, 3e-8L),
+                        V3(0.3L, -0.2L, 0.1L),
+                        V3(1, 0, 0),
+                        kPi * V3(1, 1, 0).normalized(),
+                        (kPi - 1e-12L) * V3(1, -2, 3).normalized()};
   for (int i = 0; i < 20; ++i) {
     std::uniform_real_distribution<double> u(0, double(kPi));
     ws.push_back(ld(u(rng)) * chasles_test::random_unit<double>(rng).cast<ld>());
@@ -460,8 +468,8 @@ template <typename T>
 void log_off_manifold(Perturbation model, const std::vector<ld>& ds, bool assert_two_d) {
   using SO3 = chasles::SO3<T>;
   const char* model_name = model == Perturbation::exactly_d ? "entries off by +-d" : "entries off by U[-d,d]";
-  const std::vector<ld> angles = {0,   1e-8L, 1e-4L, 0.1L, 1,           kPi / 2 - 0.01L, kPi / 2,    kPi / 2 + 0.01L,
-                                  2,   2.5L,  3,     kPi - 1e-3L, kPi - 1e-6L, kPi - 1e-9L,     kPi};
+  const std::vector<ld> angles = {0, 1e-8L, 1e-4L, 0.1L,        1,           kPi / 2 - 0.01L, kPi / 2, kPi / 2 + 0.01L,
+                                  2, 2.5L,  3,     kPi - 1e-3L, kPi - 1e-6L, kPi - 1e-9L,     kPi};
   std::mt19937_64 rng(chasles_test::kSeed + 6);
   std::uniform_real_distribution<double> uni(-1.0, 1.0);
   Worst direct, projected;
@@ -629,7 +637,8 @@ void adjacent_to_pi() {
       const M4 gl = gt.template cast<ld>();
       const V6 x = SE3::from_matrix_unchecked(gt).log().template cast<ld>();
       V6 r = chasles_ref::log6(gl);
-      if (x.tail<3>().dot(r.tail<3>()) < 0) r = chasles_ref::log6_with_rotation(-r.tail<3>(), gl.topRightCorner<3, 1>());
+      if (x.tail<3>().dot(r.tail<3>()) < 0)
+        r = chasles_ref::log6_with_rotation(-r.tail<3>(), gl.topRightCorner<3, 1>());
       log6_rot.update((x.tail<3>() - r.tail<3>()).cwiseAbs().maxCoeff(), str(xi));
       log6_trans.update(relative_error<T>(x.head<3>(), r.head<3>()), str(xi));
     }

@@ -9,8 +9,8 @@
 // gives the very numbers of the same call spelled in the group's Scalar.
 #include <cmath>
 
-#include <Eigen/Core>
 #include <gtest/gtest.h>
+#include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
 #include <chasles/chasles.hpp>

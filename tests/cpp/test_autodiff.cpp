@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Core>
 #include <gtest/gtest.h>
+#include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
 #include <chasles/se3.hpp>
@@ -33,12 +33,12 @@
 
 namespace {
 
+using chasles_ref::kPi;
 using chasles_ref::ld;
 using chasles_ref::M3;
 using chasles_ref::M4;
 using chasles_ref::V3;
 using chasles_ref::V6;
-using chasles_ref::kPi;
 
 template <int N>
 using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
@@ -115,8 +115,8 @@ std::vector<V3> rotation_vectors(bool include_pi) {
   std::vector<V3> out;
   out.push_back(V3::Zero());
   const ld cut = std::sqrt(ld(chasles::Thresholds<double>::taylor_theta2));
-  std::vector<ld> angles = {1e-8L, cut * (1 - 1e-4L), cut * (1 + 1e-4L), 0.3L, 1, kPi / 2, 2.5L, kPi - 1e-3L,
-                            kPi - 1e-4L};
+  std::vector<ld> angles = {1e-8L, cut * (1 - 1e-4L), cut * (1 + 1e-4L), 0.3L, 1, kPi / 2,
+                            2.5L,  kPi - 1e-3L,       kPi - 1e-4L};
   if (include_pi) angles.push_back(kPi);
   const std::vector<V3> axes = {V3::UnitX(), V3::UnitZ(), V3(1, 1, 0).normalized(), V3(1, -2, 3).normalized()};
   for (ld a : angles) {
@@ -191,14 +191,17 @@ TEST(Autodiff, SO3Log) {
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) {
         M(i, j) = AD<3>(R0(i, j));
-        for (int k = 0; k < 3; ++k) M(i, j).derivatives()[k] = (R0 * chasles::SO3d::hat(Eigen::Vector3d::Unit(k)))(i, j);
+        for (int k = 0; k < 3; ++k)
+          M(i, j).derivatives()[k] = (R0 * chasles::SO3d::hat(Eigen::Vector3d::Unit(k)))(i, j);
       }
     const Jac J = ad_jacobian<3>(Eigen::Matrix<AD<3>, 3, 1>(chasles::SO3<AD<3>>::from_matrix_unchecked(M).log()));
     Jac ref(3, 3);
     const ld h = log_step(w0.norm());
     for (int k = 0; k < 3; ++k)
       ref.col(k) = derivative(
-          [&](ld t) { return Eigen::Matrix<ld, Eigen::Dynamic, 1>(chasles_ref::log3(R0l * chasles_ref::exp3(t * V3::Unit(k)))); },
+          [&](ld t) {
+            return Eigen::Matrix<ld, Eigen::Dynamic, 1>(chasles_ref::log3(R0l * chasles_ref::exp3(t * V3::Unit(k))));
+          },
           h);
     if (w0.norm() == 0) {
       EXPECT_LE((J - Jac::Identity(3, 3)).cwiseAbs().maxCoeff(), 1e-15L) << "at identity:\n" << J;
@@ -242,7 +245,8 @@ TEST(Autodiff, SE3ExpAtZeroIsHat) {
     Eigen::Matrix4d dg;
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j) dg(i, j) = g(i, j).derivatives()[k];
-    EXPECT_TRUE(dg == chasles::SE3d::hat(Eigen::Matrix<double, 6, 1>::Unit(k))) << "d exp/dxi_" << k << " at 0:\n" << dg;
+    EXPECT_TRUE(dg == chasles::SE3d::hat(Eigen::Matrix<double, 6, 1>::Unit(k))) << "d exp/dxi_" << k << " at 0:\n"
+                                                                                << dg;
   }
 }
 
@@ -306,7 +310,10 @@ TEST(Autodiff, SE3Log) {
     const ld h = log_step(xi0.tail<3>().norm());
     for (int k = 0; k < 6; ++k)
       ref.col(k) = derivative(
-          [&](ld t) { return Eigen::Matrix<ld, Eigen::Dynamic, 1>(chasles_ref::log6(M4(g0l * chasles_ref::exp6(t * V6::Unit(k))))); },
+          [&](ld t) {
+            return Eigen::Matrix<ld, Eigen::Dynamic, 1>(
+                chasles_ref::log6(M4(g0l * chasles_ref::exp6(t * V6::Unit(k)))));
+          },
           h);
     if (xi0.norm() == 0) {
       EXPECT_LE((J - Jac::Identity(6, 6)).cwiseAbs().maxCoeff(), 1e-15L) << "at identity:\n" << J;

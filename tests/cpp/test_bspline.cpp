@@ -18,8 +18,8 @@
 #include <type_traits>
 #include <vector>
 
-#include <Eigen/Core>
 #include <gtest/gtest.h>
+#include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
 #include <chasles/bspline.hpp>
@@ -214,7 +214,8 @@ void check_one_parameter_subgroup(const TangentOf<G>& xi) {
     const auto ref = (GroupOf<G>::matrix(X0).template cast<ld>() *
                       GroupOf<G>::ref_exp(((ld(t) - ld(t0) + ld(dt)) * xi.template cast<ld>()).eval()))
                          .eval();
-    worst_x = std::max(worst_x, max_diff(GroupOf<G>::matrix(p.value), ref) / std::max<ld>(1, ref.cwiseAbs().maxCoeff()));
+    worst_x =
+        std::max(worst_x, max_diff(GroupOf<G>::matrix(p.value), ref) / std::max<ld>(1, ref.cwiseAbs().maxCoeff()));
     worst_v = std::max(worst_v, max_diff(p.velocity, xi));
     worst_a = std::max(worst_a, max_diff(p.acceleration, TangentOf<G>::Zero()));
   }

@@ -6,8 +6,8 @@
 #include <random>
 #include <string>
 
-#include <Eigen/Core>
 #include <gtest/gtest.h>
+#include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
 #include <chasles/distance.hpp>
@@ -39,8 +39,20 @@ chasles_ref::V3 axis(int i) {
 /// The angles of the accuracy test: 0, tiny, small, generic, near pi, pi.
 /// 1e-160 and 1e-30 are below the cutoff tiny_norm2 on |u_v|^2 in double and in
 /// float, 1e-12 and 1e-7 above it.
-const ld kAngles[] = {0.0L, 1e-160L, 1e-30L, 1e-12L, 1e-7L, 1e-4L, 0.05L, 0.3L, 1.0L, 2.0L, 3.0L,
-                      chasles_ref::kPi - 1e-3L, chasles_ref::kPi - 1e-6L, chasles_ref::kPi - 1e-9L,
+const ld kAngles[] = {0.0L,
+                      1e-160L,
+                      1e-30L,
+                      1e-12L,
+                      1e-7L,
+                      1e-4L,
+                      0.05L,
+                      0.3L,
+                      1.0L,
+                      2.0L,
+                      3.0L,
+                      chasles_ref::kPi - 1e-3L,
+                      chasles_ref::kPi - 1e-6L,
+                      chasles_ref::kPi - 1e-9L,
                       chasles_ref::kPi};
 
 TYPED_TEST(Distance, AngleMatchesTheLongDoubleReferenceNearZeroAndNearPi) {

@@ -27,9 +27,9 @@
 #include <string>
 #include <type_traits>
 
+#include <gtest/gtest.h>
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
-#include <gtest/gtest.h>
 #include <unsupported/Eigen/AutoDiff>
 
 #include <chasles/dynamics.hpp>
@@ -119,7 +119,8 @@ TYPED_TEST(DynamicsTest, AgreesWithLongDouble) {
     const Arm arm = random_arm(rng, n);
     const Dyn<S> d = dynamics_of<S>(arm);
     const Dyn<LD> dl = dynamics_of<LD>(arm);
-    const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0), qdd = random_joints<S>(rng, n, 2.0);
+    const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0),
+               qdd = random_joints<S>(rng, n, 2.0);
     const Wrench<S> F(Eigen::Matrix<S, 3, 1>(S(1), S(-2), S(3)), Eigen::Matrix<S, 3, 1>(S(0.5), S(0.1), S(-0.3)));
     const auto tau = inverse_dynamics(d, q, qd, qdd, F);
     const auto taul = inverse_dynamics(dl, to_ld(q), to_ld(qd), to_ld(qdd), F.template cast<LD>());
@@ -174,7 +175,8 @@ TYPED_TEST(DynamicsTest, TipWrenchGivesTheBodyJacobianTranspose) {
     const Arm arm = random_arm(rng, n);
     const Dyn<S> d = dynamics_of<S>(arm);
     const Chain<S, Eigen::Dynamic, kMax> chain(arm.S.template cast<S>(), arm.M.template cast<S>());
-    const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0), qdd = random_joints<S>(rng, n, 2.0);
+    const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0),
+               qdd = random_joints<S>(rng, n, 2.0);
     Eigen::Matrix<S, 6, 1> Fv;
     for (int k = 0; k < 6; ++k) Fv(k) = S(u(rng));
     const typename Dyn<S>::JointVector diff =
@@ -191,7 +193,8 @@ TYPED_TEST(DynamicsTest, ForwardDynamicsInvertsInverseDynamics) {
   for (int trial = 0; trial < 30; ++trial) {
     const int n = 1 + trial % kMax;
     const Dyn<S> d = dynamics_of<S>(random_arm(rng, n));
-    const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0), qdd = random_joints<S>(rng, n, 2.0);
+    const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0),
+               qdd = random_joints<S>(rng, n, 2.0);
     const Wrench<S> F(Eigen::Matrix<S, 3, 1>(S(1), S(-2), S(3)), Eigen::Matrix<S, 3, 1>(S(0.5), S(0.1), S(-0.3)));
     const auto tau = inverse_dynamics(d, q, qd, qdd, F);
     const auto forward = forward_dynamics(d, q, qd, tau, F);
@@ -202,7 +205,8 @@ TYPED_TEST(DynamicsTest, ForwardDynamicsInvertsInverseDynamics) {
     const auto M = mass_matrix(d, q);
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(M.template cast<double>());
     const LD cond = LD(es.eigenvalues().maxCoeff() / es.eigenvalues().minCoeff());
-    EXPECT_TRUE(near<S>(back, to_ld(qdd), kPerJoint * n * cond, std::max(LD(100), max_abs(tau)) / LD(es.eigenvalues().maxCoeff())))
+    EXPECT_TRUE(near<S>(back, to_ld(qdd), kPerJoint * n * cond,
+                        std::max(LD(100), max_abs(tau)) / LD(es.eigenvalues().maxCoeff())))
         << "n = " << n << ", cond(M) = " << static_cast<double>(cond);
     // bias = coriolis + gravity.
     EXPECT_TRUE(near<S>(bias(d, q, qd), Eigen::Matrix<S, Eigen::Dynamic, 1>(coriolis(d, q, qd) + gravity_torques(d, q)),
@@ -243,7 +247,8 @@ TYPED_TEST(DynamicsTest, FromAChainEqualsFromItsParts) {
     const Dyn<S> a(chain);
     const Dyn<S> b(chain.space_screws(), chain.home(), typename Dyn<S>::HomeAsGiven(), chain.link_inertias(),
                    chain.gravity());
-    const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0), qdd = random_joints<S>(rng, n, 2.0);
+    const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0),
+               qdd = random_joints<S>(rng, n, 2.0);
     const Wrench<S> F(Eigen::Matrix<S, 3, 1>(S(1), S(-2), S(3)), Eigen::Matrix<S, 3, 1>(S(0.5), S(0.1), S(-0.3)));
     using V = Eigen::Matrix<S, Eigen::Dynamic, 1>;
     using Mat = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>;
@@ -274,7 +279,8 @@ TYPED_TEST(DynamicsTest, TheBaseFrameMovesTheInertias) {
     const Dyn<S> based(chain_of<S>(arm, base, gravity));
     const Eigen::Vector3d rotated = base.rotation().matrix().transpose() * gravity;
     const Dyn<LD> reference(chain_of<LD>(arm, SE3<double>(), rotated));
-    const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0), qdd = random_joints<S>(rng, n, 2.0);
+    const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0),
+               qdd = random_joints<S>(rng, n, 2.0);
     const Wrench<S> F(Eigen::Matrix<S, 3, 1>(S(1), S(-2), S(3)), Eigen::Matrix<S, 3, 1>(S(0.5), S(0.1), S(-0.3)));
     const auto taul = inverse_dynamics(reference, to_ld(q), to_ld(qd), to_ld(qdd), F.template cast<LD>());
     const LD scale = std::max(LD(100), max_abs(taul));
@@ -358,7 +364,8 @@ TEST(Dynamics, PowerBalanceAlongATrajectory) {
     const Dyn<double> d = dynamics_of<double>(random_arm(rng, n));
     const auto q0 = random_joints<double>(rng, n, 3.0), a = random_joints<double>(rng, n, 1.0),
                w = random_joints<double>(rng, n, 2.0);
-    auto state = [&](double t, Dyn<double>::JointVector& q, Dyn<double>::JointVector& qd, Dyn<double>::JointVector& qdd) {
+    auto state = [&](double t, Dyn<double>::JointVector& q, Dyn<double>::JointVector& qd,
+                     Dyn<double>::JointVector& qdd) {
       q = q0;
       qd.resize(n);
       qdd.resize(n);
@@ -411,7 +418,8 @@ TEST(Dynamics, CoriolisIsTheChristoffelFormOfTheMassMatrixDerivative) {
       for (int r = 0; r < 6; ++r)
         for (int c = 0; c < 6; ++c) dM[static_cast<std::size_t>(k)](r, c) = Ma(r, c).derivatives()(k);
       const auto M_at = [&](double t) {
-        return Eigen::Matrix<double, 6, 6>(mass_matrix(d, Eigen::Matrix<double, 6, 1>(q + t * Eigen::Matrix<double, 6, 1>::Unit(k))));
+        return Eigen::Matrix<double, 6, 6>(
+            mass_matrix(d, Eigen::Matrix<double, 6, 1>(q + t * Eigen::Matrix<double, 6, 1>::Unit(k))));
       };
       // Five-point difference, h = 1e-3: truncation h^4/30 |M^(5)| <= 3e-12 for
       // |M^(5)| <= 1e2 (these arms' masses and reaches), rounding ~ eps |M| / h <= 1e-11.
@@ -427,7 +435,9 @@ TEST(Dynamics, CoriolisIsTheChristoffelFormOfTheMassMatrixDerivative) {
     }
     const Eigen::Matrix<double, 6, 1> expected = Mdot * qd - christoffel;
     const auto c = coriolis(d, q, qd);
-    EXPECT_TRUE(near<double>(c, expected, 64 * 6, 100)) << "coriolis\n" << c.transpose() << "\nexpected\n" << expected.transpose();
+    EXPECT_TRUE(near<double>(c, expected, 64 * 6, 100)) << "coriolis\n"
+                                                        << c.transpose() << "\nexpected\n"
+                                                        << expected.transpose();
   }
 }
 
@@ -557,7 +567,8 @@ TYPED_TEST(DynamicsTest, ForwardDynamicsOfPhysicalArmsIsOkAndEigensCholeskySolve
   for (int trial = 0; trial < 80; ++trial) {
     const int n = 1 + trial % kMax;
     const Dyn<S> d = dynamics_of<S>(random_arm(rng, n));
-    const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0), tau = random_joints<S>(rng, n, 20.0);
+    const auto q = random_joints<S>(rng, n, 3.0), qd = random_joints<S>(rng, n, 2.0),
+               tau = random_joints<S>(rng, n, 20.0);
     const auto r = forward_dynamics(d, q, qd, tau, F);
     ASSERT_TRUE(r) << "n = " << n;
     EXPECT_EQ(r.qdd, llt_solve(d, q, qd, tau, F)) << "n = " << n;

@@ -10,8 +10,8 @@
 #include <string>
 #include <utility>
 
-#include <Eigen/Core>
 #include <gtest/gtest.h>
+#include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
 #include "chasles/euler.hpp"
@@ -22,9 +22,8 @@ using chasles::EulerSequence;
 using ld = long double;
 using M3L = Eigen::Matrix<ld, 3, 3>;
 constexpr ld kPi = 3.141592653589793238462643383279502884L;
-constexpr const char* kNames[24] = {"xyz", "xzy", "yxz", "yzx", "zxy", "zyx", "xyx", "xzx",
-                                    "yxy", "yzy", "zxz", "zyz", "XYZ", "XZY", "YXZ", "YZX",
-                                    "ZXY", "ZYX", "XYX", "XZX", "YXY", "YZY", "ZXZ", "ZYZ"};
+constexpr const char* kNames[24] = {"xyz", "xzy", "yxz", "yzx", "zxy", "zyx", "xyx", "xzx", "yxy", "yzy", "zxz", "zyz",
+                                    "XYZ", "XZY", "YXZ", "YZX", "ZXY", "ZYX", "XYX", "XZX", "YXY", "YZY", "ZXZ", "ZYZ"};
 
 /// The elementary rotation by t about axis 0, 1 or 2 (x, y, z), long double.
 M3L elementary(int axis, ld t) {

@@ -23,10 +23,10 @@ namespace {
 
 using chasles_test::Mat3;
 using chasles_test::Mat4;
-using chasles_test::Vec3;
-using chasles_test::Vec6;
 using chasles_test::str;
 using chasles_test::type_name;
+using chasles_test::Vec3;
+using chasles_test::Vec6;
 
 /// Counts the inputs of one operation whose output is not finite, and
 /// keeps the first of them.
@@ -43,8 +43,8 @@ struct Failures {
 
 void expect_none(const Failures& f, const std::string& what) {
   std::printf("[ info     ] %-48s %d non-finite of %d inputs\n", what.c_str(), f.count, f.total);
-  EXPECT_EQ(f.count, 0) << what << ": " << f.count << " of " << f.total << " inputs give NaN or inf; first: "
-                        << f.first;
+  EXPECT_EQ(f.count, 0) << what << ": " << f.count << " of " << f.total
+                        << " inputs give NaN or inf; first: " << f.first;
 }
 
 /// sign * 10^x, x uniform in [lo, hi] (then rounded to T: may be 0 or
@@ -323,7 +323,8 @@ TEST(Finite, ProjectionsFloat) { projections_finite<float>(); }
 
 template <typename T>
 bool screw_finite(const chasles::Screw<T>& s, bool infinite_pitch_allowed) {
-  const bool pitch_ok = std::isfinite(s.pitch) || (infinite_pitch_allowed && s.pitch == std::numeric_limits<T>::infinity());
+  const bool pitch_ok =
+      std::isfinite(s.pitch) || (infinite_pitch_allowed && s.pitch == std::numeric_limits<T>::infinity());
   return s.point.allFinite() && s.direction.allFinite() && std::isfinite(s.magnitude) && pitch_ok;
 }
 
@@ -384,7 +385,8 @@ void screws_of_all_sizes() {
                                            max_exp10<T>() - 1);
   std::normal_distribution<double> nd(0, 1);
   for (int k = 0; k < 3000; ++k) {
-    const long double s = std::pow(10.0L, u(rng)), r = std::pow(10.0L, std::uniform_real_distribution<double>(-8, 0)(rng));
+    const long double s = std::pow(10.0L, u(rng)),
+                      r = std::pow(10.0L, std::uniform_real_distribution<double>(-8, 0)(rng));
     Vec3<T> l, m;
     for (int i = 0; i < 3; ++i) {
       l[i] = T(s * nd(rng) / 3);

@@ -8,8 +8,8 @@
 #include <random>
 #include <vector>
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <chasles/chasles.hpp>
 
@@ -42,8 +42,8 @@ void projected_non_finite_is_identity() {
   found(0, 0) = T(-1e36);
   found(0, 1) = -nan;
   found(0, 2) = T(8e-41);  // subnormal in float
-  EXPECT_TRUE(projects_to_identity(found)) << "M = " << str(found) << " gives "
-                                           << str(chasles::SO3<T>::from_matrix_projected(found).matrix());
+  EXPECT_TRUE(projects_to_identity(found))
+      << "M = " << str(found) << " gives " << str(chasles::SO3<T>::from_matrix_projected(found).matrix());
   std::vector<Mat3<T>> bases = {Mat3<T>::Identity(), Mat3<T>(T(-1e36) * Mat3<T>::Identity())};
   for (const Vec3<T>& w : chasles_test::rotation_vectors<T>(8)) bases.push_back(chasles::SO3<T>::exp(w).matrix());
   int cases = 0, wrong = 0;
@@ -57,8 +57,8 @@ void projected_non_finite_is_identity() {
         if (!projects_to_identity(M) && wrong++ == 0)
           first = "M = " + str(M) + " gives " + str(chasles::SO3<T>::from_matrix_projected(M).matrix());
       }
-  EXPECT_EQ(wrong, 0) << wrong << " of " << cases << " non-finite matrices not projected to the identity; first: "
-                      << first;
+  EXPECT_EQ(wrong, 0) << wrong << " of " << cases
+                      << " non-finite matrices not projected to the identity; first: " << first;
 }
 TEST(FuzzRegression, ProjectedNonFiniteIsIdentityFloat) { projected_non_finite_is_identity<float>(); }
 TEST(FuzzRegression, ProjectedNonFiniteIsIdentityDouble) { projected_non_finite_is_identity<double>(); }
@@ -136,8 +136,7 @@ void from_screw_normalizes_any_direction() {
     directions.push_back(s * Vec3<T>(-1, 0, 1));
   }
   for (const Vec3<T>& d : directions) {
-    const Eigen::Matrix<long double, 3, 1> u =
-        d.template cast<long double>() / d.template cast<long double>().norm();
+    const Eigen::Matrix<long double, 3, 1> u = d.template cast<long double>() / d.template cast<long double>().norm();
     Eigen::Matrix<long double, 6, 1> expected;  // theta (-u x q + h u, u)
     expected << theta * (-u.cross(q.template cast<long double>()) + h * u), theta * u;
     const Eigen::Matrix<T, 6, 1> twist = chasles::Twist<T>::from_screw(q, d, h, theta).vector();

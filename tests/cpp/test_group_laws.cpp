@@ -28,10 +28,10 @@
 #include <type_traits>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <Eigen/SVD>
-#include <gtest/gtest.h>
 
 #include <chasles/chasles.hpp>
 
@@ -501,7 +501,9 @@ std::vector<std::pair<std::string, Eigen::Matrix<S, 3, 3>>> projection_cases() {
     for (int k = 0; k < 9; ++k) N(k / 3, k % 3) = n01(rng);
     return N;
   };
-  auto rot = [&] { return SO3<double>::exp(std::uniform_real_distribution<double>(0, 3.1)(rng) * random_unit<double>(rng)).matrix(); };
+  auto rot = [&] {
+    return SO3<double>::exp(std::uniform_real_distribution<double>(0, 3.1)(rng) * random_unit<double>(rng)).matrix();
+  };
   std::vector<std::pair<std::string, M3>> out;
   auto add = [&out](const std::string& name, const Eigen::Matrix3d& M) {
     out.emplace_back(name, M3(M.template cast<S>()));
@@ -565,8 +567,8 @@ TYPED_TEST(GroupLaws, ProjectedFromMatrixIsNearestRotation) {
     const Eigen::Matrix<LD, 3, 3> ref = svd_nearest_rotation(to_ld(M), &gap);
     // As near to M as the SVD's answer (Frobenius norm), always.
     const LD d_lib = (to_ld(R) - to_ld(M)).norm(), d_ref = (ref - to_ld(M)).norm();
-    EXPECT_LE(d_lib, d_ref + kProj * eps<S>() * size) << name << ": |R - M| = " << double(d_lib) << ", SVD's "
-                                                       << double(d_ref);
+    EXPECT_LE(d_lib, d_ref + kProj * eps<S>() * size)
+        << name << ": |R - M| = " << double(d_lib) << ", SVD's " << double(d_ref);
     // The same rotation where the nearest is unique (gap well above rounding).
     if (gap > LD(1e-2) * size) {
       ++unique;
@@ -591,8 +593,8 @@ TYPED_TEST(GroupLaws, NormalizedRemovesDrift) {
     // Drifted by 1e-4: normalized() is the projection of the drifted matrix.
     M3 N;
     for (int k = 0; k < 9; ++k) N(k / 3, k % 3) = S(n01(rng));
-    const auto drifted = T::from_matrix_unchecked(
-        T::with_rotation_block(g.matrix(), M3(T::rotation_block(g.matrix()) + S(1e-4) * N)));
+    const auto drifted =
+        T::from_matrix_unchecked(T::with_rotation_block(g.matrix(), M3(T::rotation_block(g.matrix()) + S(1e-4) * N)));
     const TypeParam n = drifted.normalized();
     EXPECT_TRUE(all_equal(n.matrix(), T::from_matrix_projected(drifted.matrix()).matrix()));
     EXPECT_LE(reference_rotation_defect(T::rotation_block(n.matrix())), kProj * eps<S>());
@@ -756,9 +758,9 @@ TYPED_TEST(SO3Quaternion, RoundTrips) {
   // Zero and non-finite quaternions: the identity, as documented.
   EXPECT_TRUE(all_equal(SO3<S>::from_quaternion(Eigen::Quaternion<S>(0, 0, 0, 0)).matrix(),
                         Eigen::Matrix<S, 3, 3>::Identity().eval()));
-  EXPECT_TRUE(all_equal(
-      SO3<S>::from_quaternion(Eigen::Quaternion<S>(std::numeric_limits<S>::quiet_NaN(), 0, 0, 0)).matrix(),
-      Eigen::Matrix<S, 3, 3>::Identity().eval()));
+  EXPECT_TRUE(
+      all_equal(SO3<S>::from_quaternion(Eigen::Quaternion<S>(std::numeric_limits<S>::quiet_NaN(), 0, 0, 0)).matrix(),
+                Eigen::Matrix<S, 3, 3>::Identity().eval()));
 }
 
 }  // namespace

@@ -31,7 +31,6 @@ using chasles::Chain;
 using chasles::IKOptions;
 using chasles::SE3;
 
-
 /// |log(g^-1 T)| parts by the long double reference forward kinematics.
 template <typename C>
 std::pair<LD, LD> reference_error(const C& chain, const SE3<typename C::Scalar>& target,

@@ -5,8 +5,8 @@
 #include <sstream>
 #include <string>
 
-#include <Eigen/Core>
 #include <gtest/gtest.h>
+#include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
 #include <chasles/chasles.hpp>

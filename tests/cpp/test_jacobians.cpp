@@ -32,9 +32,9 @@
 #include <utility>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <Eigen/Core>
 #include <Eigen/LU>
-#include <gtest/gtest.h>
 #include <unsupported/Eigen/AutoDiff>
 
 #include <chasles/jacobians.hpp>
@@ -186,7 +186,8 @@ TYPED_TEST(Jacobians, Se3Identities) {
     const LD scale = std::max<LD>(1, max_abs(xi));
     EXPECT_TRUE(near<S>(se3_left_jacobian(xi), se3_right_jacobian(V6(-xi)), 2));
     EXPECT_TRUE(near<S>(M6(SE3<S>::exp(xi).adjoint() * se3_right_jacobian(xi)), se3_left_jacobian(xi), 32, scale));
-    EXPECT_TRUE(near<S>(M6(se3_right_jacobian(xi) * se3_right_jacobian_inverse(xi)), M6::Identity(), 64, scale * scale));
+    EXPECT_TRUE(
+        near<S>(M6(se3_right_jacobian(xi) * se3_right_jacobian_inverse(xi)), M6::Identity(), 64, scale * scale));
     EXPECT_TRUE(near<S>(M6(se3_left_jacobian(xi) * se3_left_jacobian_inverse(xi)), M6::Identity(), 64, scale * scale));
   }
 }
@@ -289,8 +290,7 @@ void first_order_checks() {
     EXPECT_LE(LD(max_abs(rminus(G(rplus(X, dx) * Y), rplus(G(X * Y), Tangent(cj.lhs * dx))))), bound) << at;
     EXPECT_LE(LD(max_abs(rminus(G(X * rplus(Y, dx)), rplus(G(X * Y), Tangent(cj.rhs * dx))))), bound) << at;
     // inverse.
-    EXPECT_LE(LD(max_abs(rminus(rplus(X, dx).inverse(), rplus(X.inverse(), Tangent(inverse_jacobian(X) * dx))))),
-              bound)
+    EXPECT_LE(LD(max_abs(rminus(rplus(X, dx).inverse(), rplus(X.inverse(), Tangent(inverse_jacobian(X) * dx))))), bound)
         << at;
     // action on a point.
     const auto aj = act_jacobians(X, p);
@@ -341,8 +341,7 @@ void first_order_checks() {
     if (chasles_test::rotation_angle<G>(rminus(Y, X)) < chasles_test::kPi - 1e-2L) {
       const S t(0.3);
       const Tangent jt = interpolate_jacobian_t(X, Y, t);
-      EXPECT_LE(LD(max_abs(rminus(interpolate(X, Y, S(t + d)), rplus(interpolate(X, Y, t), Tangent(d * jt))))),
-                bound)
+      EXPECT_LE(LD(max_abs(rminus(interpolate(X, Y, S(t + d)), rplus(interpolate(X, Y, t), Tangent(d * jt))))), bound)
           << at;
     }
   }
@@ -392,8 +391,14 @@ LD reference_d(LD t) {
     return (1 - h * std::cos(h) / std::sin(h)) / t;
   }
   // |B_2n| / (2n)! for n = 1..8.
-  const LD c[] = {1.0L / 12, 1.0L / 720, 1.0L / 30240, 1.0L / 1209600, 1.0L / 47900160,
-                  691.0L / 1307674368000.0L, 1.0L / 74724249600.0L, 3617.0L / 10670622842880000.0L};
+  const LD c[] = {1.0L / 12,
+                  1.0L / 720,
+                  1.0L / 30240,
+                  1.0L / 1209600,
+                  1.0L / 47900160,
+                  691.0L / 1307674368000.0L,
+                  1.0L / 74724249600.0L,
+                  3617.0L / 10670622842880000.0L};
   LD sum = 0, p = 1;
   for (LD ck : c) {
     sum += ck * p;
@@ -415,8 +420,18 @@ LD reference_q(LD t, bool q4) {
 TYPED_TEST(Jacobians, CoefficientsAcrossTheCutoff) {
   using S = TypeParam;
   const S cut = chasles::Thresholds<S>::taylor_theta2;
-  std::vector<S> ts = {S(0), cut / 4, std::nextafter(cut, S(0)), cut, std::nextafter(cut, S(1)), cut * S(1.01),
-                       cut * 4, S(0.1), S(1), S(4), S(9), S(9.8)};
+  std::vector<S> ts = {S(0),
+                       cut / 4,
+                       std::nextafter(cut, S(0)),
+                       cut,
+                       std::nextafter(cut, S(1)),
+                       cut * S(1.01),
+                       cut * 4,
+                       S(0.1),
+                       S(1),
+                       S(4),
+                       S(9),
+                       S(9.8)};
   for (S t : ts) {
     const LD tl = t;
     const LD d = chasles::detail::jacobian_inverse_coefficient(t);

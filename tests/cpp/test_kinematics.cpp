@@ -37,8 +37,8 @@ namespace {
 
 using namespace chasles_test;
 using chasles::Chain;
-using chasles::SE3;
 using chasles::ChainCheck;
+using chasles::SE3;
 
 using V3L = Eigen::Matrix<LD, 3, 1>;
 using V6L = Eigen::Matrix<LD, 6, 1>;
@@ -227,9 +227,9 @@ TYPED_TEST(Kinematics, RevoluteAndPrismaticScrews) {
   const V3 z(0, 0, 1), y(0, 1, 0);
   const V3 q1(0, 0, 0), q2(0, 0, S(H1)), q3(S(L1), 0, S(H1)), q4(S(L1 + L2), 0, S(H1));
   const V3 q5(S(L1 + L2), S(W1), 0), q6(S(L1 + L2), 0, S(H1 - H2));
-  const typename C::Vector6 s[6] = {C::revolute_screw(q1, z),       C::revolute_screw(q2, S(3) * y),
-                                    C::revolute_screw(q3, y),       C::revolute_screw(q4, y),
-                                    C::revolute_screw(q5, V3(-z)),  C::revolute_screw(q6, y)};
+  const typename C::Vector6 s[6] = {C::revolute_screw(q1, z),      C::revolute_screw(q2, S(3) * y),
+                                    C::revolute_screw(q3, y),      C::revolute_screw(q4, y),
+                                    C::revolute_screw(q5, V3(-z)), C::revolute_screw(q6, y)};
   for (int i = 0; i < 6; ++i) EXPECT_TRUE(near<S>(s[i], V6L(u.S.col(i)), 4)) << "joint " << i + 1;
   const typename C::Vector6 p = C::prismatic_screw(V3(0, S(3), S(4)));
   EXPECT_TRUE(near<S>(p, V6L((V6L() << 0, 0.6L, 0.8L, 0, 0, 0).finished()), 4));
@@ -339,10 +339,9 @@ Arm urdf_style_arm() {
     LD x, y, z, roll, pitch, yaw;
   };
   const LD h = chasles_ref::kPi / 2;
-  const Origin o[7] = {{0, 0, 0.333L, 0, 0, 0},          {0, 0, 0, -h, 0, 0},
-                       {0, -0.316L, 0, h, 0, 0},         {0.0825L, 0, 0, h, 0, 0},
-                       {-0.0825L, 0.384L, 0, -h, 0, 0},  {0, 0, 0, h, 0, 0},
-                       {0.088L, 0, 0, h, 0.3L, 0.7L}};
+  const Origin o[7] = {
+      {0, 0, 0.333L, 0, 0, 0},         {0, 0, 0, -h, 0, 0}, {0, -0.316L, 0, h, 0, 0},     {0.0825L, 0, 0, h, 0, 0},
+      {-0.0825L, 0.384L, 0, -h, 0, 0}, {0, 0, 0, h, 0, 0},  {0.088L, 0, 0, h, 0.3L, 0.7L}};
   using M4 = Eigen::Matrix<S, 4, 4>;
   using M3 = Eigen::Matrix<S, 3, 3>;
   using V3 = Eigen::Matrix<S, 3, 1>;
@@ -392,7 +391,8 @@ TYPED_TEST(Kinematics, LargeAnglesBodyAgreesWithSpace) {
       for (int i = 0; i < 7; ++i) th(i) = S(u(rng)), t(i) = LD(th(i));
       const M4L ref = fk_ref(arm.S, chain.home().matrix().template cast<LD>(), t);
       worst_space = std::max(worst_space, (chain.forward(th).matrix().template cast<LD>() - ref).cwiseAbs().maxCoeff());
-      worst_body = std::max(worst_body, (chain.forward_body(th).matrix().template cast<LD>() - ref).cwiseAbs().maxCoeff());
+      worst_body =
+          std::max(worst_body, (chain.forward_body(th).matrix().template cast<LD>() - ref).cwiseAbs().maxCoeff());
     }
     // The floor of both forms is the rounding of S_i th_i, an angle error
     // of eps |th| per joint, over a few eps of composition at small angles.
@@ -405,7 +405,8 @@ TYPED_TEST(Kinematics, LargeAnglesBodyAgreesWithSpace) {
     const LD bound = LD(eps<S>()) * (16 + 2 * range);
     EXPECT_LE(worst_space, bound) << "space, |theta| <= " << double(range);
     EXPECT_LE(worst_body, bound) << "body, |theta| <= " << double(range);
-    EXPECT_LE(worst_body, 3 * std::max(worst_space, LD(8 * eps<S>()))) << "body against space, |theta| <= " << double(range);
+    EXPECT_LE(worst_body, 3 * std::max(worst_space, LD(8 * eps<S>())))
+        << "body against space, |theta| <= " << double(range);
   }
 }
 
@@ -455,7 +456,8 @@ TYPED_TEST(Kinematics, ModelFoldsBaseAndTool) {
   const C model(plain.space_screws(), plain.home(), types, lo, hi, vel, eff, base, tool, gravity);
   EXPECT_TRUE(static_cast<bool>(model.validate()));
   EXPECT_EQ(model.joint_type(6), chasles::JointType::continuous);
-  EXPECT_TRUE(model.lower() == lo && model.upper() == hi && model.velocity_limits() == vel && model.effort_limits() == eff);
+  EXPECT_TRUE(model.lower() == lo && model.upper() == hi && model.velocity_limits() == vel &&
+              model.effort_limits() == eff);
   EXPECT_TRUE(model.gravity() == gravity);
   EXPECT_TRUE(model.base().is_approx(base, 4 * eps<S>()));
   EXPECT_TRUE(model.tool().is_approx(tool, 4 * eps<S>()));
@@ -496,7 +498,8 @@ TYPED_TEST(Kinematics, ValidateBothSidesOfTheTolerance) {
   EXPECT_EQ(ok.status, ChainStatus::ok);
   EXPECT_EQ(ok.joint, -1);
   // |w| = 1 +- 0.5 tol passes, 1 +- 2 tol fails
-  for (const S f : {S(0.5), S(-0.5)}) EXPECT_EQ(check(V6(0, 0, 0, 0, 0, 1 + f * tol), JointType::revolute).status, ChainStatus::ok);
+  for (const S f : {S(0.5), S(-0.5)})
+    EXPECT_EQ(check(V6(0, 0, 0, 0, 0, 1 + f * tol), JointType::revolute).status, ChainStatus::ok);
   for (const S f : {S(2), S(-2)}) {
     const ChainCheck c = check(V6(0, 0, 0, 0, 0, 1 + f * tol), JointType::continuous, -inf, inf);
     EXPECT_EQ(c.status, ChainStatus::revolute_axis_not_unit);
@@ -551,8 +554,8 @@ TYPED_TEST(Kinematics, LinkInertiasDefaultToMasslessAndMoveWithTheBase) {
   typename C::Inertias given{};
   for (std::size_t i = 0; i < 7; ++i) {
     typename C::Vector3 moments(S(0.1) + S(0.01) * S(i), S(0.2), S(0.25));
-    given[i] = I(S(1) + S(i), typename C::Vector3(S(0.1) * S(i), S(-0.2), S(0.3)),
-                 typename I::Matrix3(moments.asDiagonal()));
+    given[i] =
+        I(S(1) + S(i), typename C::Vector3(S(0.1) * S(i), S(-0.2), S(0.3)), typename I::Matrix3(moments.asDiagonal()));
   }
   const SE3<S> base = SE3<S>::exp(Eigen::Matrix<S, 6, 1>(S(0.5), S(-0.2), S(1), S(0.3), S(-0.1), S(0.7)));
   const typename C::JointVector inf = C::JointVector::Constant(7, std::numeric_limits<S>::infinity());

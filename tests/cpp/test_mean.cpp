@@ -15,9 +15,9 @@
 #include <type_traits>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
-#include <gtest/gtest.h>
 
 #include <chasles/mean.hpp>
 #include <chasles/random.hpp>
@@ -105,8 +105,7 @@ TYPED_TEST(Mean, ChordalMeanIsTheQuaternionEigenvectorMean) {
   }
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix<long double, 4, 4>> es(Q);
   const Eigen::Matrix<long double, 4, 1> top = es.eigenvectors().col(3);
-  const SO3<S> reference = SO3<S>::from_quaternion(
-      Eigen::Quaternion<S>(S(top[3]), S(top[0]), S(top[1]), S(top[2])));
+  const SO3<S> reference = SO3<S>::from_quaternion(Eigen::Quaternion<S>(S(top[3]), S(top[0]), S(top[1]), S(top[2])));
   const SO3<S> m = chasles::chordal_mean(X.begin(), X.end(), w.begin());
   EXPECT_TRUE(m.is_approx(reference, S(20) * std::numeric_limits<S>::epsilon()));
   // The geodesic mean differs from it at this spread (the two are not the same mean).
@@ -223,9 +222,9 @@ TYPED_TEST(Mean, InvalidWeightsAreReported) {
   using S = TypeParam;
   const auto X = two_rotations<S>();
   const S nan = std::numeric_limits<S>::quiet_NaN(), inf = std::numeric_limits<S>::infinity();
-  for (const std::array<S, 2>& w : {std::array<S, 2>{S(-1), S(2)}, std::array<S, 2>{nan, S(1)},
-                                    std::array<S, 2>{S(1), inf}, std::array<S, 2>{S(0), S(0)},
-                                    std::array<S, 2>{S(2), -std::numeric_limits<S>::denorm_min()}}) {
+  for (const std::array<S, 2>& w :
+       {std::array<S, 2>{S(-1), S(2)}, std::array<S, 2>{nan, S(1)}, std::array<S, 2>{S(1), inf},
+        std::array<S, 2>{S(0), S(0)}, std::array<S, 2>{S(2), -std::numeric_limits<S>::denorm_min()}}) {
     EXPECT_FALSE(chasles::mean_weights_valid(X.begin(), X.end(), w.begin())) << w[0] << " " << w[1];
     EXPECT_TRUE(chasles::chordal_mean(X.begin(), X.end(), w.begin()).is_approx(SO3<S>(), S(0)));
     const auto r = chasles::geodesic_mean(X.begin(), X.end(), w.begin());

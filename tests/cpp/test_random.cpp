@@ -10,9 +10,9 @@
 #include <type_traits>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
-#include <gtest/gtest.h>
 
 #include <chasles/random.hpp>
 #include <chasles/se3.hpp>

@@ -16,8 +16,8 @@
 #include <type_traits>
 #include <vector>
 
-#include <Eigen/LU>
 #include <gtest/gtest.h>
+#include <Eigen/LU>
 
 #include <chasles/chasles.hpp>
 
@@ -74,8 +74,8 @@ std::vector<S> lengths() {
 }
 template <typename S>
 std::vector<S> angles() {
-  return {S(1e-9), S(1e-4), S(0.003), S(0.1), S(0.5), S(1), S(kPi / 2), S(2), S(3), S(kPi), S(-0.7), S(-2.5), S(4),
-          S(2 * kPi), S(10)};
+  return {S(1e-9), S(1e-4), S(0.003), S(0.1),  S(0.5), S(1),       S(kPi / 2), S(2),
+          S(3),    S(kPi),  S(-0.7),  S(-2.5), S(4),   S(2 * kPi), S(10)};
 }
 
 // Step 2: the twist of the screw (q = (0, l1, 0), w = z, h = 0).
@@ -240,9 +240,9 @@ TYPED_TEST(SeedExample, RodriguesFormulaUnitAxis) {
       // non-unit form from wt itself (theta = |wt|), which is what wt means.
       const LD th = to_ld(wt).norm();
       const M3L unit_form = rodrigues(wl, LD(theta));
-      const M3L general = M3L::Identity() + (std::sin(th) / th) * to_ld(SO3<S>::hat(wt)) +
-                          ((2 * std::sin(th / 2) * std::sin(th / 2)) / (th * th)) * to_ld(SO3<S>::hat(wt)) *
-                              to_ld(SO3<S>::hat(wt));
+      const M3L general =
+          M3L::Identity() + (std::sin(th) / th) * to_ld(SO3<S>::hat(wt)) +
+          ((2 * std::sin(th / 2) * std::sin(th / 2)) / (th * th)) * to_ld(SO3<S>::hat(wt)) * to_ld(SO3<S>::hat(wt));
       const auto R = SO3<S>::exp(wt).matrix();
       EXPECT_TRUE(near<S>(R, general, 12)) << "w = " << w.transpose() << ", theta = " << theta;
       // w * theta is rounded once per entry: the unit form is off by that
@@ -287,8 +287,10 @@ TYPED_TEST(SeedExample, Se3ExpClosedForm) {
       const V3L p = (M3L::Identity() - E) * wl.cross(vl) + wl * wl.dot(vl) * t;
       const LD scale = 1 + max_abs(v) * (1 + std::fabs(t));
       // (w theta and v theta are rounded once per entry: eps/2 * |theta| more.)
-      EXPECT_TRUE(near<S>(g.translation(), p, 4 + std::fabs(t), scale)) << "w = " << w.transpose() << ", theta = " << theta;
-      EXPECT_TRUE(near<S>(g.rotation().matrix(), E, 4 + std::fabs(t))) << "w = " << w.transpose() << ", theta = " << theta;
+      EXPECT_TRUE(near<S>(g.translation(), p, 4 + std::fabs(t), scale))
+          << "w = " << w.transpose() << ", theta = " << theta;
+      EXPECT_TRUE(near<S>(g.rotation().matrix(), E, 4 + std::fabs(t)))
+          << "w = " << w.transpose() << ", theta = " << theta;
     }
     // Case 1: a pure translation, exactly v theta.
     for (S theta : angles<S>()) {

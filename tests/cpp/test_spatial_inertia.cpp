@@ -20,8 +20,8 @@
 #include <type_traits>
 #include <vector>
 
-#include <Eigen/LU>
 #include <gtest/gtest.h>
+#include <Eigen/LU>
 
 #include <chasles/spatial_inertia.hpp>
 
@@ -31,10 +31,10 @@
 namespace {
 
 using namespace chasles_test;
+using chasles::RealOf;
 using chasles::SE3;
 using chasles::SpatialInertia;
 using chasles::Twist;
-using chasles::RealOf;
 
 using V3L = Eigen::Matrix<LD, 3, 1>;
 using V6L = Eigen::Matrix<LD, 6, 1>;
@@ -218,8 +218,9 @@ TYPED_TEST(SpatialInertiaTest, SumIsTheSumOfMatrices) {
     ab.r.insert(ab.r.end(), b.r.begin(), b.r.end());
     const SpatialInertia<S> sum = inertia_of<S>(a) + inertia_of<S>(b);
     EXPECT_TRUE(sum.is_approx(inertia_of<S>(ab), RealOf<S>(kInertia * eps<S>() * 10)));
-    EXPECT_TRUE(near<S>(sum.matrix(), to_ld(Eigen::Matrix<S, 6, 6>(inertia_of<S>(a).matrix() + inertia_of<S>(b).matrix())),
-                        kInertia, 10));
+    EXPECT_TRUE(near<S>(sum.matrix(),
+                        to_ld(Eigen::Matrix<S, 6, 6>(inertia_of<S>(a).matrix() + inertia_of<S>(b).matrix())), kInertia,
+                        10));
   }
 }
 
@@ -249,8 +250,7 @@ TYPED_TEST(SpatialInertiaTest, IsPhysicalOnBothSidesOfEachCondition) {
   // Triangle inequality: a thin plate (I_3 = I_1 + I_2) passes; I_3 = 2 + d
   // passes for d < ~8 tol (Sigma's eigenvalue -d/2 against tol * trace).
   EXPECT_TRUE(SpatialInertia<S>(S(1), c, M3(Eigen::Vector3<S>(S(1), S(1), S(2)).asDiagonal())).is_physical());
-  EXPECT_TRUE(
-      SpatialInertia<S>(S(1), c, M3(Eigen::Vector3<S>(S(1), S(1), S(2 + 4 * tol)).asDiagonal())).is_physical());
+  EXPECT_TRUE(SpatialInertia<S>(S(1), c, M3(Eigen::Vector3<S>(S(1), S(1), S(2 + 4 * tol)).asDiagonal())).is_physical());
   EXPECT_FALSE(
       SpatialInertia<S>(S(1), c, M3(Eigen::Vector3<S>(S(1), S(1), S(2 + 16 * tol)).asDiagonal())).is_physical());
   EXPECT_FALSE(SpatialInertia<S>(S(1), c, M3(Eigen::Vector3<S>(S(1), S(1), S(3)).asDiagonal())).is_physical());
@@ -265,9 +265,9 @@ TYPED_TEST(SpatialInertiaTest, IsPhysicalOnBothSidesOfEachCondition) {
   // The same, rotated (the check is not only on diagonal matrices).
   const M3 R = chasles::SO3<S>::exp(V3(S(0.4), S(-0.3), S(1.1))).matrix();
   EXPECT_TRUE(SpatialInertia<S>(S(1), c, M3(R * box * R.transpose())).is_physical());
-  EXPECT_FALSE(SpatialInertia<S>(S(1), c, M3(R * M3(Eigen::Vector3<S>(S(1), S(1), S(2.1)).asDiagonal()) *
-                                              R.transpose()))
-                   .is_physical());
+  EXPECT_FALSE(
+      SpatialInertia<S>(S(1), c, M3(R * M3(Eigen::Vector3<S>(S(1), S(1), S(2.1)).asDiagonal()) * R.transpose()))
+          .is_physical());
 }
 
 }  // namespace

@@ -15,8 +15,8 @@
 #include <type_traits>
 #include <vector>
 
-#include <Eigen/Core>
 #include <gtest/gtest.h>
+#include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
 #include <chasles/spline.hpp>
@@ -55,7 +55,9 @@ struct Fitted {
       : times(std::move(t)), keys(std::move(k)), segments(keys.size() > 1 ? keys.size() - 1 : 1), work(keys.size()) {
     fit = fit_spline(static_cast<int>(keys.size()), times.data(), keys.data(), segments.data(), work.data(), ends);
   }
-  Spline<Group> spline() const { return Spline<Group>(static_cast<int>(keys.size()), times.data(), keys.data(), segments.data()); }
+  Spline<Group> spline() const {
+    return Spline<Group>(static_cast<int>(keys.size()), times.data(), keys.data(), segments.data());
+  }
 };
 
 template <typename S>
@@ -157,7 +159,8 @@ void check_keys_and_differences() {
     for (int k = 1; k + 1 < n; ++k) {
       const SplineSample<Group> left = sp.sample(k - 1, f.times[k] - f.times[k - 1]);
       const SplineSample<Group> right = sp.sample(k, S(0));
-      const double scale = 1 + right.velocity.template cast<double>().norm() + right.acceleration.template cast<double>().norm();
+      const double scale =
+          1 + right.velocity.template cast<double>().norm() + right.acceleration.template cast<double>().norm();
       EXPECT_LT(distance(left.element, f.keys[k]), 64 * eps) << "key " << k;
       EXPECT_LT((left.velocity - right.velocity).template cast<double>().norm(), 64 * eps * scale) << "key " << k;
       EXPECT_LT((left.acceleration - right.acceleration).template cast<double>().norm(), tol_c2 * scale) << "key " << k;
@@ -166,7 +169,8 @@ void check_keys_and_differences() {
     const Tangent a0 = sp.sample(0, S(0)).acceleration;
     const Tangent an = sp.sample(n - 2, f.times[n - 1] - f.times[n - 2]).acceleration;
     EXPECT_LT(a0.template cast<double>().norm(), 1e3 * eps);
-    EXPECT_LT(an.template cast<double>().norm(), tol_c2 * (1 + sp.sample(n - 2, S(0)).velocity.template cast<double>().norm()));
+    EXPECT_LT(an.template cast<double>().norm(),
+              tol_c2 * (1 + sp.sample(n - 2, S(0)).velocity.template cast<double>().norm()));
   }
 }
 
@@ -183,8 +187,10 @@ TYPED_TEST(SplineTest, ChordEndsHaveTheFirstAndLastSegmentsRates) {
   const Spline<SE3<S>> sp = f.spline();
   const auto w0 = ((f.keys[0].inverse() * f.keys[1]).log() / (f.times[1] - f.times[0])).eval();
   const auto wn = ((f.keys[n - 2].inverse() * f.keys[n - 1]).log() / (f.times[n - 1] - f.times[n - 2])).eval();
-  EXPECT_LT((sp(f.times[0]).velocity - w0).template cast<double>().norm(), 64 * eps * (1 + w0.template cast<double>().norm()));
-  EXPECT_LT((sp(f.times[n - 1]).velocity - wn).template cast<double>().norm(), 64 * eps * (1 + wn.template cast<double>().norm()));
+  EXPECT_LT((sp(f.times[0]).velocity - w0).template cast<double>().norm(),
+            64 * eps * (1 + w0.template cast<double>().norm()));
+  EXPECT_LT((sp(f.times[n - 1]).velocity - wn).template cast<double>().norm(),
+            64 * eps * (1 + wn.template cast<double>().norm()));
 }
 
 template <typename S, template <typename> class G>
@@ -267,11 +273,13 @@ TYPED_TEST(SplineTest, SE3OfPureRotationsIsTheSO3Spline) {
     for (double t = -0.5; t < static_cast<double>(times.back()) + 0.5; t += 0.37) {
       const SplineSample<SO3<S>> a = fr.spline()(S(t));
       const SplineSample<SE3<S>> b = fg.spline()(S(t));
-      const double scale = 1 + a.velocity.template cast<double>().norm() + a.acceleration.template cast<double>().norm();
+      const double scale =
+          1 + a.velocity.template cast<double>().norm() + a.acceleration.template cast<double>().norm();
       EXPECT_LT(distance(a.element, b.element.rotation()), 64 * eps * scale) << t;
       EXPECT_EQ(b.element.translation().template cast<double>().norm(), 0.0) << t;
       EXPECT_LT((a.velocity - b.velocity.template tail<3>()).template cast<double>().norm(), 64 * eps * scale) << t;
-      EXPECT_LT((a.acceleration - b.acceleration.template tail<3>()).template cast<double>().norm(), 256 * eps * scale) << t;
+      EXPECT_LT((a.acceleration - b.acceleration.template tail<3>()).template cast<double>().norm(), 256 * eps * scale)
+          << t;
       EXPECT_EQ(b.velocity.template head<3>().template cast<double>().norm(), 0.0) << t;
       EXPECT_EQ(b.acceleration.template head<3>().template cast<double>().norm(), 0.0) << t;
     }
@@ -284,7 +292,8 @@ TYPED_TEST(SplineTest, BadInputsAreReported) {
   std::vector<SplineSegment<SO3<S>>> seg(2);
   std::vector<SplineWork<SO3<S>>> work(3);
   const S nan = std::numeric_limits<S>::quiet_NaN(), inf = std::numeric_limits<S>::infinity();
-  EXPECT_EQ(fit_spline(1, std::vector<S>{S(0)}.data(), keys.data(), seg.data(), work.data()).status, SplineStatus::too_few_keys);
+  EXPECT_EQ(fit_spline(1, std::vector<S>{S(0)}.data(), keys.data(), seg.data(), work.data()).status,
+            SplineStatus::too_few_keys);
   for (const std::vector<S>& t : {std::vector<S>{0, 1, 1}, std::vector<S>{0, 2, 1}, std::vector<S>{0, nan, 2},
                                   std::vector<S>{0, 1, inf}, std::vector<S>{-inf, 1, 2}}) {
     EXPECT_EQ(fit_spline(3, t.data(), keys.data(), seg.data(), work.data()).status, SplineStatus::times_not_increasing);
@@ -301,7 +310,8 @@ std::array<T, 6> coeffs(T s) {
 }
 TEST(SplineCoefficients, BothSidesOfTheSeriesCutoffAgreeWithLongDouble) {
   const double cut = chasles::Thresholds<double>::spline_series_theta2;
-  for (double s : {0.0, 1e-12, 1e-4, 0.5, std::nextafter(cut, 0.0), cut, std::nextafter(cut, 10.0), 5.0, 9.0, 30.0, 100.0}) {
+  for (double s :
+       {0.0, 1e-12, 1e-4, 0.5, std::nextafter(cut, 0.0), cut, std::nextafter(cut, 10.0), 5.0, 9.0, 30.0, 100.0}) {
     const std::array<double, 6> d = coeffs<double>(s);
     const std::array<long double, 6> l = coeffs<long double>(s);
     for (int j = 0; j < 6; ++j) {
@@ -424,7 +434,8 @@ void check_step_range() {
     ASSERT_EQ(f.fit.status, SplineStatus::ok) << h;
     const Spline<Group> s = f.spline();
     const double tol = 64 * std::numeric_limits<S>::epsilon();
-    for (int i = 0; i < 4; ++i) EXPECT_LT(distance(s.element(f.times[static_cast<std::size_t>(i)]), keys[static_cast<std::size_t>(i)]), tol) << h;
+    for (int i = 0; i < 4; ++i)
+      EXPECT_LT(distance(s.element(f.times[static_cast<std::size_t>(i)]), keys[static_cast<std::size_t>(i)]), tol) << h;
     for (int i = 0; i < 3; ++i) {
       const SplineSample<Group> x = s(f.times[static_cast<std::size_t>(i)] + h / S(2));
       ASSERT_TRUE(x.element.matrix().allFinite() && x.velocity.allFinite() && x.acceleration.allFinite()) << h;
@@ -437,7 +448,8 @@ void check_step_range() {
   ASSERT_EQ(two.fit.status, SplineStatus::ok);
   const auto D = (keys[0].inverse() * keys[1]).log();
   const SplineSample<Group> mid = two.spline()(lo / S(2));
-  EXPECT_LT(static_cast<double>((mid.velocity * lo - D).norm()), 1e3 * std::numeric_limits<S>::epsilon() * (1 + static_cast<double>(D.norm())));
+  EXPECT_LT(static_cast<double>((mid.velocity * lo - D).norm()),
+            1e3 * std::numeric_limits<S>::epsilon() * (1 + static_cast<double>(D.norm())));
 }
 TYPED_TEST(SplineTest, TimeStepsOutsideTheRangeAreReported) {
   check_step_range<TypeParam, SO3>();
@@ -477,7 +489,8 @@ void check_extrapolation() {
     EXPECT_EQ(b.acceleration, first.acceleration) << x;
   }
   const Eigen::Matrix<S, 3, 3> R = last.element.matrix().template topLeftCorner<3, 3>();
-  EXPECT_LT(static_cast<double>((R.transpose() * R - Eigen::Matrix<S, 3, 3>::Identity()).norm()), 1e3 * std::numeric_limits<S>::epsilon());
+  EXPECT_LT(static_cast<double>((R.transpose() * R - Eigen::Matrix<S, 3, 3>::Identity()).norm()),
+            1e3 * std::numeric_limits<S>::epsilon());
   const SplineSample<Group> nan = s(std::numeric_limits<S>::quiet_NaN());
   EXPECT_TRUE(nan.velocity.hasNaN());
 }

@@ -20,8 +20,8 @@
 
 #include <type_traits>
 
-#include <Eigen/Core>
 #include <gtest/gtest.h>
+#include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
 #include <chasles/constants.hpp>
@@ -34,12 +34,12 @@
 
 namespace {
 
+using chasles_ref::kPi;
 using chasles_ref::ld;
 using chasles_ref::M3;
 using chasles_ref::M4;
 using chasles_ref::V3;
 using chasles_ref::V6;
-using chasles_ref::kPi;
 
 using chasles_test::eps;
 using chasles_test::Mat3;
@@ -121,10 +121,11 @@ void constants_as_documented() {
   EXPECT_LE(Th::taylor_theta2, std::nextafter(cbrt_eps, T(1)));
   EXPECT_GE(Th::rotation_tolerance, std::nextafter(sqrt_eps, T(0)));
   EXPECT_LE(Th::rotation_tolerance, std::nextafter(sqrt_eps, T(1)));
-  std::printf("[ info     ] %-11s taylor_theta2 %.10Lg (cbrt eps %.10Lg), rotation_tolerance %.10Lg (sqrt eps %.10Lg)\n",
-              sizeof(T) == sizeof(float) ? "float" : (sizeof(T) == sizeof(double) ? "double" : "long double"),
-              ld(Th::taylor_theta2), std::cbrt(ld(std::numeric_limits<T>::epsilon())), ld(Th::rotation_tolerance),
-              std::sqrt(ld(std::numeric_limits<T>::epsilon())));
+  std::printf(
+      "[ info     ] %-11s taylor_theta2 %.10Lg (cbrt eps %.10Lg), rotation_tolerance %.10Lg (sqrt eps %.10Lg)\n",
+      sizeof(T) == sizeof(float) ? "float" : (sizeof(T) == sizeof(double) ? "double" : "long double"),
+      ld(Th::taylor_theta2), std::cbrt(ld(std::numeric_limits<T>::epsilon())), ld(Th::rotation_tolerance),
+      std::sqrt(ld(std::numeric_limits<T>::epsilon())));
 }
 
 /// "3900 times a rotation's (|u|^2 <= 256) and 226 times below float's
@@ -199,7 +200,8 @@ void exp_across_taylor_cutoff() {
         xi_hi[i + 3] = w_hi[i];
       }
       const M4 g_lo = SE3::exp(xi_lo).matrix().template cast<ld>(), g_hi = SE3::exp(xi_hi).matrix().template cast<ld>();
-      const M4 rg_lo = chasles_ref::exp6(xi_lo.template cast<ld>()), rg_hi = chasles_ref::exp6(xi_hi.template cast<ld>());
+      const M4 rg_lo = chasles_ref::exp6(xi_lo.template cast<ld>()),
+               rg_hi = chasles_ref::exp6(xi_hi.template cast<ld>());
       const std::string at6 = "xi = " + str(xi_lo) + " / " + str(xi_hi);
       se3_rot_ref.update(std::max(ulps<T>(M3(g_lo.topLeftCorner<3, 3>()), M3(rg_lo.topLeftCorner<3, 3>())),
                                   ulps<T>(M3(g_hi.topLeftCorner<3, 3>()), M3(rg_hi.topLeftCorner<3, 3>()))),
@@ -208,9 +210,8 @@ void exp_across_taylor_cutoff() {
       const V3 rp_lo = rg_lo.topRightCorner<3, 1>(), rp_hi = rg_hi.topRightCorner<3, 1>();
       se3_trans_ref.update(std::max(rel_ulps<T>(p_lo, rp_lo), rel_ulps<T>(p_hi, rp_hi)), at6);
       // The jump, in ulps of |p|: (p_hi - p_lo) against (ref_hi - ref_lo).
-      se3_trans_jump.update((V3(p_hi - p_lo) - V3(rp_hi - rp_lo)).cwiseAbs().maxCoeff() /
-                                (eps<T>() * rp_lo.cwiseAbs().maxCoeff()),
-                            at6);
+      se3_trans_jump.update(
+          (V3(p_hi - p_lo) - V3(rp_hi - rp_lo)).cwiseAbs().maxCoeff() / (eps<T>() * rp_lo.cwiseAbs().maxCoeff()), at6);
     }
   }
   report<T>("SO3 exp at taylor_theta2, each side vs reference", so3_ref);
@@ -274,9 +275,8 @@ void log_across_branch(const char* name, ld (*theta0_of_axis)(const V3&), bool (
     const V3 got_b = SO3::from_matrix_unchecked(B).log().template cast<ld>();
     const V3 ref_a = chasles_ref::log3(A.template cast<ld>()), ref_b = chasles_ref::log3(B.template cast<ld>());
     so3_ref.update(std::max(rel_ulps<T>(got_a, ref_a), rel_ulps<T>(got_b, ref_b)), at);
-    so3_jump.update((V3(got_b - got_a) - V3(ref_b - ref_a)).cwiseAbs().maxCoeff() /
-                        (eps<T>() * ref_a.cwiseAbs().maxCoeff()),
-                    at);
+    so3_jump.update(
+        (V3(got_b - got_a) - V3(ref_b - ref_a)).cwiseAbs().maxCoeff() / (eps<T>() * ref_a.cwiseAbs().maxCoeff()), at);
     for (int k = 0; k < 6; ++k) {
       Vec3<T> p = chasles_test::random_unit<T>(rng);
       if (k % 3 == 0) p = u;

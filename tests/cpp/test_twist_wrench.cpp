@@ -19,8 +19,8 @@
 #include <type_traits>
 #include <vector>
 
-#include <Eigen/LU>
 #include <gtest/gtest.h>
+#include <Eigen/LU>
 
 #include <chasles/chasles.hpp>
 
@@ -96,9 +96,7 @@ class TwistWrench : public ::testing::Test {
   V3<S> gauss3(double scale = 1) { return V3<S>(S(scale * n01(rng)), S(scale * n01(rng)), S(scale * n01(rng))); }
   V3<S> unit3() { return random_unit<S>(rng); }
   /// A random motion: rotation angle uniform in [0, pi), translation of size ~scale.
-  SE3<S> motion(double scale = 2) {
-    return SE3<S>(SO3<S>::exp(V3<S>(S(3.1 * u01(rng)) * unit3())), gauss3(scale));
-  }
+  SE3<S> motion(double scale = 2) { return SE3<S>(SO3<S>::exp(V3<S>(S(3.1 * u01(rng)) * unit3())), gauss3(scale)); }
   Twist<S> twist(double v_scale = 1, double w_scale = 1) { return Twist<S>(gauss3(v_scale), gauss3(w_scale)); }
 };
 
@@ -137,8 +135,8 @@ TYPED_TEST(TwistWrench, ChaslesEveryMotionIsAScrewMotion) {
       EXPECT_TRUE(near<S>(g.act(p), to_ld(p) + slide * d, kChain, qscale + std::fabs(lambda))) << "sample " << i;
     }
     const V3<S> off(S(0.5), S(-1), S(2));
-    const V3L expected = translation ? V3L(to_ld(off) + slide * d)
-                                     : V3L(q + rodrigues(d, s.magnitude) * (to_ld(off) - q) + slide * d);
+    const V3L expected =
+        translation ? V3L(to_ld(off) + slide * d) : V3L(q + rodrigues(d, s.magnitude) * (to_ld(off) - q) + slide * d);
     EXPECT_TRUE(near<S>(g.act(off), expected, kChain, qscale + 2)) << "sample " << i;
   }
 }
@@ -239,8 +237,10 @@ TYPED_TEST(TwistWrench, ScrewToTwistToScrewRoundTrips) {
   EXPECT_TRUE(all_equal(z.point, V3<S>::Zero().eval()));
   EXPECT_TRUE(all_equal(Twist<S>::from_screw(z).vector(), V6<S>::Zero().eval()));
   // A zero magnitude or a zero direction gives the zero twist.
-  EXPECT_TRUE(all_equal(Twist<S>::from_screw(V3<S>(1, 2, 3), V3<S>(0, 0, 1), S(0.5), S(0)).vector(), V6<S>::Zero().eval()));
-  EXPECT_TRUE(all_equal(Twist<S>::from_screw(V3<S>(1, 2, 3), V3<S>(0, 0, 0), S(0.5), S(1)).vector(), V6<S>::Zero().eval()));
+  EXPECT_TRUE(
+      all_equal(Twist<S>::from_screw(V3<S>(1, 2, 3), V3<S>(0, 0, 1), S(0.5), S(0)).vector(), V6<S>::Zero().eval()));
+  EXPECT_TRUE(
+      all_equal(Twist<S>::from_screw(V3<S>(1, 2, 3), V3<S>(0, 0, 0), S(0.5), S(1)).vector(), V6<S>::Zero().eval()));
   // Twist -> screw -> twist for the shared samples (w = 0 included).
   for (const auto& x : twists<S>(16)) {
     const Twist<S> xi(x);
@@ -287,7 +287,8 @@ TYPED_TEST(TwistWrench, ScrewMotionMovesAxisPointsByPitchTimesAngle) {
 template <typename F>
 M4L derivative(const F& g, LD t) {
   const LD h = std::ldexp(LD(1), -9);
-  return (-g(t - 3 * h) + 9 * g(t - 2 * h) - 45 * g(t - h) + 45 * g(t + h) - 9 * g(t + 2 * h) + g(t + 3 * h)) / (60 * h);
+  return (-g(t - 3 * h) + 9 * g(t - 2 * h) - 45 * g(t - h) + 45 * g(t + h) - 9 * g(t + 2 * h) + g(t + 3 * h)) /
+         (60 * h);
 }
 
 TYPED_TEST(TwistWrench, SpatialAndBodyTwistsAgainstFiniteDifferences) {
@@ -470,7 +471,8 @@ TYPED_TEST(TwistWrench, ModernRoboticsOrder) {
   const Twist<S> xi(V3<S>(1, 2, 3), V3<S>(4, 5, 6));
   EXPECT_TRUE(all_equal(xi.vector(), (V6<S>() << 1, 2, 3, 4, 5, 6).finished()));
   EXPECT_TRUE(all_equal(xi.to_modern_robotics(), (V6<S>() << 4, 5, 6, 1, 2, 3).finished()));
-  EXPECT_TRUE(all_equal(Twist<S>::from_modern_robotics((V6<S>() << 4, 5, 6, 1, 2, 3).finished()).vector(), xi.vector()));
+  EXPECT_TRUE(
+      all_equal(Twist<S>::from_modern_robotics((V6<S>() << 4, 5, 6, 1, 2, 3).finished()).vector(), xi.vector()));
   for (int i = 0; i < 16; ++i) {
     const Twist<S> x = this->twist();
     EXPECT_TRUE(all_equal(Twist<S>::from_modern_robotics(x.to_modern_robotics()).vector(), x.vector()));
@@ -488,9 +490,9 @@ TYPED_TEST(TwistWrench, BracketAntisymmetryAndJacobi) {
     // (w1 x v2 + v1 x w2, w1 x w2) and the matrix commutator, in long double.
     const V6L al = to_ld(a.vector()), bl = to_ld(b.vector());
     const V6L ref = vee_ld(hat_ld(al) * hat_ld(bl) - hat_ld(bl) * hat_ld(al));
-    const V6L formula = (V6L() << al.tail<3>().cross(bl.head<3>()) + al.head<3>().cross(bl.tail<3>()),
-                         al.tail<3>().cross(bl.tail<3>()))
-                            .finished();
+    const V6L formula =
+        (V6L() << al.tail<3>().cross(bl.head<3>()) + al.head<3>().cross(bl.tail<3>()), al.tail<3>().cross(bl.tail<3>()))
+            .finished();
     EXPECT_EQ(max_abs_diff(ref, formula), LD(0));
     const LD sab = (1 + max_abs(al)) * (1 + max_abs(bl));
     EXPECT_TRUE(near<S>(a.bracket(b).vector(), ref, kOp, sab));

@@ -37,17 +37,20 @@ using Result = chasles::UrdfChain<double, 8>;
 using Arm = Result::ChainType;
 constexpr double inf = std::numeric_limits<double>::infinity();
 
-std::string urdf(const std::string& joints, const std::string& links = R"(<link name="a"/><link name="b"/><link name="c"/>)") {
+std::string urdf(const std::string& joints,
+                 const std::string& links = R"(<link name="a"/><link name="b"/><link name="c"/>)") {
   return "<robot name=\"r\">" + links + joints + "</robot>";
 }
 
-std::string joint(const std::string& name, const std::string& kind, const std::string& parent, const std::string& child,
-                  const std::string& extra = R"(<axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/>)") {
+std::string joint(
+    const std::string& name, const std::string& kind, const std::string& parent, const std::string& child,
+    const std::string& extra = R"(<axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/>)") {
   return "<joint name=\"" + name + "\" type=\"" + kind + "\"><parent link=\"" + parent + "\"/><child link=\"" + child +
          "\"/>" + extra + "</joint>";
 }
 
-const std::string kGood = joint("j1", "revolute", "a", "b") + joint("j2", "continuous", "b", "c", R"(<axis xyz="0 2 0"/>)");
+const std::string kGood =
+    joint("j1", "revolute", "a", "b") + joint("j2", "continuous", "b", "c", R"(<axis xyz="0 2 0"/>)");
 
 std::string link(const std::string& name, double mass, const std::string& origin = "") {
   char text[400];
@@ -125,7 +128,9 @@ TEST(Urdf, ForwardKinematicsIsTheCompositionOfTheUrdfTransforms) {
   ASSERT_EQ(arm.n_joints(), 3);
   EXPECT_TRUE(static_cast<bool>(arm.validate()));
   EXPECT_EQ(arm.joint_type(1), JointType::prismatic);
-  auto O = [&](int k) { return SE3d(chasles::from_rpy(o[k][3], o[k][4], o[k][5]), Vector3d(o[k][0], o[k][1], o[k][2])); };
+  auto O = [&](int k) {
+    return SE3d(chasles::from_rpy(o[k][3], o[k][4], o[k][5]), Vector3d(o[k][0], o[k][1], o[k][2]));
+  };
   std::mt19937 gen(7);
   std::uniform_real_distribution<double> u(-3.0, 3.0);
   for (int trial = 0; trial < 50; ++trial) {
@@ -143,8 +148,9 @@ TEST(Urdf, LinkInertiasInTheBaseFrameAtHome) {
       "<robot name=\"r\"><link name=\"a\"/>" +
       std::string(R"(<link name="b"><inertial><origin xyz="0.2 0 0" rpy="0.3 -0.4 0.5"/><mass value="2"/>)"
                   R"(<inertia ixx="0.1" ixy="0.01" ixz="-0.02" iyy="0.2" iyz="0.03" izz="0.3"/></inertial></link>)") +
-      joint("j", "revolute", "a", "b", R"(<origin xyz="0 0 1" rpy="0 0 1.5707963267948966"/><axis xyz="1 0 0"/>)"
-                                       R"(<limit lower="-1" upper="1" effort="1" velocity="1"/>)") +
+      joint("j", "revolute", "a", "b",
+            R"(<origin xyz="0 0 1" rpy="0 0 1.5707963267948966"/><axis xyz="1 0 0"/>)"
+            R"(<limit lower="-1" upper="1" effort="1" velocity="1"/>)") +
       "</robot>";
   const Result r = chasles::chain_from_urdf<double, 8>(text, "b");
   ASSERT_TRUE(r) << r.error;
@@ -217,7 +223,8 @@ TEST(Urdf, RefusalsNameTheElement) {
       {urdf(joint("j1", "revolute", "a", "x")), "b", "", "child link [x] of joint [j1] not found"},
       {urdf(kGood + joint("j3", "fixed", "c", "b", "")), "c", "", "link 'b' is the child of joints"},
       // the loop a -> b -> a below the root c: urdfdom accepts it
-      {urdf(joint("j1", "fixed", "a", "b", "") + joint("j2", "fixed", "b", "a", "")), "a", "", "a loop through link 'b'"},
+      {urdf(joint("j1", "fixed", "a", "b", "") + joint("j2", "fixed", "b", "a", "")), "a", "",
+       "a loop through link 'b'"},
       {urdf(kGood), "nowhere", "", "chain_from_urdf(tip_link): no link named 'nowhere'"},
       {urdf(kGood), "c", "nowhere", "chain_from_urdf(base_link): no link named 'nowhere'"},
       {urdf(kGood), "b", "c", "tip_link 'b' is not below base_link 'c'"},
@@ -231,17 +238,20 @@ TEST(Urdf, RefusalsNameTheElement) {
        "joint 'j1' <axis xyz>: expected finite numbers"},
       {urdf(joint("j1", "revolute", "a", "b", R"(<axis xyz="0 0 1"/><limit lower="0" upper="1" effort="1"/>)"), two),
        "b", "", "joint limit: no velocity"},
-      {urdf(joint("j1", "fixed", "a", "b", ""), two), "b", "", "no revolute, continuous or prismatic joint from 'a' to 'b'"},
+      {urdf(joint("j1", "fixed", "a", "b", ""), two), "b", "",
+       "no revolute, continuous or prismatic joint from 'a' to 'b'"},
       {urdf(joint("j1", "screwy", "a", "b", ""), two), "b", "", "Joint [j1] has no known type [screwy]"},
       {"<robot><link name='a'/>", "a", "", "urdfdom refused the description"},
       {"<model name='r'/>", "a", "", "Could not find the 'robot' element"},
       {urdf(kGood + joint("j3", "fixed", "a", "d", ""), four + R"(<link name="e"/>)"), "c", "", "Two root links found"},
       // urdfdom logs these, yet returns a model with zeros for what it could not read:
       // the loader reads them itself
-      {urdf(joint("j1", "continuous", "a", "b", ""), R"(<link name="a"/><link name="b"><inertial><mass value="1"/></inertial></link>)"),
-       "b", "", "link 'b' <inertia>: expected finite numbers"},
       {urdf(joint("j1", "continuous", "a", "b", ""),
-            R"(<link name="a"/><link name="b"><inertial><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link>)"),
+            R"(<link name="a"/><link name="b"><inertial><mass value="1"/></inertial></link>)"),
+       "b", "", "link 'b' <inertia>: expected finite numbers"},
+      {urdf(
+           joint("j1", "continuous", "a", "b", ""),
+           R"(<link name="a"/><link name="b"><inertial><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link>)"),
        "b", "", "link 'b' <mass>: expected finite numbers"},
       {urdf(joint("j1", "continuous", "a", "b", ""),
             R"(<link name="a"/><link name="b"><inertial><mass value="1"/><inertia ixx="1"/></inertial></link>)"),
@@ -250,7 +260,8 @@ TEST(Urdf, RefusalsNameTheElement) {
   for (const Bad& bad : cases) {
     const Result r = chasles::chain_from_urdf<double, 8>(bad.text, bad.tip, bad.base);
     EXPECT_FALSE(r) << bad.text;
-    EXPECT_NE(r.error.find(bad.error), std::string::npos) << "expected \"" << bad.error << "\" in \"" << r.error << "\"";
+    EXPECT_NE(r.error.find(bad.error), std::string::npos)
+        << "expected \"" << bad.error << "\" in \"" << r.error << "\"";
     EXPECT_EQ(r.error.rfind("chain_from_urdf", 0), 0u) << r.error;
   }
 }
@@ -371,11 +382,11 @@ TEST(UrdfHostile, CyclicDescriptionsAreRefusedWithoutLeaks) {
   };
   const Case cases[] = {
       // two links each the parent of the other, below the root d
-      {joint("j1", "fixed", "a", "b", "") + joint("j2", "fixed", "b", "a", "") + joint("j3", "fixed", "d", "c", ""), "a",
-       "a loop through link 'b'"},
+      {joint("j1", "fixed", "a", "b", "") + joint("j2", "fixed", "b", "a", "") + joint("j3", "fixed", "d", "c", ""),
+       "a", "a loop through link 'b'"},
       // a three-link cycle and no root
-      {joint("j1", "fixed", "a", "b", "") + joint("j2", "fixed", "b", "c", "") + joint("j3", "fixed", "c", "a", ""), "a",
-       "a loop through link 'b'"},
+      {joint("j1", "fixed", "a", "b", "") + joint("j2", "fixed", "b", "c", "") + joint("j3", "fixed", "c", "a", ""),
+       "a", "a loop through link 'b'"},
       // a link its own parent
       {joint("j1", "fixed", "a", "a", "") + joint("j2", "fixed", "c", "b", ""), "a", "a loop through link 'a'"},
       // a link the child of two joints (below the root, and on a cycle)
@@ -408,7 +419,9 @@ TEST(UrdfHostile, CyclicDescriptionsAreRefusedWithoutLeaks) {
                  "a", "link '&#233;': a character reference (&#...;) in a name is not supported");
   // UTF-8 text loads
   const Result utf8 = chasles::chain_from_urdf<double, 8>(
-      "<?xml version=\"1.0\" encoding=\"UTF-8\"?><!-- \xC3\xA9l\xC3\xA8ve \xE2\x86\x92 \xF0\x9F\xA4\x96 -->" + urdf(kGood), "c");
+      "<?xml version=\"1.0\" encoding=\"UTF-8\"?><!-- \xC3\xA9l\xC3\xA8ve \xE2\x86\x92 \xF0\x9F\xA4\x96 -->" +
+          urdf(kGood),
+      "c");
   EXPECT_TRUE(utf8) << utf8.error;
 }
 
@@ -424,7 +437,8 @@ TEST(UrdfHostile, NumbersThatAreNotFiniteOrOverflowAreRefused) {
   expect_refused(one(R"(<origin xyz="1)" + std::string(400, '0') + R"(e-50 0 0"/>)" + limit), "b",
                  "joint 'j1' <origin xyz>: expected finite numbers");
   {  // too small for a double: its nearest double, a zero of its sign (as Python's float reads it)
-    const auto r = chasles::chain_from_urdf<double, 8>(one(R"(<origin xyz="1e-400 -1e-400 0.001e-398"/>)" + limit), "b");
+    const auto r =
+        chasles::chain_from_urdf<double, 8>(one(R"(<origin xyz="1e-400 -1e-400 0.001e-398"/>)" + limit), "b");
     ASSERT_TRUE(r) << r.error;
     EXPECT_EQ(r.chain->home().translation(), Eigen::Vector3d::Zero());
     const auto s = chasles::chain_from_urdf<double, 8>(one(R"(<origin xyz="100e-402 4.9e-324 0"/>)" + limit), "b");
@@ -443,7 +457,9 @@ TEST(UrdfHostile, NumbersThatAreNotFiniteOrOverflowAreRefused) {
   expect_refused(urdf(joint("j1", "continuous", "a", "b", R"(<limit effort="-1" velocity="1"/>)"), two), "b",
                  "joint 'j1' <limit>: negative effort -1");
   const std::string inertia = R"(<inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/>)";
-  auto body = [&](const std::string& inertial) { return one(limit, "<link name=\"a\"/><link name=\"b\"><inertial>" + inertial + "</inertial></link>"); };
+  auto body = [&](const std::string& inertial) {
+    return one(limit, "<link name=\"a\"/><link name=\"b\"><inertial>" + inertial + "</inertial></link>");
+  };
   expect_refused(body(R"(<mass value="nan"/>)" + inertia), "b", "link 'b' <mass>: expected finite numbers");
   expect_refused(body(R"(<mass value="1e400"/>)" + inertia), "b", "link 'b' <mass>: expected finite numbers");
   expect_refused(body(R"(<mass/>)" + inertia), "b", "link 'b' <mass>: expected finite numbers");
@@ -468,12 +484,13 @@ TEST(UrdfHostile, NumbersThatAreNotFiniteOrOverflowAreRefused) {
   EXPECT_LT((axis.chain->space_screws().col(0).tail<3>() - Vector3d(1, 1, 0).normalized()).norm(), 1e-15);
   EXPECT_TRUE(sound(*axis.chain));
   // finite in double, not in float: the chain's own validation names the joint
-  const chasles::UrdfChain<float, 8> heavy =
-      chasles::chain_from_urdf<float, 8>(urdf(joint("j1", "revolute", "a", "b", limit), "<link name=\"a\"/>" + link("b", 1e300)), "b");
+  const chasles::UrdfChain<float, 8> heavy = chasles::chain_from_urdf<float, 8>(
+      urdf(joint("j1", "revolute", "a", "b", limit), "<link name=\"a\"/>" + link("b", 1e300)), "b");
   EXPECT_FALSE(heavy);
-  EXPECT_EQ(heavy.error, "chain_from_urdf: joint 'j1': the mass properties of the links it moves are not finite (overflow)");
-  const chasles::UrdfChain<float, 8> far =
-      chasles::chain_from_urdf<float, 8>(urdf(joint("j1", "revolute", "a", "b", R"(<origin xyz="0 0 1e300"/>)" + limit), two), "b");
+  EXPECT_EQ(heavy.error,
+            "chain_from_urdf: joint 'j1': the mass properties of the links it moves are not finite (overflow)");
+  const chasles::UrdfChain<float, 8> far = chasles::chain_from_urdf<float, 8>(
+      urdf(joint("j1", "revolute", "a", "b", R"(<origin xyz="0 0 1e300"/>)" + limit), two), "b");
   EXPECT_FALSE(far);
   EXPECT_EQ(far.error, "chain_from_urdf: joint 'j1': the pose of link 'b' at home is not finite (overflow)");
 }
@@ -488,7 +505,8 @@ TEST(UrdfHostile, NegativeMassesAndDuplicateNamesAreRefused) {
                  "b", "link 'c' <mass>: negative mass -1 (a mass is >= 0)");
   expect_refused(urdf(kGood, R"(<link name="a"/><link name="b"/><link name="c"/><link name="b"/>)"), "c",
                  "duplicate link name 'b'");
-  expect_refused(urdf(kGood + joint("j1", "fixed", "c", "d", ""), R"(<link name="a"/><link name="b"/><link name="c"/><link name="d"/>)"),
+  expect_refused(urdf(kGood + joint("j1", "fixed", "c", "d", ""),
+                      R"(<link name="a"/><link name="b"/><link name="c"/><link name="d"/>)"),
                  "c", "duplicate joint name 'j1'");
 }
 
@@ -499,8 +517,9 @@ TEST(UrdfHostile, TheVerdictDoesNotDependOnConsoleBridge) {
   const console_bridge::LogLevel level = console_bridge::getLogLevel();
   console_bridge::setLogLevel(console_bridge::CONSOLE_BRIDGE_LOG_NONE);  // was: loaded with mass 0
   expect_refused(nan_mass, "b", "link 'b' <mass>: expected finite numbers");
-  expect_refused(urdf(joint("j1", "revolute", "a", "b", R"(<axis xyz="0 0 1"/>)"), R"(<link name="a"/><link name="b"/>)"),
-                 "b", "urdfdom refused the description: no reason given (console_bridge's log level hides its messages)");
+  expect_refused(
+      urdf(joint("j1", "revolute", "a", "b", R"(<axis xyz="0 0 1"/>)"), R"(<link name="a"/><link name="b"/>)"), "b",
+      "urdfdom refused the description: no reason given (console_bridge's log level hides its messages)");
   console_bridge::setLogLevel(level);
   // Other threads log errors while these load valid descriptions (was: 12 of
   // 800 loads failed with the other threads' messages).

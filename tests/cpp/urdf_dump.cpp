@@ -71,7 +71,8 @@ int main(int argc, char** argv) {
     string(r.joint_names[i]);
   }
   std::printf("],\n\"joint_types\": [");
-  for (Eigen::Index i = 0; i < n; ++i) std::printf("%s\"%s\"", i ? ", " : "", kTypes[static_cast<int>(c.joint_type(i))]);
+  for (Eigen::Index i = 0; i < n; ++i)
+    std::printf("%s\"%s\"", i ? ", " : "", kTypes[static_cast<int>(c.joint_type(i))]);
   std::printf("],\n\"screws\": [");
   for (Eigen::Index i = 0; i < n; ++i) {
     std::printf("%s[", i ? ", " : "");

@@ -114,8 +114,8 @@ void fuzz_ik(Bytes& in) {
   const T a = in.scalar<T>(), b = in.scalar<T>();
   const auto input = [&] {
     return "n = " + std::to_string(n) + ", limits " + std::to_string(limits) + (projected ? ", projected" : "") +
-           (restart ? ", restart" : "") + ", G = " + str(G) + ", q0 = " + str(q_all) + ", lo, hi = " + str(a) +
-           ", " + str(b);
+           (restart ? ", restart" : "") + ", G = " + str(G) + ", q0 = " + str(q_all) + ", lo, hi = " + str(a) + ", " +
+           str(b);
   };
 
   const C chain = rail_ur5<T>(n);
@@ -148,8 +148,8 @@ void fuzz_ik(Bytes& in) {
   const bool limits_ok = limits != 2 || (a <= b && a < inf && b > -inf);
   if (finite(q0) && limits_ok) {
     check(finite(r.q), "IK: finite seed and limits in order: finite q", ty, input);
-    check((r.q.array() >= lower.array()).all() && (r.q.array() <= upper.array()).all(), "IK: q within the limits",
-          ty, input);
+    check((r.q.array() >= lower.array()).all() && (r.q.array() <= upper.array()).all(), "IK: q within the limits", ty,
+          input);
   }
   Worst::instance().update("IK: iterations (no restart)", ty, restart ? LD(0) : LD(r.iterations));
 }
@@ -214,13 +214,13 @@ void fuzz_inertia(Bytes& in) {
   const SI moved = body.transform(g), back = body.transform_inv(g);
   const SI joined = body + SI(m2, c2, I);
   const LD L = inertia_limit<T>();
-  const bool bounded = numbers_finite && finite(Vv) && std::fabs(LD(m)) <= L && max_abs(c) <= L &&
-                       max_abs(I) <= L && max_abs(Vv) <= L;
+  const bool bounded =
+      numbers_finite && finite(Vv) && std::fabs(LD(m)) <= L && max_abs(c) <= L && max_abs(I) <= L && max_abs(Vv) <= L;
   const bool g_ok = finite(g.rotation().matrix()) && finite(g.translation()) && max_abs(g.translation()) <= L;
   if (bounded) {
     check(finite(matrix), "inertia: matrix() finite (bounded inputs)", ty, input);
-    check(finite(h.vector()) && std::isfinite(ke), "inertia: momentum and kinetic energy finite (bounded inputs)",
-          ty, input);
+    check(finite(h.vector()) && std::isfinite(ke), "inertia: momentum and kinetic energy finite (bounded inputs)", ty,
+          input);
     using LD3v = Eigen::Matrix<LD, 3, 1>;
     const LD ml = m;
     const LD3v cl = c.template cast<LD>(), v = Vv.template head<3>().template cast<LD>(),
@@ -239,12 +239,12 @@ void fuzz_inertia(Bytes& in) {
     const LD tiny = subnormal_allowance<T>() * (1 + am + ac + aw + aI + am * ac + am * (av + 2 * ac * aw));
     check_le((max_abs_diff(h.vector(), h_ref) - tiny) / (eps<T>() * std::max(h_scale, LD(1e-300))), kChain,
              "inertia: momentum - long double (eps of its terms)", ty, input);
-    check_le((std::fabs(LD(ke) - ke_ref) - tiny * (1 + av + 2 * ac * aw + aw)) /
-                 (eps<T>() * std::max(ke_scale, LD(1e-300))),
-             kChain, "inertia: kinetic energy - long double (eps of its terms)", ty, input);
+    check_le(
+        (std::fabs(LD(ke) - ke_ref) - tiny * (1 + av + 2 * ac * aw + aw)) / (eps<T>() * std::max(ke_scale, LD(1e-300))),
+        kChain, "inertia: kinetic energy - long double (eps of its terms)", ty, input);
     if (g_ok) {
-      check(std::isfinite(moved.mass()) && finite(moved.com()) && finite(moved.inertia()) &&
-                finite(back.com()) && finite(back.inertia()),
+      check(std::isfinite(moved.mass()) && finite(moved.com()) && finite(moved.inertia()) && finite(back.com()) &&
+                finite(back.inertia()),
             "inertia: transform(g), transform_inv(g) finite (bounded inputs)", ty, input);
     }
     if (m > 0 && m2 > 0 && std::isfinite(m2) && LD(m2) <= L && finite(c2) && max_abs(c2) <= L)
@@ -298,8 +298,7 @@ void fuzz_dynamics(Bytes& in) {
   check(finite(Mq) && finite(grav) && finite(cor) && finite(bias),
         "dynamics: mass_matrix, gravity_torques, coriolis, bias finite (in range)", ty, input);
   check(bool(forward) && finite(fd), "dynamics: forward_dynamics ok and finite (in range)", ty, input);
-  check(std::isfinite(ke) && std::isfinite(pe), "dynamics: kinetic and potential energy finite (in range)", ty,
-        input);
+  check(std::isfinite(ke) && std::isfinite(pe), "dynamics: kinetic and potential energy finite (in range)", ty, input);
   const Eigen::Matrix<LD, Eigen::Dynamic, 1> qdl = qd.template cast<LD>();
   const LD quad = qdl.dot(Mq.template cast<LD>() * qdl) / 2;
   LD G = 0;

@@ -126,9 +126,8 @@ void check_screw_twist(const Vec3<T>& point, const Vec3<T>& direction, T pitch, 
   const LD S = std::ldexp(LD(1), std::numeric_limits<T>::max_exponent / 4);
   const LD nd = norm(direction);
   const bool infinite_pitch = pitch == std::numeric_limits<T>::infinity();
-  if (!(finite(point) && finite(direction) && (std::isfinite(pitch) || infinite_pitch) &&
-        within(magnitude, 1 / S, S) && max_abs(point) <= S && (infinite_pitch || std::fabs(LD(pitch)) <= S) &&
-        nd > 0))
+  if (!(finite(point) && finite(direction) && (std::isfinite(pitch) || infinite_pitch) && within(magnitude, 1 / S, S) &&
+        max_abs(point) <= S && (infinite_pitch || std::fabs(LD(pitch)) <= S) && nd > 0))
     return;
   const auto where = [&] { return describe() + "; twist " + str(xi.vector()); };
   check(finite(xi.vector()), "from_screw: finite twist", ty, where);
@@ -196,8 +195,8 @@ void fuzz(Bytes& in) {
   const bool xi_ok = finite(xi) && max_abs(v) <= LD(limit);
   if (xi_ok) {
     check(finite(E.matrix()), "SE3 exp of a finite twist (v within the limit) is finite", ty, input);
-    check_le(error_in_eps<T>(E.rotation().matrix(), SO3::exp(w).matrix()), kOp, "SE3 exp rotation vs SO3 exp (eps)",
-             ty, input);
+    check_le(error_in_eps<T>(E.rotation().matrix(), SO3::exp(w).matrix()), kOp, "SE3 exp rotation vs SO3 exp (eps)", ty,
+             input);
     check_le(rotation_defect(E.rotation().matrix()) / eps<T>(), defect_bound(exp_contract<T>()) / eps<T>(),
              "SE3 exp: rotation defect (eps)", ty, input);
     const LD nv = norm(v), nw = norm(w);
@@ -210,8 +209,8 @@ void fuzz(Bytes& in) {
                "SE3 exp: (|p| - |v|) (eps |v|)", ty, input);
       if (nw > 0) {
         const Vec3<LD> n = w.template cast<LD>() / nw;
-        check_le((std::fabs(n.dot(pl) - n.dot(v.template cast<LD>())) - subnormal_allowance<T>()) / (eps<T>() * nv), kExp,
-                 "SE3 exp: n.p - n.v (eps |v|)", ty, input);
+        check_le((std::fabs(n.dot(pl) - n.dot(v.template cast<LD>())) - subnormal_allowance<T>()) / (eps<T>() * nv),
+                 kExp, "SE3 exp: n.p - n.v (eps |v|)", ty, input);
       }
     }
     if (nw < kPi - kPiMargin * eps<T>()) {
@@ -246,7 +245,8 @@ void fuzz(Bytes& in) {
       max_abs(b.translation()) <= small) {
     check(finite(I.matrix()), "SE3 interpolate (t, translations within the limits) is finite", ty, input);
     // A rigid motion: checked construction accepts it.
-    Worst::instance().update("SE3 interpolate: rotation defect (eps)", ty, rotation_defect(I.rotation().matrix()) / eps<T>());
+    Worst::instance().update("SE3 interpolate: rotation defect (eps)", ty,
+                             rotation_defect(I.rotation().matrix()) / eps<T>());
     check(chasles::SE3<T>::from_matrix(I.matrix()).has_value(), "SE3 interpolate: from_matrix accepts the result", ty,
           input);
     if (t == T(0)) check(identical(I.matrix(), a.matrix()), "SE3 interpolate(a, b, 0) = a exactly", ty, input);

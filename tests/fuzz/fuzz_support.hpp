@@ -47,9 +47,9 @@ constexpr LD kPiMargin = 16;
 constexpr LD kPi = 3.141592653589793238462643383279502884L;
 
 using chasles_test::eps;  // eps, the fixed-size aliases and str: tests/cpp/support/format.hpp
-using chasles_test::str;
 using chasles_test::Mat3;
 using chasles_test::Mat4;
+using chasles_test::str;
 using chasles_test::Vec3;
 using chasles_test::Vec6;
 template <typename T>
@@ -232,7 +232,6 @@ class Bytes {
 // ---------------------------------------------------------------------------
 // Checks and the figures they report.
 
-
 /// Aborts with the property and the input when `ok` is false; `describe`
 /// (called only then) names the input.
 template <typename Describe>
@@ -282,8 +281,7 @@ void check_le(LD err, LD limit, const char* name, const char* type, const Descri
   if (err == err) Worst::instance().update(name, type, err);
   check(err <= limit, name, type, [&] {
     std::ostringstream os;
-    os << "measured " << static_cast<double>(err) << ", allowed " << static_cast<double>(limit) << "; "
-       << describe();
+    os << "measured " << static_cast<double>(err) << ", allowed " << static_cast<double>(limit) << "; " << describe();
     return os.str();
   });
 }

@@ -147,8 +147,18 @@ def matrix_seeds(ty):
             ty,
             matrix_rows(
                 [
-                    [1.6645368047779101e-318, 5.5735492686032133e-308, -5.9800821663297637e197, 1.3852388524180133e-309],
-                    [-1.4044477619381828e308, -5.4861240687937606e303, 5.3049894774131808e-313, 1.9427338064412617e-317],
+                    [
+                        1.6645368047779101e-318,
+                        5.5735492686032133e-308,
+                        -5.9800821663297637e197,
+                        1.3852388524180133e-309,
+                    ],
+                    [
+                        -1.4044477619381828e308,
+                        -5.4861240687937606e303,
+                        5.3049894774131808e-313,
+                        1.9427338064412617e-317,
+                    ],
                     [1.2598673968951787e-321, 0, 0, 0],
                     [0, 0, 0, 0],
                 ]
@@ -169,19 +179,43 @@ def se3_seeds(ty):
         "denormal": [t["denorm"]] * 22,
         "tiny": [t["tiny"]] * 6 + [1.0, 0, 0, 0] + [t["tiny"]] * 3 + generic_screw + [0.5],
         "taylor_cutoff": [1.0, 2.0, 3.0, r, 0, 0] + [1.0, r / 2, 0, 0] + [1.0, 2.0, 3.0] + generic_screw + [1.0],
-        "generic": [0.1, 0.2, 0.3, 0.0, 0.0, math.pi / 2] + [0.9, 0.1, 0.2, 0.3] + [1.0, -2.0, 3.0]
-        + generic_screw + [0.5],
+        "generic": [0.1, 0.2, 0.3, 0.0, 0.0, math.pi / 2]
+        + [0.9, 0.1, 0.2, 0.3]
+        + [1.0, -2.0, 3.0]
+        + generic_screw
+        + [0.5],
         "pi": [1.0, 2.0, 3.0, math.pi, 0, 0] + [0.0, 1.0, 0, 0] + [0, 0, 0] + generic_screw + [1.0],
-        "near_pi": [100.0, -50.0, 1.0] + rotation_vector_near_pi(1e-9) + [1e-9, 1.0, 1.0, 0.0] + [5.0, 0, 0]
-        + generic_screw + [0.0],
-        "pure_translation": [1.0, 2.0, 3.0, 0, 0, 0] + [1.0, 0, 0, 0] + [1e6, 0, 0] + [0, 0, 0, 1.0, 0, 0]
-        + [INF, 2.0] + [0.5],
-        "large_translation_small_rotation": [t["huge"], -t["huge"], 1.0, t["tiny"], 0, 0] + [1.0, 0, 0, 0]
-        + [t["huge"], 0, 0] + generic_screw + [1.0],
+        "near_pi": [100.0, -50.0, 1.0]
+        + rotation_vector_near_pi(1e-9)
+        + [1e-9, 1.0, 1.0, 0.0]
+        + [5.0, 0, 0]
+        + generic_screw
+        + [0.0],
+        "pure_translation": [1.0, 2.0, 3.0, 0, 0, 0]
+        + [1.0, 0, 0, 0]
+        + [1e6, 0, 0]
+        + [0, 0, 0, 1.0, 0, 0]
+        + [INF, 2.0]
+        + [0.5],
+        "large_translation_small_rotation": [t["huge"], -t["huge"], 1.0, t["tiny"], 0, 0]
+        + [1.0, 0, 0, 0]
+        + [t["huge"], 0, 0]
+        + generic_screw
+        + [1.0],
         # A screw axis at 0.45 of the largest finite distance, pitch 0.45 of it
         # (was taken as a pure translation: the finiteness test summed them).
-        "screw_near_max": [0.45 * t["max"] * small_w, 0.45 * t["max"] * small_w, -0.45 * t["max"] * small_w,
-                           small_w, 0, 0] + [1.0, 0, 0, 0] + [0, 0, 0] + generic_screw + [0.5],
+        "screw_near_max": [
+            0.45 * t["max"] * small_w,
+            0.45 * t["max"] * small_w,
+            -0.45 * t["max"] * small_w,
+            small_w,
+            0,
+            0,
+        ]
+        + [1.0, 0, 0, 0]
+        + [0, 0, 0]
+        + generic_screw
+        + [0.5],
         "huge": [t["huge"]] * 6 + [t["huge"], 0, 0, 0] + [t["huge"]] * 3 + [t["huge"]] * 8 + [t["huge"]],
         "max": [t["max"]] * 22,
         "inf": [INF] * 6 + [1.0, 0, 0, 0] + [0, 0, 0] + [0, 0, 0, 0, 0, 1.0, INF, 1.0] + [INF],
@@ -229,40 +263,74 @@ def robot_seeds(ty):
         "ik_at_raw_limits_7": robot_seed(ty, 0, ik_options(7, 2), turned + [0.5] * 7 + [-0.5, 0.5]),
         "ik_empty_limits": robot_seed(ty, 0, ik_options(3, 2), turned + [0.5] * 7 + [1.0, 1.0]),
         "ik_reversed_limits": robot_seed(ty, 0, ik_options(5, 2), turned + [0.5] * 7 + [1.0, -1.0]),
-        "ik_not_a_rotation": robot_seed(ty, 0, ik_options(6, 0), [2.0, 1.0, 0, 0.1, 0, 3.0, 1.0, 0, 0, 0, 0, 0, 0, 0, 0, 1]
-                                        + q_small + [0, 0]),
-        "ik_huge_target": robot_seed(ty, 0, ik_options(7, 0, projected=True), matrix_rows(
-            [[1, 0, 0, t["huge"]], [0, 1, 0, -t["huge"]], [0, 0, 1, t["max"]], [0, 0, 0, 1]]) + q_small + [0, 0]),
+        "ik_not_a_rotation": robot_seed(
+            ty, 0, ik_options(6, 0), [2.0, 1.0, 0, 0.1, 0, 3.0, 1.0, 0, 0, 0, 0, 0, 0, 0, 0, 1] + q_small + [0, 0]
+        ),
+        "ik_huge_target": robot_seed(
+            ty,
+            0,
+            ik_options(7, 0, projected=True),
+            matrix_rows([[1, 0, 0, t["huge"]], [0, 1, 0, -t["huge"]], [0, 0, 1, t["max"]], [0, 0, 0, 1]])
+            + q_small
+            + [0, 0],
+        ),
         "ik_huge_seed": robot_seed(ty, 0, ik_options(7, 0), home + [t["huge"]] * 7 + [0, 0]),
         "ik_nan_target": robot_seed(ty, 0, ik_options(6, 0), home[:5] + [NAN] + home[6:] + q_small + [0, 0]),
         "ik_inf_seed": robot_seed(ty, 0, ik_options(7, 1), home + [INF, -INF] + q_small[2:] + [0, 0]),
         "ik_infinite_limits": robot_seed(ty, 0, ik_options(4, 2), home + q_small + [INF, INF]),
         "ik_one_joint": robot_seed(ty, 0, ik_options(1, 0), turned + q_small + [0, 0]),
         # SpatialInertia: m, c, I (row by row), V, xi, m2, c2.
-        "inertia_box": robot_seed(ty, 1, 0, [2.0, 0.1, -0.2, 0.3, 0.2, 0.01, 0, 0.01, 0.3, 0.02, 0, 0.02, 0.4]
-                                  + [1.0, -2.0, 0.5, 0.3, 0.2, -0.1] + [0.1, 0.2, 0.3, 0.4, 0.5, 0.6] + [1.5, 1, 1, 1]),
-        "inertia_triangle_edge": robot_seed(ty, 1, 0, [1.0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 2]
-                                            + [1.0] * 6 + [0.0] * 6 + [1.0, 0, 0, 0]),
-        "inertia_triangle_broken": robot_seed(ty, 1, 0, [1.0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 2.5]
-                                              + [1.0] * 6 + [0.0] * 6 + [1.0, 0, 0, 0]),
-        "inertia_asymmetric": robot_seed(ty, 1, 0, [1.0, 0, 0, 0, 1, 0.1, 0, 0, 1, 0, 0, 0, 1]
-                                         + [1.0] * 6 + [0.0] * 6 + [1.0, 0, 0, 0]),
+        "inertia_box": robot_seed(
+            ty,
+            1,
+            0,
+            [2.0, 0.1, -0.2, 0.3, 0.2, 0.01, 0, 0.01, 0.3, 0.02, 0, 0.02, 0.4]
+            + [1.0, -2.0, 0.5, 0.3, 0.2, -0.1]
+            + [0.1, 0.2, 0.3, 0.4, 0.5, 0.6]
+            + [1.5, 1, 1, 1],
+        ),
+        "inertia_triangle_edge": robot_seed(
+            ty, 1, 0, [1.0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 2] + [1.0] * 6 + [0.0] * 6 + [1.0, 0, 0, 0]
+        ),
+        "inertia_triangle_broken": robot_seed(
+            ty, 1, 0, [1.0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 2.5] + [1.0] * 6 + [0.0] * 6 + [1.0, 0, 0, 0]
+        ),
+        "inertia_asymmetric": robot_seed(
+            ty, 1, 0, [1.0, 0, 0, 0, 1, 0.1, 0, 0, 1, 0, 0, 0, 1] + [1.0] * 6 + [0.0] * 6 + [1.0, 0, 0, 0]
+        ),
         "inertia_zero": robot_seed(ty, 1, 0, [0.0] * 29),
-        "inertia_negative_mass": robot_seed(ty, 1, 0, [-1.0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1]
-                                            + [1.0] * 6 + [0.0] * 6 + [-1.0, 0, 0, 0]),
+        "inertia_negative_mass": robot_seed(
+            ty, 1, 0, [-1.0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1] + [1.0] * 6 + [0.0] * 6 + [-1.0, 0, 0, 0]
+        ),
         "inertia_denormal": robot_seed(ty, 1, 0, [t["denorm"]] * 29),
-        "inertia_huge": robot_seed(ty, 1, 0, [t["huge"], t["huge"], 0, 0, t["max"], 0, 0, 0, t["max"], 0, 0, 0,
-                                              t["max"]] + [t["huge"]] * 6 + [0.0] * 6 + [t["max"], 0, 0, 0]),
+        "inertia_huge": robot_seed(
+            ty,
+            1,
+            0,
+            [t["huge"], t["huge"], 0, 0, t["max"], 0, 0, 0, t["max"], 0, 0, 0, t["max"]]
+            + [t["huge"]] * 6
+            + [0.0] * 6
+            + [t["max"], 0, 0, 0],
+        ),
         "inertia_nan": robot_seed(ty, 1, 0, [NAN] * 29),
-        "inertia_inf": robot_seed(ty, 1, 0, [1.0, 0, 0, 0, INF, 0, 0, 0, 1, 0, 0, 0, 1] + [1.0] * 6 + [0.0] * 6
-                                  + [INF, 0, 0, 0]),
+        "inertia_inf": robot_seed(
+            ty, 1, 0, [1.0, 0, 0, 0, INF, 0, 0, 0, 1, 0, 0, 0, 1] + [1.0] * 6 + [0.0] * 6 + [INF, 0, 0, 0]
+        ),
         # Dynamics: q, qd, qdd (also the tau of forward_dynamics), F_tip; generic,
         # at rest, huge velocities.
-        "dynamics_generic_7": robot_seed(ty, 2, 6, [0.1, -0.5, 0.3, -2.0, 0.2, 1.5, 0.7] + [0.5, -0.3, 0.2, 1.0, -1.0,
-                                         0.4, 2.0] + [10.0, -5.0, 3.0, 2.0, 1.0, 0.5, 0.1] + [1, 2, 3, 0.1, 0.2, 0.3]),
+        "dynamics_generic_7": robot_seed(
+            ty,
+            2,
+            6,
+            [0.1, -0.5, 0.3, -2.0, 0.2, 1.5, 0.7]
+            + [0.5, -0.3, 0.2, 1.0, -1.0, 0.4, 2.0]
+            + [10.0, -5.0, 3.0, 2.0, 1.0, 0.5, 0.1]
+            + [1, 2, 3, 0.1, 0.2, 0.3],
+        ),
         "dynamics_rest_7": robot_seed(ty, 2, 6, [0.0] * 27),
-        "dynamics_huge_velocities": robot_seed(ty, 2, 6, [0.3] * 7 + [1e11 if ty == "float" else 1e140] * 14
-                                               + [0.0] * 6),
+        "dynamics_huge_velocities": robot_seed(
+            ty, 2, 6, [0.3] * 7 + [1e11 if ty == "float" else 1e140] * 14 + [0.0] * 6
+        ),
         "dynamics_huge_angles": robot_seed(ty, 2, 6, [t["huge"]] * 7 + [1.0] * 20),
         "dynamics_one_joint": robot_seed(ty, 2, 0, [0.5] * 27),
         "dynamics_nan": robot_seed(ty, 2, 6, [NAN] * 27),
@@ -272,8 +340,14 @@ def robot_seeds(ty):
         # A velocity of subnormal size: the kinetic energy underflowed to 0 (the
         # property's bound lacked its allowance for underflow; the library was right).
         seeds["found_energy_subnormal_velocity"] = robot_seed(
-            ty, 2, 0, [-1.7014118e38, 1.1709024e-38, 0, 2.3509887e-38, -1.7014118e38, 1.1709024e-38, 0]
-            + [4.2038954e-45, 0, -1.7014118e38, -4186111.75, -3953276.5, -3953276.5, 0.23563364] + [0.5] * 7 + [0] * 6)
+            ty,
+            2,
+            0,
+            [-1.7014118e38, 1.1709024e-38, 0, 2.3509887e-38, -1.7014118e38, 1.1709024e-38, 0]
+            + [4.2038954e-45, 0, -1.7014118e38, -4186111.75, -3953276.5, -3953276.5, 0.23563364]
+            + [0.5] * 7
+            + [0] * 6,
+        )
     return seeds
 
 
@@ -350,11 +424,16 @@ def urdf_seeds():
                 + urdf_joint("j4", "fixed", "c", "d", "")
             ),
         ),
-        "huge_axis": urdf_seed("b", urdf_text(two + urdf_joint("j1", "revolute", "a", "b", '<axis xyz="1e308 1e308 0"/>' + LIMIT))),
+        "huge_axis": urdf_seed(
+            "b", urdf_text(two + urdf_joint("j1", "revolute", "a", "b", '<axis xyz="1e308 1e308 0"/>' + LIMIT))
+        ),
         "huge_origins": urdf_seed(
             "c",
             urdf_text(
-                two + urdf_link("c") + urdf_joint("j1", "revolute", "a", "b", big) + urdf_joint("j2", "revolute", "b", "c", big)
+                two
+                + urdf_link("c")
+                + urdf_joint("j1", "revolute", "a", "b", big)
+                + urdf_joint("j2", "revolute", "b", "c", big)
             ),
         ),
         "huge_masses": urdf_seed(
@@ -367,8 +446,12 @@ def urdf_seeds():
                 + urdf_joint("f", "fixed", "b", "c", "")
             ),
         ),
-        "huge_mass_float": urdf_seed("b", urdf_text(urdf_link("a") + urdf_link("b", 1e300) + urdf_joint("j1", "revolute", "a", "b"))),
-        "nan_mass": urdf_seed("b", urdf_text(urdf_link("a") + urdf_link("b", "nan") + urdf_joint("j1", "revolute", "a", "b"))),
+        "huge_mass_float": urdf_seed(
+            "b", urdf_text(urdf_link("a") + urdf_link("b", 1e300) + urdf_joint("j1", "revolute", "a", "b"))
+        ),
+        "nan_mass": urdf_seed(
+            "b", urdf_text(urdf_link("a") + urdf_link("b", "nan") + urdf_joint("j1", "revolute", "a", "b"))
+        ),
         "negative_mass": urdf_seed(
             "b",
             urdf_text(
@@ -381,11 +464,15 @@ def urdf_seeds():
         ),
         "limits_reversed": urdf_seed(
             "b",
-            urdf_text(two + urdf_joint("j1", "revolute", "a", "b", '<limit lower="1" upper="0" effort="1" velocity="1"/>')),
+            urdf_text(
+                two + urdf_joint("j1", "revolute", "a", "b", '<limit lower="1" upper="0" effort="1" velocity="1"/>')
+            ),
         ),
         "negative_velocity": urdf_seed(
             "b",
-            urdf_text(two + urdf_joint("j1", "prismatic", "a", "b", '<limit lower="0" upper="1" effort="1" velocity="-1"/>')),
+            urdf_text(
+                two + urdf_joint("j1", "prismatic", "a", "b", '<limit lower="0" upper="1" effort="1" velocity="-1"/>')
+            ),
         ),
         "duplicate_link": urdf_seed("b", urdf_text(two + urdf_link("b") + urdf_joint("j1", "revolute", "a", "b"))),
         "duplicate_joint": urdf_seed(
@@ -398,7 +485,9 @@ def urdf_seeds():
             "b",
             urdf_text(
                 urdf_link("a")
-                + '<link name="b"><inertial><mass value="&#49;.5"/>' + INERTIA + "</inertial></link>"
+                + '<link name="b"><inertial><mass value="&#49;.5"/>'
+                + INERTIA
+                + "</inertial></link>"
                 + urdf_joint("j1", "revolute", "a", "b", '<axis xyz="0&#x20;0 1"/>' + LIMIT)
             ),
         ),
@@ -409,7 +498,8 @@ def urdf_seeds():
             "a",
             b'<?xml version="1.0"?>\n<robot name="r">\n<link name="a"/>'
             + b"\xd4" * 29
-            + b'<link name=2b"/><link name="c"/><link name="d"/><joint name="j1" type="fixed"><parent link="a"/><child link="a"/></joint>\n</robot>\n',
+            + b'<link name=2b"/><link name="c"/><link name="d"/>'
+            + b'<joint name="j1" type="fixed"><parent link="a"/><child link="a"/></joint>\n</robot>\n',
         ),
         "unquoted_cycle": urdf_seed(
             "a", urdf_text(abcd + '<joint name="j1" type="fixed"><parent link=a/><child link=a/></joint>')

@@ -56,8 +56,9 @@ import operator
 from dataclasses import dataclass
 from typing import Any, Callable
 
-import chasles
 import numpy as np
+
+import chasles
 
 # ---- verdicts -------------------------------------------------------------------------
 
@@ -149,9 +150,7 @@ class Array(Arg):
     def good(self):
         if self.valid is not None:
             return self.valid()
-        return np.linspace(0.1, 0.1 * math.prod(self.shape), math.prod(self.shape)).reshape(
-            self.shape
-        )
+        return np.linspace(0.1, 0.1 * math.prod(self.shape), math.prod(self.shape)).reshape(self.shape)
 
     def judge(self, value):
         return judge_fixed_array(value, self.label, (self.shape,), self.finite)
@@ -263,9 +262,7 @@ class JointArray(Arg):
         if isinstance(a, Refused):
             return Refused(a.error, (self.label, "could not convert"))
         if a.ndim < 1 or a.shape[-1] != n:
-            return Refused(
-                ValueError, (self.label, f"({n},) or (..., {n})", f"got {shape_text(a.shape)}")
-            )
+            return Refused(ValueError, (self.label, f"({n},) or (..., {n})", f"got {shape_text(a.shape)}"))
         if not castable_to_float64(a.dtype):
             return Refused(TypeError, (self.label, "not supported for the input types"))
         return Accepted(plain(a, np.float64))
@@ -522,9 +519,7 @@ class Scalar(Arg):
     def judge(self, value):
         if isinstance(value, np.ndarray) and value.ndim != 0:
             return Refused(TypeError, ())
-        if value is None or isinstance(
-            value, (*BOUND, complex, str, bytes, collections.abc.Sequence)
-        ):
+        if value is None or isinstance(value, (*BOUND, complex, str, bytes, collections.abc.Sequence)):
             return Refused(TypeError, ())
         x = _real(value, self.label)
         if isinstance(x, Refused):
@@ -759,6 +754,8 @@ class ScipyElement(Arg):
                 return Accepted(value)
             return Refused(ValueError, (self.label, f"single {self.kind}", "stack", "as_matrix()"))
         return Refused(TypeError, (self.label, f"scipy.spatial.transform.{self.kind}"))
+
+
 class Size(Arg):
     """The number of samples of the samplers (so3_random, ...): None, an int
     >= 0 or a tuple of them (a batch shape)."""
@@ -909,8 +906,9 @@ XI0 = chasles.Twist(v=[1.0, 0.0, 0.5], w=[0.0, 0.2, 1.0])
 CHAIN_SCREWS = np.array([[0.0, 0.0, 0.0, 0.0, 0.0, 1.0], [0.0, -1.0, 0.0, 0.0, 0.0, 1.0]])
 CHAIN_HOME = chasles.SE3(translation=[2.0, 0.0, 0.0])
 # Per joint: mass, center of mass (3), ixx, ixy, ixz, iyy, iyz, izz.
-CHAIN_INERTIAS = np.array([[1.0, 0.5, 0.0, 0.0, 0.01, 0.0, 0.0, 0.02, 0.0, 0.02],
-                           [0.5, 1.5, 0.0, 0.0, 0.01, 0.0, 0.0, 0.01, 0.0, 0.01]])
+CHAIN_INERTIAS = np.array(
+    [[1.0, 0.5, 0.0, 0.0, 0.01, 0.0, 0.0, 0.02, 0.0, 0.02], [0.5, 1.5, 0.0, 0.0, 0.01, 0.0, 0.0, 0.01, 0.0, 0.01]]
+)
 URDF_TEXT = (
     '<robot name="r"><link name="a"/><link name="b"/><joint name="j" type="revolute">'
     '<parent link="a"/><child link="b"/><axis xyz="0 0 1"/>'
@@ -989,9 +987,7 @@ def _self(cls):
 
 
 def _method(cls, name, *args, **kw):
-    return Entry(
-        [[_self(cls), *args]], call=lambda *a: getattr(cls, name)(*a), self_first=True, **kw
-    )
+    return Entry([[_self(cls), *args]], call=lambda *a: getattr(cls, name)(*a), self_first=True, **kw)
 
 
 def _direct(cls, name):
@@ -1043,15 +1039,11 @@ def _protocols(cls, n_state):
         ),
         f"{name}.__reduce__": _method(cls, "__reduce__"),
         f"{name}.__eq__": _binop(cls, operator.eq, Comparand("other", (cls,)), "__eq__"),
-        f"{name}.__ne__": _binop(
-            cls, operator.ne, Comparand("other", (cls,), other_gives=True), "__ne__"
-        ),
+        f"{name}.__ne__": _binop(cls, operator.ne, Comparand("other", (cls,), other_gives=True), "__ne__"),
         f"{name}.__reduce_ex__": _method(cls, "__reduce_ex__", Anything("protocol", 2)),
     }
     if hasattr(cls, "__array__"):
-        out[f"{name}.__array__"] = _method(
-            cls, "__array__", Anything("dtype", None), Anything("copy", None)
-        )
+        out[f"{name}.__array__"] = _method(cls, "__array__", Anything("dtype", None), Anything("copy", None))
     return out
 
 
@@ -1117,9 +1109,7 @@ def _build_spec():
     )
     for form in ("projected", "unchecked"):
         label = f"SO3.from_matrix_{form}(matrix)"
-        spec[f"SO3.from_matrix_{form}"] = _static(
-            SO3, f"from_matrix_{form}", Array(label, (3, 3), valid=rotation)
-        )
+        spec[f"SO3.from_matrix_{form}"] = _static(SO3, f"from_matrix_{form}", Array(label, (3, 3), valid=rotation))
     spec["SO3.rotation_defect"] = _static(
         SO3,
         "rotation_defect",
@@ -1193,9 +1183,7 @@ def _build_spec():
     spec["SE3.hat"] = _static(SE3, "hat", Array("SE3.hat(xi)", (6,), finite=False))
     spec["SE3.vee"] = _static(SE3, "vee", Array("SE3.vee(matrix)", (4, 4), finite=False))
     spec["SE3.inverse"] = _method(SE3, "inverse")
-    spec["SE3.__matmul__"] = _binop(
-        SE3, operator.matmul, SE3Or("SE3 @ points", (SE3,)), "__matmul__"
-    )
+    spec["SE3.__matmul__"] = _binop(SE3, operator.matmul, SE3Or("SE3 @ points", (SE3,)), "__matmul__")
     spec["SE3.act"] = _method(SE3, "act", SE3Or("SE3.act(points)", (Twist, Wrench)))
     spec["SE3.act_inv"] = _method(SE3, "act_inv", SE3Or("SE3.act_inv(points)", (Twist, Wrench)))
     for m in ("adjoint", "as_matrix", "normalized"):
@@ -1210,9 +1198,7 @@ def _build_spec():
     )
     for form in ("projected", "unchecked"):
         label = f"SE3.from_matrix_{form}(matrix)"
-        spec[f"SE3.from_matrix_{form}"] = _static(
-            SE3, f"from_matrix_{form}", Array(label, (4, 4), valid=pose)
-        )
+        spec[f"SE3.from_matrix_{form}"] = _static(SE3, f"from_matrix_{form}", Array(label, (4, 4), valid=pose))
     spec["SE3.transform_defect"] = _static(
         SE3,
         "transform_defect",
@@ -1281,12 +1267,8 @@ def _build_spec():
         (Wrench, ("f", "tau"), "F", Twist),
     ):
         n = cls.__name__
-        spec[f"{n}.__init__"] = Entry(
-            [[Array(f"{n}({a})", (3,)), Array(f"{n}({b})", (3,))]], call=cls
-        )
-        spec[f"{n}.from_vector"] = _static(
-            cls, "from_vector", Array(f"{n}.from_vector({vec})", (6,))
-        )
+        spec[f"{n}.__init__"] = Entry([[Array(f"{n}({a})", (3,)), Array(f"{n}({b})", (3,))]], call=cls)
+        spec[f"{n}.from_vector"] = _static(cls, "from_vector", Array(f"{n}.from_vector({vec})", (6,)))
         spec[f"{n}.__add__"] = _binop(cls, operator.add, Instance("other", (cls,)), "__add__")
         spec[f"{n}.__sub__"] = _binop(cls, operator.sub, Instance("other", (cls,)), "__sub__")
         for dunder, op in (("__neg__", operator.neg), ("__pos__", operator.pos)):
@@ -1326,9 +1308,7 @@ def _build_spec():
         Twist, "from_modern_robotics", Array("Twist.from_modern_robotics(wv)", (6,))
     )
     spec["Twist.hat"] = _method(Twist, "hat")
-    spec["Twist.vee"] = _static(
-        Twist, "vee", Array("Twist.vee(matrix)", (4, 4), valid=lambda: XI0.hat())
-    )
+    spec["Twist.vee"] = _static(Twist, "vee", Array("Twist.vee(matrix)", (4, 4), valid=lambda: XI0.hat()))
     spec["Twist.ad"] = _method(Twist, "ad")
     spec["Twist.bracket"] = _method(Twist, "bracket", Instance("other", (Twist,)))
     for frame in ("spatial", "body"):
@@ -1344,27 +1324,46 @@ def _build_spec():
         Array("Chain.revolute_screw(point)", (3,)),
         Array("Chain.revolute_screw(direction)", (3,)),
     )
-    spec["Chain.prismatic_screw"] = _static(
-        Chain, "prismatic_screw", Array("Chain.prismatic_screw(direction)", (3,))
-    )
+    spec["Chain.prismatic_screw"] = _static(Chain, "prismatic_screw", Array("Chain.prismatic_screw(direction)", (3,)))
     for m in ("forward", "forward_body", "jacobian_space", "jacobian_body"):
         spec[f"Chain.{m}"] = _method(Chain, m, JointArray(f"Chain.{m}(theta)", 2))
     spec["Chain.inverse_kinematics"] = _method(
-        Chain, "inverse_kinematics", IKTarget("Chain.inverse_kinematics(target)"),
+        Chain,
+        "inverse_kinematics",
+        IKTarget("Chain.inverse_kinematics(target)"),
         IKSeed("Chain.inverse_kinematics(q0)", 2),
     )
     # The dynamics: a chain with link inertias (GOOD's has none: refused, tested in test_robot.py).
     inertial = Instance("self", (Chain,), valid=lambda: Chain(CHAIN_SCREWS, CHAIN_HOME, link_inertias=CHAIN_INERTIAS))
-    for m, names in (("inverse_dynamics", ("q", "qd", "qdd")), ("forward_dynamics", ("q", "qd", "tau")),
-                     ("mass_matrix", ("q",)), ("gravity_torques", ("q",)), ("coriolis", ("q", "qd"))):
+    for m, names in (
+        ("inverse_dynamics", ("q", "qd", "qdd")),
+        ("forward_dynamics", ("q", "qd", "tau")),
+        ("mass_matrix", ("q",)),
+        ("gravity_torques", ("q",)),
+        ("coriolis", ("q", "qd")),
+    ):
         spec[f"Chain.{m}"] = Entry(
             # (a shape error names the argument, numpy's dtype error only the call)
             [[inertial, *(JointArray(f"Chain.{m}", 2) for a in names)]],
             call=lambda *a, m=m: getattr(Chain, m)(*a),
             self_first=True,
         )
-    for p in ("space_screws", "body_screws", "home", "n_joints", "joint_types", "joint_names", "lower", "upper",
-              "velocity_limits", "effort_limits", "base", "tool", "gravity", "link_inertias"):
+    for p in (
+        "space_screws",
+        "body_screws",
+        "home",
+        "n_joints",
+        "joint_types",
+        "joint_names",
+        "lower",
+        "upper",
+        "velocity_limits",
+        "effort_limits",
+        "base",
+        "tool",
+        "gravity",
+        "link_inertias",
+    ):
         spec[f"Chain.{p}"] = _prop(Chain, p)
     spec["Chain.from_urdf"] = Entry(
         [[Anything("source", URDF_TEXT), Anything("tip_link", "b"), Anything("base_link", None)]],
@@ -1435,9 +1434,7 @@ def _build_spec():
         spec[f] = _group_function(f, lambda G, n: [E("g", G), E("h", G)])
     for f in ("log_jacobian", "inverse_jacobian"):
         spec[f] = _group_function(f, lambda G, n: [E("g", G)])
-    spec["compose_jacobians"] = _group_function(
-        "compose_jacobians", lambda G, n: [E("a", G), E("b", G)]
-    )
+    spec["compose_jacobians"] = _group_function("compose_jacobians", lambda G, n: [E("a", G), E("b", G)])
     spec["act_jacobians"] = _group_function(
         "act_jacobians", lambda G, n: [E("g", G), Array("act_jacobians(g, p)", (3,))]
     )
@@ -1452,14 +1449,10 @@ def _build_spec():
     for f in ("between", "between_jacobians"):
         spec[f] = _group_function(f, lambda G, n: [E("a", G), E("b", G)])
     spec["SO3.from_scipy"] = _static(SO3, "from_scipy", ScipyElement("SO3.from_scipy(r)", "Rotation"))
-    spec["SE3.from_scipy"] = _static(
-        SE3, "from_scipy", ScipyElement("SE3.from_scipy(tf)", "RigidTransform")
-    )
+    spec["SE3.from_scipy"] = _static(SE3, "from_scipy", ScipyElement("SE3.from_scipy(tf)", "RigidTransform"))
     spec["SO3.to_scipy"] = _method(SO3, "to_scipy")
     spec["SE3.to_scipy"] = _method(SE3, "to_scipy")
-    spec["interpolate"] = _group_function(
-        "interpolate", lambda G, n: [E("a", G), E("b", G), Real("interpolate(t)")]
-    )
+    spec["interpolate"] = _group_function("interpolate", lambda G, n: [E("a", G), E("b", G), Real("interpolate(t)")])
     spec["interpolate_jacobian_t"] = _group_function(
         "interpolate_jacobian_t",
         lambda G, n: [E("a", G), E("b", G), Real("interpolate_jacobian_t(t)")],
@@ -1497,25 +1490,17 @@ def _build_spec():
     }
     for name, ops in arrays.items():
         spec[name] = _array_function(name, ops)
-    spec["so3_from_quat"] = _array_function(
-        "so3_from_quat", [("quat", (4,), quat)], kw=("scalar_first",)
-    )
+    spec["so3_from_quat"] = _array_function("so3_from_quat", [("quat", (4,), quat)], kw=("scalar_first",))
     spec["so3_as_quat"] = _array_function("so3_as_quat", [("R",) + R3], kw=("scalar_first",))
 
     # the threads of the array functions' loops
-    spec["set_num_threads"] = Entry(
-        [[ThreadCount("set_num_threads(n)")]], call=chasles.set_num_threads
-    )
+    spec["set_num_threads"] = Entry([[ThreadCount("set_num_threads(n)")]], call=chasles.set_num_threads)
     spec["get_num_threads"] = Entry([[]], call=chasles.get_num_threads)
 
     # samplers (numpy's Generator draws, C++ kernels map)
     spec["so3_from_uniforms"] = _array_function("so3_from_uniforms", [("u", (3,), None)])
-    spec["so3_random"] = Entry(
-        [[Size("so3_random(n)"), Rng("so3_random(rng)")]], call=chasles.so3_random
-    )
-    spec["se3_random"] = Entry(
-        [[Size("se3_random(n)"), Rng("se3_random(rng)")]], call=chasles.se3_random
-    )
+    spec["so3_random"] = Entry([[Size("so3_random(n)"), Rng("so3_random(rng)")]], call=chasles.so3_random)
+    spec["se3_random"] = Entry([[Size("se3_random(n)"), Rng("se3_random(rng)")]], call=chasles.se3_random)
     for name, n, group in (("so3_gaussian", 3, SO3), ("se3_gaussian", 6, SE3)):
         k = 3 if n == 3 else 4
         spec[name] = Entry(
@@ -1703,9 +1688,7 @@ def is_array_function(entry) -> bool:
     """An array function (so3_*, se3_*): its arguments are operands, flags and
     an Euler sequence."""
     args = [a for s in entry.signatures for a in s]
-    return any(isinstance(a, Operand) for a in args) and all(
-        isinstance(a, (Operand, Flag, Sequence)) for a in args
-    )
+    return any(isinstance(a, Operand) for a in args) and all(isinstance(a, (Operand, Flag, Sequence)) for a in args)
 
 
 ARRAY_FUNCTIONS = sorted(name for name, entry in SPEC.items() if is_array_function(entry))

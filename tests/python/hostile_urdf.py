@@ -169,8 +169,12 @@ def cases():
 
     # negative masses: on the chain and in a link fixed to it
     out += [
-        Case("negative mass on the chain", arm(b=link("b", -1.5)), "c",
-             "link 'b' <mass>: negative mass -1.5 (a mass is >= 0)"),
+        Case(
+            "negative mass on the chain",
+            arm(b=link("b", -1.5)),
+            "c",
+            "link 'b' <mass>: negative mass -1.5 (a mass is >= 0)",
+        ),
         Case(
             "negative mass in a fixed child",
             arm(extra=link("sensor", -1.5) + joint("s", "fixed", "b", "sensor", xyz="1 0 0")),
@@ -200,12 +204,22 @@ def cases():
     finite = "expected finite numbers"
     # too small for a double: the nearest double, zero; too large: refused
     out += [
-        Case("1e-400 in an origin and a mass (zero)", arm(b=link("b", "1e-400"), j2=joint(
-            "j2", "revolute", "b", "c", xyz="0.3 -1e-400 0", axis="0 1 0")), "c"),
-        Case("100e-402 and 0.001e-398 (zero)", arm(j2=joint("j2", "revolute", "b", "c", xyz="0.3 100e-402 0.001e-398",
-                                                           axis="0 1 0")), "c"),
-        Case("1000...0e-50 (400 digits) overflows", on_j2(xyz="0 1" + "0" * 400 + "e-50 0"), "c",
-             f"joint 'j2' <origin xyz>: {finite}"),
+        Case(
+            "1e-400 in an origin and a mass (zero)",
+            arm(b=link("b", "1e-400"), j2=joint("j2", "revolute", "b", "c", xyz="0.3 -1e-400 0", axis="0 1 0")),
+            "c",
+        ),
+        Case(
+            "100e-402 and 0.001e-398 (zero)",
+            arm(j2=joint("j2", "revolute", "b", "c", xyz="0.3 100e-402 0.001e-398", axis="0 1 0")),
+            "c",
+        ),
+        Case(
+            "1000...0e-50 (400 digits) overflows",
+            on_j2(xyz="0 1" + "0" * 400 + "e-50 0"),
+            "c",
+            f"joint 'j2' <origin xyz>: {finite}",
+        ),
     ]
     for bad in ("nan", "inf", "-inf", "1e400"):
         side = link("d", 1.0) + joint("jd", "fixed", "b", "d", xyz=f"{bad} 0 0")
@@ -222,21 +236,37 @@ def cases():
                 "c",
                 f"link 'b' <inertia>: {finite}",
             ),
-            Case(f"{bad} inertial origin", arm(c=link("c", 1.0, xyz=f"{bad} 0 0")), "c",
-                 f"link 'c' <inertial> <origin xyz>: {finite}"),
-            Case(f"{bad} inertial rpy", arm(c=link("c", 1.0, rpy=f"0 0 {bad}")), "c",
-                 f"link 'c' <inertial> <origin rpy>: {finite}"),
+            Case(
+                f"{bad} inertial origin",
+                arm(c=link("c", 1.0, xyz=f"{bad} 0 0")),
+                "c",
+                f"link 'c' <inertial> <origin xyz>: {finite}",
+            ),
+            Case(
+                f"{bad} inertial rpy",
+                arm(c=link("c", 1.0, rpy=f"0 0 {bad}")),
+                "c",
+                f"link 'c' <inertial> <origin rpy>: {finite}",
+            ),
             Case(f"{bad} origin in a side branch", arm(extra=side), "c", f"joint 'jd' <origin xyz>: {finite}"),
         ]
 
     # limits
     out += [
         Case("lower > upper", on_j1(limit=limit("1", "0")), "c", "joint 'j1' <limit>: lower 1 > upper 0"),
-        Case("lower > upper, fractions", on_j1(kind="prismatic", limit=limit("0.5", "0.25")), "c",
-             "joint 'j1' <limit>: lower 0.5 > upper 0.25"),
+        Case(
+            "lower > upper, fractions",
+            on_j1(kind="prismatic", limit=limit("0.5", "0.25")),
+            "c",
+            "joint 'j1' <limit>: lower 0.5 > upper 0.25",
+        ),
         Case("negative velocity", on_j1(limit=limit(velocity="-1")), "c", "joint 'j1' <limit>: negative velocity -1"),
-        Case("negative effort", on_j2(kind="continuous", limit='<limit effort="-1" velocity="1"/>'), "c",
-             "joint 'j2' <limit>: negative effort -1"),
+        Case(
+            "negative effort",
+            on_j2(kind="continuous", limit='<limit effort="-1" velocity="1"/>'),
+            "c",
+            "joint 'j2' <limit>: negative effort -1",
+        ),
         Case("zero axis", on_j1(axis="0 0 0"), "c", "joint 'j1': <axis xyz> is zero"),
     ]
 
@@ -262,15 +292,23 @@ def cases():
         # off the chain, a pose that overflows matters only through a mass there
         Case(
             "origin of 1e308 composed in a side branch",
-            arm(extra=link("d") + link("e", 1.0) + joint("jd", "fixed", "b", "d", xyz=f"0 {huge} 0")
-                + joint("je", "fixed", "d", "e", xyz=f"0 {huge} 0")),
+            arm(
+                extra=link("d")
+                + link("e", 1.0)
+                + joint("jd", "fixed", "b", "d", xyz=f"0 {huge} 0")
+                + joint("je", "fixed", "d", "e", xyz=f"0 {huge} 0")
+            ),
             "c",
             "joint 'je': the pose of link 'e' at home is not finite (overflow)",
         ),
         Case(
             "origin of 1e308 composed in a massless side branch",
-            arm(extra=link("d") + link("e") + joint("jd", "fixed", "b", "d", xyz=f"0 {huge} 0")
-                + joint("je", "fixed", "d", "e", xyz=f"0 {huge} 0")),
+            arm(
+                extra=link("d")
+                + link("e")
+                + joint("jd", "fixed", "b", "d", xyz=f"0 {huge} 0")
+                + joint("je", "fixed", "d", "e", xyz=f"0 {huge} 0")
+            ),
             "c",
             "joint 'je': the pose of link 'e' at home is not finite (overflow)",
         ),
@@ -286,17 +324,33 @@ def cases():
     # hostile numbers off the chain: refused wherever they are
     off = joint("jz", "fixed", "a", "z")
     out += [
-        Case("negative mass on the base link", arm(a=link("a", -1.0)), "c",
-             "link 'a' <mass>: negative mass -1 (a mass is >= 0)"),
-        Case("NaN mass on a link off the chain", arm(extra=link("z", "nan") + off), "c",
-             "link 'z' <mass>: expected finite numbers"),
-        Case("infinite origin on a joint off the chain",
-             arm(extra=link("z") + joint("jz", "fixed", "a", "z", xyz="0 inf 0")), "c",
-             "joint 'jz' <origin xyz>: expected finite numbers"),
-        Case("NaN limit on a joint below the tip",
-             arm(extra=link("z") + joint("jz", "revolute", "c", "z", limit='<limit lower="nan" upper="1" '
-                                          'effort="1" velocity="1"/>')), "c",
-             "joint 'jz' <limit>: expected finite numbers"),
+        Case(
+            "negative mass on the base link",
+            arm(a=link("a", -1.0)),
+            "c",
+            "link 'a' <mass>: negative mass -1 (a mass is >= 0)",
+        ),
+        Case(
+            "NaN mass on a link off the chain",
+            arm(extra=link("z", "nan") + off),
+            "c",
+            "link 'z' <mass>: expected finite numbers",
+        ),
+        Case(
+            "infinite origin on a joint off the chain",
+            arm(extra=link("z") + joint("jz", "fixed", "a", "z", xyz="0 inf 0")),
+            "c",
+            "joint 'jz' <origin xyz>: expected finite numbers",
+        ),
+        Case(
+            "NaN limit on a joint below the tip",
+            arm(
+                extra=link("z")
+                + joint("jz", "revolute", "c", "z", limit='<limit lower="nan" upper="1" effort="1" velocity="1"/>')
+            ),
+            "c",
+            "joint 'jz' <limit>: expected finite numbers",
+        ),
     ]
 
     # for each parser to refuse in its own words
@@ -304,9 +358,13 @@ def cases():
         Case("not well-formed", "<robot name='r'><link name='a'/>", "a", None, "refuse"),
         Case("a number with an underscore", on_j2(xyz="0 1_0 0"), "c", None, "refuse"),
         Case("two numbers for three", on_j2(xyz="0 1"), "c", None, "refuse"),
-        Case("an entity expanding to deep nesting",
-             '<!DOCTYPE robot [<!ENTITY e "' + "<x>" * 70 + "</x>" * 70 + '">]>' + arm(c='<link name="c">&e;</link>'),
-             "c", deep, "either"),  # urdfdom does not expand entities
+        Case(
+            "an entity expanding to deep nesting",
+            '<!DOCTYPE robot [<!ENTITY e "' + "<x>" * 70 + "</x>" * 70 + '">]>' + arm(c='<link name="c">&e;</link>'),
+            "c",
+            deep,
+            "either",
+        ),  # urdfdom does not expand entities
     ]
     return out
 

@@ -16,9 +16,10 @@ from __future__ import annotations
 
 import math
 
-import chasles
 import numpy as np
 from hypothesis import strategies as st
+
+import chasles
 
 PI = math.pi
 TAYLOR_THETA = math.sqrt(6.0554544523933395e-06)  # the double cutoff, on theta
@@ -46,9 +47,7 @@ SPECIAL_ANGLES = (
     PI,
 )
 
-COORDINATE_AXES = tuple(
-    tuple(float(s * (i == j)) for j in range(3)) for i in range(3) for s in (1.0, -1.0)
-)
+COORDINATE_AXES = tuple(tuple(float(s * (i == j)) for j in range(3)) for i in range(3) for s in (1.0, -1.0))
 
 
 def angles() -> st.SearchStrategy[float]:
@@ -107,9 +106,7 @@ def so3s() -> st.SearchStrategy[chasles.SO3]:
 
 
 def se3s(scale: float = 10.0) -> st.SearchStrategy[chasles.SE3]:
-    return st.builds(
-        lambda w, p: chasles.SE3(chasles.SO3.exp(w), p), rotation_vectors(), vectors3(scale)
-    )
+    return st.builds(lambda w, p: chasles.SE3(chasles.SO3.exp(w), p), rotation_vectors(), vectors3(scale))
 
 
 def twists(scale: float = 10.0) -> st.SearchStrategy[chasles.Twist]:

@@ -36,18 +36,17 @@ import re
 import warnings
 
 import api_spec as A
-import chasles
 import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+import chasles
+
 NAMES = sorted(A.SPEC)
 ALLOWED = (TypeError, ValueError)
 # Text that only an implementation leak would put in a message.
-LEAK = re.compile(
-    r"std::|chasles::|Eigen|pybind11::|C\+\+ exception|Unable to cast|instance allocation"
-)
+LEAK = re.compile(r"std::|chasles::|Eigen|pybind11::|C\+\+ exception|Unable to cast|instance allocation")
 # pybind11's refusal of an argument of the wrong Python type lists the
 # accepted signatures (naming the expected types) and what came.
 PYBIND_REFUSAL = "incompatible function arguments"
@@ -185,11 +184,7 @@ def check(name, signature_index, args, i):
     entry = A.SPEC[name]
     signature = entry.signatures[signature_index]
     arg = signature[i]
-    if (
-        isinstance(args[i], np.ma.MaskedArray)
-        and not entry.passes_arguments
-        and not (entry.self_first and i == 0)
-    ):
+    if isinstance(args[i], np.ma.MaskedArray) and not entry.passes_arguments and not (entry.self_first and i == 0):
         # numpy.ma's operators do not defer to __array_ufunc__ = None: x + m
         # is m.__radd__(x), numpy's answer (a masked array), not the library's.
         return
@@ -210,15 +205,11 @@ def check(name, signature_index, args, i):
     if got[0] == "raise":
         kind, message = got[1], got[2]
         allowed = ALLOWED + entry.extra_errors
-        assert issubclass(kind, allowed), (
-            f"{name}: {arg.label} = {show(args[i])}: {kind.__name__}: {message}"
-        )
+        assert issubclass(kind, allowed), f"{name}: {arg.label} = {show(args[i])}: {kind.__name__}: {message}"
         check_message(message, (), arg)
 
     if isinstance(verdict, A.Refused):
-        assert got[0] == "raise", (
-            f"{name}: accepted {show(args[i])} for {arg.label}; expected {verdict}"
-        )
+        assert got[0] == "raise", f"{name}: accepted {show(args[i])} for {arg.label}; expected {verdict}"
         assert issubclass(got[1], verdict.error), (
             f"{name}: {arg.label} = {show(args[i])}: {got[1].__name__}: {got[2]}; expected {verdict}"
         )
@@ -251,9 +242,7 @@ def check(name, signature_index, args, i):
                 # a fresh, writeable array, laid out as numpy's order="K"
                 # does: C-contiguous for C-contiguous operands
                 assert result.flags.writeable
-                assert not any(
-                    isinstance(a, np.ndarray) and np.shares_memory(result, a) for a in args
-                )
+                assert not any(isinstance(a, np.ndarray) and np.shares_memory(result, a) for a in args)
                 if all(a.flags.c_contiguous for a in args if isinstance(a, np.ndarray)):
                     assert result.flags.c_contiguous
 
@@ -270,9 +259,7 @@ def test_every_public_callable_has_a_specification():
     assert len(found) > 150
     missing = sorted(set(found) - set(A.SPEC))
     stale = sorted(set(A.SPEC) - set(found))
-    assert not missing, (
-        f"public callables without an argument specification in api_spec.py: {missing}"
-    )
+    assert not missing, f"public callables without an argument specification in api_spec.py: {missing}"
     assert not stale, f"api_spec.py specifies callables that do not exist: {stale}"
 
 
@@ -564,7 +551,7 @@ def arrays_near(draw, base):
         warnings.simplefilter("ignore")
         if dtype.kind in "Mm":
             a = np.zeros(shape, dtype)
-        elif dtype == object and draw(st.booleans()):
+        elif dtype == object and draw(st.booleans()):  # noqa: E721 (a numpy dtype, compared by value)
             a = np.array([float(x) for x in values] + [None], dtype=object)[:-1].reshape(shape)
         else:
             a = a.astype(dtype)
@@ -667,12 +654,7 @@ def values_for(arg):
                 max_size=len(good),
             ).map(tuple),
             st.lists(st.floats(), max_size=len(good) + 2).map(tuple),
-            st.tuples(
-                *[
-                    st.one_of(st.just(x), st.sampled_from([1, "a", None, np.float64(1.0)]))
-                    for x in good
-                ]
-            ),
+            st.tuples(*[st.one_of(st.just(x), st.sampled_from([1, "a", None, np.float64(1.0)])) for x in good]),
             others,
         )
     if isinstance(arg, A.ScipyElement):
@@ -721,9 +703,7 @@ def test_integers_and_float16_are_converted_by_numpys_casting_rules():
     loop, int64 in the float64 one, long double (which neither loop takes
     safely) is refused."""
     w = np.array([1, 0, 2], dtype=np.int16)
-    assert np.array_equal(
-        chasles.SO3.exp(w).as_matrix(), chasles.SO3.exp(w.astype(float)).as_matrix()
-    )
+    assert np.array_equal(chasles.SO3.exp(w).as_matrix(), chasles.SO3.exp(w.astype(float)).as_matrix())
     assert np.array_equal(
         chasles.SO3.exp(w.astype(np.float16)).as_matrix(),
         chasles.SO3.exp(w.astype(float)).as_matrix(),
@@ -792,9 +772,7 @@ def test_huge_results_are_a_memory_error_not_a_crash():
     with pytest.raises(MemoryError):
         chasles.se3_compose(a, b)  # 2^44 poses: 2^51 bytes, past any address space
     with pytest.raises(ValueError):
-        chasles.se3_compose(
-            np.broadcast_to(np.eye(4), (2**40, 1, 4, 4)), np.broadcast_to(np.eye(4), (2**40, 4, 4))
-        )
+        chasles.se3_compose(np.broadcast_to(np.eye(4), (2**40, 1, 4, 4)), np.broadcast_to(np.eye(4), (2**40, 4, 4)))
 
 
 def test_subclass_instances_are_accepted_as_their_base():

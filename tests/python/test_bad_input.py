@@ -16,9 +16,10 @@ import pickle
 import re
 
 import api_spec
-import chasles
 import numpy as np
 import pytest
+
+import chasles
 from chasles import SE3, SO3, Chain, Screw, Twist, Wrench
 
 R0 = SO3.exp([0.1, 0.2, 0.3])
@@ -50,8 +51,7 @@ VALID = {
     "Twist.body(g_dot)": GDOT,
 }
 ARRAY_ARGUMENTS = [
-    (name, call, VALID.get(name, good), shape, finite)
-    for name, call, good, shape, finite in api_spec.array_arguments()
+    (name, call, VALID.get(name, good), shape, finite) for name, call, good, shape, finite in api_spec.array_arguments()
 ]
 
 POINT_ARGUMENTS = [
@@ -371,13 +371,9 @@ def test_tolerances_refuse_negative_and_accept_inf():
 
 
 def test_positive_infinite_pitch_is_a_translation_everywhere():
-    assert SE3.from_screw([0, 0, 0], [1, 0, 0], math.inf, 2.0).is_approx(
-        SE3(translation=[2, 0, 0]), 0.0
-    )
+    assert SE3.from_screw([0, 0, 0], [1, 0, 0], math.inf, 2.0).is_approx(SE3(translation=[2, 0, 0]), 0.0)
     assert Twist.from_screw([0, 0, 0], [1, 0, 0], math.inf, 2.0).is_approx(Twist(v=[2, 0, 0]), 0.0)
-    assert Wrench.from_screw([0, 0, 0], [1, 0, 0], math.inf, 2.0).is_approx(
-        Wrench(tau=[2, 0, 0]), 0.0
-    )
+    assert Wrench.from_screw([0, 0, 0], [1, 0, 0], math.inf, 2.0).is_approx(Wrench(tau=[2, 0, 0]), 0.0)
     assert Screw([0, 0, 0], [1, 0, 0], math.inf, 2.0).pitch == math.inf
     for call in (lambda: SE3.from_screw([0, 0, 0], [1, 0, 0], 0.0, math.inf),):
         with pytest.raises(ValueError):

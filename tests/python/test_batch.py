@@ -5,11 +5,11 @@ threads: test_threads.py)."""
 
 import numpy as np
 import pytest
+from helpers import hat3, hat6
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.linalg import expm
 from scipy.spatial.transform import Rotation
-from helpers import hat3, hat6
 
 import chasles
 
@@ -20,8 +20,7 @@ EPS32 = float(np.finfo(np.float32).eps)
 # (theta^2 = eps^(1/3): 1.8e-3 in double, 7e-2 in float), pi/2 (log's switch
 # to the symmetric part), near pi and exactly pi.
 SPECIAL_ANGLES = np.array(
-    [0.0, 1e-12, 1e-9, 1e-6, 1e-4, 2.46e-3, 7.02e-2, 0.5, 1.0, PI / 2, 2.0, 3.0,
-     PI - 1e-4, PI - 1e-6, PI - 1e-9, PI]
+    [0.0, 1e-12, 1e-9, 1e-6, 1e-4, 2.46e-3, 7.02e-2, 0.5, 1.0, PI / 2, 2.0, 3.0, PI - 1e-4, PI - 1e-6, PI - 1e-9, PI]
 )
 
 
@@ -52,7 +51,7 @@ def rotvecs(n, rng):
     angles = np.concatenate([SPECIAL_ANGLES, rng.uniform(0, PI, max(0, n - k))])[:n]
     w = unit_vectors(n, rng) * angles[:, None]
     if n >= k + 3:
-        w[k:k + 3] = PI * np.eye(3)
+        w[k : k + 3] = PI * np.eye(3)
     return w
 
 
@@ -127,9 +126,25 @@ def operands(name, batch, rng):
 
 
 def test_every_documented_function_exists():
-    required = ["so3_exp", "so3_log", "so3_compose", "so3_inverse", "so3_act", "so3_hat", "so3_vee",
-                "so3_from_quat", "so3_as_quat", "se3_exp", "se3_log", "se3_compose", "se3_inverse",
-                "se3_act", "se3_adjoint", "se3_hat", "se3_vee"]
+    required = [
+        "so3_exp",
+        "so3_log",
+        "so3_compose",
+        "so3_inverse",
+        "so3_act",
+        "so3_hat",
+        "so3_vee",
+        "so3_from_quat",
+        "so3_as_quat",
+        "se3_exp",
+        "se3_log",
+        "se3_compose",
+        "se3_inverse",
+        "se3_act",
+        "se3_adjoint",
+        "se3_hat",
+        "se3_vee",
+    ]
     for name in required + NAMES:
         f = getattr(chasles, name)
         assert "Args:" in f.__doc__ and "Returns:" in f.__doc__, name
@@ -403,8 +418,9 @@ def test_one_pose_many_points_and_n_by_n():
     out = chasles.se3_act(g, p)
     np.testing.assert_allclose(out, p @ g[:3, :3].T + g[:3, 3], atol=1e-13)
     gs = poses(1000, rng)
-    np.testing.assert_allclose(chasles.se3_act(gs, p), np.einsum("nij,nj->ni", gs[:, :3, :3], p) + gs[:, :3, 3],
-                               atol=1e-13)
+    np.testing.assert_allclose(
+        chasles.se3_act(gs, p), np.einsum("nij,nj->ni", gs[:, :3, :3], p) + gs[:, :3, 3], atol=1e-13
+    )
     # many poses, one point; and every pose with every point
     np.testing.assert_allclose(chasles.se3_act(gs, p[0]), gs[:, :3, :3] @ p[0] + gs[:, :3, 3], atol=1e-13)
     every = chasles.se3_act(gs[:7, None], p[None, :5])
@@ -435,7 +451,7 @@ def test_operands_that_stay_put_in_any_layout():
 
 def test_broadcast_of_different_batch_ranks():
     rng = np.random.default_rng(19)
-    a = poses(5, rng)                    # (5, 4, 4)
+    a = poses(5, rng)  # (5, 4, 4)
     b = poses(2, rng).reshape(2, 1, 4, 4)  # (2, 1, 4, 4)
     out = chasles.se3_compose(a, b)
     assert out.shape == (2, 5, 4, 4)
@@ -496,8 +512,9 @@ def test_integer_bool_and_list_inputs_follow_numpys_casting():
         got = chasles.so3_hat(w.astype(dt))
         assert got.dtype == np.float64, dt
         np.testing.assert_array_equal(got, chasles.so3_hat(w.astype(dt).astype(np.float64)))
-    np.testing.assert_array_equal(chasles.se3_exp([0, 0, 1, 0, 0, 0.5]),
-                                  chasles.se3_exp(np.array([0, 0, 1, 0, 0, 0.5])))
+    np.testing.assert_array_equal(
+        chasles.se3_exp([0, 0, 1, 0, 0, 0.5]), chasles.se3_exp(np.array([0, 0, 1, 0, 0, 0.5]))
+    )
     assert chasles.so3_log(np.eye(3, dtype=int)).dtype == np.float64
     # int64 with float32: float64, the first loop both cast to safely
     assert chasles.so3_act(np.eye(3, dtype=np.float32), np.array([1, 2, 3])).dtype == np.float64
@@ -523,11 +540,16 @@ def test_non_native_byte_order_is_read():
     np.testing.assert_array_equal(out, chasles.so3_log(R.astype(np.float32)))
 
 
-@pytest.mark.parametrize("bad", [
-    np.zeros(3, np.complex128), np.zeros(3, object), np.array(["a", "b", "c"]),
-    np.zeros(3, "datetime64[s]"),
-    np.zeros(3, np.longdouble) if np.dtype(np.longdouble).itemsize > 8 else np.zeros(3, np.complex64),
-])
+@pytest.mark.parametrize(
+    "bad",
+    [
+        np.zeros(3, np.complex128),
+        np.zeros(3, object),
+        np.array(["a", "b", "c"]),
+        np.zeros(3, "datetime64[s]"),
+        np.zeros(3, np.longdouble) if np.dtype(np.longdouble).itemsize > 8 else np.zeros(3, np.complex64),
+    ],
+)
 def test_bad_dtype_is_a_type_error(bad):
     with pytest.raises(TypeError, match=r"ufunc 'so3_exp' not supported for the input types"):
         chasles.so3_exp(bad)
@@ -546,11 +568,17 @@ def test_bad_dtype_names_the_function():
 
 
 def test_wrong_core_shape_messages_name_the_function_and_the_sizes():
-    with pytest.raises(ValueError, match=r"^se3_exp: Input operand 0 has a mismatch in its core dimension 0, "
-                                         r"with gufunc signature \(6\)->\(4,4\) \(size 3 is different from 6\)$"):
+    with pytest.raises(
+        ValueError,
+        match=r"^se3_exp: Input operand 0 has a mismatch in its core dimension 0, "
+        r"with gufunc signature \(6\)->\(4,4\) \(size 3 is different from 6\)$",
+    ):
         chasles.se3_exp(np.zeros((5, 3)))
-    with pytest.raises(ValueError, match=r"so3_log: Input operand 0 does not have enough dimensions \(has 1, "
-                                         r"gufunc core with signature \(3,3\)->\(3\) requires 2\)"):
+    with pytest.raises(
+        ValueError,
+        match=r"so3_log: Input operand 0 does not have enough dimensions \(has 1, "
+        r"gufunc core with signature \(3,3\)->\(3\) requires 2\)",
+    ):
         chasles.so3_log(np.zeros(3))
     with pytest.raises(ValueError, match=r"so3_exp: Input operand 0 does not have enough dimensions \(has 0"):
         chasles.so3_exp(1.0)
@@ -580,8 +608,7 @@ def layouts(a):
     yield "strided", np.repeat(a, 2, axis=0)[::2]
     yield "reversed", a[::-1].copy()[::-1]
     yield "fortran", np.asfortranarray(a)
-    yield "transposed", np.ascontiguousarray(np.moveaxis(a, 0, -1)).transpose(
-        (a.ndim - 1,) + tuple(range(a.ndim - 1)))
+    yield "transposed", np.ascontiguousarray(np.moveaxis(a, 0, -1)).transpose((a.ndim - 1,) + tuple(range(a.ndim - 1)))
     ro = a.copy()
     ro.flags.writeable = False
     yield "read-only", ro
@@ -601,7 +628,7 @@ def test_any_layout_gives_the_same_result(name, dtype):
     for i, a in enumerate(args):
         for label, alt in layouts(a):
             np.testing.assert_array_equal(alt, a)
-            got = f(*args[:i], alt, *args[i + 1:])
+            got = f(*args[:i], alt, *args[i + 1 :])
             assert got.flags.c_contiguous and got.dtype == dtype, label
             np.testing.assert_array_equal(got, want, err_msg=f"{label} operand {i}")
 
@@ -615,8 +642,10 @@ def test_inputs_are_not_modified_and_views_of_one_buffer():
     # a slice of the 3x3 block of 4x4 poses: an operand with column stride 8
     g = poses(10, np.random.default_rng(25))
     np.testing.assert_array_equal(chasles.so3_log(g[:, :3, :3]), chasles.so3_log(g[:, :3, :3].copy()))
-    np.testing.assert_array_equal(chasles.so3_log(g[:, :3, :3].transpose(0, 2, 1)),
-                                  chasles.so3_log(np.ascontiguousarray(g[:, :3, :3].transpose(0, 2, 1))))
+    np.testing.assert_array_equal(
+        chasles.so3_log(g[:, :3, :3].transpose(0, 2, 1)),
+        chasles.so3_log(np.ascontiguousarray(g[:, :3, :3].transpose(0, 2, 1))),
+    )
 
 
 # ---- NaN --------------------------------------------------------------------

@@ -232,7 +232,12 @@ def test_bad_input(cls):
         cls(0.0, 1.0, "abc")
     s = cls(0.0, 1.0, X)
     for f, what in ((s, f"{name}(t)"), (s.body_velocity, f"{name}.body_velocity(t)")):
-        with pytest.raises(ValueError, match=rf"{what}: expected times in \[start_time, end_time\] = \[0.0, 2.0\], got 2.5".replace("(", r"\(").replace(")", r"\)")):
+        with pytest.raises(
+            ValueError,
+            match=rf"{what}: expected times in \[start_time, end_time\] = \[0.0, 2.0\], got 2.5".replace(
+                "(", r"\("
+            ).replace(")", r"\)"),
+        ):
             f([0.5, 2.5])
         with pytest.raises(ValueError, match="got -inf"):
             f(-np.inf)
@@ -376,8 +381,11 @@ def test_private_functions_refuse_inconsistent_operands(name, k):
     good = np.ascontiguousarray(np.broadcast_to(np.eye(k), (5, k, k)))
     assert evaluate(0.0, 1.0, good, 0.5, 0).shape == (k, k)
     for bad in (good[:3], good[:, :2], good[0], good.astype(np.float32), np.zeros((5, k + 1, k + 1))):
-        with pytest.raises(ValueError, match=rf"_{name}_bspline_evaluate: expected control of shape \(n, {k}, {k}\), "
-                                             rf"n >= 4, float64, got {re.escape(str(bad.shape))}"):
+        with pytest.raises(
+            ValueError,
+            match=rf"_{name}_bspline_evaluate: expected control of shape \(n, {k}, {k}\), "
+            rf"n >= 4, float64, got {re.escape(str(bad.shape))}",
+        ):
             evaluate(0.0, 1.0, bad, 0.5, 0)
     with pytest.raises(ValueError, match=rf"_{name}_bspline_evaluate: expected order 0, 1 or 2, got 3"):
         evaluate(0.0, 1.0, good, 0.5, 3)

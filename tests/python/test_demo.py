@@ -15,6 +15,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+
 from chasles import SE3, Twist
 from chasles.__main__ import main, random_motion
 
@@ -32,9 +33,7 @@ def run(*args: str, cwd: Path, block_matplotlib: bool = False) -> subprocess.Com
             "sys.argv = ['chasles', *sys.argv[1:]]; runpy.run_module('chasles', run_name='__main__')"
         )
         command = [sys.executable, "-c", code, *args]
-    return subprocess.run(
-        command, capture_output=True, text=True, timeout=120, check=False, cwd=cwd, env=env
-    )
+    return subprocess.run(command, capture_output=True, text=True, timeout=120, check=False, cwd=cwd, env=env)
 
 
 def png_size(path: Path) -> tuple[int, int]:
@@ -135,9 +134,7 @@ def test_the_picture_draws_the_worked_example_where_the_maths_puts_it(l1, seed):
     # The origin circles the axis at distance |l1| in the plane z = 0, a whole turn.
     helix = points(pic.worked_screw.helix)
     assert np.allclose(np.hypot(helix[:, 0], helix[:, 1] - l1), abs(l1), atol=1e-13, rtol=0)
-    assert np.allclose(helix[:, 2], 0.0, atol=1e-15) and np.allclose(
-        helix[0], helix[-1], atol=1e-13
-    )
+    assert np.allclose(helix[:, 2], 0.0, atol=1e-15) and np.allclose(helix[0], helix[-1], atol=1e-13)
     # The body frames at theta = k pi / 4 sit at the closed form's
     # (l1 sin, l1 (1 - cos), 0), x axis along (cos, sin, 0).
     assert len(pic.worked_frames.frames) == 7
@@ -158,9 +155,7 @@ def test_the_picture_draws_the_worked_example_where_the_maths_puts_it(l1, seed):
     assert np.allclose(helix[-1], g.translation, atol=1e-12)
     last = pic.random_frames.frames[-1]
     moved = SE3.exp(g.log())
-    assert np.allclose(
-        points(last.z)[1] - points(last.z)[0], 0.6 * moved.rotation.as_matrix()[:, 2]
-    )
+    assert np.allclose(points(last.z)[1] - points(last.z)[0], 0.6 * moved.rotation.as_matrix()[:, 2])
     assert last.label.get_text().strip() == "g"
 
 

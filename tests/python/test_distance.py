@@ -36,8 +36,7 @@ def rotations_with_angles(angles, seed):
     return Rotation.from_rotvec(axes * np.asarray(angles)[:, None]).as_matrix()
 
 
-ANGLES = [0.0, 1e-300, 1e-160, 1e-30, 1e-12, 1e-8, 1e-4, 0.1, 1.0, 2.0, 3.0,
-          PI - 1e-4, PI - 1e-8, PI - 1e-12, PI]
+ANGLES = [0.0, 1e-300, 1e-160, 1e-30, 1e-12, 1e-8, 1e-4, 0.1, 1.0, 2.0, 3.0, PI - 1e-4, PI - 1e-8, PI - 1e-12, PI]
 
 
 def test_so3_angle_matches_scipy_magnitude():
@@ -92,12 +91,8 @@ def test_so3_distance_matches_scipy_and_is_bi_invariant():
     d = chasles.so3_distance(a.as_matrix(), b.as_matrix())
     np.testing.assert_allclose(d, (a.inv() * b).magnitude(), rtol=0, atol=1e-14)
     np.testing.assert_allclose(chasles.so3_distance(b.as_matrix(), a.as_matrix()), d, atol=1e-14)
-    np.testing.assert_allclose(
-        chasles.so3_distance((g * a).as_matrix(), (g * b).as_matrix()), d, atol=1e-14
-    )
-    np.testing.assert_allclose(
-        chasles.so3_distance((a * g).as_matrix(), (b * g).as_matrix()), d, atol=1e-14
-    )
+    np.testing.assert_allclose(chasles.so3_distance((g * a).as_matrix(), (g * b).as_matrix()), d, atol=1e-14)
+    np.testing.assert_allclose(chasles.so3_distance((a * g).as_matrix(), (b * g).as_matrix()), d, atol=1e-14)
 
 
 def test_so3_distance_near_zero_and_pi_against_the_reference():
@@ -105,9 +100,7 @@ def test_so3_distance_near_zero_and_pi_against_the_reference():
     rel = rotations_with_angles(ANGLES, seed=8)
     b = a @ rel
     # The reference is the angle of a^T b formed in long double from the rounded a, b.
-    ref = angle_reference(
-        np.swapaxes(a.astype(np.longdouble), -1, -2) @ b.astype(np.longdouble)
-    )
+    ref = angle_reference(np.swapaxes(a.astype(np.longdouble), -1, -2) @ b.astype(np.longdouble))
     got = chasles.so3_distance(a, b)
     # a^T b in double is off by a few ulps of 1: absolute accuracy.
     assert np.all(np.abs(got - ref) <= 16 * np.finfo(np.float64).eps)
@@ -132,9 +125,7 @@ def test_se3_distance_is_the_rotation_angle_and_the_distance_of_the_origins():
     ra = Rotation.from_matrix(ga[:, :3, :3])
     rb = Rotation.from_matrix(gb[:, :3, :3])
     np.testing.assert_allclose(d[:, 0], (ra.inv() * rb).magnitude(), rtol=0, atol=1e-14)
-    np.testing.assert_allclose(
-        d[:, 1], np.linalg.norm(gb[:, :3, 3] - ga[:, :3, 3], axis=-1), rtol=1e-15, atol=0
-    )
+    np.testing.assert_allclose(d[:, 1], np.linalg.norm(gb[:, :3, 3] - ga[:, :3, 3], axis=-1), rtol=1e-15, atol=0)
     # |p_b - p_a| is the length of the translation of a^-1 b ...
     rel = chasles.se3_compose(chasles.se3_inverse(ga), gb)
     np.testing.assert_allclose(d[:, 1], np.linalg.norm(rel[:, :3, 3], axis=-1), rtol=1e-13)

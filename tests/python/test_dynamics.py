@@ -23,8 +23,7 @@ import pytest
 from helpers import hat3 as hat
 
 import chasles
-from chasles import SE3, Chain, SpatialInertia, Twist, Wrench
-from chasles import _core
+from chasles import SE3, Chain, SpatialInertia, Twist, Wrench, _core
 
 RTOL = 1e-12
 
@@ -120,7 +119,9 @@ def test_against_modern_robotics_on_random_arms(seed, n):
         tau = _core._inverse_dynamics(screws, home, G, gravity, q, qd, qdd, tip)
         assert_close(tau, mr.InverseDynamics(q, qd, qdd, gravity, ftip_mr, Mlist, Glist, Slist))
         assert_close(_core._mass_matrix(screws, home, G, q), mr.MassMatrix(q, Mlist, Glist, Slist))
-        assert_close(_core._gravity_torques(screws, home, G, gravity, q), mr.GravityForces(q, gravity, Mlist, Glist, Slist))
+        assert_close(
+            _core._gravity_torques(screws, home, G, gravity, q), mr.GravityForces(q, gravity, Mlist, Glist, Slist)
+        )
         assert_close(_core._coriolis(screws, home, G, q, qd), mr.VelQuadraticForces(q, qd, Mlist, Glist, Slist))
         expected = mr.ForwardDynamics(q, qd, tau, gravity, ftip_mr, Mlist, Glist, Slist)
         # The solve multiplies the rounding of tau by cond(M).
@@ -287,8 +288,13 @@ def test_thin_plate_is_accepted_on_both_sides_of_the_tolerance():
 
 def test_docstring_examples():
     globs = {"np": np, "SpatialInertia": SpatialInertia, "Twist": Twist, "SE3": SE3}
-    for obj in [SpatialInertia, SpatialInertia.__init__, SpatialInertia.transform, SpatialInertia.momentum,
-                SpatialInertia.kinetic_energy]:
+    for obj in [
+        SpatialInertia,
+        SpatialInertia.__init__,
+        SpatialInertia.transform,
+        SpatialInertia.momentum,
+        SpatialInertia.kinetic_energy,
+    ]:
         finder = doctest.DocTestFinder(recurse=False)
         runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE)
         for test in finder.find(obj, "SpatialInertia", globs=globs):

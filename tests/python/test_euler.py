@@ -7,11 +7,12 @@ from __future__ import annotations
 
 import warnings
 
-import chasles
 import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
+
+import chasles
 
 Rotation = pytest.importorskip("scipy.spatial.transform").Rotation
 
@@ -182,12 +183,8 @@ def test_rpy_is_urdfs_fixed_xyz():
     assert np.array_equal(chasles.so3_from_rpy([roll, pitch, yaw]), R.as_matrix())
     assert np.array_equal(chasles.so3_as_rpy(R.as_matrix()), R.as_rpy())
     deg = np.rad2deg([roll, pitch, yaw])
-    assert np.array_equal(
-        chasles.so3_from_rpy(deg, degrees=True), chasles.so3_from_euler("xyz", deg, True)
-    )
-    assert np.array_equal(
-        chasles.SO3.from_rpy(deg, degrees=True).as_matrix(), chasles.so3_from_rpy(deg, degrees=True)
-    )
+    assert np.array_equal(chasles.so3_from_rpy(deg, degrees=True), chasles.so3_from_euler("xyz", deg, True))
+    assert np.array_equal(chasles.SO3.from_rpy(deg, degrees=True).as_matrix(), chasles.so3_from_rpy(deg, degrees=True))
     assert np.array_equal(chasles.so3_as_rpy(R.as_matrix(), degrees=True), R.as_rpy(degrees=True))
     np.testing.assert_allclose(R.as_rpy(degrees=True), deg, atol=1e-12)
 
@@ -300,8 +297,11 @@ SEQUENCES_IN_ENUM_ORDER = [s for s in SEQUENCES if s.islower()] + [s for s in SE
 def test_from_rpy_with_three_numbers_gets_chasles_error():
     """SO3.from_rpy(0.1, 0.2, 0.3): chasles' TypeError naming the expected
     shape, not pybind11's list of overloads."""
-    with pytest.raises(TypeError, match=r"SO3\.from_rpy\(rpy, degrees=False\): expected rpy, one array_like of "
-                       r"shape \(3,\).*Three angles are one argument: SO3\.from_rpy\(\[roll, pitch, yaw\]\)") as e:
+    with pytest.raises(
+        TypeError,
+        match=r"SO3\.from_rpy\(rpy, degrees=False\): expected rpy, one array_like of "
+        r"shape \(3,\).*Three angles are one argument: SO3\.from_rpy\(\[roll, pitch, yaw\]\)",
+    ) as e:
         chasles.SO3.from_rpy(0.1, 0.2, 0.3)
     assert "incompatible function arguments" not in str(e.value) and "Invoked with" not in str(e.value)
     with pytest.raises(TypeError, match=r"SO3\.from_rpy\(rpy, degrees=False\).*got \(\)"):

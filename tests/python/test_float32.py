@@ -15,12 +15,13 @@ from __future__ import annotations
 
 import math
 
-import chasles
 import numpy as np
 import pytest
-from scipy.linalg import expm
 from helpers import hat3 as hat
 from helpers import hat6
+from scipy.linalg import expm
+
+import chasles
 
 EPS32 = float(np.finfo(np.float32).eps)
 EPS64 = float(np.finfo(np.float64).eps)
@@ -39,9 +40,7 @@ TAYLOR_THETA32 = math.sqrt(4.9215667e-03)  # the float cutoff, on theta (constan
 
 def contract_angles():
     """The angles of the C++ contract, as float32, from 0 to pi."""
-    a = [0.0, 1e-45, 1e-38, 1e-36] + [
-        10.0**-k for k in (35, 25, 20, 15, 12, 10, 8, 6, 5, 4, 3, 2, 1)
-    ]
+    a = [0.0, 1e-45, 1e-38, 1e-36] + [10.0**-k for k in (35, 25, 20, 15, 12, 10, 8, 6, 5, 4, 3, 2, 1)]
     a += [
         float(np.nextafter(np.float32(TAYLOR_THETA32), np.float32(0))),
         TAYLOR_THETA32,
@@ -89,14 +88,10 @@ def test_so3_exp_contract():
     assert R.dtype == np.float32 and np.isfinite(R).all()
     err = np.abs(widened(R) - chasles.so3_exp(widened(w))).max(axis=(1, 2))
     worst = int(np.argmax(err))
-    assert err[worst] <= tol(1e-15), (
-        f"{err[worst]:.3g} = {err[worst] / EPS32:.2f} eps32 at w = {w[worst]}"
-    )
+    assert err[worst] <= tol(1e-15), f"{err[worst]:.3g} = {err[worst] / EPS32:.2f} eps32 at w = {w[worst]}"
     # and the oracle against scipy's expm, on a sample
     for i in range(0, len(w), 17):
-        np.testing.assert_allclose(
-            chasles.so3_exp(widened(w[i])), expm(hat(widened(w[i]))), rtol=0, atol=4e-15
-        )
+        np.testing.assert_allclose(chasles.so3_exp(widened(w[i])), expm(hat(widened(w[i]))), rtol=0, atol=4e-15)
 
 
 def rounded_rotations(w):
@@ -118,9 +113,7 @@ def test_so3_log_contract():
     err_either = np.minimum(err_strict, np.abs(widened(got) + ref).max(axis=1))
     worst = int(np.argmax(np.where(strict, err_strict, err_either)))
     err = err_strict[worst] if strict[worst] else err_either[worst]
-    assert err <= tol(1e-15), (
-        f"{err:.3g} = {err / EPS32:.2f} eps32 at w = {w[worst]} (angle {theta[worst]!r})"
-    )
+    assert err <= tol(1e-15), f"{err:.3g} = {err / EPS32:.2f} eps32 at w = {w[worst]} (angle {theta[worst]!r})"
     # near pi, the answer is a log of R: exp of it gives R back
     back = chasles.so3_exp(widened(got[~strict]))
     assert np.abs(back - widened(R[~strict])).max() <= tol(1e-15) + 2 * EPS32
@@ -164,9 +157,7 @@ def test_so3_log_is_never_nan_at_0_and_pi(angle):
     assert (angle_of(got) <= PI * (1 + 4 * EPS32)).all()
     assert np.abs(chasles.so3_exp(widened(got)) - widened(R)).max() <= tol(1e-15) + 2 * EPS32
     if angle <= 1e-8:
-        np.testing.assert_allclose(
-            widened(got), chasles.so3_log(widened(R)), rtol=4 * EPS32, atol=1e-45
-        )
+        np.testing.assert_allclose(widened(got), chasles.so3_log(widened(R)), rtol=4 * EPS32, atol=1e-45)
 
 
 def test_so3_log_of_exact_pi_rotations():
@@ -228,9 +219,7 @@ def test_se3_exp_contract():
     rot = np.abs(widened(g[:, :3, :3]) - ref[:, :3, :3]).max(axis=(1, 2))
     trans = relative(widened(g[:, :3, 3]), ref[:, :3, 3])
     assert rot.max() <= tol(2e-15), f"{rot.max() / EPS32:.2f} eps32 at xi = {xi[np.argmax(rot)]}"
-    assert trans.max() <= tol(2e-15), (
-        f"{trans.max() / EPS32:.2f} eps32 at xi = {xi[np.argmax(trans)]}"
-    )
+    assert trans.max() <= tol(2e-15), f"{trans.max() / EPS32:.2f} eps32 at xi = {xi[np.argmax(trans)]}"
     for i in range(0, len(xi), 41):
         X = expm(hat6(widened(xi[i])))
         np.testing.assert_allclose(ref[i], X, rtol=0, atol=1e-14 * max(1.0, np.abs(X).max()))
@@ -276,11 +265,7 @@ def test_exp_is_finite_and_a_rotation_at_tiny_and_huge(size):
     Rd = widened(R)
     assert np.abs(np.swapaxes(Rd, 1, 2) @ Rd - np.eye(3)).max() <= 8 * EPS32
     ref = chasles.so3_exp(widened(w))
-    exact = (
-        [i for i, u in enumerate(axes) if np.count_nonzero(u) == 1]
-        if size > 1
-        else range(len(axes))
-    )
+    exact = [i for i, u in enumerate(axes) if np.count_nonzero(u) == 1] if size > 1 else range(len(axes))
     assert np.abs(Rd[exact] - ref[exact]).max() <= tol(1e-15) + EPS32 * (size > 1)
     xi = np.concatenate([np.full((len(axes), 3), 0.5, np.float32), w], axis=1)
     g = chasles.se3_exp(xi)

@@ -17,16 +17,17 @@ from __future__ import annotations
 import doctest
 import math
 
-import chasles
 import numpy as np
 import pytest
-from chasles import SE3, SO3
+from helpers import hat3, hat6
 from hypothesis import given
 from hypothesis import strategies as st
 from scipy.linalg import expm, logm
 from scipy.spatial.transform import Rotation
 from strategies import PI, elements, points, rotation_vectors, tangents, twist_vectors
-from helpers import hat3, hat6
+
+import chasles
+from chasles import SE3, SO3
 
 H = 1e-5
 FD_TOL = 1e-7
@@ -510,9 +511,7 @@ def test_plus_minus_between_jacobians_values():
     np.testing.assert_array_equal(J_g, SE3.right_jacobian_inverse(x))
     np.testing.assert_array_equal(J_h, -SE3.left_jacobian_inverse(x))
     J_g, J_h = chasles.lminus_jacobians(a, b)
-    np.testing.assert_allclose(
-        J_g, SE3.right_jacobian_inverse(chasles.lminus(a, b)) @ b.adjoint(), rtol=0, atol=1e-14
-    )
+    np.testing.assert_allclose(J_g, SE3.right_jacobian_inverse(chasles.lminus(a, b)) @ b.adjoint(), rtol=0, atol=1e-14)
     np.testing.assert_array_equal(J_h, -J_g)
 
 

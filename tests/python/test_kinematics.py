@@ -7,10 +7,10 @@ import doctest
 
 import numpy as np
 import pytest
+from helpers import hat6
 from hypothesis import given
 from hypothesis import strategies as st
 from scipy.linalg import expm
-from helpers import hat6
 
 import chasles
 from chasles import SE3, Chain
@@ -29,9 +29,7 @@ UR5_SCREWS = np.array(
     ],
     dtype=float,
 )
-UR5_HOME = np.array(
-    [[-1, 0, 0, L1 + L2], [0, 0, 1, W1 + W2], [0, 1, 0, H1 - H2], [0, 0, 0, 1]], dtype=float
-)
+UR5_HOME = np.array([[-1, 0, 0, L1 + L2], [0, 0, 1, W1 + W2], [0, 1, 0, H1 - H2], [0, 0, 0, 1]], dtype=float)
 # The UR5 on a linear rail along (1, 2, 0) / sqrt(5): 7 joints, a prismatic one first.
 RAIL_SCREWS = np.vstack([[1 / np.sqrt(5), 2 / np.sqrt(5), 0, 0, 0, 0], UR5_SCREWS])
 
@@ -132,13 +130,9 @@ def test_batch_equals_per_element(thetas):
 def test_strided_and_integer_input():
     arm = Chain(UR5_SCREWS, UR5_HOME)
     th = np.linspace(-1, 1, 24).reshape(4, 6)
-    np.testing.assert_array_equal(
-        arm.forward(th[::2]), arm.forward(np.ascontiguousarray(th[::2]))
-    )
+    np.testing.assert_array_equal(arm.forward(th[::2]), arm.forward(np.ascontiguousarray(th[::2])))
     np.testing.assert_array_equal(arm.jacobian_space(th.T.copy().T), arm.jacobian_space(th))
-    np.testing.assert_array_equal(
-        arm.jacobian_body([1, 0, 0, 0, 0, 0]), arm.jacobian_body([1.0, 0, 0, 0, 0, 0])
-    )
+    np.testing.assert_array_equal(arm.jacobian_body([1, 0, 0, 0, 0, 0]), arm.jacobian_body([1.0, 0, 0, 0, 0, 0]))
     fortran = np.asfortranarray(UR5_SCREWS)
     np.testing.assert_array_equal(Chain(fortran, UR5_HOME).space_screws, UR5_SCREWS)
 
@@ -146,15 +140,12 @@ def test_strided_and_integer_input():
 def test_screws_and_properties():
     for axis, point, s in zip(
         [[0, 0, 1], [0, 1, 0], [0, 1, 0], [0, 1, 0], [0, 0, -1], [0, 1, 0]],
-        [[0, 0, 0], [0, 0, H1], [L1, 0, H1], [L1 + L2, 0, H1], [L1 + L2, W1, 0],
-         [L1 + L2, 0, H1 - H2]],
+        [[0, 0, 0], [0, 0, H1], [L1, 0, H1], [L1 + L2, 0, H1], [L1 + L2, W1, 0], [L1 + L2, 0, H1 - H2]],
         UR5_SCREWS,
     ):
         screw = Chain.revolute_screw(point, np.array(axis) * 2.5)
         np.testing.assert_allclose(screw, s, rtol=0, atol=4 * EPS)
-    np.testing.assert_allclose(
-        Chain.prismatic_screw([0, 3, 4]), [0, 0.6, 0.8, 0, 0, 0], rtol=0, atol=EPS
-    )
+    np.testing.assert_allclose(Chain.prismatic_screw([0, 3, 4]), [0, 0.6, 0.8, 0, 0, 0], rtol=0, atol=EPS)
     arm = Chain(UR5_SCREWS, UR5_HOME)
     assert arm.n_joints == 6
     np.testing.assert_array_equal(arm.space_screws, UR5_SCREWS)
@@ -224,8 +215,18 @@ def member_doc(member):
 
 def test_exported_and_documented():
     assert "Chain" in chasles.__all__
-    for name in ["forward", "forward_body", "jacobian_space", "jacobian_body", "revolute_screw",
-                 "prismatic_screw", "screws", "body_screws", "home", "n_joints"]:
+    for name in [
+        "forward",
+        "forward_body",
+        "jacobian_space",
+        "jacobian_body",
+        "revolute_screw",
+        "prismatic_screw",
+        "screws",
+        "body_screws",
+        "home",
+        "n_joints",
+    ]:
         member = vars(Chain)[name]
         doc = member_doc(member)
         assert doc and doc.strip() and "arg0" not in doc, name
@@ -269,9 +270,20 @@ def test_model_keywords_properties_and_folding():
     lo, hi = -np.arange(1.0, 8.0), np.arange(1.0, 8.0)
     lo[6], hi[6] = -np.inf, np.inf
     types = ["prismatic"] + ["revolute"] * 5 + ["continuous"]
-    model = Chain(RAIL_SCREWS, UR5_HOME, joint_types=types, names=names, lower=lo, upper=hi,
-                  velocity_limits=np.full(7, 2.0), effort_limits=np.arange(7.0), base=base, tool=tool,
-                  gravity=[0, 0.1, -9.8], link_inertias=np.ones((7, 10)))
+    model = Chain(
+        RAIL_SCREWS,
+        UR5_HOME,
+        joint_types=types,
+        names=names,
+        lower=lo,
+        upper=hi,
+        velocity_limits=np.full(7, 2.0),
+        effort_limits=np.arange(7.0),
+        base=base,
+        tool=tool,
+        gravity=[0, 0.1, -9.8],
+        link_inertias=np.ones((7, 10)),
+    )
     assert model.joint_types == tuple(types) and model.joint_names == tuple(names)
     np.testing.assert_array_equal(model.lower, lo)
     np.testing.assert_array_equal(model.upper, hi)
@@ -287,8 +299,9 @@ def test_model_keywords_properties_and_folding():
         expected = base.as_matrix() @ plain.forward(q) @ tool.as_matrix()
         np.testing.assert_allclose(model.forward(q), expected, rtol=0, atol=1e-14)
         np.testing.assert_allclose(model.forward_body(q), expected, rtol=0, atol=1e-14)
-        np.testing.assert_allclose(model.jacobian_space(q), chasles.se3_adjoint(base.as_matrix())
-                                   @ plain.jacobian_space(q), rtol=0, atol=1e-14)
+        np.testing.assert_allclose(
+            model.jacobian_space(q), chasles.se3_adjoint(base.as_matrix()) @ plain.jacobian_space(q), rtol=0, atol=1e-14
+        )
     import copy
     import pickle
 
@@ -312,10 +325,25 @@ def test_one_vocabulary_space_screws_and_joint_names_with_deprecated_aliases():
 
 
 def test_link_inertias_as_spatial_inertias_or_packed_rows_give_equal_chains():
-    bodies = [chasles.SpatialInertia(1.0 + i, [0.1 * i, 0.0, 0.05], [[0.02, 0.001, 0.0], [0.001, 0.03, 0.0],
-                                                                       [0.0, 0.0, 0.04]]) for i in range(6)]
-    rows = [[b.mass, *b.com, b.inertia[0, 0], b.inertia[0, 1], b.inertia[0, 2], b.inertia[1, 1],
-             b.inertia[1, 2], b.inertia[2, 2]] for b in bodies]
+    bodies = [
+        chasles.SpatialInertia(
+            1.0 + i, [0.1 * i, 0.0, 0.05], [[0.02, 0.001, 0.0], [0.001, 0.03, 0.0], [0.0, 0.0, 0.04]]
+        )
+        for i in range(6)
+    ]
+    rows = [
+        [
+            b.mass,
+            *b.com,
+            b.inertia[0, 0],
+            b.inertia[0, 1],
+            b.inertia[0, 2],
+            b.inertia[1, 1],
+            b.inertia[1, 2],
+            b.inertia[2, 2],
+        ]
+        for b in bodies
+    ]
     base = SE3.exp([0.1, 0.2, 0.3, 0.4, 0.5, 0.6])
     a = Chain(UR5_SCREWS, UR5_HOME, link_inertias=bodies, base=base)
     b = Chain(UR5_SCREWS, UR5_HOME, link_inertias=np.array(rows), base=base)
@@ -335,8 +363,17 @@ def test_the_model_is_the_extensions_chain_and_old_pickles_name_it():
     from chasles import _core
 
     assert issubclass(Chain, _core._Chain) and _core.Chain is Chain
-    for name in ("forward", "forward_body", "jacobian_space", "jacobian_body", "inverse_dynamics",
-                 "forward_dynamics", "mass_matrix", "gravity_torques", "coriolis"):
+    for name in (
+        "forward",
+        "forward_body",
+        "jacobian_space",
+        "jacobian_body",
+        "inverse_dynamics",
+        "forward_dynamics",
+        "mass_matrix",
+        "gravity_torques",
+        "coriolis",
+    ):
         assert vars(Chain)[name] is vars(_core._Chain)[name]
 
 
@@ -376,7 +413,9 @@ def test_model_validation():
     far[0, 3] = 1e308
     with pytest.raises(ValueError, match=r"Chain\(link_inertias\): joint 0: expected finite numbers"):
         Chain([[1, 0, 0, 0, 0, 0]], np.eye(4), base=far, link_inertias=[[1, 1e308, 0, 0, 1, 0, 0, 1, 0, 1]])
-    assert Chain([[1, 0, 0, 0, 0, 0]], np.eye(4), base=far, link_inertias=[[1, 0, 0, 0, 1, 0, 0, 1, 0, 1]]).n_joints == 1
+    assert (
+        Chain([[1, 0, 0, 0, 0, 0]], np.eye(4), base=far, link_inertias=[[1, 0, 0, 0, 1, 0, 0, 1, 0, 1]]).n_joints == 1
+    )
     with pytest.raises(ValueError, match=r"Chain\(base\): not a rigid motion"):
         Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), base=2 * np.eye(4))
 

@@ -26,9 +26,10 @@ import tracemalloc
 from dataclasses import dataclass
 
 import api_spec as A
-import chasles
 import numpy as np
 import pytest
+
+import chasles
 
 PAGE = os.sysconf("SC_PAGE_SIZE")
 # Growth allowed over a measured run (after a warm-up of a tenth of it):
@@ -106,9 +107,7 @@ def test_the_harness_sees_a_c_leak_that_tracemalloc_cannot():
 
     g = growth(step, 200_000)
     assert g.traced < TRACED_LIMIT, g
-    assert not g.flat() and g.rss > 8_000_000, (
-        f"malloc(64) never freed, 2e5 times, was not seen: {g}"
-    )
+    assert not g.flat() and g.rss > 8_000_000, f"malloc(64) never freed, 2e5 times, was not seen: {g}"
 
 
 # ---- the library ------------------------------------------------------------------------------
@@ -173,9 +172,7 @@ def test_large_array_calls_leave_memory_flat():
     variants = [w, w.astype(np.float32), np.repeat(w, 2, axis=0)[::2], w.astype(np.int32)]
 
     def step(i):
-        chasles.se3_exp(
-            np.concatenate([variants[i % 4], variants[i % 4]], axis=1)[:, :6].astype(float)
-        )
+        chasles.se3_exp(np.concatenate([variants[i % 4], variants[i % 4]], axis=1)[:, :6].astype(float))
         chasles.so3_exp(variants[i % 4])
 
     g = growth(step, 100)

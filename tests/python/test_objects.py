@@ -14,15 +14,13 @@ import pickle
 import struct
 import sys
 
-import chasles
 import numpy as np
 import pytest
-from chasles import SE3, SO3, Chain, Screw, Twist, Wrench
+from helpers import hat3
 from hypothesis import given
 from hypothesis import strategies as st
 from scipy.linalg import expm
 from scipy.spatial.transform import Rotation
-from helpers import hat3
 from strategies import (
     PI,
     SPECIAL_ANGLES,
@@ -39,6 +37,9 @@ from strategies import (
     wrench_vectors,
     wrenches,
 )
+
+import chasles
+from chasles import SE3, SO3, Chain, Screw, Twist, Wrench
 
 GROUPS = [SO3, SE3]
 TOL = 1e-9
@@ -151,9 +152,7 @@ def test_exp_log_round_trips(G, data):
     xi = data.draw(tangents(G))
     g = G.exp(xi)
     back = g.log()
-    assert (
-        0.0 <= angle_of(back) <= PI * (1.0 + 4e-16)
-    )  # the angle is <= pi; its vector's norm rounds
+    assert 0.0 <= angle_of(back) <= PI * (1.0 + 4e-16)  # the angle is <= pi; its vector's norm rounds
     assert np.all(np.isfinite(back))
     assert_same(G.exp(back), g, 1e-12)
     if angle_of(xi) < PI - 1e-6:  # at pi, either axis sign is a correct log
@@ -168,9 +167,7 @@ def test_chasles_every_element_is_the_exp_of_its_log(G, data):
 
 
 @pytest.mark.parametrize("theta", SPECIAL_ANGLES)
-@pytest.mark.parametrize(
-    "axis", [(1.0, 0.0, 0.0), (0.0, -1.0, 0.0), (0.0, 0.0, 1.0), (1.0, 2.0, -2.0)]
-)
+@pytest.mark.parametrize("axis", [(1.0, 0.0, 0.0), (0.0, -1.0, 0.0), (0.0, 0.0, 1.0), (1.0, 2.0, -2.0)])
 def test_special_angles_exactly(theta, axis):
     u = np.array(axis) / np.linalg.norm(axis)
     w = theta * u
@@ -222,12 +219,8 @@ def test_quaternion_order_is_scalar_last_by_default_like_scipy():
     R = SO3.from_quat([0.0, 0.0, s, s])  # 90 degrees about z, scalar last
     assert close(R.log(), [0.0, 0.0, PI / 2], 1e-15)
     assert close(R.as_quat(), Rotation.from_rotvec([0.0, 0.0, PI / 2]).as_quat(), 1e-15)
-    assert close(
-        SO3.from_quat([s, s, 0.0, 0.0], scalar_first=True).log(), [PI / 2, 0.0, 0.0], 1e-15
-    )
-    assert close(
-        SO3.from_quat([s, 0.0, 0.0, s], scalar_first=True).log(), [0.0, 0.0, PI / 2], 1e-15
-    )
+    assert close(SO3.from_quat([s, s, 0.0, 0.0], scalar_first=True).log(), [PI / 2, 0.0, 0.0], 1e-15)
+    assert close(SO3.from_quat([s, 0.0, 0.0, s], scalar_first=True).log(), [0.0, 0.0, PI / 2], 1e-15)
 
 
 @pytest.mark.parametrize("scale", [1e-200, 1e-160, 1.0, 1e160, 1e200])
@@ -374,18 +367,54 @@ STORED = {
     Twist: {"vector", "linear", "angular"},
     Wrench: {"vector", "force", "torque"},
     Screw: {"point", "direction", "pitch", "magnitude"},
-    Chain: {"space_screws", "body_screws", "home", "n_joints", "joint_types", "joint_names", "lower", "upper",
-            "velocity_limits", "effort_limits", "base", "tool", "gravity", "link_inertias"},
+    Chain: {
+        "space_screws",
+        "body_screws",
+        "home",
+        "n_joints",
+        "joint_types",
+        "joint_names",
+        "lower",
+        "upper",
+        "velocity_limits",
+        "effort_limits",
+        "base",
+        "tool",
+        "gravity",
+        "link_inertias",
+    },
 }
 COMPUTED = {
-    SO3: {"log", "angle", "inverse", "act", "adjoint", "as_matrix", "as_quat", "as_euler", "as_rpy",
-          "normalized", "is_approx", "to_scipy"},
+    SO3: {
+        "log",
+        "angle",
+        "inverse",
+        "act",
+        "adjoint",
+        "as_matrix",
+        "as_quat",
+        "as_euler",
+        "as_rpy",
+        "normalized",
+        "is_approx",
+        "to_scipy",
+    },
     SE3: {"log", "inverse", "act", "act_inv", "adjoint", "as_matrix", "normalized", "is_approx", "to_scipy"},
     Twist: {"to_modern_robotics", "hat", "ad", "bracket", "screw", "pitch", "power", "is_approx"},
     Wrench: {"power", "screw", "pitch", "is_approx"},
     Screw: {"is_approx"},
-    Chain: {"forward", "forward_body", "jacobian_space", "jacobian_body", "inverse_kinematics", "inverse_dynamics",
-            "forward_dynamics", "mass_matrix", "gravity_torques", "coriolis"},
+    Chain: {
+        "forward",
+        "forward_body",
+        "jacobian_space",
+        "jacobian_body",
+        "inverse_kinematics",
+        "inverse_dynamics",
+        "forward_dynamics",
+        "mass_matrix",
+        "gravity_torques",
+        "coriolis",
+    },
 }
 
 
@@ -415,7 +444,7 @@ def test_se3_rotation_and_translation_are_properties():
     assert isinstance(g.translation, np.ndarray) and g.translation.shape == (3,)
     assert np.array_equal(g.translation, [1.0, 2.0, 3.0])
     with pytest.raises(TypeError, match="not callable"):
-        g.translation()  # noqa: the old method form fails loudly, never a bound method
+        g.translation()  # the old method form fails loudly, never a bound method
     with pytest.raises(TypeError, match="not callable"):
         g.rotation()
     xi = Twist(v=[0.0, 0.0, 0.5], w=[0.0, 0.0, 2.0])
@@ -524,9 +553,7 @@ def test_seed_worked_example(l1, theta):
     )
     assert np.array_equal(xi.hat(), [[0, -1, 0, l1], [1, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]])
     c, s = math.cos(theta), math.sin(theta)
-    closed_form = np.array(
-        [[c, -s, 0, l1 * s], [s, c, 0, l1 * (1 - c)], [0, 0, 1, 0], [0, 0, 0, 1]]
-    )
+    closed_form = np.array([[c, -s, 0, l1 * s], [s, c, 0, l1 * (1 - c)], [0, 0, 1, 0], [0, 0, 0, 1]])
     g = SE3.exp(theta * xi.vector)
     assert close(g.as_matrix(), closed_form, 1e-13)
     axis = np.array([[0.0, l1, z] for z in (-3.0, 0.0, 2.5)])
@@ -824,14 +851,9 @@ def test_chain_pickles_its_screws_and_home_and_rebuilds_the_rest():
     assert np.array_equal(np.array(state[:12]).reshape(2, 6), arm.space_screws)
     back = pickle.loads(pickle.dumps(arm))
     assert back.body_screws.tobytes() == arm.body_screws.tobytes()
-    assert (
-        back.forward([0.3, -0.2]).tobytes()
-        == arm.forward([0.3, -0.2]).tobytes()
-    )
+    assert back.forward([0.3, -0.2]).tobytes() == arm.forward([0.3, -0.2]).tobytes()
     for bad in ((1.0,) * 17, (1.0,) * 12, (1.0,) * (6 * 33 + 12), [1.0] * 18, None):
-        with pytest.raises(
-            ValueError, match=r"Chain.__setstate__: expected a tuple of 6 n \+ 12 floats"
-        ):
+        with pytest.raises(ValueError, match=r"Chain.__setstate__: expected a tuple of 6 n \+ 12 floats"):
             Chain.__new__(Chain).__setstate__(bad)
     with pytest.raises(TypeError, match="floats"):
         Chain.__new__(Chain).__setstate__(("a",) + (1.0,) * 17)
@@ -870,9 +892,7 @@ def test_repr_shows_the_numbers():
     assert repr(SE3(translation=[1.0, 2.0, 3.5])) == (
         "SE3(rotation=[[1., 0., 0.], [0., 1., 0.], [0., 0., 1.]], translation=[1. , 2. , 3.5])"
     )
-    assert (
-        repr(Twist(v=[1.0, 2.0, 3.0], w=[0.0, 0.0, 1.0])) == "Twist(v=[1., 2., 3.], w=[0., 0., 1.])"
-    )
+    assert repr(Twist(v=[1.0, 2.0, 3.0], w=[0.0, 0.0, 1.0])) == "Twist(v=[1., 2., 3.], w=[0., 0., 1.])"
     assert repr(Wrench(f=[0.0, 0.0, -9.81])) == "Wrench(f=[ 0.  ,  0.  , -9.81], tau=[0., 0., 0.])"
     assert repr(Twist(v=[1.0, 0.0, 0.0]).screw()) == (
         "Screw(point=[0., 0., 0.], direction=[1., 0., 0.], pitch=inf, magnitude=1.0)"
@@ -1050,9 +1070,7 @@ def public_members(cls):
 @pytest.mark.parametrize("cls", CLASSES, ids=lambda c: c.__name__)
 def test_every_member_is_documented_with_named_arguments(cls):
     for name, value in public_members(cls):
-        doc = getattr(value, "__doc__", None) or getattr(
-            getattr(value, "fget", None), "__doc__", None
-        )
+        doc = getattr(value, "__doc__", None) or getattr(getattr(value, "fget", None), "__doc__", None)
         assert doc and doc.strip(), f"{cls.__name__}.{name} has no docstring"
         assert "arg0" not in doc, f"{cls.__name__}.{name} has an unnamed argument"
 
@@ -1063,9 +1081,7 @@ def docstring_examples():
     for cls in CLASSES:
         found.append((cls.__name__, cls.__doc__))
         for name, value in public_members(cls):
-            doc = getattr(value, "__doc__", None) or getattr(
-                getattr(value, "fget", None), "__doc__", None
-            )
+            doc = getattr(value, "__doc__", None) or getattr(getattr(value, "fget", None), "__doc__", None)
             found.append((f"{cls.__name__}.{name}", doc))
     return [(name, doc) for name, doc in found if doc and ">>>" in doc]
 
@@ -1105,12 +1121,8 @@ def test_objects_agree_with_the_se3_array_functions(xi, F):
     assert np.array_equal(chasles.se3_exp(xi), g.as_matrix())
     assert np.array_equal(chasles.se3_log(g.as_matrix()), g.log())
     assert np.array_equal(chasles.se3_adjoint(g.as_matrix()), g.adjoint())
-    assert np.array_equal(
-        chasles.se3_act_wrench(g.as_matrix(), F), g.act(Wrench.from_vector(F)).vector
-    )
-    assert np.array_equal(
-        chasles.se3_act_twist(g.as_matrix(), xi), g.act(Twist.from_vector(xi)).vector
-    )
+    assert np.array_equal(chasles.se3_act_wrench(g.as_matrix(), F), g.act(Wrench.from_vector(F)).vector)
+    assert np.array_equal(chasles.se3_act_twist(g.as_matrix(), xi), g.act(Twist.from_vector(xi)).vector)
 
 
 def live_objects():
@@ -1137,9 +1149,7 @@ def live_objects():
     ]
 
 
-@pytest.mark.parametrize(
-    "x, arguments", live_objects(), ids=lambda v: "" if isinstance(v, tuple) else type(v).__name__
-)
+@pytest.mark.parametrize("x, arguments", live_objects(), ids=lambda v: "" if isinstance(v, tuple) else type(v).__name__)
 def test_init_and_setstate_again_on_a_live_object_are_refused(x, arguments):
     """The classes are values: calling __init__ (or __setstate__) again on an
     object is a TypeError, and the object keeps its value. (pybind11 ignored

@@ -36,9 +36,10 @@ import math
 import os
 import pickle
 
-import chasles
 import numpy as np
 import pytest
+
+import chasles
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 LEGACY = os.path.join(HERE, "data", "pickles")
@@ -65,7 +66,10 @@ def _chain_with_model():
     inertias = [[2.0, 0.1, 0.0, 0.2, 0.05, 0.0, 0.0, 0.06, 0.0, 0.07],
                 [1.0, 0.0, 0.1, 0.0, 0.02, 0.0, 0.0, 0.03, 0.0, 0.04]]  # fmt: skip
     return chasles.Chain(
-        [chasles.Chain.revolute_screw([0.0, 0.0, 0.0], [0.0, 0.0, 1.0]), chasles.Chain.prismatic_screw([1.0, 0.0, 0.0])],
+        [
+            chasles.Chain.revolute_screw([0.0, 0.0, 0.0], [0.0, 0.0, 1.0]),
+            chasles.Chain.prismatic_screw([1.0, 0.0, 0.0]),
+        ],
         chasles.SE3(translation=[1.0 / 3.0, 0.0, 0.5]),
         joint_types=["revolute", "prismatic"],
         names=["shoulder", "slide"],
@@ -101,11 +105,16 @@ EXAMPLES = {
         "translation": lambda: chasles.Twist([1.0, 2.0, 3.0], [0.0, 0.0, 0.0]).screw(),
     },
     "SpatialInertia": {
-        "body": lambda: chasles.SpatialInertia(2.5, [0.1, 0.0, 1.0 / 3.0], [[0.1, 0.01, 0.0], [0.01, 0.2, 0.0], [0.0, 0.0, 0.25]])
+        "body": lambda: chasles.SpatialInertia(
+            2.5, [0.1, 0.0, 1.0 / 3.0], [[0.1, 0.01, 0.0], [0.01, 0.2, 0.0], [0.0, 0.0, 0.25]]
+        )
     },
     "Chain": {
         "plain": lambda: chasles.Chain(
-            [chasles.Chain.revolute_screw([1.0 / 3.0, 0.0, 0.0], [0.0, 0.0, 1.0]), chasles.Chain.prismatic_screw([1.0, 2.0, 3.0])],
+            [
+                chasles.Chain.revolute_screw([1.0 / 3.0, 0.0, 0.0], [0.0, 0.0, 1.0]),
+                chasles.Chain.prismatic_screw([1.0, 2.0, 3.0]),
+            ],
             chasles.SE3.exp([1.0, -2.0, 1.0 / 3.0, 0.3, 0.2, -0.1]),
         ),
         "model": _chain_with_model,
@@ -167,16 +176,23 @@ def _spline_times(state):
 
 
 TAMPERED = {
-    "SO3": [("2 I, not a rotation", _not_rotation),
-            ("a reflection", lambda s: (1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, -1.0))],
+    "SO3": [
+        ("2 I, not a rotation", _not_rotation),
+        ("a reflection", lambda s: (1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, -1.0)),
+    ],
     "SE3": [("2 I, not a rotation", _not_rotation), ("an infinite translation", _set(11, math.inf))],
     "Twist": [("inf", _set(5, -math.inf))],
     "Wrench": [("inf", _set(2, math.inf))],
     "Screw": [("a NaN pitch", _set(6, math.nan)), ("an infinite point", _set(1, math.inf))],
-    "SpatialInertia": [("a negative mass", _set(0, -1.0)), ("a zero mass", _set(0, 0.0)),
-                       ("an inertia that is not positive definite", _set(4, -0.1))],
-    "Chain": [("an infinite screw", _chain_screw(0, math.inf)),
-              ("a revolute axis that is not a unit vector", _chain_screw(5, 0.5))],
+    "SpatialInertia": [
+        ("a negative mass", _set(0, -1.0)),
+        ("a zero mass", _set(0, 0.0)),
+        ("an inertia that is not positive definite", _set(4, -0.1)),
+    ],
+    "Chain": [
+        ("an infinite screw", _chain_screw(0, math.inf)),
+        ("a revolute axis that is not a unit vector", _chain_screw(5, 0.5)),
+    ],
     "SO3Spline": [("times that do not increase", _spline_times)],
     "SE3Spline": [("times that do not increase", _spline_times)],
 }

@@ -16,10 +16,11 @@ matplotlib = pytest.importorskip("matplotlib")
 matplotlib.use("Agg", force=True)  # before pyplot is imported: no display needed
 
 import matplotlib.pyplot as plt
-from chasles import SE3, SO3, Chain, Screw, Twist, plot
 from matplotlib.colors import to_rgba
 from matplotlib.figure import Figure
 from scipy.spatial.transform import Rotation
+
+from chasles import SE3, SO3, Chain, Screw, Twist, plot
 
 TOL = 1e-12
 
@@ -94,9 +95,7 @@ def test_frame_draws_the_rotation_columns_from_the_origin(ax):
         g = random_pose(rng)
         R, p = g.rotation.as_matrix(), g.translation
         f = plot.frame(g, ax=ax, label="b", length=0.7)
-        for i, (line, color) in enumerate(
-            zip((f.x, f.y, f.z), ("tab:red", "tab:green", "tab:blue"))
-        ):
+        for i, (line, color) in enumerate(zip((f.x, f.y, f.z), ("tab:red", "tab:green", "tab:blue"))):
             pts = data(line)
             assert np.allclose(pts[0], p, atol=TOL, rtol=0)
             assert np.allclose(pts[1], p + 0.7 * R[:, i], atol=TOL, rtol=0)
@@ -125,9 +124,7 @@ def test_frame_makes_a_pyplot_figure_without_ax():
         plt.close("all")
 
 
-@pytest.mark.parametrize(
-    "bad", [np.eye(3), np.zeros((2, 4, 4)), np.full((4, 4), np.nan), [[1.0, 2.0]]]
-)
+@pytest.mark.parametrize("bad", [np.eye(3), np.zeros((2, 4, 4)), np.full((4, 4), np.nan), [[1.0, 2.0]]])
 def test_frame_refuses_what_is_not_one_pose(ax, bad):
     with pytest.raises(ValueError):
         plot.frame(bad, ax=ax)
@@ -152,9 +149,7 @@ def test_frames_of_an_array_and_of_a_list_agree(ax):
     for g, fa, fb in zip(poses, a.frames, b.frames):
         for i in range(3):
             assert np.array_equal(data(fa[i]), data(fb[i]))
-            assert np.allclose(
-                data(fa[i])[1] - g.translation, 0.3 * g.rotation.as_matrix()[:, i]
-            )
+            assert np.allclose(data(fa[i])[1] - g.translation, 0.3 * g.rotation.as_matrix()[:, i])
     assert [f.label.get_text().strip() for f in a.frames] == [str(i) for i in range(6)]
     assert np.allclose(data(a.path), stacked[:, :3, 3], atol=0, rtol=0)
 
@@ -199,9 +194,7 @@ def test_screw_of_a_twist_axis_pitch_and_helix(ax):
         helix = data(s.helix)
         assert helix.shape == (50, 3)
         assert np.allclose(helix, expected, atol=1e-12, rtol=0)
-        assert np.allclose(data(s.start)[0], expected[0]) and np.allclose(
-            data(s.end)[0], expected[-1]
-        )
+        assert np.allclose(data(s.start)[0], expected[0]) and np.allclose(data(s.end)[0], expected[-1])
         # The axis covers the helix's extent along it.
         along_axis, along_helix = (axis - q) @ d, (helix - q) @ d
         assert along_axis.min() < along_helix.min() and along_axis.max() > along_helix.max()
@@ -212,9 +205,7 @@ def test_screw_default_point_circles_the_axis_at_distance_one(ax):
     xi = Twist(v=[3.0, 0.0, 0.0], w=[0.0, 0.0, 1.5])  # axis through (0, 2, 0) along z, pitch 0
     s = plot.screw(xi, ax=ax, theta=(0.0, 2 * np.pi / 1.5))
     helix = data(s.helix)
-    assert np.allclose(
-        distance_to_line(helix, np.array([0.0, 2.0, 0.0]), np.array([0.0, 0.0, 1.0])), 1.0
-    )
+    assert np.allclose(distance_to_line(helix, np.array([0.0, 2.0, 0.0]), np.array([0.0, 0.0, 1.0])), 1.0)
     assert np.allclose(helix[0], helix[-1], atol=1e-12)  # one full turn
     assert np.allclose(helix[:, 2], 0.0, atol=1e-15)
     assert s.pitch.get_text() == "pitch h = 0"

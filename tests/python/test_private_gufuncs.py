@@ -7,9 +7,10 @@ sizes that disagree, dask's apply_gufunc) holds for them."""
 
 from __future__ import annotations
 
-import chasles
 import numpy as np
 import pytest
+
+import chasles
 from chasles import _core
 
 ARM = chasles.Chain(
@@ -29,7 +30,10 @@ PRIVATE = {
     "_mass_matrix": ("(n,6),(4,4),(n,6,6),(n)->(n,n)", ["dddd->d"]),
     "_gravity_torques": ("(n,6),(4,4),(n,6,6),(3),(n)->(n)", ["ddddd->d"]),
     "_coriolis": ("(n,6),(4,4),(n,6,6),(n),(n)->(n)", ["ddddd->d"]),
-    "_inverse_kinematics": ("(n,6),(4,4),(n),(n),(),(),(),(4,4),(n),(),()->(n),(),(),(6)", ["ddddddiddi" + np.dtype(np.uint64).char + "->d?id"]),
+    "_inverse_kinematics": (
+        "(n,6),(4,4),(n),(n),(),(),(),(4,4),(n),(),()->(n),(),(),(6)",
+        ["ddddddiddi" + np.dtype(np.uint64).char + "->d?id"],
+    ),
     "_so3_spline": ("(n),(n,3,3),(n,9),()->(3,3)", ["dddd->d"]),
     "_so3_spline_rates": ("(n),(n,3,3),(n,9),()->(3,3),(3),(3)", ["dddd->ddd"]),
     "_se3_spline": ("(n),(n,4,4),(n,18),()->(4,4)", ["dddd->d"]),
@@ -67,7 +71,10 @@ def test_the_run_time_size_sets_the_result_shapes():
     assert _core._chain_jacobian_space(S, M, theta).shape == (2, 3, 6, ARM.n_joints)
     q = rng.normal(size=(4, ARM.n_joints))
     assert ARM.mass_matrix(q).shape == (4, ARM.n_joints, ARM.n_joints)
-    assert _core._so3_spline(np.arange(7.0), np.broadcast_to(np.eye(3), (7, 3, 3)), np.zeros((7, 9)), 2.5).shape == (3, 3)
+    assert _core._so3_spline(np.arange(7.0), np.broadcast_to(np.eye(3), (7, 3, 3)), np.zeros((7, 9)), 2.5).shape == (
+        3,
+        3,
+    )
 
 
 def test_out_fills_the_given_array_with_the_same_bits():
@@ -105,8 +112,9 @@ def test_several_results_with_their_own_dtypes_and_out():
     q, converged, iterations, error = _core._inverse_kinematics(*args)
     assert (q.dtype, converged.dtype, iterations.dtype, error.dtype) == (np.float64, np.bool_, np.int32, np.float64)
     assert q.shape == (3, ARM.n_joints) and converged.shape == iterations.shape == (3,) and error.shape == (3, 6)
-    r = ARM.inverse_kinematics(targets, seeds, position_tolerance=1e-10, orientation_tolerance=1e-10,
-                               max_iterations=100)
+    r = ARM.inverse_kinematics(
+        targets, seeds, position_tolerance=1e-10, orientation_tolerance=1e-10, max_iterations=100
+    )
     np.testing.assert_array_equal(q, r.q)
     np.testing.assert_array_equal(converged, r.converged)
     np.testing.assert_array_equal(iterations, r.iterations)
@@ -129,15 +137,27 @@ def test_ik_batch_element_i_draws_its_restarts_from_seed_plus_i():
         one = ARM.inverse_kinematics(targets[i], seeds[i], max_iterations=3, restarts=4, seed=11 + i)
         np.testing.assert_array_equal(batch.q[i], one.q)
         assert batch.iterations[i] == one.iterations and batch.converged[i] == one.converged
-    again = ARM.inverse_kinematics(targets.reshape(2, 3, 4, 4), seeds.reshape(2, 3, -1), max_iterations=3,
-                                   restarts=4, seed=11)
+    again = ARM.inverse_kinematics(
+        targets.reshape(2, 3, 4, 4), seeds.reshape(2, 3, -1), max_iterations=3, restarts=4, seed=11
+    )
     np.testing.assert_array_equal(again.q.reshape(6, -1), batch.q)
 
 
 def test_more_joints_than_the_bound_give_nan_results_in_every_output():
     n = 33
-    outs = _core._inverse_kinematics(np.zeros((n, 6)), np.eye(4), np.zeros(n), np.zeros(n), 0.0, 0.0, np.int32(1),
-                                     np.eye(4), np.zeros(n), np.int32(0), np.uint64(0))
+    outs = _core._inverse_kinematics(
+        np.zeros((n, 6)),
+        np.eye(4),
+        np.zeros(n),
+        np.zeros(n),
+        0.0,
+        0.0,
+        np.int32(1),
+        np.eye(4),
+        np.zeros(n),
+        np.int32(0),
+        np.uint64(0),
+    )
     assert np.isnan(outs[0]).all() and not outs[1] and outs[2] == 0 and np.isnan(outs[3]).all()
     assert np.isnan(_core._mass_matrix(np.zeros((n, 6)), np.eye(4), np.zeros((n, 6, 6)), np.zeros(n))).all()
 
@@ -186,8 +206,15 @@ def test_dask_maps_a_run_time_core_gufunc_over_chunks():
     rng = np.random.default_rng(8)
     theta = rng.normal(size=(500, ARM.n_joints))
     d = dask_array.from_array(theta, chunks=(120, ARM.n_joints))
-    lazy = dask_array.apply_gufunc(_core._chain_jacobian_space, _core._chain_jacobian_space.signature, S, M, d,
-                                   output_dtypes=np.float64, output_sizes={"n": ARM.n_joints})
+    lazy = dask_array.apply_gufunc(
+        _core._chain_jacobian_space,
+        _core._chain_jacobian_space.signature,
+        S,
+        M,
+        d,
+        output_dtypes=np.float64,
+        output_sizes={"n": ARM.n_joints},
+    )
     assert isinstance(lazy, dask_array.Array) and lazy.shape == (500, 6, ARM.n_joints)
     np.testing.assert_array_equal(lazy.compute(), ARM.jacobian_space(theta))
 
@@ -199,8 +226,15 @@ def test_dask_maps_a_gufunc_of_several_results():
     spline = chasles.SO3Spline(times, keys)
     coefficients = _core._so3_spline_fit(times, keys, True)
     t = dask_array.from_array(rng.uniform(0, 3, size=400), chunks=100)
-    R, w, dw = dask_array.apply_gufunc(_core._so3_spline_rates, _core._so3_spline_rates.signature, times, keys,
-                                       coefficients, t, output_dtypes=(np.float64,) * 3)
+    R, w, dw = dask_array.apply_gufunc(
+        _core._so3_spline_rates,
+        _core._so3_spline_rates.signature,
+        times,
+        keys,
+        coefficients,
+        t,
+        output_dtypes=(np.float64,) * 3,
+    )
     assert isinstance(w, dask_array.Array)
     np.testing.assert_array_equal(R.compute(), spline(t.compute()))
     np.testing.assert_array_equal(w.compute(), spline.body_velocity(t.compute()))

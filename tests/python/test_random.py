@@ -73,17 +73,13 @@ def test_objects_random():
     np.testing.assert_array_equal(R.as_matrix(), chasles.so3_random(rng=7))
     g = chasles.SE3.random(rng=8, low=[0, 1, 2], high=[0.5, 1.5, 2.5])
     assert isinstance(g, chasles.SE3)
-    np.testing.assert_array_equal(
-        g.as_matrix(), chasles.se3_random(rng=8, low=[0, 1, 2], high=[0.5, 1.5, 2.5])
-    )
+    np.testing.assert_array_equal(g.as_matrix(), chasles.se3_random(rng=8, low=[0, 1, 2], high=[0.5, 1.5, 2.5]))
     assert isinstance(chasles.SO3.random(), chasles.SO3)
 
 
 def test_so3_from_uniforms_at_known_points():
     np.testing.assert_allclose(chasles.so3_from_uniforms([1.0, 0.0, 0.0]), np.eye(3), atol=1e-15)
-    np.testing.assert_allclose(
-        chasles.so3_from_uniforms([0.0, 0.0, 0.0]), np.diag([-1.0, 1.0, -1.0]), atol=1e-15
-    )
+    np.testing.assert_allclose(chasles.so3_from_uniforms([0.0, 0.0, 0.0]), np.diag([-1.0, 1.0, -1.0]), atol=1e-15)
     np.testing.assert_allclose(
         chasles.so3_from_uniforms([0.5, 0.25, 0.0]),
         Rotation.from_rotvec([np.pi / 2, 0, 0]).as_matrix(),

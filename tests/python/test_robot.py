@@ -19,8 +19,8 @@ import importlib.metadata
 import modern_robotics as mr
 import numpy as np
 import pytest
-from scipy.linalg import expm
 from helpers import hat6
+from scipy.linalg import expm
 
 from chasles import SE3, Chain, SpatialInertia, _core
 
@@ -126,7 +126,9 @@ def test_ik_random_seeds_with_restarts(arms):
 
 def test_ik_reports_an_unreachable_target_and_bounds_iterations(arms):
     chain = arms["ur5"]
-    far = SE3.from_matrix(np.asarray(chain.home) + np.block([[np.zeros((3, 3)), np.full((3, 1), 5.0)], [np.zeros((1, 4))]]))
+    far = SE3.from_matrix(
+        np.asarray(chain.home) + np.block([[np.zeros((3, 3)), np.full((3, 1), 5.0)], [np.zeros((1, 4))]])
+    )
     r = chain.inverse_kinematics(far, np.zeros(6), max_iterations=20)
     assert not r.converged and r.iterations <= 20 and np.linalg.norm(r.error[:3]) > 3
     assert np.all(np.isfinite(r.q))
@@ -242,9 +244,7 @@ def test_dynamics_one_configuration_gives_the_bits_of_the_gufuncs(arms):
 
     ur5 = arms["ur5"]
     base = SE3.exp([0.3, -0.2, 0.5, 0.4, -0.7, 1.1])
-    chain = Chain(
-        ur5.space_screws, ur5.home, link_inertias=ur5.link_inertias, base=base, gravity=[0.1, -0.2, -9.7]
-    )
+    chain = Chain(ur5.space_screws, ur5.home, link_inertias=ur5.link_inertias, base=base, gravity=[0.1, -0.2, -9.7])
     S, M, G, g = chain.space_screws, np.asarray(chain.home), world_inertias(chain), chain.gravity
     rng = np.random.default_rng(8)
     q, qd, x = rng.uniform(-2, 2, (3, 6))
@@ -393,13 +393,15 @@ def test_forward_dynamics_raises_where_the_mass_matrix_is_not_positive_definite(
     # the private gufunc says where (these chains have no base frame: their
     # link inertias are the gufunc's, as 6x6 matrices G, order (v, w))
     G = []
-    for m, c, (ixx, ixy, ixz, iyy, iyz, izz) in zip(chain.link_inertias[:, 0], chain.link_inertias[:, 1:4],
-                                                      chain.link_inertias[:, 4:]):
+    for m, c, (ixx, ixy, ixz, iyy, iyz, izz) in zip(
+        chain.link_inertias[:, 0], chain.link_inertias[:, 1:4], chain.link_inertias[:, 4:]
+    ):
         C = np.array([[0, -c[2], c[1]], [c[2], 0, -c[0]], [-c[1], c[0], 0]])
         Ic = np.array([[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]])
         G.append(np.block([[m * np.eye(3), -m * C], [m * C, Ic - m * C @ C]]))
-    qdd, joints = _core._forward_dynamics(chain.space_screws, np.asarray(chain.home), np.array(G), chain.gravity,
-                                           Q, qd, tau, np.zeros(6))
+    qdd, joints = _core._forward_dynamics(
+        chain.space_screws, np.asarray(chain.home), np.array(G), chain.gravity, Q, qd, tau, np.zeros(6)
+    )
     assert joints.dtype == np.int32 and joints.shape == (2, 3) and (joints == joint).all() and np.isnan(qdd).all()
 
 
@@ -431,8 +433,15 @@ def test_forward_dynamics_batch_names_the_first_bad_configuration_or_gives_nan_t
         for i in bad:
             q[i + (1,)] = np.pi / 2 if i[1] % 2 else -np.pi / 2
         index = r"\(1, 2\)"
-        with pytest.raises(ValueError, match=NOT_PD + r" at batch index " + index + r", the first of 3 of "
-                           + str(q[..., 0].size) + r" configurations.*fails at joint 0"):
+        with pytest.raises(
+            ValueError,
+            match=NOT_PD
+            + r" at batch index "
+            + index
+            + r", the first of 3 of "
+            + str(q[..., 0].size)
+            + r" configurations.*fails at joint 0",
+        ):
             chain.forward_dynamics(q, qd, tau)
         qdd = chain.forward_dynamics(q, qd, tau, on_failure="nan")
         flagged = np.isnan(qdd).any(axis=-1)
@@ -441,7 +450,9 @@ def test_forward_dynamics_batch_names_the_first_bad_configuration_or_gives_nan_t
         ok = ~flagged
         M = chain.mass_matrix(q[ok])
         h = chain.inverse_dynamics(q[ok], qd[ok], np.zeros(2))
-        np.testing.assert_allclose(qdd[ok], np.linalg.solve(M, (tau[ok] - h)[..., None])[..., 0], rtol=1e-12, atol=1e-12)
+        np.testing.assert_allclose(
+            qdd[ok], np.linalg.solve(M, (tau[ok] - h)[..., None])[..., 0], rtol=1e-12, atol=1e-12
+        )
         # each element is the single call's
         for i in [(0, 0), (1, 2), (2, 4)]:
             one = chain.forward_dynamics(q[i], qd[i], tau[i], on_failure="nan")

@@ -14,11 +14,12 @@ import subprocess
 import sys
 import textwrap
 
-import chasles
 import numpy as np
 import pytest
-from chasles import SE3, SO3
 from scipy.spatial.transform import RigidTransform, Rotation
+
+import chasles
+from chasles import SE3, SO3
 
 EPS = np.finfo(np.float64).eps
 TOL = 8 * EPS
@@ -117,9 +118,7 @@ def test_scipy_from_matrix_takes_an_se3():
     assert tf.single
     np.testing.assert_allclose(tf.as_matrix(), g.as_matrix(), rtol=0, atol=TOL)
     # and the rotation part of a motion, as scipy's Rotation
-    np.testing.assert_allclose(
-        Rotation.from_matrix(g.rotation).as_matrix(), g.rotation.as_matrix(), rtol=0, atol=TOL
-    )
+    np.testing.assert_allclose(Rotation.from_matrix(g.rotation).as_matrix(), g.rotation.as_matrix(), rtol=0, atol=TOL)
 
 
 def test_se3_from_scipy_refuses_an_unnormalized_transform():
@@ -148,9 +147,7 @@ def test_a_stack_is_refused_with_the_array_route():
     # the routes the message names give the same numbers as the objects
     Rs = stack.as_matrix()
     np.testing.assert_allclose(chasles.so3_log(Rs), stack.as_rotvec(), rtol=0, atol=16 * EPS)
-    np.testing.assert_allclose(
-        chasles.so3_from_quat(stack.as_quat()), Rs, rtol=0, atol=TOL
-    )
+    np.testing.assert_allclose(chasles.so3_from_quat(stack.as_quat()), Rs, rtol=0, atol=TOL)
     assert all(SO3.from_scipy(stack[i]).is_approx(SO3.from_matrix(Rs[i]), TOL) for i in range(5))
 
 
@@ -174,9 +171,7 @@ def test_other_types_are_a_type_error(call, arg, name):
 
 
 def run_python(code):
-    return subprocess.run(
-        [sys.executable, "-c", textwrap.dedent(code)], capture_output=True, text=True, check=False
-    )
+    return subprocess.run([sys.executable, "-c", textwrap.dedent(code)], capture_output=True, text=True, check=False)
 
 
 def test_import_chasles_does_not_import_scipy():
@@ -218,9 +213,7 @@ def test_a_missing_scipy_is_a_clear_import_error():
     assert out.returncode == 0, out.stderr
     lines = out.stdout.strip().split("\n")
     assert len(lines) == 4, out.stdout
-    for line, what in zip(
-        lines, ["SO3.to_scipy()", "SE3.to_scipy()", "SO3.from_scipy(r)", "SE3.from_scipy(tf)"]
-    ):
+    for line, what in zip(lines, ["SO3.to_scipy()", "SE3.to_scipy()", "SO3.from_scipy(r)", "SE3.from_scipy(tf)"]):
         kind, message, cause = line.split(" | ")
         assert kind == "ImportError"
         assert message.startswith(what + " needs scipy") and "pip install scipy" in message, line

@@ -20,9 +20,10 @@ import pydoc
 import re
 
 import api_spec as A
-import chasles
 import numpy as np
 import pytest
+
+import chasles
 from chasles import SE3, SO3, Chain, Twist, Wrench
 
 CORE = "chasles._core"
@@ -47,9 +48,7 @@ def is_pybind11_function(f) -> bool:
 
 
 FUNCTIONS = {
-    name: function_of(value)
-    for name, value in A.callables().items()
-    if is_pybind11_function(function_of(value))
+    name: function_of(value) for name, value in A.callables().items() if is_pybind11_function(function_of(value))
 }
 PROPERTIES = {name for name, value in A.callables().items() if isinstance(value, property)}
 
@@ -61,7 +60,7 @@ def test_the_public_callables_are_found():
 
 
 def split_top_level(text: str) -> list[str]:
-    """"a: int, b: tuple[int, int] = (1, 2)" -> ["a: int", "b: tuple[int, int] = (1, 2)"]."""
+    """ "a: int, b: tuple[int, int] = (1, 2)" -> ["a: int", "b: tuple[int, int] = (1, 2)"]."""
     parts, depth, current = [], 0, ""
     for c in text:
         if c in "([{":
@@ -116,7 +115,7 @@ def expected_parameters(name: str, f) -> list[tuple[str, object]]:
         head = [("self", inspect.Parameter.empty)] if first and first[0][0] == "self" else []
         return head + [("args", inspect.Parameter.empty), ("kwargs", inspect.Parameter.empty)]
     out = []
-    for i, (pname, default) in enumerate(first):
+    for i, (_, default) in enumerate(first):
         names = []
         for o in overloads:
             if o[i][0] not in names:

@@ -178,7 +178,9 @@ SCIPY_TOL = 1e-9
 def check_against_scipy(times, R, t):
     ours = SO3Spline(times, R, ends="chord")
     ref = RotationSpline(times, Rotation.from_matrix(R))
-    angle = np.linalg.norm(chasles.so3_log(chasles.so3_compose(np.swapaxes(ours(t), -1, -2), ref(t).as_matrix())), axis=-1)
+    angle = np.linalg.norm(
+        chasles.so3_log(chasles.so3_compose(np.swapaxes(ours(t), -1, -2), ref(t).as_matrix())), axis=-1
+    )
     assert angle.max() < SCIPY_TOL
     for order, f in ((1, ours.body_velocity), (2, ours.body_acceleration)):
         a, b = f(t), ref(t, order)
@@ -264,13 +266,25 @@ def test_sequences_of_objects_and_float32():
     [
         ([0.0], np.eye(3)[None], r"SO3Spline\(times\): expected shape \(N,\) with N >= 2, got \(1,\)"),
         (0.0, np.eye(3)[None], r"SO3Spline\(times\): expected shape \(N,\) with N >= 2, got \(\)"),
-        ([0.0, 0.0], np.stack([np.eye(3)] * 2), r"SO3Spline\(times\): expected strictly increasing times, got times\[0\]"),
+        (
+            [0.0, 0.0],
+            np.stack([np.eye(3)] * 2),
+            r"SO3Spline\(times\): expected strictly increasing times, got times\[0\]",
+        ),
         ([0.0, 2.0, 1.0], np.stack([np.eye(3)] * 3), r"strictly increasing.*times\[1\] = 2.0"),
         ([0.0, np.nan], np.stack([np.eye(3)] * 2), r"SO3Spline\(times\): expected finite times"),
         ([0.0, np.inf], np.stack([np.eye(3)] * 2), r"SO3Spline\(times\): expected finite times"),
-        ([0.0, 1.0], np.stack([np.eye(3)] * 3), r"SO3Spline\(rotations\): expected shape \(2, 3, 3\) \(one per time\), got \(3, 3, 3\)"),
+        (
+            [0.0, 1.0],
+            np.stack([np.eye(3)] * 3),
+            r"SO3Spline\(rotations\): expected shape \(2, 3, 3\) \(one per time\), got \(3, 3, 3\)",
+        ),
         ([0.0, 1.0], np.eye(3), r"SO3Spline\(rotations\): expected shape \(2, 3, 3\).*got \(3, 3\)"),
-        ([0.0, 1.0], np.stack([np.eye(3), 2 * np.eye(3)]), r"SO3Spline\(rotations\): key 1 is not a rotation: defect = 7"),
+        (
+            [0.0, 1.0],
+            np.stack([np.eye(3), 2 * np.eye(3)]),
+            r"SO3Spline\(rotations\): key 1 is not a rotation: defect = 7",
+        ),
         ([0.0, 1.0], np.stack([np.eye(3), np.full((3, 3), np.nan)]), r"SO3Spline\(rotations\): expected finite"),
     ],
 )
@@ -291,7 +305,9 @@ def test_bad_inputs_other():
         SE3Spline([0, 1], g, ends="clamped")
     with pytest.raises(TypeError, match=r"SO3Spline\(times\): expected real numbers \(float64\), got str"):
         SO3Spline("01", np.stack([np.eye(3)] * 2))
-    with pytest.raises(TypeError, match=r"SO3Spline\(rotations\): expected real numbers \(float64\), got dtype complex"):
+    with pytest.raises(
+        TypeError, match=r"SO3Spline\(rotations\): expected real numbers \(float64\), got dtype complex"
+    ):
         SO3Spline([0, 1], np.stack([np.eye(3)] * 2).astype(complex))
     s = SE3Spline([0, 1], g)
     with pytest.raises(ValueError, match=r"SE3Spline\(t\): expected finite times"):
@@ -342,7 +358,9 @@ def test_private_gufuncs_read_the_arrays_in_place():
     keys = np.broadcast_to(np.eye(3), (n, 3, 3))
     coefficients = np.broadcast_to(np.zeros(9), (n, 9))
     np.testing.assert_array_equal(_core._so3_spline(times, keys, coefficients, 5.5), np.eye(3))
-    g = _core._se3_spline_rates(times, np.broadcast_to(np.eye(4), (n, 4, 4)), np.broadcast_to(np.zeros(18), (n, 18)), 1.0)
+    g = _core._se3_spline_rates(
+        times, np.broadcast_to(np.eye(4), (n, 4, 4)), np.broadcast_to(np.zeros(18), (n, 18)), 1.0
+    )
     np.testing.assert_array_equal(g[0], np.eye(4))
 
 
@@ -361,7 +379,9 @@ def test_private_fits_refuse_inconsistent_operands(fit, k):
         (np.arange(1.0), np.broadcast_to(eye, (1, k, k))),
     ):
         shapes = rf"got times {re.escape(str(times.shape))} and keys {re.escape(str(keys.shape))}"
-        with pytest.raises(ValueError, match=rf"{fit}: expected times of shape \(n,\) and keys of shape \(n, {k}, {k}\).*{shapes}"):
+        with pytest.raises(
+            ValueError, match=rf"{fit}: expected times of shape \(n,\) and keys of shape \(n, {k}, {k}\).*{shapes}"
+        ):
             f(times, np.ascontiguousarray(keys), True)
 
 
@@ -369,8 +389,11 @@ def test_private_fits_refuse_inconsistent_operands(fit, k):
 @pytest.mark.parametrize("h", [1e-160, 1e200, 1e-101])
 def test_steps_beyond_the_range_are_refused_naming_the_step(cls, k, h):
     keys = np.stack([np.eye(k)] * 4)
-    with pytest.raises(ValueError, match=rf"{cls.__name__}\(times\): expected time steps between 1e-100 and 1e\+100 "
-                                         rf".*got times\[1\] - times\[0\] = {re.escape(repr(h))}"):
+    with pytest.raises(
+        ValueError,
+        match=rf"{cls.__name__}\(times\): expected time steps between 1e-100 and 1e\+100 "
+        rf".*got times\[1\] - times\[0\] = {re.escape(repr(h))}",
+    ):
         cls(np.array([0.0, 1.0, 2.0, 3.0]) * h, keys)
 
 

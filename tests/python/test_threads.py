@@ -22,10 +22,11 @@ import threading
 import time
 
 import api_spec as A
-import chasles
-from chasles import _core
 import numpy as np
 import pytest
+
+import chasles
+from chasles import _core
 
 ARRAY_FUNCTIONS = A.ARRAY_FUNCTIONS
 
@@ -124,9 +125,7 @@ def test_eight_threads_give_bit_identical_results():
         assert len(results[k]) == rounds
         for got in results[k]:
             for (label, _, _), want in zip(work, reference):
-                assert got[label] == want, (
-                    f"thread {k}: {label} differs from the single-threaded result"
-                )
+                assert got[label] == want, f"thread {k}: {label} differs from the single-threaded result"
 
 
 # ---- the GIL ---------------------------------------------------------------------------
@@ -227,9 +226,7 @@ def test_a_long_call_lets_another_thread_run_all_along():
             steps = max(steps, got)
             if steps >= max(100, baseline / 10):
                 break
-    assert steps >= max(100, baseline / 10), (
-        f"{steps} steps in {seconds:.3f} s; in a sleep as long: {baseline}"
-    )
+    assert steps >= max(100, baseline / 10), f"{steps} steps in {seconds:.3f} s; in a sleep as long: {baseline}"
 
 
 # ---- set_num_threads: a large batch split across threads inside the loop --------------
@@ -327,8 +324,16 @@ def test_set_and_get_num_threads(set_threads, n):
 
 @pytest.mark.parametrize(
     "n,error",
-    [(0, ValueError), (-1, ValueError), (1025, ValueError), (2**70, ValueError),
-     (2.0, TypeError), ("2", TypeError), (True, TypeError), (None, TypeError)],
+    [
+        (0, ValueError),
+        (-1, ValueError),
+        (1025, ValueError),
+        (2**70, ValueError),
+        (2.0, TypeError),
+        ("2", TypeError),
+        (True, TypeError),
+        (None, TypeError),
+    ],
 )
 def test_set_num_threads_refuses_what_is_not_a_thread_count(set_threads, n, error):
     set_threads(3)
@@ -345,7 +350,11 @@ def test_the_environment_variable_sets_the_count_at_import(value, expected, warn
     env = dict(os.environ, CHASLES_NUM_THREADS=value)
     r = subprocess.run(
         [sys.executable, "-c", "import chasles; print(chasles.get_num_threads())"],
-        env=env, capture_output=True, text=True, timeout=120, check=True,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=True,
     )
     assert r.stdout.strip() == str(expected)
     assert ("RuntimeWarning: CHASLES_NUM_THREADS must be an int from 1 to 1024" in r.stderr) == warns, r.stderr

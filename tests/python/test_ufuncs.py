@@ -8,9 +8,10 @@ from __future__ import annotations
 import inspect
 
 import api_spec as A
-import chasles
 import numpy as np
 import pytest
+
+import chasles
 
 SIGNATURES = {
     "so3_exp": "(3)->(3,3)",
@@ -38,9 +39,7 @@ SIGNATURES = {
 def operands(name, batch, rng, dtype=np.float64):
     """Valid operands of the array function `name` with a batch shape."""
     return [
-        A.sample_operand(arg, batch, rng, dtype)
-        for arg in A.SPEC[name].signatures[0]
-        if isinstance(arg, A.Operand)
+        A.sample_operand(arg, batch, rng, dtype) for arg in A.SPEC[name].signatures[0] if isinstance(arg, A.Operand)
     ]
 
 

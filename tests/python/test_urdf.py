@@ -249,15 +249,28 @@ def test_links_hanging_off_the_chain_ride_on_their_chain_link():
     # a -j1-> b -j2-> c (the chain, tip c); b carries a sensor (fixed, 1 m up
     # x) and c a finger (prismatic, off the chain: at zero, 1 m along y).
     def link(name, mass):
-        return (f'<link name="{name}"><inertial><origin xyz="0 0 0"/><mass value="{mass}"/>'
-                f'<inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/></inertial></link>')
+        return (
+            f'<link name="{name}"><inertial><origin xyz="0 0 0"/><mass value="{mass}"/>'
+            f'<inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/></inertial></link>'
+        )
 
     text = (
-        '<robot name="r">' + link("a", 5.0) + link("b", 1.0) + link("c", 2.0) + link("sensor", 1.0)
-        + link("finger", 2.0) + joint("j1", "revolute", "a", "b") + joint("j2", "revolute", "b", "c")
+        '<robot name="r">'
+        + link("a", 5.0)
+        + link("b", 1.0)
+        + link("c", 2.0)
+        + link("sensor", 1.0)
+        + link("finger", 2.0)
+        + joint("j1", "revolute", "a", "b")
+        + joint("j2", "revolute", "b", "c")
         + joint("s", "fixed", "b", "sensor", '<origin xyz="1 0 0"/>')
-        + joint("f", "prismatic", "c", "finger",
-                '<origin xyz="0 1 0"/><axis xyz="1 0 0"/><limit lower="0" upper="1" effort="1" velocity="1"/>')
+        + joint(
+            "f",
+            "prismatic",
+            "c",
+            "finger",
+            '<origin xyz="0 1 0"/><axis xyz="1 0 0"/><limit lower="0" upper="1" effort="1" velocity="1"/>',
+        )
         + "</robot>"
     )
     arm = Chain.from_urdf(text, "c")
@@ -279,8 +292,9 @@ def test_panda_hand_carries_its_fingers(arms):
         if link.find("inertial") is not None
     }
     # joint 7 moves link7, link8 and the hand (fixed), and the fingers (off the chain)
-    expected = sum(mass.get(k, 0.0) for k in ("panda_link7", "panda_link8", "panda_hand", "panda_leftfinger",
-                                              "panda_rightfinger"))
+    expected = sum(
+        mass.get(k, 0.0) for k in ("panda_link7", "panda_link8", "panda_hand", "panda_leftfinger", "panda_rightfinger")
+    )
     assert chain.link_inertias[6, 0] == pytest.approx(expected, rel=1e-15)
     assert mass.get("panda_leftfinger", 0.0) > 0
 
@@ -291,16 +305,38 @@ def test_panda_hand_carries_its_fingers(arms):
         (urdf(GOOD + joint("j3", "floating", "c", "d", ""), ("a", "b", "c", "d")), "d", None, "joint 'j3' is floating"),
         (urdf(GOOD + joint("j3", "planar", "c", "d", ""), ("a", "b", "c", "d")), "d", None, "joint 'j3' is planar"),
         (
-            urdf(GOOD + joint("j3", "revolute", "c", "d", '<mimic joint="j2"/><limit lower="0" upper="1" effort="1" velocity="1"/>'), ("a", "b", "c", "d")),
-            "d", None, "joint 'j3': <mimic>",
+            urdf(
+                GOOD
+                + joint(
+                    "j3",
+                    "revolute",
+                    "c",
+                    "d",
+                    '<mimic joint="j2"/><limit lower="0" upper="1" effort="1" velocity="1"/>',
+                ),
+                ("a", "b", "c", "d"),
+            ),
+            "d",
+            None,
+            "joint 'j3': <mimic>",
         ),
         (urdf(joint("j1", "revolute", "a", "x")), "b", None, "joint 'j1' names a missing link 'x'"),
         (urdf(GOOD + joint("j3", "fixed", "c", "b", "")), "c", None, "link 'b' is the child of joints"),
         (urdf(GOOD), "nowhere", None, r"tip_link\): no link named 'nowhere'"),
         (urdf(GOOD), "c", "nowhere", r"base_link\): no link named 'nowhere'"),
         (urdf(GOOD), "b", "c", "tip_link 'b' is not below base_link 'c'"),
-        (urdf(joint("j1", "revolute", "a", "b", '<axis xyz="0 0 1"/>'), ("a", "b")), "b", None, "joint 'j1': a revolute joint needs a <limit>"),
-        (urdf(joint("j1", "revolute", "a", "b", '<axis xyz="0 0 0"/><limit effort="1" velocity="1"/>'), ("a", "b")), "b", None, "<axis xyz> is zero"),
+        (
+            urdf(joint("j1", "revolute", "a", "b", '<axis xyz="0 0 1"/>'), ("a", "b")),
+            "b",
+            None,
+            "joint 'j1': a revolute joint needs a <limit>",
+        ),
+        (
+            urdf(joint("j1", "revolute", "a", "b", '<axis xyz="0 0 0"/><limit effort="1" velocity="1"/>'), ("a", "b")),
+            "b",
+            None,
+            "<axis xyz> is zero",
+        ),
         (urdf(joint("j1", "fixed", "a", "b", ""), ("a", "b")), "b", None, "no revolute, continuous or prismatic joint"),
         (urdf(joint("j1", "screwy", "a", "b", ""), ("a", "b")), "b", None, "unknown joint type 'screwy'"),
         ("<robot><link name='a'/>", "a", None, "not well-formed XML"),
@@ -493,6 +529,10 @@ def test_physically_impossible_inertias_are_not_refused():
     # the contract's decision: 48 link inertias of example-robot-data are not
     # positive semidefinite or violate the triangle inequality, and load
     # (diag(0, 0, 0.003) as anymal's hatch; moments 1, 1, 3; a negative moment)
-    for inertia in (("0", "0", "0", "0", "0", "0.003"), ("1", "0", "0", "1", "0", "3"), ("-0.1", "0", "0", "0.1", "0", "0.1")):
+    for inertia in (
+        ("0", "0", "0", "0", "0", "0.003"),
+        ("1", "0", "0", "1", "0", "3"),
+        ("-0.1", "0", "0", "0.1", "0", "0.1"),
+    ):
         arm = Chain.from_urdf(hostile_urdf.arm(c=hostile_urdf.link("c", 1.0, inertia=inertia)), "c")
         assert arm.link_inertias[1, 9] == float(inertia[5])

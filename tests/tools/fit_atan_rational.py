@@ -167,7 +167,7 @@ def _level(ref: list, n: int) -> tuple[list, list]:
                 m[i, k] = x**k
             for k in range(1, n):
                 m[i, n - 1 + k] = -hs[i] * x**k
-            m[i, 2 * n - 1] = -(-1) ** i * hs[i] * q_old[i]
+            m[i, 2 * n - 1] = -((-1) ** i) * hs[i] * q_old[i]
             rhs[i] = hs[i]
         sol = mp.lu_solve(m, rhs)
         p = [sol[k] for k in range(n)]
@@ -379,7 +379,7 @@ def measure(p: list, q: list, dtype) -> dict:
     mp.mp.dps = 40
     methods = list(MODES) + ["libm"]
     keys = [(m, b, k) for m in methods for b in ("acute", "obtuse") for k in ("f", "theta")]
-    worst = {key: (0.0, "") for key in keys}
+    worst = dict.fromkeys(keys, (0.0, ""))
     biggest = 0.0
     with np.errstate(over="raise", invalid="raise", divide="raise"):
         for uv2, uw, name in pts:
@@ -396,8 +396,10 @@ def measure(p: list, q: list, dtype) -> dict:
             n = np.sqrt(uv2)
             for m, (acute, f) in got.items():
                 branch = "acute" if acute else "obtuse"
-                errors = {"f": float(abs(exact(f) / f_true - 1)) / eps,
-                          "theta": float(abs(exact(f * n) - theta_true)) / eps}
+                errors = {
+                    "f": float(abs(exact(f) / f_true - 1)) / eps,
+                    "theta": float(abs(exact(f * n) - theta_true)) / eps,
+                }
                 for k, e in errors.items():
                     if e > worst[(m, branch, k)][0]:
                         worst[(m, branch, k)] = (e, where(half, name))
@@ -453,8 +455,7 @@ def literal(x: float, real: str) -> str:
 
 def cpp_struct(real: str, p: list, q: list) -> str:
     """The struct as series.hpp has it, one value a line (clang-format packs them)."""
-    lines = ["template <>", f"struct AtanRational<{real}> {{",
-             "  static constexpr bool available = true;"]
+    lines = ["template <>", f"struct AtanRational<{real}> {{", "  static constexpr bool available = true;"]
     for name, c in (("p", p), ("q", q)):
         head = f"  static constexpr {real} {name}[] = {{"
         body = (",\n" + " " * len(head)).join(literal(x, real) for x in c)
@@ -470,7 +471,7 @@ def committed(real: str, header: Path) -> tuple[list, list]:
     start = text.find(f"struct AtanRational<{real}> {{")
     if start < 0:
         raise SystemExit(f"{header} has no struct AtanRational<{real}>: pass --header")
-    block = text[start:text.find("\n};", start)]
+    block = text[start : text.find("\n};", start)]
 
     def array(name):
         found = re.search(rf"\b{name}\[\]\s*=\s*\{{(.*?)\}};", block, re.S)
@@ -480,8 +481,7 @@ def committed(real: str, header: Path) -> tuple[list, list]:
         suffix = "f" if real == "float" else ""
         for x in values:
             if not re.fullmatch(rf"[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?{suffix}", x):
-                raise SystemExit(f"{header}: AtanRational<{real}>::{name}[]: "
-                                 f"not a {real} literal: {x}")
+                raise SystemExit(f"{header}: AtanRational<{real}>::{name}[]: not a {real} literal: {x}")
         return [float(to_type(Fraction(x.removesuffix(suffix)), DTYPES[real])) for x in values]
 
     p, q = array("p"), array("q")
@@ -498,12 +498,16 @@ def report(real: str, p: list, q: list) -> None:
     n = len(p)
     e = fit_error([mp.mpf(x) for x in p], [mp.mpf(x) for x in q])
     eps = float(np.finfo(dtype).eps)
-    print(f"{real}: N = {n} (N' = {1 << (n - 1).bit_length()}), fit error of h with the "
-          f"coefficients in {real}: {e:.3g}, of g at most {e * GAIN:.3g} "
-          f"= {e * GAIN / eps:.2g} eps")
+    print(
+        f"{real}: N = {n} (N' = {1 << (n - 1).bit_length()}), fit error of h with the "
+        f"coefficients in {real}: {e:.3g}, of g at most {e * GAIN:.3g} "
+        f"= {e * GAIN / eps:.2g} eps"
+    )
     m = measure(p, q, dtype)
-    print(f"  worst errors in eps of {real} over {m['samples']} samples "
-          f"(f relative, theta = f n absolute; branch as each method chooses it):")
+    print(
+        f"  worst errors in eps of {real} over {m['samples']} samples "
+        f"(f relative, theta = f n absolute; branch as each method chooses it):"
+    )
     for method in m["methods"]:
         print(f"    {MODES.get(method, 'libm atan (for comparison)')}:")
         for branch in ("acute", "obtuse"):
@@ -514,21 +518,19 @@ def report(real: str, p: list, q: list) -> None:
     b2_max = U_RANGE[1] ** 2
     safe = safe_b2(p, q, dtype)
     bound = float(intermediate_bound(p, q, b2_max))
-    print(f"  largest intermediate over the samples {m['biggest']:.3g}; bound for B <= {b2_max:g} "
-          f"(|u| <= {U_RANGE[1]:g}): {bound:.3g}; finite in {real} for B <= {safe:.4g} "
-          f"(|u| <= {np.sqrt(safe):.4g}; the largest finite {real} is {top:.4g})")
+    print(
+        f"  largest intermediate over the samples {m['biggest']:.3g}; bound for B <= {b2_max:g} "
+        f"(|u| <= {U_RANGE[1]:g}): {bound:.3g}; finite in {real} for B <= {safe:.4g} "
+        f"(|u| <= {np.sqrt(safe):.4g}; the largest finite {real} is {top:.4g})"
+    )
 
 
 def main() -> None:
-    ap = argparse.ArgumentParser(description=__doc__,
-                                 formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--check", action="store_true",
-                    help="measure the arrays committed in the header")
-    ap.add_argument("--header", type=Path, default=SERIES,
-                    help="the header to read (default: series.hpp)")
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--check", action="store_true", help="measure the arrays committed in the header")
+    ap.add_argument("--header", type=Path, default=SERIES, help="the header to read (default: series.hpp)")
     for real in DTYPES:
-        ap.add_argument(f"--n-{real}", type=int,
-                        help=f"N for {real} (default: the smallest fitting g to 1%% of eps)")
+        ap.add_argument(f"--n-{real}", type=int, help=f"N for {real} (default: the smallest fitting g to 1%% of eps)")
     args = ap.parse_args()
     if args.check:
         for real in DTYPES:
@@ -536,14 +538,15 @@ def main() -> None:
         return
     eps = {real: float(np.finfo(dtype).eps) for real, dtype in DTYPES.items()}
     fits, errors = {}, {}
-    print(f"N   fit error of h (relative, exact coefficients); "
-          f"times {GAIN:.4f} (the largest z h / g) = of g")
+    print(f"N   fit error of h (relative, exact coefficients); times {GAIN:.4f} (the largest z h / g) = of g")
     for n in FIT_NS:
         fits[n] = remez(n)
         errors[n] = fit_error(*fits[n])
         e = errors[n] * GAIN
-        print(f"{n:<3d} {errors[n]:.3e}   of g {e:.3e} = {e / eps['double']:.2e} double eps, "
-              f"{e / eps['float']:.2e} float eps")
+        print(
+            f"{n:<3d} {errors[n]:.3e}   of g {e:.3e} = {e / eps['double']:.2e} double eps, "
+            f"{e / eps['float']:.2e} float eps"
+        )
     chosen = {"double": args.n_double, "float": args.n_float}
     for real in DTYPES:
         if chosen[real] is None:
@@ -551,8 +554,10 @@ def main() -> None:
         if chosen[real] not in fits:
             fits[chosen[real]] = remez(chosen[real])
             errors[chosen[real]] = fit_error(*fits[chosen[real]])
-        print(f"{real}: N = {chosen[real]} (fit error of g {errors[chosen[real]] * GAIN:.3g}, "
-              f"budget {BUDGET:g} eps = {BUDGET * eps[real]:.3g})")
+        print(
+            f"{real}: N = {chosen[real]} (fit error of g {errors[chosen[real]] * GAIN:.3g}, "
+            f"budget {BUDGET:g} eps = {BUDGET * eps[real]:.3g})"
+        )
     print()
     rounded = {}
     for real, dtype in DTYPES.items():

@@ -84,7 +84,7 @@ def worst_errors(name: str, coefficients: list, dtype) -> tuple[float, float]:
 def committed(real: str, name: str) -> list:
     """The coefficients of A, B (the columns of ab) or C in series.hpp."""
     text = SERIES.read_text()
-    block = text[text.index(f"struct ExpPolynomials<{real}> {{"):]
+    block = text[text.index(f"struct ExpPolynomials<{real}> {{") :]
     if name == "c":
         values = re.search(r"\bc\[\] = \{(.*?)\};", block, re.S).group(1)
         return [float(x.strip().rstrip("f")) for x in values.split(",")]
@@ -105,8 +105,10 @@ def main() -> None:
             c = committed(real, name) if args.check else [float(dtype(float(x))) for x in fit(name, degree)]
             fitted[name] = c
             worst, reached = worst_errors(name, c, dtype)
-            print(f"  {real} {name.upper()}: degree {len(c) - 1}, worst absolute error {worst:.2f} eps, "
-                  f"times {'theta' if name == 'a' else 't'}: {reached:.2f} eps")
+            print(
+                f"  {real} {name.upper()}: degree {len(c) - 1}, worst absolute error {worst:.2f} eps, "
+                f"times {'theta' if name == 'a' else 't'}: {reached:.2f} eps"
+            )
         if not args.check:
             pairs = ", ".join(f"{{{a!r}{suffix}, {b!r}{suffix}}}" for a, b in zip(fitted["a"], fitted["b"]))
             print(f"{real} ab[][2] = {{{pairs}}};")

@@ -17,8 +17,7 @@ namespace detail {
 /// Enables an overload for an arithmetic type T other than the Scalar (the
 /// Scalar itself takes the plain overload).
 template <typename Scalar, typename T>
-using EnableIfOtherArithmetic =
-    std::enable_if_t<std::is_arithmetic<T>::value && !std::is_same<T, Scalar>::value, int>;
+using EnableIfOtherArithmetic = std::enable_if_t<std::is_arithmetic<T>::value && !std::is_same<T, Scalar>::value, int>;
 
 /// An arithmetic t as a Scalar, converted explicitly (through the real type,
 /// for autodiff scalars).

@@ -20,9 +20,7 @@ struct Quaternion4 {
   /// Whether all four are finite, with one test: a sum with an inf or a NaN
   /// in it is not finite (a sum that overflows also reads as not finite;
   /// callers then take their slower, clamped path).
-  bool finite() const noexcept {
-    return is_finite(Scalar(w + x + y + z));
-  }
+  bool finite() const noexcept { return is_finite(Scalar(w + x + y + z)); }
 };
 
 /// Horn's symmetric 4x4 matrix of a 3x3 M, shifted: K = N(M) + I, in

@@ -10,7 +10,8 @@
 int main() {
   using Arm = chasles::Chain<double, 6>;
   Arm::Screws S;
-  for (int i = 0; i < 6; ++i) S.col(i) = Arm::revolute_screw(Eigen::Vector3d(double(i), 0, 0), Eigen::Vector3d::UnitZ());
+  for (int i = 0; i < 6; ++i)
+    S.col(i) = Arm::revolute_screw(Eigen::Vector3d(double(i), 0, 0), Eigen::Vector3d::UnitZ());
   const Arm arm(S, chasles::SE3d());
   const Arm::JointVector q = Arm::JointVector::Zero();
   double sum = arm.forward(q).translation().sum() + arm.forward_body(0.5 * q).translation().sum() +

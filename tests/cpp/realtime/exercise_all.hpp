@@ -79,8 +79,10 @@ S exercise_all() noexcept {
   sum += S(g.is_approx(e, RealOf<S>(1e-3)) ? 1 : 0) + interpolate(g, h, S(0.7)).translation().sum();
   const SE3Distance<S> dgh = distance(g, h);
   sum += dgh.angle + dgh.translation;
-  sum += so3_from_uniforms(V3(S(0.2), S(0.5), S(0.7))).matrix().sum() + so3_gaussian_from_normals(R, M3(M3::Identity()), w).matrix().sum();
-  sum += se3_gaussian_from_normals(g, Eigen::Matrix<S, 6, 6>(Eigen::Matrix<S, 6, 6>::Identity()), xi).translation().sum();
+  sum += so3_from_uniforms(V3(S(0.2), S(0.5), S(0.7))).matrix().sum() +
+         so3_gaussian_from_normals(R, M3(M3::Identity()), w).matrix().sum();
+  sum +=
+      se3_gaussian_from_normals(g, Eigen::Matrix<S, 6, 6>(Eigen::Matrix<S, 6, 6>::Identity()), xi).translation().sum();
   {
     const std::array<SO3<S>, 3> Rs{R, I, SO3<S>::exp(p * S(0.1))};
     const std::array<SE3<S>, 3> gs{g, h, e};
@@ -88,7 +90,8 @@ S exercise_all() noexcept {
     const MeanResult<SO3<S>> mr = geodesic_mean(Rs.begin(), Rs.end(), ws.begin());
     const MeanResult<SE3<S>> mg = geodesic_mean(gs.begin(), gs.end(), 5);
     sum += mr.mean.matrix().sum() + S(mr.iterations) + mg.mean.translation().sum() + S(mg.converged ? 1 : 0);
-    sum += chordal_mean(Rs.begin(), Rs.end()).matrix().sum() + chordal_mean(gs.begin(), gs.end(), ws.begin()).translation().sum();
+    sum += chordal_mean(Rs.begin(), Rs.end()).matrix().sum() +
+           chordal_mean(gs.begin(), gs.end(), ws.begin()).translation().sum();
   }
   if constexpr (std::is_floating_point<S>::value) {  // the standard distributions: real scalars only
     std::minstd_rand gen(7);
@@ -185,7 +188,8 @@ S exercise_all() noexcept {
   ik_hi.setConstant(S(2));
   IKOptions<S> ik_options;
   ik_options.max_iterations = 5;
-  const auto ikd = inverse_kinematics(cd, cd.forward(typename CD::JointVector(thd * S(0.9))), thd, ik_lo, ik_hi, ik_options);
+  const auto ikd =
+      inverse_kinematics(cd, cd.forward(typename CD::JointVector(thd * S(0.9))), thd, ik_lo, ik_hi, ik_options);
   std::minstd_rand ik_gen(3);
   const auto ikr = inverse_kinematics(cd, target, thd, ik_lo, ik_hi, ik_options, ik_gen, 2);
   sum += ik6.q.sum() + ik6.error.sum() + S(ik6.iterations) + S(ikd.converged ? 1 : 0) + ikd.q.sum() + ikr.q.sum();
@@ -196,8 +200,8 @@ S exercise_all() noexcept {
     // bound), the restarts overload on the fixed chain, non-finite targets.
     typename C6::JointVector lo6 = C6::JointVector::Constant(S(-0.5)), hi6 = C6::JointVector::Constant(S(0.5));
     const SE3<S> beyond = c6.forward(typename C6::JointVector(C6::JointVector::Constant(S(-1))));
-    const auto held = inverse_kinematics(c6, beyond, typename C6::JointVector(C6::JointVector::Constant(S(-0.5))), lo6,
-                                         hi6);
+    const auto held =
+        inverse_kinematics(c6, beyond, typename C6::JointVector(C6::JointVector::Constant(S(-0.5))), lo6, hi6);
     const SE3<S> far(R, V3(p * S(100)));
     const auto unreachable = inverse_kinematics(c6, far, th6, lo6, hi6);
     std::minstd_rand gen6(5);
@@ -226,7 +230,8 @@ S exercise_all() noexcept {
     const SplineSample<SE3<S>> b = spg(S(-0.1));
     sum += a.element.matrix().sum() + a.velocity.sum() + a.acceleration.sum() + S(spr.size() + spr.segment(S(0.6)));
     sum += spr.element(S(0.3)).matrix().sum() + spg.element(S(2)).translation().sum();
-    sum += b.element.translation().sum() + b.velocity.sum() + b.acceleration.sum() + spg.sample(1, S(0.75)).velocity.sum();
+    sum +=
+        b.element.translation().sum() + b.velocity.sum() + b.acceleration.sum() + spg.sample(1, S(0.75)).velocity.sum();
     // The other end conditions, and the fits that refuse their input.
     const SplineFit fr2 = fit_spline(3, ts.data(), Rs.data(), sr.data(), wr.data(), SplineEnds::chord);
     const SplineFit fg2 = fit_spline(3, ts.data(), gs.data(), sg.data(), wg.data(), SplineEnds::natural);
@@ -249,7 +254,8 @@ S exercise_all() noexcept {
     const std::array<SE3<S>, 5> gs{g, h, e, g.inverse(), h};
     const auto bb = cubic_bspline_basis(S(0.3));
     sum += bb.value.sum() + bb.first.sum() + bb.second.sum();
-    sum += cubic_bspline_segment(Rs.begin(), S(0.4)).matrix().sum() + cubic_bspline_segment(gs.data(), S(0.4)).translation().sum();
+    sum += cubic_bspline_segment(Rs.begin(), S(0.4)).matrix().sum() +
+           cubic_bspline_segment(gs.data(), S(0.4)).translation().sum();
     const BSplinePoint<SE3<S>> pg = cubic_bspline_segment_derivatives(gs.begin() + 1, S(0.6), S(0.5));
     sum += pg.value.translation().sum() + pg.velocity.sum() + pg.acceleration.sum();
     const BSplinePoint<SO3<S>> pr0 = cubic_bspline_segment_derivatives(Rs.data(), S(0), S(2));
@@ -333,9 +339,10 @@ S exercise_all() noexcept {
     asym(0, 1) = S(1);
     flat(2, 2) = S(-4);
     tri.diagonal() << S(1), S(1), S(3);
-    const SpatialInertia<S> bodies[] = {SpatialInertia<S>(S(-1), p, Ic), SpatialInertia<S>(S(1), V3(V3::Constant(S(RealOf<S>(NAN)))), Ic),
-                                        SpatialInertia<S>(S(1), p, asym), SpatialInertia<S>(S(1), p, flat),
-                                        SpatialInertia<S>(S(1), p, tri), SpatialInertia<S>(S(1), p, M3(M3::Zero()))};
+    const SpatialInertia<S> bodies[] = {
+        SpatialInertia<S>(S(-1), p, Ic),  SpatialInertia<S>(S(1), V3(V3::Constant(S(RealOf<S>(NAN)))), Ic),
+        SpatialInertia<S>(S(1), p, asym), SpatialInertia<S>(S(1), p, flat),
+        SpatialInertia<S>(S(1), p, tri),  SpatialInertia<S>(S(1), p, M3(M3::Zero()))};
     for (const SpatialInertia<S>& b : bodies) sum += S(b.is_physical() ? 1 : 0) + b.symmetry_defect();
   }
 
@@ -354,7 +361,8 @@ S exercise_all() noexcept {
   const typename D6::JointVector qd6 = th6 * S(2), qdd6 = th6 * S(-3);
   sum += inverse_dynamics(d6, th6, qd6, qdd6).sum() + inverse_dynamics(d6, th6, qd6, qdd6, tip).sum();
   sum += mass_matrix(d6, th6).sum() + gravity_torques(d6, th6).sum() + coriolis(d6, th6, qd6).sum();
-  sum += bias(d6, th6, qd6).sum() + forward_dynamics(d6, th6, qd6, qdd6).qdd.sum() + forward_dynamics(d6, th6, qd6, qdd6, tip).qdd.sum();
+  sum += bias(d6, th6, qd6).sum() + forward_dynamics(d6, th6, qd6, qdd6).qdd.sum() +
+         forward_dynamics(d6, th6, qd6, qdd6, tip).qdd.sum();
   sum += kinetic_energy(d6, th6, qd6) + potential_energy(d6, th6);
   sum += S(RealOf<S>(d6.n_joints())) + d6.space_screws().sum() + d6.home().translation().sum() +
          d6.link_inertias()[0].mass() + d6.gravity().sum();

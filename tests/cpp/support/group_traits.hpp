@@ -12,9 +12,9 @@
 #include <sstream>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <Eigen/Core>
 #include <Eigen/LU>
-#include <gtest/gtest.h>
 
 #include <chasles/chasles.hpp>
 
@@ -34,8 +34,7 @@ constexpr LD eps() {
 /// computations of the tests run in long double so that the error measured is
 /// the library's, not the reference's.
 template <typename Derived>
-Eigen::Matrix<LD, Derived::RowsAtCompileTime, Derived::ColsAtCompileTime> to_ld(
-    const Eigen::MatrixBase<Derived>& a) {
+Eigen::Matrix<LD, Derived::RowsAtCompileTime, Derived::ColsAtCompileTime> to_ld(const Eigen::MatrixBase<Derived>& a) {
   return a.template cast<LD>();
 }
 
@@ -76,8 +75,7 @@ template <typename S, typename DA, typename DB>
   std::ostringstream os;
   os.precision(21);
   os << "max |a - b| = " << static_cast<double>(err) << " = " << static_cast<double>(err / (eps<S>() * scale))
-     << " eps * scale (allowed " << static_cast<double>(k) << "), scale " << static_cast<double>(scale)
-     << "\na =\n"
+     << " eps * scale (allowed " << static_cast<double>(k) << "), scale " << static_cast<double>(scale) << "\na =\n"
      << to_ld(a).format(fmt) << "\nb =\n"
      << to_ld(b).format(fmt);
   return ::testing::AssertionFailure() << os.str();

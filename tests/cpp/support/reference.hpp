@@ -171,8 +171,6 @@ inline V6 log6_with_rotation(const V3& w, const V3& p) {
 }
 
 /// log of a 4x4 rigid motion (bottom row not read).
-inline V6 log6(const M4& g) {
-  return log6_with_rotation(log3(g.topLeftCorner<3, 3>()), g.topRightCorner<3, 1>());
-}
+inline V6 log6(const M4& g) { return log6_with_rotation(log3(g.topLeftCorner<3, 3>()), g.topRightCorner<3, 1>()); }
 
 }  // namespace chasles_ref

@@ -31,7 +31,7 @@ std::vector<Eigen::Matrix<Real, 3, 1>> rotation_vectors(int n_random = 64, std::
   const Real pi = Real(kPi);
   std::vector<V> out;
   out.push_back(V::Zero());
-  const Real angles[] = {Real(1e-30), Real(1e-12), Real(1e-8), Real(1e-4), Real(0.1),
+  const Real angles[] = {Real(1e-30), Real(1e-12), Real(1e-8),      Real(1e-4),      Real(0.1),
                          Real(1),     pi / 2,      pi - Real(1e-4), pi - Real(1e-6), pi};
   const V axes[] = {V::UnitX(), V::UnitZ(), V(1, 1, 0).normalized(), V(1, -2, 3).normalized()};
   for (Real a : angles)

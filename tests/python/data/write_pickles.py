@@ -16,8 +16,9 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
 
-import chasles  # noqa: E402
 import test_pickle  # noqa: E402
+
+import chasles  # noqa: E402
 
 
 def main() -> None:
