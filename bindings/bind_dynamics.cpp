@@ -7,7 +7,6 @@
 
 #include <Eigen/Eigenvalues>
 
-#include <cstddef>
 #include <string>
 
 #include "bindings.hpp"
@@ -188,43 +187,28 @@ Example:
 
 ``==`` is the exact comparison.)doc");
 
-  def_equality(cls, [](const InertiaD& a, const InertiaD& b) {
-    return a.mass() == b.mass() && a.com() == b.com() && a.inertia() == b.inertia();
-  });
-  def_repr(cls, [](const InertiaD& I) {
-    return "SpatialInertia(mass=" + float_repr(I.mass()) + ", com=" + array_repr(vec_out<3>(I.com())) +
-           ", inertia=" + array_repr(mat_out<3, 3>(I.inertia())) + ")";
-  });
-  cls.def(
-      "__array__",
-      [](Obj<InertiaD> I, DTypeLike dtype, CopyFlag copy) {
-        return array_protocol(mat_out<6, 6>(I->matrix()), dtype, copy, "SpatialInertia");
-      },
-      py::arg_v("dtype", py::none(), "None"), py::arg_v("copy", py::none(), "None"),
+  def_array(
+      cls, [](const InertiaD& I) { return mat_out<6, 6>(I.matrix()); },
       "The matrix G, shape (6, 6), for np.asarray (numpy's dtype and copy keywords).");
-  def_array_dtype(cls);
-  cls.def("__copy__", [](Obj<InertiaD> I) { return *I; });
-  cls.def("__deepcopy__", [](Obj<InertiaD> I, const py::object&) { return *I; }, py::arg("memo"));
   // The state: m, c (3), I_c row by row (9); rebuilt by the constructor's
-  // checks, the numbers kept as they are.
-  cls.def(py::pickle(
-      [](Obj<InertiaD> I) {
-        py::tuple t(13);
-        Eigen::Matrix<double, 13, 1> x;
-        x << I->mass(), I->com(), I->inertia().reshaped<Eigen::RowMajor>();
-        for (std::size_t i = 0; i < 13; ++i) t[i] = py::float_(x(static_cast<Eigen::Index>(i)));
-        return t;
+  // checks (a pickle is data from outside), the numbers kept as they are.
+  def_value_protocol<13>(
+      cls,
+      [](const InertiaD& I) {
+        return "SpatialInertia(mass=" + float_repr(I.mass()) + ", com=" + array_repr(vec_out<3>(I.com())) +
+               ", inertia=" + array_repr(mat_out<3, 3>(I.inertia())) + ")";
       },
-      [](const py::object& state) {
+      [](const InertiaD& I) {
         Eigen::Matrix<double, 13, 1> x;
-        read_state(state_tuple(state, 13, "SpatialInertia"), 0, 13, x.data(), "SpatialInertia");
-        // The constructor's checks and errors (a pickle is data from outside).
+        x << I.mass(), I.com(), row_major<3, 3>(I.inertia());
+        return x;
+      },
+      [](const double* x) {
         return checked_inertia(
-            py::float_(x(0)), vec_out<3>(Vector3(x.segment<3>(1))),
-            mat_out<3, 3>(Matrix3(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(x.data() + 4))),
+            py::float_(x[0]), vec_out<3>(Vector3(x + 1)),
+            mat_out<3, 3>(Matrix3(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(x + 4))),
             "SpatialInertia.__setstate__");
-      }));
-  add_reduce(cls);
+      });
 }
 
 }  // namespace chasles_py
