@@ -268,10 +268,8 @@ std::string private_doc(const char* signature, const char* method) {
          ", which checks the arguments); float64.";
 }
 
-/// The ufuncs, registered once: their objects, kept for the methods.
-struct Ufuncs {
-  py::object forward, forward_body, jacobian_space, jacobian_body, inverse, forward_dynamics, mass, gravity, coriolis;
-};
+/// The ufuncs, registered once: their objects, kept for the methods, by Op.
+using Ufuncs = std::array<py::object, static_cast<std::size_t>(Op::coriolis) + 1>;
 
 Ufuncs register_ufuncs(py::module_& m) {
   using ufunc::def_ufunc;
@@ -282,24 +280,25 @@ Ufuncs register_ufuncs(py::module_& m) {
   using G = Core<upto<kMaxJoints>, 6, 6>;
   const char* kin = "screws, home, theta";
   Ufuncs u;
-  u.forward = def_ufunc<Pose, Float64>(m, "_chain_forward", kin, private_doc("g(theta).", "forward"),
-                                       model<2>(ChainOf()), Kernel<Op::forward>());
-  u.forward_body =
+  u[std::size_t(Op::forward)] = def_ufunc<Pose, Float64>(m, "_chain_forward", kin, private_doc("g(theta).", "forward"),
+                                                         model<2>(ChainOf()), Kernel<Op::forward>());
+  u[std::size_t(Op::forward_body)] =
       def_ufunc<Pose, Float64>(m, "_chain_forward_body", kin, private_doc("g(theta), body form.", "forward_body"),
                                model<2>(ChainOf()), Kernel<Op::forward_body>());
-  u.jacobian_space =
+  u[std::size_t(Op::jacobian_space)] =
       def_ufunc<Jac, Float64>(m, "_chain_jacobian_space", kin, private_doc("J_s(theta).", "jacobian_space"),
                               model<2>(ChainOf()), Kernel<Op::jacobian_space>());
-  u.jacobian_body = def_ufunc<Jac, Float64>(m, "_chain_jacobian_body", kin, private_doc("J_b(theta).", "jacobian_body"),
-                                            model<2>(ChainOf()), Kernel<Op::jacobian_body>());
+  u[std::size_t(Op::jacobian_body)] =
+      def_ufunc<Jac, Float64>(m, "_chain_jacobian_body", kin, private_doc("J_b(theta).", "jacobian_body"),
+                              model<2>(ChainOf()), Kernel<Op::jacobian_body>());
   // (n,6),(4,4),(n,6,6),(3),(n),(n),(n),(6)->(n) [,()]: screws, home, inertias, gravity, q, qd, qdd (tau), tip wrench
-  u.inverse =
+  u[std::size_t(Op::inverse)] =
       def_ufunc<JointsCore(ScrewsCore, Core<4, 4>, G, Core<3>, JointsCore, JointsCore, JointsCore, Core<6>), Float64>(
           m, "_inverse_dynamics", "screws, home, inertias, gravity, q, qd, qdd, tip_wrench",
           private_doc("tau = M(q) qdd + C(q, qd) qd + g(q) + J_b^T F_tip (recursive Newton-Euler).",
                       "inverse_dynamics"),
           model<4>(ChainOf()), Kernel<Op::inverse>());
-  u.forward_dynamics =
+  u[std::size_t(Op::forward_dynamics)] =
       def_ufunc<std::tuple<JointsCore, ufunc::Typed<Core<>, int>>(ScrewsCore, Core<4, 4>, G, Core<3>, JointsCore,
                                                                   JointsCore, JointsCore, Core<6>),
                 Float64>(m, "_forward_dynamics", "screws, home, inertias, gravity, q, qd, tau, tip_wrench",
@@ -307,13 +306,14 @@ Ufuncs register_ufuncs(py::module_& m) {
                                      "M(q) is not positive definite (qdd NaN there).",
                                      "forward_dynamics"),
                          model<4>(ChainOf()), Kernel<Op::forward_dynamics>());
-  u.mass = def_ufunc<Core<upto<kMaxJoints>, upto<kMaxJoints>>(ScrewsCore, Core<4, 4>, G, JointsCore), Float64>(
-      m, "_mass_matrix", "screws, home, inertias, q", private_doc("M(q) (composite rigid bodies).", "mass_matrix"),
-      model<3>(ChainOf()), Kernel<Op::mass>());
-  u.gravity = def_ufunc<JointsCore(ScrewsCore, Core<4, 4>, G, Core<3>, JointsCore), Float64>(
+  u[std::size_t(Op::mass)] =
+      def_ufunc<Core<upto<kMaxJoints>, upto<kMaxJoints>>(ScrewsCore, Core<4, 4>, G, JointsCore), Float64>(
+          m, "_mass_matrix", "screws, home, inertias, q", private_doc("M(q) (composite rigid bodies).", "mass_matrix"),
+          model<3>(ChainOf()), Kernel<Op::mass>());
+  u[std::size_t(Op::gravity)] = def_ufunc<JointsCore(ScrewsCore, Core<4, 4>, G, Core<3>, JointsCore), Float64>(
       m, "_gravity_torques", "screws, home, inertias, gravity, q", private_doc("g(q).", "gravity_torques"),
       model<4>(ChainOf()), Kernel<Op::gravity>());
-  u.coriolis = def_ufunc<JointsCore(ScrewsCore, Core<4, 4>, G, JointsCore, JointsCore), Float64>(
+  u[std::size_t(Op::coriolis)] = def_ufunc<JointsCore(ScrewsCore, Core<4, 4>, G, JointsCore, JointsCore), Float64>(
       m, "_coriolis", "screws, home, inertias, q, qd", private_doc("C(q, qd) qd (no gravity).", "coriolis"),
       model<3>(ChainOf()), Kernel<Op::coriolis>());
   return u;
@@ -587,22 +587,16 @@ Returns shape (6,), (v, w).)doc");
       py::arg("direction"),
       R"doc(The screw (v, 0) of a prismatic joint, v = direction / |direction| (shape (3,), nonzero).)doc");
 
-  const auto kinematics = [&](auto op, const char* name, const char* doc) {
+  const auto ufunc_of = [&u](Op op) { return u[static_cast<std::size_t>(op)].ptr(); };
+  // The methods of one joint argument (theta, or q for the dynamics).
+  const auto one_argument = [&](auto op, const char* name, const char* arg, const char* doc, const char* tail) {
     constexpr Op o = decltype(op)::value;
-    PyObject* f = [&] {
-      if constexpr (o == Op::forward)
-        return u.forward.ptr();
-      else if constexpr (o == Op::forward_body)
-        return u.forward_body.ptr();
-      else if constexpr (o == Op::jacobian_space)
-        return u.jacobian_space.ptr();
-      else
-        return u.jacobian_body.ptr();
-    }();
     cls.def(
-        name, [f, name](Obj<PyChain> c, ArrayLike theta) { return call<o, 1>(f, *c, name, {theta.obj}, nullptr); },
-        py::arg("theta"), (std::string(doc) + kArrayFunction).c_str());
+        name,
+        [f = ufunc_of(o), name](Obj<PyChain> c, ArrayLike x) { return call<o, 1>(f, *c, name, {x.obj}, nullptr); },
+        py::arg(arg), (std::string(doc) + kArrayFunction + tail).c_str());
   };
+  const auto kinematics = [&](auto op, const char* name, const char* doc) { one_argument(op, name, "theta", doc, ""); };
   kinematics(std::integral_constant<Op, Op::forward>(), "forward",
              R"doc(Forward kinematics, space form: g(theta) = exp([S_1] th_1) ... exp([S_n] th_n) M.
 
@@ -624,8 +618,8 @@ theta: array_like (..., n); returns (..., 6, n).)doc");
 
   // ---- dynamics (chasles/dynamics.hpp)
   const char* const kRaises = R"doc( ValueError: a chain without link inertias, shapes that do not match.)doc";
-  PyObject *f_inverse = u.inverse.ptr(), *f_forward = u.forward_dynamics.ptr(), *f_mass = u.mass.ptr(),
-           *f_gravity = u.gravity.ptr(), *f_coriolis = u.coriolis.ptr();
+  PyObject *f_inverse = ufunc_of(Op::inverse), *f_forward = ufunc_of(Op::forward_dynamics),
+           *f_coriolis = ufunc_of(Op::coriolis);
   cls.def(
       "inverse_dynamics",
       [f_inverse](Obj<PyChain> c, py::object q, py::object qd, py::object qdd, py::object tip) {
@@ -655,26 +649,16 @@ chasles::DynamicsStatus) there are no accelerations: ValueError naming the joint
 first such batch index), or with on_failure="nan" NaN there only. Returns (..., n).)doc") +
        kArrayFunction + kRaises)
           .c_str());
-  cls.def(
-      "mass_matrix",
-      [f_mass](Obj<PyChain> c, py::object q) { return call<Op::mass, 1>(f_mass, *c, "mass_matrix", {q}, nullptr); },
-      py::arg("q"),
-      (std::string(R"doc(The joint-space mass matrix M(q), symmetric positive definite (composite rigid bodies).
+  one_argument(std::integral_constant<Op, Op::mass>(), "mass_matrix", "q",
+               R"doc(The joint-space mass matrix M(q), symmetric positive definite (composite rigid bodies).
 
-q: array_like (..., n); returns (..., n, n).)doc") +
-       kArrayFunction + kRaises)
-          .c_str());
-  cls.def(
-      "gravity_torques",
-      [f_gravity](Obj<PyChain> c, py::object q) {
-        return call<Op::gravity, 1>(f_gravity, *c, "gravity_torques", {q}, nullptr);
-      },
-      py::arg("q"),
-      (std::string(R"doc(The torques g(q) that hold the chain still against gravity: inverse_dynamics(q, 0, 0).
+q: array_like (..., n); returns (..., n, n).)doc",
+               kRaises);
+  one_argument(std::integral_constant<Op, Op::gravity>(), "gravity_torques", "q",
+               R"doc(The torques g(q) that hold the chain still against gravity: inverse_dynamics(q, 0, 0).
 
-q: array_like (..., n); returns (..., n).)doc") +
-       kArrayFunction + kRaises)
-          .c_str());
+q: array_like (..., n); returns (..., n).)doc",
+               kRaises);
   cls.def(
       "coriolis",
       [f_coriolis](Obj<PyChain> c, py::object q, py::object qd) {
