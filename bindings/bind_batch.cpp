@@ -87,10 +87,28 @@ Args:
 Returns:
     numpy.ndarray of shape (..., 4): the quaternions.)";
 
-// ---- SO(3) ------------------------------------------------------------------
+// ---- what SO(3) and SE(3) share --------------------------------------------
 
-void bind_so3_batch(py::module_& m) {
-  def_ufunc<Core<3, 3>(Core<3>)>(m, "so3_exp", "w", array_doc(R"(Rotation matrices of rotation vectors: R = exp([w]).
+/// What a group's array functions take and say: the matrix size N, the
+/// tangent size D, the names (the ufunc keeps the pointer: literals), and
+/// the group's own sentences; the rest of each docstring is shared.
+template <template <typename> class Group>
+struct Batch;
+
+template <>
+struct Batch<SO3> {
+  static constexpr int N = 3, D = 3;
+  static constexpr const char* names[8] = {"so3_exp", "so3_log", "so3_compose", "so3_inverse",
+                                           "so3_act", "so3_hat", "so3_vee",     "so3_interpolate"};
+  static constexpr const char *element = "R", *tangent = "w", *matrices = "rotation matrices",
+                              *compose = "Composition of rotations: a @ b (R_ac = R_ab R_bc).",
+                              *inverse = "Inverse rotations: R^-1 = R^T.", *acted = "points or vectors",
+                              *act = "Rotated points or vectors: p_a = R_ab p_b.", *one = "rotation",
+                              *moved = "rotated",
+                              *product = ", the batch shape being\n    the broadcast of a's and b's.",
+                              *interpolate = "Geodesic interpolation of rotations",
+                              *between = "constant angular velocity", *interpolated = "rotations";
+  static constexpr const char* exp = R"(Rotation matrices of rotation vectors: R = exp([w]).
 
 Rodrigues' formula, R = I + (sin t / t) [w] + ((1 - cos t) / t^2) [w]^2 with
 t = |w|, exact to a few ulps for every w (Taylor series near 0).
@@ -100,11 +118,8 @@ Args:
         radians.
 
 Returns:
-    numpy.ndarray of shape (..., 3, 3): the rotation matrices.)"),
-                                 [](const auto& w) { return SO3<ScalarOf<decltype(w)>>::exp(w).matrix(); });
-
-  def_ufunc<Core<3>(Core<3, 3>)>(
-      m, "so3_log", "R", array_doc(R"(Rotation vectors of rotation matrices: w = log(R)^vee.
+    numpy.ndarray of shape (..., 3, 3): the rotation matrices.)";
+  static constexpr const char* log = R"(Rotation vectors of rotation matrices: w = log(R)^vee.
 
 The angle |w| is in [0, pi]; at exactly pi either axis sign is returned,
 never NaN. Robust near 0 and near pi, and as accurate for a matrix slightly
@@ -114,50 +129,8 @@ Args:
     R: array_like of shape (..., 3, 3): rotation matrices.
 
 Returns:
-    numpy.ndarray of shape (..., 3): the rotation vectors (axis times angle).)"),
-      [](const auto& R) { return SO3<ScalarOf<decltype(R)>>::from_matrix_unchecked(R).log(); });
-
-  def_ufunc<Core<3, 3>(Core<3, 3>, Core<3, 3>)>(
-      m, "so3_compose", "a, b", array_doc(R"(Composition of rotations: a @ b (R_ac = R_ab R_bc).
-
-Args:
-    a: array_like of shape (..., 3, 3): rotation matrices.
-    b: array_like of shape (..., 3, 3): rotation matrices.
-
-Returns:
-    numpy.ndarray of shape (..., 3, 3): the products, the batch shape being
-    the broadcast of a's and b's.)"),
-      [](const auto& a, const auto& b) {
-        using T = ScalarOf<decltype(a)>;
-        return (SO3<T>::from_matrix_unchecked(a) * SO3<T>::from_matrix_unchecked(b)).matrix();
-      });
-
-  def_ufunc<Core<3, 3>(Core<3, 3>)>(
-      m, "so3_inverse", "R", array_doc(R"(Inverse rotations: R^-1 = R^T.
-
-Args:
-    R: array_like of shape (..., 3, 3): rotation matrices.
-
-Returns:
-    numpy.ndarray of shape (..., 3, 3): the inverses.)"),
-      [](const auto& R) { return SO3<ScalarOf<decltype(R)>>::from_matrix_unchecked(R).inverse().matrix(); });
-
-  def_ufunc<Core<3>(Core<3, 3>, Core<3>)>(
-      m, "so3_act", "R, points", array_doc(R"(Rotated points or vectors: p_a = R_ab p_b.
-
-Broadcasts: one rotation of shape (3, 3) with points of shape (N, 3), N
-rotations with N points, (N, 1, 3, 3) with (M, 3) for every pair, ...
-
-Args:
-    R: array_like of shape (..., 3, 3): rotation matrices.
-    points: array_like of shape (..., 3): points or vectors.
-
-Returns:
-    numpy.ndarray of shape (..., 3): the rotated points.)"),
-      [](const auto& R, const auto& p) { return SO3<ScalarOf<decltype(R)>>::from_matrix_unchecked(R).act(p); });
-
-  def_ufunc<Core<3, 3>(Core<3>)>(m, "so3_hat", "w",
-                                 array_doc(R"(Skew-symmetric matrices: [w] = [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]].
+    numpy.ndarray of shape (..., 3): the rotation vectors (axis times angle).)";
+  static constexpr const char* hat = R"(Skew-symmetric matrices: [w] = [[0, -w3, w2], [w3, 0, -w1], [-w2, w1, 0]].
 
 So that [w] p = w x p.
 
@@ -165,11 +138,8 @@ Args:
     w: array_like of shape (..., 3): vectors of so(3).
 
 Returns:
-    numpy.ndarray of shape (..., 3, 3): the matrices [w].)"),
-                                 [](const auto& w) { return SO3<ScalarOf<decltype(w)>>::hat(w); });
-
-  def_ufunc<Core<3>(Core<3, 3>)>(m, "so3_vee", "matrix",
-                                 array_doc(R"(The vectors of skew-symmetric matrices: vee([w]) = w.
+    numpy.ndarray of shape (..., 3, 3): the matrices [w].)";
+  static constexpr const char* vee = R"(The vectors of skew-symmetric matrices: vee([w]) = w.
 
 Reads the antisymmetric part (W - W^T) / 2, so a matrix that is not exactly
 skew gives the w of its nearest skew matrix.
@@ -178,36 +148,27 @@ Args:
     matrix: array_like of shape (..., 3, 3): skew-symmetric matrices.
 
 Returns:
-    numpy.ndarray of shape (..., 3): the vectors w.)"),
-                                 [](const auto& W) { return SO3<ScalarOf<decltype(W)>>::vee(W); });
+    numpy.ndarray of shape (..., 3): the vectors w.)";
+  template <typename T>
+  static Eigen::Matrix<T, 3, 3> stored(const SO3<T>& R) noexcept {
+    return R.matrix();
+  }
+};
 
-  def_ufunc<Core<3, 3>(Core<3, 3>, Core<3, 3>, Core<>)>(
-      m, "so3_interpolate", "a, b, t", array_doc(R"(Geodesic interpolation of rotations: a exp(t log(a^-1 b)).
-
-t = 0 gives a, t = 1 gives b, constant angular velocity in between.
-
-Args:
-    a: array_like of shape (..., 3, 3): rotation matrices at t = 0.
-    b: array_like of shape (..., 3, 3): rotation matrices at t = 1.
-    t: array_like of shape (...): the parameters (a Python float keeps
-        the dtype of a and b).
-
-Returns:
-    numpy.ndarray of shape (..., 3, 3): the interpolated rotations.)"),
-      [](const auto& a, const auto& b, const auto& t) {
-        using T = ScalarOf<decltype(a)>;
-        return chasles::interpolate(SO3<T>::from_matrix_unchecked(a), SO3<T>::from_matrix_unchecked(b), t).matrix();
-      });
-  def_ufunc<Core<3, 3>(Core<4>)>(m, "_so3_from_quat_xyzw", "quat", array_doc(kFromQuatDoc), from_quat_kernel<false>());
-  def_ufunc<Core<3, 3>(Core<4>)>(m, "_so3_from_quat_wxyz", "quat", array_doc(kFromQuatDoc), from_quat_kernel<true>());
-  def_ufunc<Core<4>(Core<3, 3>)>(m, "_so3_as_quat_xyzw", "R", array_doc(kAsQuatDoc), as_quat_kernel<false>());
-  def_ufunc<Core<4>(Core<3, 3>)>(m, "_so3_as_quat_wxyz", "R", array_doc(kAsQuatDoc), as_quat_kernel<true>());
-}
-
-// ---- SE(3) and twists -------------------------------------------------------
-
-void bind_se3_batch(py::module_& m) {
-  def_ufunc<Core<4, 4>(Core<6>)>(m, "se3_exp", "xi", array_doc(R"(Rigid motions of twists: g = exp([xi]) (4x4).
+template <>
+struct Batch<SE3> {
+  static constexpr int N = 4, D = 6;
+  static constexpr const char* names[8] = {"se3_exp", "se3_log", "se3_compose", "se3_inverse",
+                                           "se3_act", "se3_hat", "se3_vee",     "se3_interpolate"};
+  static constexpr const char
+      *element = "g",
+      *tangent = "xi", *matrices = "homogeneous matrices",
+      *compose = "Composition of rigid motions: a @ b (g_ac = g_ab g_bc).",
+      *inverse = "Inverse rigid motions: g^-1 = [[R^T, -R^T p], [0, 1]].", *acted = "points",
+      *act = "Transformed points: q_a = R_ab q_b + p_ab.", *one = "pose", *moved = "transformed",
+      *product = " [[R_a R_b, R_a p_b +\n    p_a], [0, 1]], the batch shape being the broadcast of a's and b's.",
+      *interpolate = "Screw interpolation of rigid motions", *between = "one screw motion", *interpolated = "motions";
+  static constexpr const char* exp = R"(Rigid motions of twists: g = exp([xi]) (4x4).
 
 Twist order xi = (v, w), linear part first (Murray, Li and Sastry). In
 closed form: R = exp([w]), p = V v with V = I + B [w] + C [w]^2; w = 0 is a
@@ -218,11 +179,8 @@ Args:
 
 Returns:
     numpy.ndarray of shape (..., 4, 4): the homogeneous matrices
-    [[R, p], [0, 1]].)"),
-                                 [](const auto& xi) { return SE3<ScalarOf<decltype(xi)>>::exp(xi); });
-
-  def_ufunc<Core<6>(Core<4, 4>)>(
-      m, "se3_log", "g", array_doc(R"(Twists of rigid motions: xi = log(g)^vee, xi = (v, w).
+    [[R, p], [0, 1]].)";
+  static constexpr const char* log = R"(Twists of rigid motions: xi = log(g)^vee, xi = (v, w).
 
 Rotation angle |w| in [0, pi] (at exactly pi, either axis sign); v = V^-1 p.
 
@@ -230,48 +188,100 @@ Args:
     g: array_like of shape (..., 4, 4): homogeneous matrices [[R, p], [0, 1]].
 
 Returns:
-    numpy.ndarray of shape (..., 6): the twists (v, w), linear part first.)"),
-      [](const auto& g) { return SE3<ScalarOf<decltype(g)>>::from_matrix_unchecked(g).log(); });
-
-  def_ufunc<Core<4, 4>(Core<4, 4>, Core<4, 4>)>(
-      m, "se3_compose", "a, b", array_doc(R"(Composition of rigid motions: a @ b (g_ac = g_ab g_bc).
+    numpy.ndarray of shape (..., 6): the twists (v, w), linear part first.)";
+  static constexpr const char* hat = R"(Matrices of twists: [xi] = [[ [w], v ], [0, 0]] (4x4).
 
 Args:
-    a: array_like of shape (..., 4, 4): homogeneous matrices.
-    b: array_like of shape (..., 4, 4): homogeneous matrices.
+    xi: array_like of shape (..., 6): twists (v, w), linear part first.
 
 Returns:
-    numpy.ndarray of shape (..., 4, 4): the products [[R_a R_b, R_a p_b +
-    p_a], [0, 1]], the batch shape being the broadcast of a's and b's.)"),
-      [](const auto& a, const auto& b) {
-        using T = ScalarOf<decltype(a)>;
-        return SE3<T>::from_matrix_unchecked(a) * SE3<T>::from_matrix_unchecked(b);
+    numpy.ndarray of shape (..., 4, 4): the matrices [xi].)";
+  static constexpr const char* vee = R"(Twists of 4x4 matrices: [xi]^vee = (v, w), linear part first.
+
+v is the last column's top three entries, w the vee of the antisymmetric
+part of the top-left 3x3 block; the bottom row is not read.
+
+Args:
+    matrix: array_like of shape (..., 4, 4): matrices [[ [w], v ], [0, 0]].
+
+Returns:
+    numpy.ndarray of shape (..., 6): the twists (v, w).)";
+  /// An SE3 result is written to its 4x4 core directly (ufunc.hpp).
+  template <typename T>
+  static const SE3<T>& stored(const SE3<T>& g) noexcept {
+    return g;
+  }
+};
+
+/// The element of G (over the matrix's scalar) of a matrix, taken as given.
+template <template <typename> class Group, typename M>
+Group<ScalarOf<M>> element_of(const M& m) noexcept {
+  return Group<ScalarOf<M>>::from_matrix_unchecked(m);
+}
+
+/// exp, log, compose, inverse, act, hat, vee and interpolate of G.
+template <template <typename> class Group>
+void bind_group_batch(py::module_& m) {
+  using B = Batch<Group>;
+  constexpr int N = B::N, D = B::D;
+  const std::string n = std::to_string(N), shape = "(..., " + n + ", " + n + ")";
+  const std::string element = std::string(B::element), matrices = "array_like of shape " + shape + ": " + B::matrices;
+  const std::string result = "numpy.ndarray of shape " + shape;
+  def_ufunc<Core<N, N>(Core<D>)>(m, B::names[0], B::tangent, array_doc(B::exp),
+                                 [](const auto& x) { return B::stored(Group<ScalarOf<decltype(x)>>::exp(x)); });
+  def_ufunc<Core<D>(Core<N, N>)>(m, B::names[1], B::element, array_doc(B::log),
+                                 [](const auto& g) { return element_of<Group>(g).log(); });
+  def_ufunc<Core<N, N>(Core<N, N>, Core<N, N>)>(
+      m, B::names[2], "a, b",
+      array_doc((std::string(B::compose) + "\n\nArgs:\n    a: " + matrices + ".\n    b: " + matrices +
+                 ".\n\nReturns:\n    " + result + ": the products" + B::product)
+                    .c_str()),
+      [](const auto& a, const auto& b) { return B::stored(element_of<Group>(a) * element_of<Group>(b)); });
+  def_ufunc<Core<N, N>(Core<N, N>)>(m, B::names[3], B::element,
+                                    array_doc((std::string(B::inverse) + "\n\nArgs:\n    " + element + ": " + matrices +
+                                               ".\n\nReturns:\n    " + result + ": the inverses.")
+                                                  .c_str()),
+                                    [](const auto& g) { return B::stored(element_of<Group>(g).inverse()); });
+  def_ufunc<Core<3>(Core<N, N>, Core<3>)>(
+      m, B::names[4], (element + ", points").c_str(),
+      array_doc((std::string(B::act) + "\n\nBroadcasts: one " + B::one + " of shape (" + n + ", " + n +
+                 ") with points of shape (N, 3), N\n" + B::one + "s with N points, (N, 1, " + n + ", " + n +
+                 ") with (M, 3) for every pair, ...\n\nArgs:\n    " + element + ": " + matrices +
+                 ".\n    points: array_like of shape (..., 3): " + B::acted +
+                 ".\n\nReturns:\n    numpy.ndarray of shape (..., 3): the " + B::moved + " points.")
+                    .c_str()),
+      [](const auto& g, const auto& p) { return element_of<Group>(g).act(p); });
+  def_ufunc<Core<N, N>(Core<D>)>(m, B::names[5], B::tangent, array_doc(B::hat),
+                                 [](const auto& x) { return Group<ScalarOf<decltype(x)>>::hat(x); });
+  def_ufunc<Core<D>(Core<N, N>)>(m, B::names[6], "matrix", array_doc(B::vee),
+                                 [](const auto& X) { return Group<ScalarOf<decltype(X)>>::vee(X); });
+  def_ufunc<Core<N, N>(Core<N, N>, Core<N, N>, Core<>)>(
+      m, B::names[7], "a, b, t",
+      array_doc((std::string(B::interpolate) + ": a exp(t log(a^-1 b)).\n\nt = 0 gives a, t = 1 gives b, " +
+                 B::between + " in between.\n\nArgs:\n    a: " + matrices + " at t = 0.\n    b: " + matrices +
+                 " at t = 1.\n    t: array_like of shape (...): the parameters (a Python float keeps\n        the "
+                 "dtype of a and b).\n\nReturns:\n    " +
+                 result + ": the interpolated " + B::interpolated + ".")
+                    .c_str()),
+      [](const auto& a, const auto& b, const auto& t) {
+        return B::stored(chasles::interpolate(element_of<Group>(a), element_of<Group>(b), t));
       });
+}
 
-  def_ufunc<Core<4, 4>(Core<4, 4>)>(
-      m, "se3_inverse", "g", array_doc(R"(Inverse rigid motions: g^-1 = [[R^T, -R^T p], [0, 1]].
+// ---- SO(3): quaternions -----------------------------------------------------
 
-Args:
-    g: array_like of shape (..., 4, 4): homogeneous matrices.
+void bind_so3_batch(py::module_& m) {
+  bind_group_batch<SO3>(m);
+  def_ufunc<Core<3, 3>(Core<4>)>(m, "_so3_from_quat_xyzw", "quat", array_doc(kFromQuatDoc), from_quat_kernel<false>());
+  def_ufunc<Core<3, 3>(Core<4>)>(m, "_so3_from_quat_wxyz", "quat", array_doc(kFromQuatDoc), from_quat_kernel<true>());
+  def_ufunc<Core<4>(Core<3, 3>)>(m, "_so3_as_quat_xyzw", "R", array_doc(kAsQuatDoc), as_quat_kernel<false>());
+  def_ufunc<Core<4>(Core<3, 3>)>(m, "_so3_as_quat_wxyz", "R", array_doc(kAsQuatDoc), as_quat_kernel<true>());
+}
 
-Returns:
-    numpy.ndarray of shape (..., 4, 4): the inverses.)"),
-      [](const auto& g) { return SE3<ScalarOf<decltype(g)>>::from_matrix_unchecked(g).inverse(); });
+// ---- SE(3) and twists -------------------------------------------------------
 
-  def_ufunc<Core<3>(Core<4, 4>, Core<3>)>(
-      m, "se3_act", "g, points", array_doc(R"(Transformed points: q_a = R_ab q_b + p_ab.
-
-Broadcasts: one pose of shape (4, 4) with points of shape (N, 3), N poses
-with N points, (N, 1, 4, 4) with (M, 3) for every pair, ...
-
-Args:
-    g: array_like of shape (..., 4, 4): homogeneous matrices.
-    points: array_like of shape (..., 3): points.
-
-Returns:
-    numpy.ndarray of shape (..., 3): the transformed points.)"),
-      [](const auto& g, const auto& p) { return SE3<ScalarOf<decltype(g)>>::from_matrix_unchecked(g).act(p); });
-
+void bind_se3_batch(py::module_& m) {
+  bind_group_batch<SE3>(m);
   def_ufunc<Core<6, 6>(Core<4, 4>)>(
       m, "se3_adjoint", "g", array_doc(R"(Adjoint matrices: Ad_g = [[R, [p] R], [0, R]] (6x6).
 
@@ -317,46 +327,6 @@ Returns:
                                             using T = ScalarOf<decltype(g)>;
                                             return SE3<T>::from_matrix_unchecked(g).act(chasles::Wrench<T>(F)).vector();
                                           });
-
-  def_ufunc<Core<4, 4>(Core<4, 4>, Core<4, 4>, Core<>)>(
-      m, "se3_interpolate", "a, b, t", array_doc(R"(Screw interpolation of rigid motions: a exp(t log(a^-1 b)).
-
-t = 0 gives a, t = 1 gives b, one screw motion in between.
-
-Args:
-    a: array_like of shape (..., 4, 4): homogeneous matrices at t = 0.
-    b: array_like of shape (..., 4, 4): homogeneous matrices at t = 1.
-    t: array_like of shape (...): the parameters (a Python float keeps
-        the dtype of a and b).
-
-Returns:
-    numpy.ndarray of shape (..., 4, 4): the interpolated motions.)"),
-      [](const auto& a, const auto& b, const auto& t) {
-        using T = ScalarOf<decltype(a)>;
-        return chasles::interpolate(SE3<T>::from_matrix_unchecked(a), SE3<T>::from_matrix_unchecked(b), t);
-      });
-
-  def_ufunc<Core<4, 4>(Core<6>)>(m, "se3_hat", "xi", array_doc(R"(Matrices of twists: [xi] = [[ [w], v ], [0, 0]] (4x4).
-
-Args:
-    xi: array_like of shape (..., 6): twists (v, w), linear part first.
-
-Returns:
-    numpy.ndarray of shape (..., 4, 4): the matrices [xi].)"),
-                                 [](const auto& xi) { return chasles::Twist<ScalarOf<decltype(xi)>>(xi).hat(); });
-
-  def_ufunc<Core<6>(Core<4, 4>)>(m, "se3_vee", "matrix",
-                                 array_doc(R"(Twists of 4x4 matrices: [xi]^vee = (v, w), linear part first.
-
-v is the last column's top three entries, w the vee of the antisymmetric
-part of the top-left 3x3 block; the bottom row is not read.
-
-Args:
-    matrix: array_like of shape (..., 4, 4): matrices [[ [w], v ], [0, 0]].
-
-Returns:
-    numpy.ndarray of shape (..., 6): the twists (v, w).)"),
-                                 [](const auto& X) { return chasles::Twist<ScalarOf<decltype(X)>>::vee(X).vector(); });
 }
 
 }  // namespace

@@ -973,7 +973,7 @@ class SE3:
             ndarray: shape (4, 4).
         
         Example:
-            >>> SE3.hat([1.0, 2.0, 3.0, 0.0, 0.0, 1.0])
+            >>> SE3.hat([1.0, 2.0, 3.0, 0.0, 0.0, 1.0]) + 0.0
             array([[ 0., -1.,  0.,  1.],
                    [ 1.,  0.,  0.,  2.],
                    [ 0.,  0.,  0.,  3.],
@@ -2275,7 +2275,7 @@ class _Chain:
         An array function: (n,) gives one result, (..., n) one per configuration,
         by numpy's rules (broadcasting, dtypes, the GIL released; NaN gives NaN). ValueError: a chain without link inertias, shapes that do not match.
         """
-    def gravity_torques(self, q: typing.Any) -> typing.Any:
+    def gravity_torques(self, q: numpy.typing.ArrayLike) -> typing.Any:
         """
         The torques g(q) that hold the chain still against gravity: inverse_dynamics(q, 0, 0).
         
@@ -2315,7 +2315,7 @@ class _Chain:
         An array function: (n,) gives one result, (..., n) one per configuration,
         by numpy's rules (broadcasting, dtypes, the GIL released; NaN gives NaN).
         """
-    def mass_matrix(self, q: typing.Any) -> typing.Any:
+    def mass_matrix(self, q: numpy.typing.ArrayLike) -> typing.Any:
         """
         The joint-space mass matrix M(q), symmetric positive definite (composite rigid bodies).
         
