@@ -1,15 +1,16 @@
-"""The documentation runs as written: README.md, docs/*.md, examples/README.md
-and CONTRIBUTING.md. On each page the fenced ```python blocks run in order in
-one namespace (a later block may use what an earlier one defined), as a
-reader would run them, and a block with ``print(...)  # -> text`` lines
-prints one line per print, the marked ones exactly their text. (The C++ and
-CMake blocks are built by the install_and_consume ctest.) The links between
-the pages lead to files that are there, and the pictures they show are the
-ones of docs/images."""
+"""The documentation runs as written: every docstring example of the package,
+and README.md, docs/*.md, examples/README.md and CONTRIBUTING.md. On each
+page the fenced ```python blocks run in order in one namespace (a later
+block may use what an earlier one defined), as a reader would run them, and
+a block with ``print(...)  # -> text`` lines prints one line per print, the
+marked ones exactly their text. (The C++ and CMake blocks are built by the
+install_and_consume ctest.) The links between the pages lead to files that
+are there, and the pictures they show are the ones of docs/images."""
 
 from __future__ import annotations
 
 import contextlib
+import doctest
 import importlib.util
 import io
 import re
@@ -153,3 +154,71 @@ def test_the_stages_of_tests_run_sh_are_the_documented_ones():
     assert "exec bash tests/run.sh\n" in ci and "bash tests/run.sh\n" in readme
     pytest_call = run_sh[run_sh.index('(cd "$VENV"') : run_sh.index("-m pytest")]
     assert "CHASLES_REQUIRE_URDF_DUMP=1" in pytest_call and "CHASLES_URDF_DUMP=" in pytest_call
+
+
+# ---- the docstrings' examples ------------------------------------------------
+
+
+def docstrings() -> list[tuple[str, str, dict]]:
+    """(name, docstring, namespace) of every docstring of the package with an
+    example: the modules chasles and chasles.plot, each public name and each
+    public member of a public class (__init__ and the operators included). The
+    examples of chasles run with numpy as np and chasles' public names, those
+    of chasles.plot in (a copy of) its own namespace."""
+    import chasles
+    import chasles.plot
+
+    public = {k: getattr(chasles, k) for k in chasles.__all__}
+    found = []
+    for module, names, globs in (
+        (chasles, chasles.__all__, {"np": np, "chasles": chasles, **public}),
+        (chasles.plot, [k for k in vars(chasles.plot) if not k.startswith("_")], dict(vars(chasles.plot))),
+    ):
+        found.append((module.__name__, module.__doc__, globs))
+        for name in names:
+            value = getattr(module, name)
+            if module is chasles.plot and getattr(value, "__module__", None) != "chasles.plot":
+                continue  # what chasles.plot imports (chasles' classes, numpy, typing)
+            found.append((f"{module.__name__}.{name}", getattr(value, "__doc__", None), globs))
+            if isinstance(value, type):
+                for member in vars(value):
+                    if member.startswith("_") and member not in ("__init__", "__matmul__", "__call__"):
+                        continue
+                    attribute = getattr(value, member)  # a static method's function, a property itself
+                    doc = getattr(attribute, "__doc__", None) or getattr(
+                        getattr(attribute, "fget", None), "__doc__", None
+                    )
+                    found.append((f"{module.__name__}.{name}.{member}", doc, globs))
+    unique = {name: (name, doc, globs) for name, doc, globs in found if isinstance(doc, str) and ">>>" in doc}
+    return list(unique.values())
+
+
+def test_the_docstrings_with_examples_are_found():
+    names = {name for name, _, _ in docstrings()}
+    for expected in (
+        "chasles",
+        "chasles.SO3.exp",
+        "chasles.SE3.act",
+        "chasles.rplus",
+        "chasles.between",
+        "chasles.Chain.__init__",
+        "chasles.SpatialInertia.momentum",
+        "chasles.SO3BSpline",
+        "chasles.plot",
+        "chasles.plot.frame",
+        "chasles.plot.frames",
+        "chasles.plot.screw",
+        "chasles.plot.chain",
+    ):
+        assert expected in names
+
+
+@pytest.mark.parametrize(
+    "name,doc,globs", docstrings(), ids=lambda x: x if isinstance(x, str) and "\n" not in x else ""
+)
+def test_docstring_examples_run(name, doc, globs):
+    test = doctest.DocTestParser().get_doctest(doc, dict(globs), name, None, 0)
+    runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE)
+    out: list[str] = []
+    runner.run(test, out=out.append)
+    assert runner.failures == 0, "".join(out)

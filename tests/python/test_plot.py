@@ -4,7 +4,6 @@ stays optional, and the docstring examples run."""
 
 from __future__ import annotations
 
-import doctest
 import subprocess
 import sys
 import textwrap
@@ -452,19 +451,3 @@ def test_chain_refuses_what_is_not_a_chain_or_a_3d_axes(ax):
         plot.chain(np.eye(4), np.zeros(1), ax=ax)
     with pytest.raises(TypeError, match="3D Axes"):
         plot.chain(rail_arm(), np.zeros(4), ax=Figure().add_subplot())
-
-
-def test_docstring_examples_run():
-    # Each example runs in (a copy of) the module's own namespace.
-    runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE)
-    tests = [t for t in doctest.DocTestFinder().find(plot) if t.examples]
-    assert {t.name for t in tests} >= {
-        "chasles.plot",
-        "chasles.plot.frame",
-        "chasles.plot.frames",
-        "chasles.plot.screw",
-        "chasles.plot.chain",
-    }
-    for t in tests:
-        runner.run(t)
-    assert runner.summarize(verbose=False).failed == 0
