@@ -212,6 +212,8 @@ class _Deprecated:
 def _chain_from(cls: type, screws: Any, home: Any, arguments: dict) -> Any:
     """A chain of class cls from its constructor's arguments (unpickling, copies)."""
     chain = cls.__new__(cls)
+    if "names" in arguments:  # pickled before the keyword was renamed joint_names
+        arguments["joint_names"] = arguments.pop("names")
     _make(chain, screws, home, home_as_given=arguments.pop("_home_as_given", False), **arguments)
     return chain
 
@@ -281,7 +283,7 @@ class Chain(_core._Chain):
         home,
         *,
         joint_types=None,
-        names=None,
+        joint_names=None,
         lower=None,
         upper=None,  # type: ignore[no-untyped-def]
         velocity_limits=None,
@@ -290,6 +292,7 @@ class Chain(_core._Chain):
         tool=None,
         gravity=None,
         link_inertias=None,
+        names=None,
     ):
         # (no annotations: help() and inspect.signature show the parameters as the documentation writes
         # them, as for the extension's functions)
@@ -313,7 +316,7 @@ class Chain(_core._Chain):
                 ``tool``), in the base frame.
             joint_types: n of "revolute", "continuous", "prismatic"; None infers
                 them (prismatic where w = 0, revolute elsewhere).
-            names: n joint names (str), or None.
+            joint_names: n joint names (str), or None.
             lower: shape (n,), lower position limits (radians or metres); None: -inf.
             upper: shape (n,), upper position limits; None: inf. A continuous joint
                 has -inf and inf.
@@ -326,6 +329,7 @@ class Chain(_core._Chain):
                 frame at home: a sequence of n SpatialInertia, or shape (n, 10)
                 (mass, center of mass (3), ixx, ixy, ixz, iyy, iyz, izz about the
                 center of mass; ``Chain.from_urdf`` fills it), or None.
+            names: deprecated, the old name of ``joint_names`` (warns).
 
         Raises:
             ValueError: a shape other than (n, 6), more than 32 joints, a non-finite
@@ -339,16 +343,23 @@ class Chain(_core._Chain):
             >>> arm.n_joints
             1
             >>> arm = Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), joint_types=["revolute"],
-            ...             names=["shoulder"], lower=[-1.5], upper=[1.5])
+            ...             joint_names=["shoulder"], lower=[-1.5], upper=[1.5])
             >>> arm
-            Chain(n_joints=1, names=('shoulder',))
+            Chain(n_joints=1, joint_names=('shoulder',))
         """
+        if names is not None:
+            if joint_names is not None:
+                raise TypeError("Chain: give joint_names only (names is its deprecated old name)")
+            warnings.warn(
+                "Chain(names=...) is deprecated: use Chain(joint_names=...)", DeprecationWarning, stacklevel=2
+            )
+            joint_names = names
         _make(
             self,
             screws,
             home,
             joint_types=joint_types,
-            names=names,
+            joint_names=joint_names,
             lower=lower,
             upper=upper,
             velocity_limits=velocity_limits,
@@ -650,7 +661,7 @@ class Chain(_core._Chain):
             return "<uninitialized Chain>"
         out = f"Chain(n_joints={self.n_joints}"
         if self._names is not None:
-            out += f", names={self._names!r}"
+            out += f", joint_names={self._names!r}"
         return out + ")"
 
     def __reduce__(self) -> tuple:
@@ -732,7 +743,7 @@ def _make(
     *,
     home_as_given: bool = False,
     joint_types: Any = None,
-    names: Any = None,
+    joint_names: Any = None,
     lower: Any = None,
     upper: Any = None,
     velocity_limits: Any = None,
@@ -765,14 +776,15 @@ def _make(
     if status != 0:
         raise _invalid(self, status, joint, given, codes)
     n = given.shape[0]
+    names = joint_names
     if names is not None:
         if isinstance(names, str) or not _is_sequence(names):
-            raise TypeError(f"Chain(names): expected a sequence of {n} strings, got {_tp_name(names)}")
+            raise TypeError(f"Chain(joint_names): expected a sequence of {n} strings, got {_tp_name(names)}")
         if len(names) != n:
-            raise ValueError(f"Chain(names): expected {n} names (one per joint), got {len(names)}")
+            raise ValueError(f"Chain(joint_names): expected {n} names (one per joint), got {len(names)}")
         for i in range(n):
             if not isinstance(names[i], str):
-                raise TypeError(f"Chain(names): expected strings, got {_tp_name(names[i])} for joint {i}")
+                raise TypeError(f"Chain(joint_names): expected strings, got {_tp_name(names[i])} for joint {i}")
         names = tuple(str(x) for x in names)
     arrays = self._arrays()
     for a in arrays:
@@ -788,7 +800,7 @@ def _make(
         {
             "_home_as_given": home_as_given,
             "joint_types": None if joint_types is None else tuple(_TYPES[c] for c in codes),
-            "names": names,
+            "joint_names": names,
             "lower": _frozen(lower),
             "upper": _frozen(upper),
             "velocity_limits": _frozen(velocity_limits),
@@ -851,7 +863,7 @@ def _setstate(self: Any, state: Any) -> None:
         x[: 6 * n].reshape(n, 6),
         pose(x[6 * n : 6 * n + 12]),
         joint_types=[_TYPES[int(c)] for c in codes],
-        names=names,
+        joint_names=names,
         lower=limits[0],
         upper=limits[1],
         velocity_limits=limits[2],

@@ -317,9 +317,7 @@ def _inertial(link, T_link):
         return None
     what = f"link {_q(link.get('name'))}"
     mass_el = inertial.find("mass")
-    mass = 0.0 if mass_el is None else _attribute(mass_el, "value", f"{what} <mass>")
-    if mass < 0:
-        raise _error(f"{what} <mass>: negative mass {_number(mass)} (a mass is >= 0)")
+    mass = 0.0 if mass_el is None else _attribute(mass_el, "value", f"{what} <mass>")  # >= 0: _check_numbers
     T = T_link @ _pose(inertial.find("origin"), f"{what} <inertial>")
     I_el = inertial.find("inertia")
     I = np.zeros((3, 3))
@@ -608,7 +606,7 @@ def _chain_from_tree(root, tip_link, base_link):
         screws,
         T,
         joint_types=types,
-        names=names,
+        joint_names=names,
         lower=lower,
         upper=upper,
         velocity_limits=velocity,

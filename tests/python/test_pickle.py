@@ -72,7 +72,7 @@ def _chain_with_model():
         ],
         chasles.SE3(translation=[1.0 / 3.0, 0.0, 0.5]),
         joint_types=["revolute", "prismatic"],
-        names=["shoulder", "slide"],
+        joint_names=["shoulder", "slide"],
         lower=[-1.5, 0.0],
         upper=[1.5, 0.25],
         velocity_limits=[2.0, 0.5],

@@ -194,9 +194,9 @@ def test_help_of_the_package_shows_every_signature():
         (SO3.__eq__, "(self, other)"),
         (
             Chain.__init__,
-            "(self, screws, home, *, joint_types=None, names=None, lower=None, upper=None, "
+            "(self, screws, home, *, joint_types=None, joint_names=None, lower=None, upper=None, "
             "velocity_limits=None, effort_limits=None, base=None, tool=None, gravity=None, "
-            "link_inertias=None)",
+            "link_inertias=None, names=None)",
         ),
         (chasles.rplus, "(g, xi)"),
         (chasles.interpolate, "(a, b, t)"),
