@@ -30,8 +30,7 @@ void bind_jacobians(py::module_& m);     // bind_jacobians.cpp: rplus, ..., betw
 void bind_kinematics(py::module_& m);    // bind_kinematics.cpp: class _Chain (chasles.Chain's model), its ufuncs
 void bind_statistics(py::module_& m);    // bind_statistics.cpp: angles, distances, means (array functions)
 void bind_euler(py::module_& m);         // bind_euler.cpp: the private ufuncs of Euler angles and RPY
-void bind_spline(py::module_& m);        // bind_spline.cpp: the cores of SO3Spline, SE3Spline
-void bind_bspline(py::module_& m);       // bind_bspline.cpp: classes SO3BSpline, SE3BSpline
+void bind_splines(py::module_& m);       // bind_splines.cpp: the cores of SO3/SE3Spline, SO3/SE3BSpline
 void bind_dynamics(py::module_& m);      // bind_dynamics.cpp: class SpatialInertia
 void bind_threads(py::module_& m);       // bind_threads.cpp: set_num_threads, get_num_threads
 

@@ -25,8 +25,7 @@ PYBIND11_MODULE(_core, m) {
   cp::bind_kinematics(m);
   cp::bind_statistics(m);
   cp::bind_euler(m);
-  cp::bind_spline(m);
-  cp::bind_bspline(m);
+  cp::bind_splines(m);
   cp::bind_threads(m);
   cp::finish_functions(m);  // last: signatures for help() and inspect (signatures.hpp)
 }

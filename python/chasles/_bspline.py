@@ -1,20 +1,21 @@
 """The uniform cumulative cubic B-splines on SO(3) and SE(3).
 
-The checks and the evaluation are C++ (include/chasles/bspline.hpp, through
-bindings/bind_bspline.cpp): these classes hold the start time, the spacing
-and the checked control elements (a read-only (N, k, k) float64 array made
-by the private ``_so3_bspline_new`` / ``_se3_bspline_new``, which raise the
-constructor's errors), and evaluate them with the private
-``_so3_bspline_evaluate`` / ``_se3_bspline_evaluate`` (the times checked to
-lie in [start_time, end_time], then one gufunc loop without the GIL, each
-evaluation O(1) whatever N). They are values: immutable (``__init__`` runs
-once), pickled by ``__reduce__`` as the constructor's arguments (every
-protocol; unpickling runs the constructor's checks), copied the same way.
+The checks of the control elements and the evaluation are C++
+(include/chasles/bspline.hpp, through bindings/bind_splines.cpp): these
+classes hold the start time, the spacing and the checked control elements (a
+read-only (N, k, k) float64 array made by the private ``_so3_bspline_new`` /
+``_se3_bspline_new``, which raise the constructor's errors), check the times
+of an evaluation to lie in [start_time, end_time] and evaluate them with the
+private gufuncs ``_so3_bspline`` / ``_so3_bspline_rates`` (``_se3_...``): one
+loop without the GIL, each evaluation O(1) whatever N. They are values:
+immutable (``__init__`` runs once), pickled by ``__reduce__`` as the
+constructor's arguments (every protocol; unpickling runs the constructor's
+checks), copied the same way.
 """
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, NoReturn
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -144,13 +145,68 @@ def _self(self: Any, group: str, member: str) -> Any:
     return self
 
 
+def _type_name(x: Any) -> str:
+    """The name of x's type as the extension's messages give it ("list", "numpy.ndarray")."""
+    t = type(x)
+    if t.__module__ == "builtins" or (t.__flags__ & (1 << 9) and type(t).__name__ != "pybind11_type"):
+        return t.__name__  # a builtin, or a class defined in Python
+    return f"{t.__module__}.{t.__qualname__}"
+
+
+def _reraise(e: Exception, text: str) -> NoReturn:
+    """The failure e of numpy's conversion or ufunc as the extension re-raises
+    it: a TypeError (or a ValueError for any other Exception) whose text is
+    `text` and e's, chained; MemoryError as it is."""
+    if isinstance(e, MemoryError):
+        raise e
+    raise (TypeError if isinstance(e, TypeError) else ValueError)(f"{text}: {e}") from e
+
+
+def _times(t: Any, what: str, start: float, end: float) -> Any:
+    """The times t of an evaluation as a float64 operand, checked to lie in
+    [start, end] (NaN passes: NaN results); an array of another library that
+    implements __array_ufunc__ (dask) as it is (numpy dispatches to it; its
+    times are clamped, unchecked)."""
+    if type(t) is float:  # the common scalar call, without an array
+        if t < start or t > end:
+            raise ValueError(f"{what}: expected times in [start_time, end_time] = [{start!r}, {end!r}], got {t!r}")
+        return t
+    if not isinstance(t, np.ndarray) and getattr(t, "__array_ufunc__", None) is not None:
+        return t
+    if t is None or isinstance(t, (str, bytes)):
+        raise TypeError(f"{what}: expected real numbers (float64), got {'None' if t is None else _type_name(t)}")
+    try:
+        a = np.asarray(t)
+    except Exception as e:
+        _reraise(
+            e,
+            f"{what}: expected an array-like of real numbers (float64), could not convert {_type_name(t)} to an array",
+        )
+    if a.dtype.kind not in "biuf":
+        raise TypeError(f"{what}: expected real numbers (float64), got dtype {a.dtype} ({_type_name(t)})")
+    a = a.astype(np.float64, copy=False)
+    out = (a < start) | (a > end)
+    if out.any():
+        raise ValueError(
+            f"{what}: expected times in [start_time, end_time] = [{start!r}, {end!r}], got {float(a[out][0])!r}"
+        )
+    return a
+
+
 def _evaluation(group: str, order: int, name: str, doc: str) -> Any:
     """The method `name` of a B-spline class: the element (order 0) or a rate (1, 2)."""
-    evaluate = getattr(_core, f"_{group.lower()}_bspline_evaluate")
+    ufunc = getattr(_core, f"_{group.lower()}_bspline" + ("_rates" if order else ""))
+    what = f"{group}BSpline(t)" if order == 0 else f"{group}BSpline.{name}(t)"
 
     def method(self: _BSpline, t: ArrayLike) -> np.ndarray:
         s = _self(self, group, name)
-        return evaluate(s._start_time, s._spacing, s._control, t, order)
+        start, step, control = s._start_time, s._spacing, s._control
+        times = _times(t, what, start, start + float(control.shape[0] - 3) * step)
+        try:
+            r = ufunc(start, step, control, times)
+        except Exception as e:
+            _reraise(e, what)
+        return r[order] if order else r
 
     method.__name__ = name
     method.__qualname__ = name

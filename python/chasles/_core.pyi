@@ -2329,10 +2329,6 @@ class _Chain:
         """
         SE3: the home pose M = g(0).
         """
-def _se3_bspline_evaluate(start_time: typing.SupportsFloat | typing.SupportsIndex, spacing: typing.SupportsFloat | typing.SupportsIndex, control: numpy.ndarray, t: numpy.typing.ArrayLike, order: typing.SupportsInt | typing.SupportsIndex) -> numpy.ndarray:
-    """
-    The methods of SE3BSpline at the times t: the elements (order 0), body velocities (1) or body accelerations (2) of the spline of start_time, spacing and control (from _se3_bspline_new), the times checked to lie in [start_time, end_time]. A private function of chasles.SE3BSpline (python/chasles/_bspline.py).
-    """
 def _se3_bspline_new(start_time: float, spacing: float, control: numpy.typing.ArrayLike) -> tuple[float, float, numpy.ndarray]:
     """
     The checked arguments of SE3BSpline(start_time, spacing, control): (start_time, spacing, the control elements as a new read-only (N, 4, 4) float64 array of rigid motions), or the SE3BSpline constructor's ValueError / TypeError. A private function of chasles.SE3BSpline (python/chasles/_bspline.py).
@@ -2344,10 +2340,6 @@ def _se3_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64],
 def _se3_spline_fit(times: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], keys: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], natural: bool) -> numpy.ndarray:
     """
     The coefficients (n, 18) of the spline through checked (n,) float64 times and (n, 4, 4) poses (row i: c1, c2, c3 of segment i; the last row zero).
-    """
-def _so3_bspline_evaluate(start_time: typing.SupportsFloat | typing.SupportsIndex, spacing: typing.SupportsFloat | typing.SupportsIndex, control: numpy.ndarray, t: numpy.typing.ArrayLike, order: typing.SupportsInt | typing.SupportsIndex) -> numpy.ndarray:
-    """
-    The methods of SO3BSpline at the times t: the elements (order 0), body velocities (1) or body accelerations (2) of the spline of start_time, spacing and control (from _so3_bspline_new), the times checked to lie in [start_time, end_time]. A private function of chasles.SO3BSpline (python/chasles/_bspline.py).
     """
 def _so3_bspline_new(start_time: float, spacing: float, control: numpy.typing.ArrayLike) -> tuple[float, float, numpy.ndarray]:
     """

@@ -1,7 +1,7 @@
 """Interpolating C2 splines through key rotations and key poses.
 
 The fit and the evaluation are C++ (include/chasles/spline.hpp, through
-bindings/bind_spline.cpp): these classes check the arguments, hold the
+bindings/bind_splines.cpp): these classes check the arguments, hold the
 spline's numbers as arrays (times, keys, the coefficients of each segment's
 cubic, computed once by the private fit) and evaluate it with the private
 gufuncs ``_so3_spline`` / ``_so3_spline_rates`` (``_se3_...``), whose
