@@ -52,6 +52,7 @@ example of the documentation and the screw of a random rigid motion, printed,
 checked and drawn into a PNG.
 """
 
+from chasles import _threads
 from chasles._arrays import (
     so3_as_euler,
     so3_as_quat,
@@ -100,7 +101,6 @@ from chasles._core import (
     se3_inverse,
     se3_log,
     se3_vee,
-    set_num_threads,
     so3_act,
     so3_act_jacobian,
     so3_angle,
@@ -117,6 +117,7 @@ from chasles._core import (
 from chasles._mean import se3_mean, so3_mean
 from chasles._random import se3_gaussian, se3_random, so3_gaussian, so3_random
 from chasles._spline import SE3Spline, SO3Spline
+from chasles._threads import set_num_threads
 
 __all__ = [
     "Chain",
@@ -187,3 +188,5 @@ __all__ = [
     "so3_random",
     "so3_vee",
 ]
+
+_threads._read_environment()

@@ -8,7 +8,7 @@ import numpy
 import numpy.dtypes
 import numpy.typing
 import typing
-__all__: list[str] = ['Chain', 'SE3', 'SO3', 'Screw', 'SpatialInertia', 'Twist', 'Wrench', 'act_jacobians', 'between', 'between_jacobians', 'compose_jacobians', 'get_num_threads', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'lminus_jacobians', 'log_jacobian', 'lplus', 'lplus_jacobians', 'rminus', 'rminus_jacobians', 'rplus', 'rplus_jacobians', 'se3_act', 'se3_act_jacobian', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_distance', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_vee', 'set_num_threads', 'so3_act', 'so3_act_jacobian', 'so3_angle', 'so3_compose', 'so3_distance', 'so3_exp', 'so3_from_uniforms', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee']
+__all__: list[str] = ['Chain', 'SE3', 'SO3', 'Screw', 'SpatialInertia', 'Twist', 'Wrench', 'act_jacobians', 'between', 'between_jacobians', 'compose_jacobians', 'get_num_threads', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'lminus_jacobians', 'log_jacobian', 'lplus', 'lplus_jacobians', 'rminus', 'rminus_jacobians', 'rplus', 'rplus_jacobians', 'se3_act', 'se3_act_jacobian', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_distance', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_vee', 'so3_act', 'so3_act_jacobian', 'so3_angle', 'so3_compose', 'so3_distance', 'so3_exp', 'so3_from_uniforms', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee']
 
 _Name = typing.TypeVar("_Name", bound=str)
 _Signature = typing.TypeVar("_Signature", bound=str)
@@ -2341,6 +2341,10 @@ def _se3_spline_fit(times: typing.Annotated[numpy.typing.ArrayLike, numpy.float6
     """
     The coefficients (n, 18) of the spline through checked (n,) float64 times and (n, 4, 4) poses (row i: c1, c2, c3 of segment i; the last row zero).
     """
+def _set_num_threads(n: typing.SupportsInt | typing.SupportsIndex) -> None:
+    """
+    The setter behind chasles.set_num_threads (python/chasles/_threads.py, which checks n and names the errors).
+    """
 def _so3_bspline_new(start_time: float, spacing: float, control: numpy.typing.ArrayLike) -> tuple[float, float, numpy.ndarray]:
     """
     The checked arguments of SO3BSpline(start_time, spacing, control): (start_time, spacing, the control elements as a new read-only (N, 3, 3) float64 array of rotations), or the SO3BSpline constructor's ValueError / TypeError. A private function of chasles.SO3BSpline (python/chasles/_bspline.py).
@@ -2786,21 +2790,6 @@ def rplus_jacobians(g: SE3, xi: numpy.typing.ArrayLike) -> tuple[numpy.typing.ND
         >>> bool(np.array_equal(J_g, np.eye(3))), bool(np.array_equal(J_xi, np.eye(3)))
         (True, True)
     """
-def set_num_threads(n: typing.SupportsIndex) -> None:
-    """
-    Sets how many threads an array function may split a large batch across.
-    
-    The default is 1, or the environment variable CHASLES_NUM_THREADS read at
-    import. With n > 1, a call on a batch of N elements runs on
-    min(n, N // grain) threads, each on a contiguous part of the batch, inside
-    the ufunc's loop (the GIL is released there as always): grain is 16384
-    elements for the array functions and 512 configurations for the methods of
-    Chain, so a small batch never pays for a thread. Every element is computed
-    by the same code as on one thread: results are bit for bit the same.
-    
-    The setting is the process's, shared by every Python thread. n: an int from
-    1 to 1024 (ValueError outside, TypeError for a non-integer).
-    """
 __version__: str = '0.1.0'
 _chain_forward: numpy.ufunc
 _chain_forward_body: numpy.ufunc
@@ -2812,6 +2801,7 @@ _gravity_torques: numpy.ufunc
 _inverse_dynamics: numpy.ufunc
 _inverse_kinematics: numpy.ufunc
 _mass_matrix: numpy.ufunc
+_max_threads: int = 1024
 _se3_bspline: numpy.ufunc
 _se3_bspline_rates: numpy.ufunc
 _se3_spline: numpy.ufunc
