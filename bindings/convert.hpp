@@ -46,6 +46,7 @@
 #include <initializer_list>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include <pybind11/numpy.h>
@@ -383,31 +384,22 @@ inline std::string shape_hint(const std::string& what, const Py_intptr_t* dims, 
   const int core_nd = static_cast<int>(core.size());
   bool batch = nd > core_nd;
   for (int k = 0; batch && k < core_nd; ++k) batch = dims[nd - core_nd + k] == core.begin()[k];
-  if (batch) {
-    std::string f;
-    if (what == "SO3.exp(w)")
-      f = "chasles.so3_exp";
-    else if (what == "SO3.hat(w)")
-      f = "chasles.so3_hat";
-    else if (what == "SO3.vee(matrix)")
-      f = "chasles.so3_vee";
-    else if (what == "SO3.from_quat(quat)")
-      f = "chasles.so3_from_quat";
-    else if (what == "SE3.exp(xi)")
-      f = "chasles.se3_exp";
-    else if (what == "SE3.hat(xi)")
-      f = "chasles.se3_hat";
-    else if (what == "SE3.vee(matrix)" || what == "Twist.vee(matrix)")
-      f = "chasles.se3_vee";
-    else if (what == "SO3.interpolate(t)")
-      f = "chasles.so3_interpolate";
-    else if (what == "SE3.interpolate(t)")
-      f = "chasles.se3_interpolate";
-    else if (what == "interpolate(t)")
-      f = "chasles.so3_interpolate or chasles.se3_interpolate";
-    if (!f.empty())
-      return "; for a batch, call the array function " + f + " (array functions broadcast over leading axes)";
-  }
+  static const std::pair<const char*, const char*> functions[] = {
+      {"SO3.exp(w)", "so3_exp"},
+      {"SO3.hat(w)", "so3_hat"},
+      {"SO3.vee(matrix)", "so3_vee"},
+      {"SO3.from_quat(quat)", "so3_from_quat"},
+      {"SE3.exp(xi)", "se3_exp"},
+      {"SE3.hat(xi)", "se3_hat"},
+      {"SE3.vee(matrix)", "se3_vee"},
+      {"Twist.vee(matrix)", "se3_vee"},
+      {"SO3.interpolate(t)", "so3_interpolate"},
+      {"SE3.interpolate(t)", "se3_interpolate"},
+      {"interpolate(t)", "so3_interpolate or chasles.se3_interpolate"}};
+  for (const auto& [method, function] : functions)
+    if (batch && what == method)
+      return "; for a batch, call the array function chasles." + std::string(function) +
+             " (array functions broadcast over leading axes)";
   if (nd == 1 && dims[0] == 6 && core_nd == 1 && core.begin()[0] == 3) {
     if (what == "Twist(v)" || what == "Twist(w)") return "; a 6-vector (v, w) is Twist.from_vector(xi)";
     if (what == "Wrench(f)" || what == "Wrench(tau)") return "; a 6-vector (f, tau) is Wrench.from_vector(F)";
