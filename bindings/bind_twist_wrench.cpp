@@ -288,43 +288,39 @@ Example:
 
   cls.attr("__array_ufunc__") = py::none();  // numpy defers 2.0 * x to x.__rmul__
   // Arithmetic keeps the invariant of the constructors: finite numbers only.
-  const std::string add_what = std::string(S::T) + " + " + S::T;
-  const std::string sub_what = std::string(S::T) + " - " + S::T;
+  static const char *const add_what = six_text<T>("{T} + {T}"), *const sub_what = six_text<T>("{T} - {T}");
   cls.def(
-      "__add__", [add_what](Obj<T> x, Obj<T> y) { return finite_result(*x + *y, add_what.c_str()); }, py::arg("other"),
+      "__add__", [](Obj<T> x, Obj<T> y) { return finite_result(*x + *y, add_what); }, py::arg("other"),
       py::is_operator());
   cls.def(
-      "__sub__", [sub_what](Obj<T> x, Obj<T> y) { return finite_result(*x - *y, sub_what.c_str()); }, py::arg("other"),
+      "__sub__", [](Obj<T> x, Obj<T> y) { return finite_result(*x - *y, sub_what); }, py::arg("other"),
       py::is_operator());
   cls.def("__neg__", [](Obj<T> x) { return -*x; });
   cls.def("__pos__", [](Obj<T> x) { return *x; });
-  const std::string mul_what = std::string(S::T) + " * scalar";
-  const auto mul = [mul_what](Obj<T> x, RealLike s) -> Returns<T> {
+  static const char* const mul_what = six_text<T>("{T} * scalar");
+  const auto mul = [](Obj<T> x, RealLike s) -> Returns<T> {
     double k;
-    if (!scalar_operand(s.obj, k, mul_what.c_str())) return {not_implemented()};
-    return {py::cast(finite_result(*x * k, mul_what.c_str()))};
+    if (!scalar_operand(s.obj, k, mul_what)) return {not_implemented()};
+    return {py::cast(finite_result(*x * k, mul_what))};
   };
   cls.def("__mul__", mul, py::arg("scalar"));
   cls.def("__rmul__", mul, py::arg("scalar"));
-  const std::string div_what = std::string(S::T) + " / scalar";
+  static const char* const div_what = six_text<T>("{T} / scalar");
   cls.def(
       "__truediv__",
-      [div_what](Obj<T> x, RealLike s) -> Returns<T> {
+      [](Obj<T> x, RealLike s) -> Returns<T> {
         double k;
-        if (!scalar_operand(s.obj, k, div_what.c_str())) return {not_implemented()};
+        if (!scalar_operand(s.obj, k, div_what)) return {not_implemented()};
         if (k == 0.0) {
-          PyErr_SetString(PyExc_ZeroDivisionError, (div_what + ": division by zero").c_str());
+          PyErr_SetString(PyExc_ZeroDivisionError, (std::string(div_what) + ": division by zero").c_str());
           throw py::error_already_set();
         }
-        return {py::cast(finite_result(T(Vector6(x->vector() / k)), div_what.c_str()))};
+        return {py::cast(finite_result(T(Vector6(x->vector() / k)), div_what))};
       },
       py::arg("scalar"));
-  const std::string tol_what = std::string(S::T) + ".is_approx(tol)";
+  static const char* const tol_what = six_text<T>("{T}.is_approx(tol)");
   cls.def(
-      "is_approx",
-      [tol_what](Obj<T> x, Obj<T> y, RealLike tol) {
-        return x->is_approx(*y, to_tolerance(tol.obj, tol_what.c_str()));
-      },
+      "is_approx", [](Obj<T> x, Obj<T> y, RealLike tol) { return x->is_approx(*y, to_tolerance(tol.obj, tol_what)); },
       py::arg("other"), py::arg_v("tol", 1e-9),
       R"doc(Whether two 6-vectors are equal within tol: max |x - y| <= tol * max(1, max |x|, max |y|).
 
@@ -337,21 +333,21 @@ Args:
 Returns:
     bool.
 )doc");
-  const std::string name(S::T), an(S::a), bn(S::b), setstate = name + ".__setstate__";
   def_array(
       cls, [](const T& x) { return vec_out<6>(x.vector()); },
       "The 6-vector, shape (6,), for np.asarray (numpy's dtype and copy keywords).");
   // The state: the 6-vector, finite as the constructor takes it.
+  static const char* const setstate = six_text<T>("{T}.__setstate__");
   def_value_protocol<6>(
       cls,
-      [name, an, bn](const T& x) {
-        return name + "(" + an + "=" + array_repr(vec_out<3>(Vector3(x.vector().template head<3>()))) + ", " + bn +
-               "=" + array_repr(vec_out<3>(Vector3(x.vector().template tail<3>()))) + ")";
+      [](const T& x) {
+        return std::string(S::T) + "(" + S::a + "=" + array_repr(vec_out<3>(Vector3(x.vector().template head<3>()))) +
+               ", " + S::b + "=" + array_repr(vec_out<3>(Vector3(x.vector().template tail<3>()))) + ")";
       },
       [](const T& x) { return x.vector(); },
-      [setstate](const double* v) {
+      [](const double* v) {
         const Vector6 x = Eigen::Map<const Vector6>(v);
-        require_finite(x, setstate.c_str());
+        require_finite(x, setstate);
         return T(x);
       });
 }
