@@ -6,7 +6,9 @@
 #include <chasles/wrench.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <string>
+#include <utility>
 
 #include "bindings.hpp"
 #include "conventions.hpp"
