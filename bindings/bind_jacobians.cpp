@@ -29,100 +29,19 @@ Matrices pair(const J& j) {
   return Matrices(mat_out(j.lhs), mat_out(j.rhs));
 }
 
-/// Defines the function `name` of `Def` (a class template over the group
-/// G and its tangent dimension D, with a static `f`) for SO3, then for SE3.
+/// Defines rplus, ..., interpolate_jacobian_t for the group G: called for
+/// SO3, then for SE3, which makes each function an overload set in that order.
 /// pybind11 shows the signatures of the overloads, each followed by its
 /// docstring: the text common to both groups is given once, with the SE3
 /// overload; SO3's own text, if any, with its overload.
-template <template <typename, int> class Def, typename... Extra>
-void def_overloads(py::module_& m, const char* name, const char* doc, const char* so3_doc, const Extra&... extra) {
-  if (so3_doc != nullptr)
-    m.def(name, &Def<SO3d, 3>::f, extra..., so3_doc);
-  else
-    m.def(name, &Def<SO3d, 3>::f, extra...);
-  m.def(name, &Def<SE3d, 6>::f, extra..., doc);
-}
-
-template <typename G, int D>
-struct Rplus {
-  static auto f(Obj<G> x, ArrayLike xi) { return chasles::rplus(*x, to_finite_eigen<D>(xi.obj, "rplus(g, xi)")); }
-};
-template <typename G, int D>
-struct Rminus {
-  static auto f(Obj<G> x, Obj<G> h) { return vec_out(chasles::rminus(*x, *h)); }
-};
-template <typename G, int D>
-struct Lplus {
-  static auto f(ArrayLike xi, Obj<G> x) { return chasles::lplus(to_finite_eigen<D>(xi.obj, "lplus(xi, g)"), *x); }
-};
-template <typename G, int D>
-struct Lminus {
-  static auto f(Obj<G> x, Obj<G> h) { return vec_out(chasles::lminus(*x, *h)); }
-};
-template <typename G, int D>
-struct Between {
-  static auto f(Obj<G> a, Obj<G> b) { return chasles::between(*a, *b); }
-};
-template <typename G, int D>
-struct Interpolate {
-  static auto f(Obj<G> a, Obj<G> b, RealLike t) {
-    return chasles::interpolate(*a, *b, to_finite_real(t.obj, "interpolate(t)"));
-  }
-};
-template <typename G, int D>
-struct LogJacobian {
-  static auto f(Obj<G> x) { return mat_out(chasles::log_jacobian(*x)); }
-};
-template <typename G, int D>
-struct InverseJacobian {
-  static auto f(Obj<G> x) { return mat_out(chasles::inverse_jacobian(*x)); }
-};
-template <typename G, int D>
-struct ComposeJacobians {
-  static auto f(Obj<G> a, Obj<G> b) { return pair(chasles::compose_jacobians(*a, *b)); }
-};
-template <typename G, int D>
-struct ActJacobians {
-  static auto f(Obj<G> x, ArrayLike p) {
-    const auto J = chasles::act_jacobians(*x, to_finite_eigen<3>(p.obj, "act_jacobians(g, p)"));
-    return Matrices(mat_out(J.group), mat_out(J.point));
-  }
-};
-template <typename G, int D>
-struct RplusJacobians {
-  static auto f(Obj<G> x, ArrayLike xi) {
-    return pair(chasles::rplus_jacobians(*x, to_finite_eigen<D>(xi.obj, "rplus_jacobians(g, xi)")));
-  }
-};
-template <typename G, int D>
-struct RminusJacobians {
-  static auto f(Obj<G> x, Obj<G> h) { return pair(chasles::rminus_jacobians(*x, *h)); }
-};
-template <typename G, int D>
-struct LplusJacobians {
-  static auto f(ArrayLike xi, Obj<G> x) {
-    return pair(chasles::lplus_jacobians(to_finite_eigen<D>(xi.obj, "lplus_jacobians(xi, g)"), *x));
-  }
-};
-template <typename G, int D>
-struct LminusJacobians {
-  static auto f(Obj<G> x, Obj<G> h) { return pair(chasles::lminus_jacobians(*x, *h)); }
-};
-template <typename G, int D>
-struct BetweenJacobians {
-  static auto f(Obj<G> a, Obj<G> b) { return pair(chasles::between_jacobians(*a, *b)); }
-};
-template <typename G, int D>
-struct InterpolateJacobianT {
-  static auto f(Obj<G> a, Obj<G> b, RealLike t) {
-    return vec_out(chasles::interpolate_jacobian_t(*a, *b, to_finite_real(t.obj, "interpolate_jacobian_t(t)")));
-  }
-};
-
-}  // namespace
-
-void bind_jacobians(py::module_& m) {
-  def_overloads<Rplus>(m, "rplus", R"doc(g rplus xi = g exp(xi): a perturbation in g's own (local, right) frame.
+template <typename G>
+void def_group_functions(py::module_& m) {
+  constexpr int D = G::DoF;
+  constexpr bool kSE3 = std::is_same_v<G, SE3d>;
+  const auto shared = [](const char* doc) { return kSE3 ? doc : nullptr; };
+  m.def(
+      "rplus", [](Obj<G> x, ArrayLike xi) { return chasles::rplus(*x, to_finite_eigen<D>(xi.obj, "rplus(g, xi)")); },
+      py::arg("g"), py::arg("xi"), shared(R"doc(g rplus xi = g exp(xi): a perturbation in g's own (local, right) frame.
 
 Args:
     g: SO3 or SE3.
@@ -139,9 +58,10 @@ Example:
     >>> g = chasles.SE3(translation=[1.0, 0.0, 0.0])
     >>> chasles.rplus(g, [0.0, 2.0, 0.0, 0.0, 0.0, 0.0]).translation
     array([1., 2., 0.])
-)doc",
-                       nullptr, py::arg("g"), py::arg("xi"));
-  def_overloads<Rminus>(m, "rminus", R"doc(g rminus h = log(h^-1 g): the xi with rplus(h, xi) == g ("g minus h").
+)doc"));
+  m.def(
+      "rminus", [](Obj<G> x, Obj<G> h) { return vec_out(chasles::rminus(*x, *h)); }, py::arg("g"), py::arg("h"),
+      shared(R"doc(g rminus h = log(h^-1 g): the xi with rplus(h, xi) == g ("g minus h").
 
 The order is manif's g.rminus(h); jaxlie's rminus(a, b) = log(a^-1 b) takes
 the arguments the other way round.
@@ -158,9 +78,11 @@ Example:
     >>> g = h @ chasles.SO3.exp([0.3, 0.0, 0.0])
     >>> np.round(chasles.rminus(g, h), 12) + 0.0
     array([0.3, 0. , 0. ])
-)doc",
-                        nullptr, py::arg("g"), py::arg("h"));
-  def_overloads<Lplus>(m, "lplus", R"doc(xi lplus g = exp(xi) g: a perturbation in the fixed (global, left) frame.
+)doc"));
+  m.def(
+      "lplus", [](ArrayLike xi, Obj<G> x) { return chasles::lplus(to_finite_eigen<D>(xi.obj, "lplus(xi, g)"), *x); },
+      py::arg("xi"), py::arg("g"),
+      shared(R"doc(xi lplus g = exp(xi) g: a perturbation in the fixed (global, left) frame.
 
 Args:
     xi: tangent vector, shape (3,) for SO3, (6,) for SE3 ((v, w)), finite.
@@ -171,9 +93,10 @@ Returns:
 
 Raises:
     ValueError: xi has the wrong shape for g, or is not finite.
-)doc",
-                       nullptr, py::arg("xi"), py::arg("g"));
-  def_overloads<Lminus>(m, "lminus", R"doc(g lminus h = log(g h^-1): the xi with lplus(xi, h) == g.
+)doc"));
+  m.def(
+      "lminus", [](Obj<G> x, Obj<G> h) { return vec_out(chasles::lminus(*x, *h)); }, py::arg("g"), py::arg("h"),
+      shared(R"doc(g lminus h = log(g h^-1): the xi with lplus(xi, h) == g.
 
 Args:
     g: SO3 or SE3.
@@ -181,9 +104,10 @@ Args:
 
 Returns:
     ndarray: shape (3,) for SO3, (6,) for SE3 ((v, w), linear part first).
-)doc",
-                        nullptr, py::arg("g"), py::arg("h"));
-  def_overloads<Between>(m, "between", R"doc(between(a, b) = a^-1 b: b seen from a (manif's a.between(b)).
+)doc"));
+  m.def(
+      "between", [](Obj<G> a, Obj<G> b) { return chasles::between(*a, *b); }, py::arg("a"), py::arg("b"),
+      shared(R"doc(between(a, b) = a^-1 b: b seen from a (manif's a.between(b)).
 
 Args:
     a: SO3 or SE3.
@@ -200,10 +124,14 @@ Example:
     >>> b = chasles.SE3(translation=[1.0, 2.0, 0.0])
     >>> chasles.between(a, b).translation
     array([0., 2., 0.])
-)doc",
-                         nullptr, py::arg("a"), py::arg("b"));
-  def_overloads<Interpolate>(m, "interpolate",
-                             R"doc(Screw interpolation of rigid motions a exp(t log(a^-1 b)) (as SE3.interpolate).
+)doc"));
+  m.def(
+      "interpolate",
+      [](Obj<G> a, Obj<G> b, RealLike t) {
+        return chasles::interpolate(*a, *b, to_finite_real(t.obj, "interpolate(t)"));
+      },
+      py::arg("a"), py::arg("b"), py::arg("t"),
+      kSE3 ? R"doc(Screw interpolation of rigid motions a exp(t log(a^-1 b)) (as SE3.interpolate).
 
 Args:
     a: SE3, the start (t = 0).
@@ -217,8 +145,8 @@ Example:
     >>> m = chasles.interpolate(SE3(), SE3(translation=[0.0, 0.0, 4.0]), 0.25)
     >>> m.translation
     array([0., 0., 1.])
-)doc",
-                             R"doc(Geodesic interpolation of rotations a exp(t log(a^-1 b)) (as SO3.interpolate).
+)doc"
+           : R"doc(Geodesic interpolation of rotations a exp(t log(a^-1 b)) (as SO3.interpolate).
 
 Args:
     a: SO3, the start (t = 0).
@@ -227,9 +155,10 @@ Args:
 
 Returns:
     SO3: the interpolated rotation.
-)doc",
-                             py::arg("a"), py::arg("b"), py::arg("t"));
-  def_overloads<LogJacobian>(m, "log_jacobian", R"doc(The Jacobian of g -> log(g), in the right-local convention.
+)doc");
+  m.def(
+      "log_jacobian", [](Obj<G> x) { return mat_out(chasles::log_jacobian(*x)); }, py::arg("g"),
+      shared(R"doc(The Jacobian of g -> log(g), in the right-local convention.
 
 For a map f to the tangent space the right-local Jacobian J is defined by
 f(g exp(dx)) = f(g) + J dx + o(dx); here J = J_r(log g)^-1 (Sola et al.
@@ -249,10 +178,10 @@ Example:
     >>> bool(np.allclose(chasles.rplus(g, dx).log() - g.log(),
     ...                  chasles.log_jacobian(g) @ dx, atol=1e-13))
     True
-)doc",
-                             nullptr, py::arg("g"));
-  def_overloads<InverseJacobian>(m, "inverse_jacobian",
-                                 R"doc(The Jacobian of g -> g^-1, in the right-local convention: -Ad_g.
+)doc"));
+  m.def(
+      "inverse_jacobian", [](Obj<G> x) { return mat_out(chasles::inverse_jacobian(*x)); }, py::arg("g"),
+      shared(R"doc(The Jacobian of g -> g^-1, in the right-local convention: -Ad_g.
 
 Right-local: f(g exp(dx)) = f(g) exp(J dx + o(dx)); here
 (g exp(dx))^-1 = g^-1 exp(-Ad_g dx), so J = -Ad_g (Sola et al. 2018,
@@ -271,10 +200,10 @@ Example:
     array([[ 0.,  1.,  0.],
            [-1.,  0.,  0.],
            [ 0.,  0., -1.]])
-)doc",
-                                 nullptr, py::arg("g"));
-  def_overloads<ComposeJacobians>(m, "compose_jacobians",
-                                  R"doc(The Jacobians (J_a, J_b) of (a, b) -> a b, in the right-local convention.
+)doc"));
+  m.def(
+      "compose_jacobians", [](Obj<G> a, Obj<G> b) { return pair(chasles::compose_jacobians(*a, *b)); }, py::arg("a"),
+      py::arg("b"), shared(R"doc(The Jacobians (J_a, J_b) of (a, b) -> a b, in the right-local convention.
 
 Right-local: (a exp(da)) (b exp(db)) = a b exp(J_a da + J_b db + o(da, db)),
 with J_a = Ad_{b^-1} and J_b = I (Sola et al. 2018, section IV).
@@ -295,10 +224,14 @@ Example:
     >>> J_a, J_b = chasles.compose_jacobians(a, b)
     >>> bool(np.allclose(J_a, b.inverse().as_matrix())), bool(np.array_equal(J_b, np.eye(3)))
     (True, True)
-)doc",
-                                  nullptr, py::arg("a"), py::arg("b"));
-  def_overloads<ActJacobians>(m, "act_jacobians",
-                              R"doc(The Jacobians (J_g, J_p) of (g, p) -> g p (the action on a point).
+)doc"));
+  m.def(
+      "act_jacobians",
+      [](Obj<G> x, ArrayLike p) {
+        const auto J = chasles::act_jacobians(*x, to_finite_eigen<3>(p.obj, "act_jacobians(g, p)"));
+        return Matrices(mat_out(J.group), mat_out(J.point));
+      },
+      py::arg("g"), py::arg("p"), shared(R"doc(The Jacobians (J_g, J_p) of (g, p) -> g p (the action on a point).
 
 Right-local in g: (g exp(dx)) (p + dp) = g p + J_g dx + J_p dp + o(dx, dp).
 SO3: J_g = -R [p], J_p = R; SE3: J_g = [R, -R [p]] (columns (v, w), linear
@@ -322,10 +255,13 @@ Example:
     array([[ 1.,  0.,  0.,  0.,  1.,  0.],
            [ 0.,  1.,  0., -1.,  0.,  0.],
            [ 0.,  0.,  1.,  0.,  0.,  0.]])
-)doc",
-                              nullptr, py::arg("g"), py::arg("p"));
-  def_overloads<RplusJacobians>(m, "rplus_jacobians",
-                                R"doc(The Jacobians (J_g, J_xi) of (g, xi) -> rplus(g, xi) = g exp(xi).
+)doc"));
+  m.def(
+      "rplus_jacobians",
+      [](Obj<G> x, ArrayLike xi) {
+        return pair(chasles::rplus_jacobians(*x, to_finite_eigen<D>(xi.obj, "rplus_jacobians(g, xi)")));
+      },
+      py::arg("g"), py::arg("xi"), shared(R"doc(The Jacobians (J_g, J_xi) of (g, xi) -> rplus(g, xi) = g exp(xi).
 
 Right-local: rplus(g exp(dg), xi + dxi) = rplus(g, xi) exp(J_g dg + J_xi dxi
 + o), with J_g = Ad_{exp(xi)}^-1 = Ad_{exp(-xi)} and J_xi = J_r(xi) (Sola et
@@ -347,10 +283,10 @@ Example:
     >>> J_g, J_xi = chasles.rplus_jacobians(chasles.SO3(), [0.0, 0.0, 0.0])
     >>> bool(np.array_equal(J_g, np.eye(3))), bool(np.array_equal(J_xi, np.eye(3)))
     (True, True)
-)doc",
-                                nullptr, py::arg("g"), py::arg("xi"));
-  def_overloads<RminusJacobians>(m, "rminus_jacobians",
-                                 R"doc(The Jacobians (J_g, J_h) of (g, h) -> rminus(g, h) = log(h^-1 g).
+)doc"));
+  m.def(
+      "rminus_jacobians", [](Obj<G> x, Obj<G> h) { return pair(chasles::rminus_jacobians(*x, *h)); }, py::arg("g"),
+      py::arg("h"), shared(R"doc(The Jacobians (J_g, J_h) of (g, h) -> rminus(g, h) = log(h^-1 g).
 
 Right-local: rminus(g exp(dg), h exp(dh)) = rminus(g, h) + J_g dg + J_h dh
 + o, with xi = rminus(g, h), J_g = J_r(xi)^-1 and J_h = -J_l(xi)^-1 (Sola et
@@ -372,10 +308,13 @@ Example:
     >>> J_g, J_h = chasles.rminus_jacobians(chasles.SE3(), chasles.SE3())
     >>> bool(np.array_equal(J_g, np.eye(6))), bool(np.array_equal(J_h, -np.eye(6)))
     (True, True)
-)doc",
-                                 nullptr, py::arg("g"), py::arg("h"));
-  def_overloads<LplusJacobians>(m, "lplus_jacobians",
-                                R"doc(The Jacobians (J_xi, J_g) of (xi, g) -> lplus(xi, g) = exp(xi) g.
+)doc"));
+  m.def(
+      "lplus_jacobians",
+      [](ArrayLike xi, Obj<G> x) {
+        return pair(chasles::lplus_jacobians(to_finite_eigen<D>(xi.obj, "lplus_jacobians(xi, g)"), *x));
+      },
+      py::arg("xi"), py::arg("g"), shared(R"doc(The Jacobians (J_xi, J_g) of (xi, g) -> lplus(xi, g) = exp(xi) g.
 
 Right-local in the result and in g: lplus(xi + dxi, g exp(dg)) =
 lplus(xi, g) exp(J_xi dxi + J_g dg + o), with J_xi = Ad_{g^-1} J_r(xi) and
@@ -398,10 +337,10 @@ Example:
     >>> J_xi, J_g = chasles.lplus_jacobians([0.0, 0.0, 0.0], g)
     >>> bool(np.allclose(J_xi, g.inverse().as_matrix())), bool(np.array_equal(J_g, np.eye(3)))
     (True, True)
-)doc",
-                                nullptr, py::arg("xi"), py::arg("g"));
-  def_overloads<LminusJacobians>(m, "lminus_jacobians",
-                                 R"doc(The Jacobians (J_g, J_h) of (g, h) -> lminus(g, h) = log(g h^-1).
+)doc"));
+  m.def(
+      "lminus_jacobians", [](Obj<G> x, Obj<G> h) { return pair(chasles::lminus_jacobians(*x, *h)); }, py::arg("g"),
+      py::arg("h"), shared(R"doc(The Jacobians (J_g, J_h) of (g, h) -> lminus(g, h) = log(g h^-1).
 
 Right-local in the arguments: lminus(g exp(dg), h exp(dh)) = lminus(g, h) +
 J_g dg + J_h dh + o, with xi = lminus(g, h), J_g = J_r(xi)^-1 Ad_h and
@@ -424,10 +363,10 @@ Example:
     >>> J_g, J_h = chasles.lminus_jacobians(h, h)
     >>> bool(np.allclose(J_g, h.as_matrix())), bool(np.array_equal(J_h, -J_g))
     (True, True)
-)doc",
-                                 nullptr, py::arg("g"), py::arg("h"));
-  def_overloads<BetweenJacobians>(m, "between_jacobians",
-                                  R"doc(The Jacobians (J_a, J_b) of (a, b) -> between(a, b) = a^-1 b.
+)doc"));
+  m.def(
+      "between_jacobians", [](Obj<G> a, Obj<G> b) { return pair(chasles::between_jacobians(*a, *b)); }, py::arg("a"),
+      py::arg("b"), shared(R"doc(The Jacobians (J_a, J_b) of (a, b) -> between(a, b) = a^-1 b.
 
 Right-local: between(a exp(da), b exp(db)) = between(a, b) exp(J_a da +
 J_b db + o), with J_a = -Ad_{b^-1 a} and J_b = I (Sola et al. 2018,
@@ -449,10 +388,14 @@ Example:
     >>> J_a, J_b = chasles.between_jacobians(a, chasles.SO3())
     >>> bool(np.allclose(J_a, -a.as_matrix())), bool(np.array_equal(J_b, np.eye(3)))
     (True, True)
-)doc",
-                                  nullptr, py::arg("a"), py::arg("b"));
-  def_overloads<InterpolateJacobianT>(m, "interpolate_jacobian_t",
-                                      R"doc(The derivative in t of interpolate(a, b, t) = a exp(t log(a^-1 b)).
+)doc"));
+  m.def(
+      "interpolate_jacobian_t",
+      [](Obj<G> a, Obj<G> b, RealLike t) {
+        return vec_out(chasles::interpolate_jacobian_t(*a, *b, to_finite_real(t.obj, "interpolate_jacobian_t(t)")));
+      },
+      py::arg("a"), py::arg("b"), py::arg("t"),
+      shared(R"doc(The derivative in t of interpolate(a, b, t) = a exp(t log(a^-1 b)).
 
 Right-local: interpolate(a, b, t + dt) = interpolate(a, b, t) exp(J dt + o(dt)),
 and J = J_r(t xi) xi = xi = rminus(b, a) = log(a^-1 b), the same for every t
@@ -475,8 +418,14 @@ Example:
     >>> a, b = chasles.SE3(), chasles.SE3(translation=[2.0, 0.0, 0.0])
     >>> chasles.interpolate_jacobian_t(a, b, 0.5)
     array([2., 0., 0., 0., 0., 0.])
-)doc",
-                                      nullptr, py::arg("a"), py::arg("b"), py::arg("t"));
+)doc"));
+}
+
+}  // namespace
+
+void bind_jacobians(py::module_& m) {
+  def_group_functions<SO3d>(m);
+  def_group_functions<SE3d>(m);
 
   // ---- the Jacobian of the point action for many points (array functions) ----
 

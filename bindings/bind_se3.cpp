@@ -47,8 +47,6 @@ Example:
     True
 )doc";
 
-std::string class_doc() { return std::string(kClassDoc) + kConventions; }
-
 /// Why SE3(...) refused its arguments, and what to call instead (the
 /// constructor takes an SO3 and a translation; raw matrices have their own
 /// checked constructors).
@@ -122,8 +120,7 @@ Vector3 box(py::handle h, const char* what) {
 }  // namespace
 
 void bind_se3(Class<SE3d>& cls) {
-  static const std::string doc = class_doc();
-  cls.attr("__doc__") = doc;
+  cls.attr("__doc__") = std::string(kClassDoc) + kConventions;
   hold_inline(cls);
 
   // ---- scipy and random ---------------------------------------------------

@@ -41,8 +41,6 @@ Example:
     True
 )doc";
 
-std::string class_doc() { return std::string(kClassDoc) + kConventions; }
-
 /// The error of SO3.from_matrix (and of SO3.__setstate__, which has no tol
 /// to pass): what is wrong, by how much, and what to do.
 [[noreturn]] void raise_not_rotation(const Matrix3& M, double tol, const char* fn, bool tol_argument = true) {
@@ -87,8 +85,7 @@ py::object euler_result(const chasles::EulerAngles<double>& e, bool degrees, boo
 }  // namespace
 
 void bind_so3(Class<SO3d>& cls) {
-  static const std::string doc = class_doc();
-  cls.attr("__doc__") = doc;
+  cls.attr("__doc__") = std::string(kClassDoc) + kConventions;
   hold_inline(cls);
   // What SO3 and SE3 share (lie_group.hpp), first: the composition comes
   // before the action on points among the overloads of @. The state: the matrix row by row, checked as SO3.from_matrix

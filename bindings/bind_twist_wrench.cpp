@@ -6,7 +6,9 @@
 #include <chasles/wrench.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <string>
+#include <utility>
 
 #include "bindings.hpp"
 #include "conventions.hpp"
@@ -108,50 +110,219 @@ Example:
     9.81
 )doc";
 
-/// Arithmetic, comparison, copy, pickle, __array__ and __repr__ of a
-/// 6-vector type (Twist or Wrench). `a` and `b` are the names of its halves.
+/// What Twist and Wrench call their halves, and the words in which the
+/// docstrings and messages the two share differ (the {key}s of six_text).
 template <typename T>
-void bind_six_vector_protocols(py::class_<T, InlineHolder<T>>& cls, const char* cls_name, const char* a,
-                               const char* b) {
+struct Six;
+
+template <>
+struct Six<Twistd> {
+  static constexpr const char *T = "Twist", *kind = "twist", *x = "xi";  // x: the symbol, from_vector's argument
+  static constexpr const char *a = "v", *b = "w";  // the halves: the constructor's arguments
+  static constexpr const char *a_desc = "linear part", *b_desc = "angular part";
+  static constexpr const char *head = "linear", *tail = "angular";  // the properties of the halves
+  static constexpr const char* order = "(v, w), linear part first";
+  static constexpr const char* screw_doc = R"doc(The screw of the twist (Chasles).
+
+With w != 0: pitch w.v / |w|^2, axis through w x v / |w|^2 along w / |w|,
+magnitude |w|; with w = 0: pitch inf, direction v / |v|, magnitude |v|.
+
+Returns:
+    Screw.
+
+Example:
+    >>> s = Twist(v=[0.0, 0.0, 0.5], w=[0.0, 0.0, 1.0]).screw()
+    >>> s.pitch, s.magnitude
+    (0.5, 1.0)
+)doc";
+  static constexpr const char* pitch_doc =
+      R"doc(The pitch of the twist's screw: w.v / |w|^2 (a computation, as ``screw().pitch``).
+
+Returns:
+    float: the pitch; inf for w = 0 (a translation), 0 for the zero twist.
+
+Example:
+    >>> Twist(v=[0.0, 0.0, 0.5], w=[0.0, 0.0, 1.0]).pitch()
+    0.5
+)doc";
+  static constexpr const char* mag = "theta";  // from_screw's last argument
+  static constexpr const char* from_screw_doc = R"doc(The unit twist of a screw times theta: theta * (-d x q + h d, d).
+
+For the axis through q along d (normalized here), pitch h; with h = inf, the
+translation theta * (d, 0). A zero direction gives the zero twist.
+
+Args:
+    point: q, shape (3,).
+    direction: d, shape (3,).
+    pitch: h; ``math.inf`` for a translation.
+    theta: the magnitude.
+
+Returns:
+    Twist.
+
+Example:
+    >>> Twist.from_screw([0.0, 1.0, 0.0], [0.0, 0.0, 1.0], 0.0, 1.0).vector
+    array([1., 0., 0., 0., 0., 1.])
+)doc";
+};
+
+template <>
+struct Six<Wrenchd> {
+  static constexpr const char *T = "Wrench", *kind = "wrench", *x = "F";
+  static constexpr const char *a = "f", *b = "tau";
+  static constexpr const char *a_desc = "force", *b_desc = "torque";
+  static constexpr const char *head = "force", *tail = "torque";
+  static constexpr const char* order = "(f, tau), force first";
+  static constexpr const char* screw_doc = R"doc(The screw of the wrench (Poinsot).
+
+With f != 0, a force along the line through f x tau / |f|^2 with direction
+f / |f|, magnitude |f|, plus a torque pitch * f about it,
+pitch = f.tau / |f|^2; with f = 0, a pure couple: pitch inf, direction
+tau / |tau|, magnitude |tau|.
+
+Returns:
+    Screw.
+)doc";
+  static constexpr const char* pitch_doc =
+      R"doc(The pitch of the wrench's screw: f.tau / |f|^2 (a computation, as ``screw().pitch``).
+
+Returns:
+    float: the pitch; inf for f = 0 (a pure couple), 0 for the zero wrench.
+)doc";
+  static constexpr const char* mag = "magnitude";
+  static constexpr const char* from_screw_doc = R"doc(The wrench of a screw: magnitude * (d, q x d + h d).
+
+For the line through q along d (normalized here), pitch h; with h = inf, the
+couple (0, magnitude * d). A zero direction gives the zero wrench.
+
+Args:
+    point: q, shape (3,).
+    direction: d, shape (3,).
+    pitch: h; ``math.inf`` for a pure couple.
+    magnitude: the force size (the torque for h = inf).
+
+Returns:
+    Wrench.
+
+Example:
+    >>> Wrench.from_screw([0.0, 1.0, 0.0], [1.0, 0.0, 0.0], 0.0, 2.0).vector
+    array([ 2.,  0.,  0.,  0.,  0., -2.])
+)doc";
+};
+
+/// `text` with each {key} replaced by that field of Six<T>, kept for the
+/// process (the bound functions keep the pointers of their messages).
+template <typename T>
+const char* six_text(const char* text) {
+  using S = Six<T>;
+  std::string s = text;
+  const std::pair<const char*, const char*> fields[] = {
+      {"{T}", S::T},           {"{kind}", S::kind},     {"{x}", S::x},         {"{a}", S::a},     {"{b}", S::b},
+      {"{a_desc}", S::a_desc}, {"{b_desc}", S::b_desc}, {"{order}", S::order}, {"{mag}", S::mag}, {"{tail}", S::tail}};
+  for (const auto& [key, value] : fields)
+    for (std::size_t at = s.find(key); at != std::string::npos; at = s.find(key, at + std::strlen(value)))
+      s.replace(at, std::strlen(key), value);
+  return (new std::string(std::move(s)))->c_str();
+}
+
+/// What Twist and Wrench share, bound once from Six<T>: the class
+/// docstring (`doc`), the constructor from the two halves, from_vector, the
+/// 6-vector and its halves, the screw and its pitch, from_screw, and the arithmetic,
+/// comparison, copy, pickle, __array__ and __repr__ of a 6-vector.
+template <typename T>
+void bind_six_vector(Class<T>& cls, const char* doc) {
+  using S = Six<T>;
+  cls.attr("__doc__") = std::string(doc) + kConventions;
+  hold_inline(cls);
+  const auto zero3 = py::make_tuple(0.0, 0.0, 0.0);
+  static const char *const a_what = six_text<T>("{T}({a})"), *const b_what = six_text<T>("{T}({b})");
+  cls.def(py::init([](ArrayLike a, ArrayLike b) {
+            return T(to_finite_eigen<3>(a.obj, a_what), to_finite_eigen<3>(b.obj, b_what));
+          }),
+          py::arg_v(S::a, zero3, "(0.0, 0.0, 0.0)"), py::arg_v(S::b, zero3, "(0.0, 0.0, 0.0)"),
+          six_text<T>(R"doc(The {kind} {x} = ({a}, {b}) (the zero {kind} by default).
+
+Args:
+    {a}: {a_desc}, shape (3,), finite.
+    {b}: {b_desc}, shape (3,), finite.
+)doc"));
+
+  static const char* const vector_what = six_text<T>("{T}.from_vector({x})");
+  cls.def_static(
+      "from_vector", [](ArrayLike x) { return T(to_finite_eigen<6>(x.obj, vector_what)); }, py::arg(S::x),
+      six_text<T>(R"doc(The {kind} of a 6-vector {order}.
+
+Args:
+    {x}: shape (6,), finite.
+
+Returns:
+    {T}.
+
+Example:
+    >>> {T}.from_vector([1.0, 2.0, 3.0, 4.0, 5.0, 6.0]).{tail}
+    array([4., 5., 6.])
+)doc"));
+
+  cls.def_property_readonly(
+      "vector", [](Obj<T> x) { return vec_out<6>(x->vector()); },
+      six_text<T>("ndarray: the 6-vector {order}, shape (6,)."));
+  cls.def_property_readonly(
+      S::head, [](Obj<T> x) { return vec_out<3>(Vector3(x->vector().template head<3>())); },
+      six_text<T>("ndarray: {a}, shape (3,)."));
+  cls.def_property_readonly(
+      S::tail, [](Obj<T> x) { return vec_out<3>(Vector3(x->vector().template tail<3>())); },
+      six_text<T>("ndarray: {b}, shape (3,)."));
+
+  cls.def("screw", [](Obj<T> x) { return x->screw(); }, S::screw_doc);
+  cls.def("pitch", [](Obj<T> x) { return x->pitch(); }, S::pitch_doc);
+  static const char *const point_what = six_text<T>("{T}.from_screw(point)"),
+                           *const direction_what = six_text<T>("{T}.from_screw(direction)"),
+                           *const pitch_what = six_text<T>("{T}.from_screw(pitch)"),
+                           *const mag_what = six_text<T>("{T}.from_screw({mag})");
+  cls.def_static(
+      "from_screw",
+      [](ArrayLike point, ArrayLike direction, RealLike pitch, RealLike magnitude) {
+        return T::from_screw(to_finite_eigen<3>(point.obj, point_what),
+                             to_finite_eigen<3>(direction.obj, direction_what), to_pitch(pitch.obj, pitch_what),
+                             to_finite_real(magnitude.obj, mag_what));
+      },
+      py::arg("point"), py::arg("direction"), py::arg("pitch"), py::arg(S::mag), S::from_screw_doc);
+
   cls.attr("__array_ufunc__") = py::none();  // numpy defers 2.0 * x to x.__rmul__
   // Arithmetic keeps the invariant of the constructors: finite numbers only.
-  const std::string add_what = std::string(cls_name) + " + " + cls_name;
-  const std::string sub_what = std::string(cls_name) + " - " + cls_name;
+  static const char *const add_what = six_text<T>("{T} + {T}"), *const sub_what = six_text<T>("{T} - {T}");
   cls.def(
-      "__add__", [add_what](Obj<T> x, Obj<T> y) { return finite_result(*x + *y, add_what.c_str()); }, py::arg("other"),
+      "__add__", [](Obj<T> x, Obj<T> y) { return finite_result(*x + *y, add_what); }, py::arg("other"),
       py::is_operator());
   cls.def(
-      "__sub__", [sub_what](Obj<T> x, Obj<T> y) { return finite_result(*x - *y, sub_what.c_str()); }, py::arg("other"),
+      "__sub__", [](Obj<T> x, Obj<T> y) { return finite_result(*x - *y, sub_what); }, py::arg("other"),
       py::is_operator());
   cls.def("__neg__", [](Obj<T> x) { return -*x; });
   cls.def("__pos__", [](Obj<T> x) { return *x; });
-  const std::string mul_what = std::string(cls_name) + " * scalar";
-  const auto mul = [mul_what](Obj<T> x, RealLike s) -> Returns<T> {
+  static const char* const mul_what = six_text<T>("{T} * scalar");
+  const auto mul = [](Obj<T> x, RealLike s) -> Returns<T> {
     double k;
-    if (!scalar_operand(s.obj, k, mul_what.c_str())) return {not_implemented()};
-    return {py::cast(finite_result(*x * k, mul_what.c_str()))};
+    if (!scalar_operand(s.obj, k, mul_what)) return {not_implemented()};
+    return {py::cast(finite_result(*x * k, mul_what))};
   };
   cls.def("__mul__", mul, py::arg("scalar"));
   cls.def("__rmul__", mul, py::arg("scalar"));
-  const std::string div_what = std::string(cls_name) + " / scalar";
+  static const char* const div_what = six_text<T>("{T} / scalar");
   cls.def(
       "__truediv__",
-      [div_what](Obj<T> x, RealLike s) -> Returns<T> {
+      [](Obj<T> x, RealLike s) -> Returns<T> {
         double k;
-        if (!scalar_operand(s.obj, k, div_what.c_str())) return {not_implemented()};
+        if (!scalar_operand(s.obj, k, div_what)) return {not_implemented()};
         if (k == 0.0) {
-          PyErr_SetString(PyExc_ZeroDivisionError, (div_what + ": division by zero").c_str());
+          PyErr_SetString(PyExc_ZeroDivisionError, (std::string(div_what) + ": division by zero").c_str());
           throw py::error_already_set();
         }
-        return {py::cast(finite_result(T(Vector6(x->vector() / k)), div_what.c_str()))};
+        return {py::cast(finite_result(T(Vector6(x->vector() / k)), div_what))};
       },
       py::arg("scalar"));
-  const std::string tol_what = std::string(cls_name) + ".is_approx(tol)";
+  static const char* const tol_what = six_text<T>("{T}.is_approx(tol)");
   cls.def(
-      "is_approx",
-      [tol_what](Obj<T> x, Obj<T> y, RealLike tol) {
-        return x->is_approx(*y, to_tolerance(tol.obj, tol_what.c_str()));
-      },
+      "is_approx", [](Obj<T> x, Obj<T> y, RealLike tol) { return x->is_approx(*y, to_tolerance(tol.obj, tol_what)); },
       py::arg("other"), py::arg_v("tol", 1e-9),
       R"doc(Whether two 6-vectors are equal within tol: max |x - y| <= tol * max(1, max |x|, max |y|).
 
@@ -164,21 +335,21 @@ Args:
 Returns:
     bool.
 )doc");
-  const std::string name(cls_name), an(a), bn(b), setstate = name + ".__setstate__";
   def_array(
       cls, [](const T& x) { return vec_out<6>(x.vector()); },
       "The 6-vector, shape (6,), for np.asarray (numpy's dtype and copy keywords).");
   // The state: the 6-vector, finite as the constructor takes it.
+  static const char* const setstate = six_text<T>("{T}.__setstate__");
   def_value_protocol<6>(
       cls,
-      [name, an, bn](const T& x) {
-        return name + "(" + an + "=" + array_repr(vec_out<3>(Vector3(x.vector().template head<3>()))) + ", " + bn +
-               "=" + array_repr(vec_out<3>(Vector3(x.vector().template tail<3>()))) + ")";
+      [](const T& x) {
+        return std::string(S::T) + "(" + S::a + "=" + array_repr(vec_out<3>(Vector3(x.vector().template head<3>()))) +
+               ", " + S::b + "=" + array_repr(vec_out<3>(Vector3(x.vector().template tail<3>()))) + ")";
       },
       [](const T& x) { return x.vector(); },
-      [setstate](const double* v) {
+      [](const double* v) {
         const Vector6 x = Eigen::Map<const Vector6>(v);
-        require_finite(x, setstate.c_str());
+        require_finite(x, setstate);
         return T(x);
       });
 }
@@ -266,46 +437,7 @@ Returns:
 }
 
 void bind_twist(Class<Twistd>& cls) {
-  static const std::string doc = std::string(kTwistDoc) + kConventions;
-  cls.attr("__doc__") = doc;
-  hold_inline(cls);
-  const auto zero3 = py::make_tuple(0.0, 0.0, 0.0);
-
-  cls.def(py::init([](ArrayLike v, ArrayLike w) {
-            return Twistd(to_finite_eigen<3>(v.obj, "Twist(v)"), to_finite_eigen<3>(w.obj, "Twist(w)"));
-          }),
-          py::arg_v("v", zero3, "(0.0, 0.0, 0.0)"), py::arg_v("w", zero3, "(0.0, 0.0, 0.0)"),
-          R"doc(The twist xi = (v, w) (the zero twist by default).
-
-Args:
-    v: linear part, shape (3,), finite.
-    w: angular part, shape (3,), finite.
-)doc");
-
-  cls.def_static(
-      "from_vector", [](ArrayLike xi) { return Twistd(to_finite_eigen<6>(xi.obj, "Twist.from_vector(xi)")); },
-      py::arg("xi"),
-      R"doc(The twist of a 6-vector (v, w), linear part first.
-
-Args:
-    xi: shape (6,), finite.
-
-Returns:
-    Twist.
-
-Example:
-    >>> Twist.from_vector([1.0, 2.0, 3.0, 4.0, 5.0, 6.0]).angular
-    array([4., 5., 6.])
-)doc");
-
-  cls.def_property_readonly(
-      "vector", [](Obj<Twistd> x) { return vec_out<6>(x->vector()); },
-      "ndarray: the 6-vector (v, w), linear part first, shape (6,).");
-  cls.def_property_readonly(
-      "linear", [](Obj<Twistd> x) { return vec_out<3>(Vector3(x->linear())); }, "ndarray: v, shape (3,).");
-  cls.def_property_readonly(
-      "angular", [](Obj<Twistd> x) { return vec_out<3>(Vector3(x->angular())); }, "ndarray: w, shape (3,).");
-
+  bind_six_vector(cls, kTwistDoc);
   cls.def(
       "to_modern_robotics", [](Obj<Twistd> x) { return vec_out<6>(x->to_modern_robotics()); },
       R"doc(The 6-vector in the Modern Robotics order (w, v), angular part first.
@@ -372,59 +504,6 @@ Returns:
     Twist.
 )doc");
 
-  cls.def("screw", [](Obj<Twistd> xi) { return xi->screw(); }, R"doc(The screw of the twist (Chasles).
-
-With w != 0: pitch w.v / |w|^2, axis through w x v / |w|^2 along w / |w|,
-magnitude |w|; with w = 0: pitch inf, direction v / |v|, magnitude |v|.
-
-Returns:
-    Screw.
-
-Example:
-    >>> s = Twist(v=[0.0, 0.0, 0.5], w=[0.0, 0.0, 1.0]).screw()
-    >>> s.pitch, s.magnitude
-    (0.5, 1.0)
-)doc");
-  cls.def(
-      "pitch", [](Obj<Twistd> xi) { return xi->pitch(); },
-      R"doc(The pitch of the twist's screw: w.v / |w|^2 (a computation, as ``screw().pitch``).
-
-Returns:
-    float: the pitch; inf for w = 0 (a translation), 0 for the zero twist.
-
-Example:
-    >>> Twist(v=[0.0, 0.0, 0.5], w=[0.0, 0.0, 1.0]).pitch()
-    0.5
-)doc");
-
-  cls.def_static(
-      "from_screw",
-      [](ArrayLike point, ArrayLike direction, RealLike pitch, RealLike theta) {
-        return Twistd::from_screw(to_finite_eigen<3>(point.obj, "Twist.from_screw(point)"),
-                                  to_finite_eigen<3>(direction.obj, "Twist.from_screw(direction)"),
-                                  to_pitch(pitch.obj, "Twist.from_screw(pitch)"),
-                                  to_finite_real(theta.obj, "Twist.from_screw(theta)"));
-      },
-      py::arg("point"), py::arg("direction"), py::arg("pitch"), py::arg("theta"),
-      R"doc(The unit twist of a screw times theta: theta * (-d x q + h d, d).
-
-For the axis through q along d (normalized here), pitch h; with h = inf, the
-translation theta * (d, 0). A zero direction gives the zero twist.
-
-Args:
-    point: q, shape (3,).
-    direction: d, shape (3,).
-    pitch: h; ``math.inf`` for a translation.
-    theta: the magnitude.
-
-Returns:
-    Twist.
-
-Example:
-    >>> Twist.from_screw([0.0, 1.0, 0.0], [0.0, 0.0, 1.0], 0.0, 1.0).vector
-    array([1., 0., 0., 0., 0., 1.])
-)doc");
-
   cls.def_static(
       "spatial",
       [](Obj<SE3d> g_, ArrayLike g_dot) {
@@ -476,47 +555,10 @@ Example:
     >>> Twist(v=[1.0, 0.0, 0.0]).power(Wrench(f=[2.0, 0.0, 0.0]))
     2.0
 )doc");
-
-  bind_six_vector_protocols(cls, "Twist", "v", "w");
 }
 
 void bind_wrench(Class<Wrenchd>& cls) {
-  static const std::string doc = std::string(kWrenchDoc) + kConventions;
-  cls.attr("__doc__") = doc;
-  hold_inline(cls);
-  const auto zero3 = py::make_tuple(0.0, 0.0, 0.0);
-
-  cls.def(py::init([](ArrayLike f, ArrayLike tau) {
-            return Wrenchd(to_finite_eigen<3>(f.obj, "Wrench(f)"), to_finite_eigen<3>(tau.obj, "Wrench(tau)"));
-          }),
-          py::arg_v("f", zero3, "(0.0, 0.0, 0.0)"), py::arg_v("tau", zero3, "(0.0, 0.0, 0.0)"),
-          R"doc(The wrench F = (f, tau) (the zero wrench by default).
-
-Args:
-    f: force, shape (3,), finite.
-    tau: torque, shape (3,), finite.
-)doc");
-
-  cls.def_static(
-      "from_vector", [](ArrayLike F) { return Wrenchd(to_finite_eigen<6>(F.obj, "Wrench.from_vector(F)")); },
-      py::arg("F"),
-      R"doc(The wrench of a 6-vector (f, tau), force first.
-
-Args:
-    F: shape (6,), finite.
-
-Returns:
-    Wrench.
-)doc");
-
-  cls.def_property_readonly(
-      "vector", [](Obj<Wrenchd> x) { return vec_out<6>(x->vector()); },
-      "ndarray: the 6-vector (f, tau), force first, shape (6,).");
-  cls.def_property_readonly(
-      "force", [](Obj<Wrenchd> x) { return vec_out<3>(Vector3(x->force())); }, "ndarray: f, shape (3,).");
-  cls.def_property_readonly(
-      "torque", [](Obj<Wrenchd> x) { return vec_out<3>(Vector3(x->torque())); }, "ndarray: tau, shape (3,).");
-
+  bind_six_vector(cls, kWrenchDoc);
   cls.def(
       "power", [](Obj<Wrenchd> F, Obj<Twistd> V) { return F->power(*V); }, py::arg("twist"),
       R"doc(The power V . F = v.f + w.tau of a twist on this wrench (same frame).
@@ -527,54 +569,6 @@ Args:
 Returns:
     float.
 )doc");
-
-  cls.def("screw", [](Obj<Wrenchd> F) { return F->screw(); }, R"doc(The screw of the wrench (Poinsot).
-
-With f != 0, a force along the line through f x tau / |f|^2 with direction
-f / |f|, magnitude |f|, plus a torque pitch * f about it,
-pitch = f.tau / |f|^2; with f = 0, a pure couple: pitch inf, direction
-tau / |tau|, magnitude |tau|.
-
-Returns:
-    Screw.
-)doc");
-  cls.def(
-      "pitch", [](Obj<Wrenchd> F) { return F->pitch(); },
-      R"doc(The pitch of the wrench's screw: f.tau / |f|^2 (a computation, as ``screw().pitch``).
-
-Returns:
-    float: the pitch; inf for f = 0 (a pure couple), 0 for the zero wrench.
-)doc");
-
-  cls.def_static(
-      "from_screw",
-      [](ArrayLike point, ArrayLike direction, RealLike pitch, RealLike magnitude) {
-        return Wrenchd::from_screw(to_finite_eigen<3>(point.obj, "Wrench.from_screw(point)"),
-                                   to_finite_eigen<3>(direction.obj, "Wrench.from_screw(direction)"),
-                                   to_pitch(pitch.obj, "Wrench.from_screw(pitch)"),
-                                   to_finite_real(magnitude.obj, "Wrench.from_screw(magnitude)"));
-      },
-      py::arg("point"), py::arg("direction"), py::arg("pitch"), py::arg("magnitude"),
-      R"doc(The wrench of a screw: magnitude * (d, q x d + h d).
-
-For the line through q along d (normalized here), pitch h; with h = inf, the
-couple (0, magnitude * d). A zero direction gives the zero wrench.
-
-Args:
-    point: q, shape (3,).
-    direction: d, shape (3,).
-    pitch: h; ``math.inf`` for a pure couple.
-    magnitude: the force size (the torque for h = inf).
-
-Returns:
-    Wrench.
-
-Example:
-    >>> Wrench.from_screw([0.0, 1.0, 0.0], [1.0, 0.0, 0.0], 0.0, 2.0).vector
-    array([ 2.,  0.,  0.,  0.,  0., -2.])
-)doc");
-
-  bind_six_vector_protocols(cls, "Wrench", "f", "tau");
 }
 
 }  // namespace

@@ -1783,6 +1783,10 @@ class Wrench:
         
         Returns:
             Wrench.
+        
+        Example:
+            >>> Wrench.from_vector([1.0, 2.0, 3.0, 4.0, 5.0, 6.0]).torque
+            array([4., 5., 6.])
         """
     def __add__(self, other: Wrench) -> Wrench:
         ...
