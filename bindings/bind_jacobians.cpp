@@ -8,6 +8,7 @@
 // se3_act_jacobian. The classes' own Jacobians are in lie_group.hpp.
 #include <chasles/jacobians.hpp>
 
+#include <string>
 #include <tuple>
 #include <type_traits>
 
@@ -39,6 +40,14 @@ void def_group_functions(py::module_& m) {
   constexpr int D = G::DoF;
   constexpr bool kSE3 = std::is_same_v<G, SE3d>;
   const auto shared = [](const char* doc) { return kSE3 ? doc : nullptr; };
+  // The text of the Jacobians of a function of two elements x and y of the group.
+  const auto pair_doc = [](const std::string& x, const std::string& y, const char* head, const char* example) {
+    return std::string(head) + "\n\nArgs:\n    " + x + ": SO3 or SE3.\n    " + y + ": of the same group as " + x +
+           ".\n\nReturns:\n    tuple[ndarray, ndarray]: (J_" + x + ", J_" + y +
+           "), each of shape (3, 3) for SO3,\n    (6, 6) for SE3 (twists (v, w), linear part first), float64.\n\n"
+           "Raises:\n    TypeError: " +
+           x + " and " + y + " are not of the same group.\n\nExample:\n" + example;
+  };
   m.def(
       "rplus", [](Obj<G> x, ArrayLike xi) { return chasles::rplus(*x, to_finite_eigen<D>(xi.obj, "rplus(g, xi)")); },
       py::arg("g"), py::arg("xi"), shared(R"doc(g rplus xi = g exp(xi): a perturbation in g's own (local, right) frame.
@@ -203,28 +212,17 @@ Example:
 )doc"));
   m.def(
       "compose_jacobians", [](Obj<G> a, Obj<G> b) { return pair(chasles::compose_jacobians(*a, *b)); }, py::arg("a"),
-      py::arg("b"), shared(R"doc(The Jacobians (J_a, J_b) of (a, b) -> a b, in the right-local convention.
+      py::arg("b"),
+      shared(pair_doc("a", "b", R"doc(The Jacobians (J_a, J_b) of (a, b) -> a b, in the right-local convention.
 
 Right-local: (a exp(da)) (b exp(db)) = a b exp(J_a da + J_b db + o(da, db)),
-with J_a = Ad_{b^-1} and J_b = I (Sola et al. 2018, section IV).
-
-Args:
-    a: SO3 or SE3.
-    b: of the same group as a.
-
-Returns:
-    tuple[ndarray, ndarray]: (J_a, J_b), each of shape (3, 3) for SO3,
-    (6, 6) for SE3 (twists (v, w), linear part first), float64.
-
-Raises:
-    TypeError: a and b are not of the same group.
-
-Example:
-    >>> a, b = chasles.SO3(), chasles.SO3.exp([0.0, 0.0, np.pi / 2])
+with J_a = Ad_{b^-1} and J_b = I (Sola et al. 2018, section IV).)doc",
+                      R"doc(    >>> a, b = chasles.SO3(), chasles.SO3.exp([0.0, 0.0, np.pi / 2])
     >>> J_a, J_b = chasles.compose_jacobians(a, b)
     >>> bool(np.allclose(J_a, b.inverse().as_matrix())), bool(np.array_equal(J_b, np.eye(3)))
     (True, True)
-)doc"));
+)doc")
+                 .c_str()));
   m.def(
       "act_jacobians",
       [](Obj<G> x, ArrayLike p) {
@@ -286,29 +284,18 @@ Example:
 )doc"));
   m.def(
       "rminus_jacobians", [](Obj<G> x, Obj<G> h) { return pair(chasles::rminus_jacobians(*x, *h)); }, py::arg("g"),
-      py::arg("h"), shared(R"doc(The Jacobians (J_g, J_h) of (g, h) -> rminus(g, h) = log(h^-1 g).
+      py::arg("h"),
+      shared(pair_doc("g", "h", R"doc(The Jacobians (J_g, J_h) of (g, h) -> rminus(g, h) = log(h^-1 g).
 
 Right-local: rminus(g exp(dg), h exp(dh)) = rminus(g, h) + J_g dg + J_h dh
 + o, with xi = rminus(g, h), J_g = J_r(xi)^-1 and J_h = -J_l(xi)^-1 (Sola et
 al. 2018, section IV; manif's rminus Jacobians). They are those of the branch
-log returns: finite up to the angle pi, where log jumps between w and -w.
-
-Args:
-    g: SO3 or SE3.
-    h: of the same group as g.
-
-Returns:
-    tuple[ndarray, ndarray]: (J_g, J_h), each of shape (3, 3) for SO3,
-    (6, 6) for SE3 (twists (v, w), linear part first), float64.
-
-Raises:
-    TypeError: g and h are not of the same group.
-
-Example:
-    >>> J_g, J_h = chasles.rminus_jacobians(chasles.SE3(), chasles.SE3())
+log returns: finite up to the angle pi, where log jumps between w and -w.)doc",
+                      R"doc(    >>> J_g, J_h = chasles.rminus_jacobians(chasles.SE3(), chasles.SE3())
     >>> bool(np.array_equal(J_g, np.eye(6))), bool(np.array_equal(J_h, -np.eye(6)))
     (True, True)
-)doc"));
+)doc")
+                 .c_str()));
   m.def(
       "lplus_jacobians",
       [](ArrayLike xi, Obj<G> x) {
@@ -340,55 +327,33 @@ Example:
 )doc"));
   m.def(
       "lminus_jacobians", [](Obj<G> x, Obj<G> h) { return pair(chasles::lminus_jacobians(*x, *h)); }, py::arg("g"),
-      py::arg("h"), shared(R"doc(The Jacobians (J_g, J_h) of (g, h) -> lminus(g, h) = log(g h^-1).
+      py::arg("h"),
+      shared(pair_doc("g", "h", R"doc(The Jacobians (J_g, J_h) of (g, h) -> lminus(g, h) = log(g h^-1).
 
 Right-local in the arguments: lminus(g exp(dg), h exp(dh)) = lminus(g, h) +
 J_g dg + J_h dh + o, with xi = lminus(g, h), J_g = J_r(xi)^-1 Ad_h and
 J_h = -J_g (Sola et al. 2018, section IV). Finite up to the angle pi, where
-log jumps between w and -w.
-
-Args:
-    g: SO3 or SE3.
-    h: of the same group as g.
-
-Returns:
-    tuple[ndarray, ndarray]: (J_g, J_h), each of shape (3, 3) for SO3,
-    (6, 6) for SE3 (twists (v, w), linear part first), float64.
-
-Raises:
-    TypeError: g and h are not of the same group.
-
-Example:
-    >>> h = chasles.SO3.exp([0.0, 0.0, np.pi / 2])
+log jumps between w and -w.)doc",
+                      R"doc(    >>> h = chasles.SO3.exp([0.0, 0.0, np.pi / 2])
     >>> J_g, J_h = chasles.lminus_jacobians(h, h)
     >>> bool(np.allclose(J_g, h.as_matrix())), bool(np.array_equal(J_h, -J_g))
     (True, True)
-)doc"));
+)doc")
+                 .c_str()));
   m.def(
       "between_jacobians", [](Obj<G> a, Obj<G> b) { return pair(chasles::between_jacobians(*a, *b)); }, py::arg("a"),
-      py::arg("b"), shared(R"doc(The Jacobians (J_a, J_b) of (a, b) -> between(a, b) = a^-1 b.
+      py::arg("b"),
+      shared(pair_doc("a", "b", R"doc(The Jacobians (J_a, J_b) of (a, b) -> between(a, b) = a^-1 b.
 
 Right-local: between(a exp(da), b exp(db)) = between(a, b) exp(J_a da +
 J_b db + o), with J_a = -Ad_{b^-1 a} and J_b = I (Sola et al. 2018,
-section IV; manif's between Jacobians).
-
-Args:
-    a: SO3 or SE3.
-    b: of the same group as a.
-
-Returns:
-    tuple[ndarray, ndarray]: (J_a, J_b), each of shape (3, 3) for SO3,
-    (6, 6) for SE3 (twists (v, w), linear part first), float64.
-
-Raises:
-    TypeError: a and b are not of the same group.
-
-Example:
-    >>> a = chasles.SO3.exp([0.0, 0.0, np.pi / 2])
+section IV; manif's between Jacobians).)doc",
+                      R"doc(    >>> a = chasles.SO3.exp([0.0, 0.0, np.pi / 2])
     >>> J_a, J_b = chasles.between_jacobians(a, chasles.SO3())
     >>> bool(np.allclose(J_a, -a.as_matrix())), bool(np.array_equal(J_b, np.eye(3)))
     (True, True)
-)doc"));
+)doc")
+                 .c_str()));
   m.def(
       "interpolate_jacobian_t",
       [](Obj<G> a, Obj<G> b, RealLike t) {
