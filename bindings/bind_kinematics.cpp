@@ -43,15 +43,15 @@ using Matrix4 = Eigen::Matrix4d;
 using Matrix6 = Eigen::Matrix<double, 6, 6>;
 using RowsMap = Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>;
 
-/// The model object: the C++ chain and, when it has link inertias, the
-/// operands of the dynamics ufuncs (screws (n, 6), home (4, 4), the links'
-/// matrices G (n, 6, 6) in the world frame, gravity (3), read-only arrays).
+/// The model object: the C++ chain and the operands of its ufuncs, read-only
+/// arrays: screws (n, 6) and home (4, 4), and when it has link inertias the
+/// links' matrices G (n, 6, 6) in the world frame and gravity (3).
 /// The chain's inertias are those the ufunc's loop reads back from G
 /// (SpatialInertia::from_matrix_unchecked), so that one configuration gives
 /// the loop's bits.
 struct PyChain {
   ChainD chain;
-  py::object operands;  // None without link inertias
+  py::tuple operands;  // (screws, home[, G, gravity])
   chasles::ChainCheck check;  // validate() of the chain as made (before the inertias are read back)
 };
 
@@ -149,20 +149,22 @@ PyChain make_chain(py::handle screws, py::handle home, py::handle types, py::han
                                     eff, b, to, g, link)
                            : ChainD(S, M, t, lo, hi, vel, eff, b, to, g, link);
   const chasles::ChainCheck check = c.validate();
-  if (inertias.is_none()) return {c, py::none(), check};
-  const Py_intptr_t dims[3] = {n, 6, 6}, sdims[2] = {n, 6};
-  py::array_t<double> G = new_array(3, dims), screws_out = new_array(2, sdims);
-  ChainD::Inertias read{};
-  for (py::ssize_t i = 0; i < n; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    Eigen::Map<Eigen::Matrix<double, 6, 6, Eigen::RowMajor>>(array_data(G) + 36 * i) = c.link_inertias()[k].matrix();
-    read[k] = InertiaD::from_matrix_unchecked(c.link_inertias()[k].matrix());
-  }
+  const Py_intptr_t dims[3] = {n, 6, 6};
+  py::array_t<double> screws_out = new_array(2, dims);
   RowsMap(array_data(screws_out), n, 6) = c.space_screws().transpose();
-  py::tuple ops = py::make_tuple(screws_out, mat_out<4, 4>(c.home().matrix()), G, vec_out<3>(c.gravity()));
+  py::tuple ops = py::make_tuple(screws_out, mat_out<4, 4>(c.home().matrix()));
+  if (!inertias.is_none()) {
+    py::array_t<double> G = new_array(3, dims);
+    ChainD::Inertias read{};
+    for (std::size_t k = 0; k < static_cast<std::size_t>(n); ++k) {
+      Eigen::Map<Eigen::Matrix<double, 6, 6, Eigen::RowMajor>>(array_data(G) + 36 * k) = c.link_inertias()[k].matrix();
+      read[k] = InertiaD::from_matrix_unchecked(c.link_inertias()[k].matrix());
+    }
+    ops = py::make_tuple(ops[0], ops[1], G, vec_out<3>(c.gravity()));
+    c = ChainD(ChainD::Stored(), c.space_screws(), c.home(), c.joint_types(), c.lower(), c.upper(), c.velocity_limits(),
+               c.effort_limits(), c.base(), c.tool(), c.gravity(), read);
+  }
   for (py::handle x : ops) py::detail::array_proxy(x.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
-  c = ChainD(ChainD::Stored(), c.space_screws(), c.home(), c.joint_types(), c.lower(), c.upper(), c.velocity_limits(),
-             c.effort_limits(), c.base(), c.tool(), c.gravity(), read);
   return {c, std::move(ops), check};
 }
 
@@ -435,7 +437,7 @@ py::object call(PyObject* u, const PyChain& c, const char* method, const std::ar
   constexpr bool dynamics = op >= Op::inverse,
                  with_gravity = op == Op::inverse || op == Op::forward_dynamics || op == Op::gravity;
   static_cast<void>(raise);  // (forward dynamics only)
-  if (dynamics && c.operands.is_none())
+  if (dynamics && c.operands.size() < 4)
     raise_value_error(std::string("Chain.") + method +
                       ": the chain has no link inertias (give Chain(..., link_inertias=...), or load it with "
                       "Chain.from_urdf)");
@@ -470,17 +472,8 @@ py::object call(PyObject* u, const PyChain& c, const char* method, const std::ar
   std::array<py::object, 8> keep;  // the operands, alive through the call
   std::array<PyObject*, 8> args{};
   std::size_t k = 0;
-  if constexpr (dynamics) {
-    const py::tuple ops = py::reinterpret_borrow<py::tuple>(c.operands);
-    for (int i = 0; i < (with_gravity ? 4 : 3); ++i)
-      keep[k] = ops[static_cast<std::size_t>(i)], args[k] = keep[k].ptr(), ++k;
-  } else {
-    const Py_intptr_t dims[2] = {n, 6};
-    py::array_t<double> S = new_array(2, dims);
-    RowsMap(array_data(S), n, 6) = c.chain.space_screws().transpose();
-    keep[0] = std::move(S), keep[1] = mat_out<4, 4>(c.chain.home().matrix());
-    args[0] = keep[0].ptr(), args[1] = keep[1].ptr(), k = 2;
-  }
+  for (std::size_t i = 0; i < (!dynamics ? 2 : with_gravity ? 4 : 3); ++i)  // the model's operands
+    keep[k] = c.operands[i], args[k] = keep[k].ptr(), ++k;
   static const char* const names[] = {"q", "qd", "qdd", "tau", "theta"};
   for (std::size_t j = 0; j < J; ++j) {
     const char* arg = !dynamics ? names[4] : (op == Op::forward_dynamics && j == 2) ? names[3] : names[j];
