@@ -11,11 +11,8 @@
 //   apply to the whole function and no temporary array is made. The
 //   `_lock` variants of as_euler have a second result, the gimbal lock flag
 //   of each element (return_gimbal_lock=True);
-// - for SO3's methods (bind_so3.cpp): the sequence named by a str, and the
-//   conversions of one element.
-#include <array>
+// - for SO3's methods (bind_so3.cpp): the sequence named by a str.
 #include <string>
-#include <utility>
 
 #include <chasles/euler.hpp>
 
@@ -39,25 +36,6 @@ using Flag = Typed<Core<>, bool>;
 constexpr const char* kSequences[24] = {"xyz", "xzy", "yxz", "yzx", "zxy", "zyx", "xyx", "xzx",
                                         "yxy", "yzy", "zxz", "zyz", "XYZ", "XZY", "YXZ", "YZX",
                                         "ZXY", "ZYX", "XYX", "XZX", "YXY", "YZY", "ZXZ", "ZYZ"};
-
-template <int N>
-Eigen::Matrix3d from_euler_n(const Eigen::Vector3d& t) {
-  return chasles::from_euler<static_cast<EulerSequence>(N)>(t).matrix();
-}
-template <int N>
-chasles::EulerAngles<double> as_euler_n(const SO3d& R) {
-  return chasles::as_euler<static_cast<EulerSequence>(N)>(R);
-}
-template <int... N>
-constexpr auto from_table(std::integer_sequence<int, N...>) {
-  return std::array<Eigen::Matrix3d (*)(const Eigen::Vector3d&), 24>{&from_euler_n<N>...};
-}
-template <int... N>
-constexpr auto as_table(std::integer_sequence<int, N...>) {
-  return std::array<chasles::EulerAngles<double> (*)(const SO3d&), 24>{&as_euler_n<N>...};
-}
-constexpr auto kFrom = from_table(std::make_integer_sequence<int, 24>());
-constexpr auto kAs = as_table(std::make_integer_sequence<int, 24>());
 
 /// The case of the ufuncs' operand `code`: the sequence (its index in
 /// chasles::EulerSequence) plus 24 for degrees. Both are compile-time in
@@ -110,25 +88,19 @@ const std::string kCodeArg = "    code: the sequence's index in (" + [] {
 
 }  // namespace
 
-int euler_sequence(py::handle seq, const char* what) {
+EulerSequence euler_sequence(py::handle seq, const char* what) {
   if (!PyUnicode_Check(seq.ptr())) {
     throw py::type_error(std::string(what) + ": expected a str of three axes such as 'xyz' or 'ZYX', got " +
                          type_name(seq));
   }
   const std::string s = py::reinterpret_borrow<py::str>(seq).cast<std::string>();
   for (int i = 0; i < 24; ++i)
-    if (s == kSequences[i]) return i;
+    if (s == kSequences[i]) return static_cast<EulerSequence>(i);
   raise_value_error(std::string(what) +
                     ": expected three axes of 'xyz', all lowercase (extrinsic) or all uppercase (intrinsic), "
                     "no two consecutive equal, as 'xyz', 'ZYX' or 'zxz'; got " +
                     py::repr(seq).cast<std::string>());
 }
-
-Eigen::Matrix3d euler_to_matrix(int seq, const Eigen::Vector3d& angles) {
-  return kFrom[static_cast<std::size_t>(seq)](angles);
-}
-
-chasles::EulerAngles<double> euler_of(int seq, const SO3d& R) { return kAs[static_cast<std::size_t>(seq)](R); }
 
 void bind_euler(py::module_& m) {
   const char* const unit = "    unit: 1 for angles in degrees, 0 for radians.\n";

@@ -239,10 +239,10 @@ Example:
   cls.def_static(
       "from_euler",
       [](SequenceLike seq, ArrayLike angles, bool degrees) {
-        const int n = euler_sequence(seq.obj, "SO3.from_euler(seq)");
+        const chasles::EulerSequence s = euler_sequence(seq.obj, "SO3.from_euler(seq)");
         Eigen::Vector3d t = to_finite_eigen<3>(angles.obj, "SO3.from_euler(angles)");
         if (degrees) t *= kDegToRad;
-        return SO3d::from_matrix_unchecked(euler_to_matrix(n, t));
+        return chasles::from_euler(s, t);
       },
       py::arg("seq"), py::arg("angles"), py::arg("degrees") = false,
       R"doc(The rotation of Euler angles, as scipy's ``Rotation.from_euler``.
@@ -277,7 +277,8 @@ Example:
   cls.def(
       "as_euler",
       [](Obj<SO3d> R, SequenceLike seq, bool degrees, bool return_gimbal_lock) {
-        return euler_result(euler_of(euler_sequence(seq.obj, "SO3.as_euler(seq)"), *R), degrees, return_gimbal_lock);
+        return euler_result(chasles::as_euler(euler_sequence(seq.obj, "SO3.as_euler(seq)"), *R), degrees,
+                            return_gimbal_lock);
       },
       py::arg("seq"), py::arg("degrees") = false, py::kw_only(), py::arg("return_gimbal_lock") = false,
       R"doc(Euler angles of the rotation, as scipy's ``Rotation.as_euler``.

@@ -36,10 +36,7 @@ void bind_threads(py::module_& m);       // bind_threads.cpp: set_num_threads, g
 
 constexpr double kDegToRad = 3.14159265358979323846 / 180.0;  // numpy's deg2rad: x * (pi / 180)
 constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;  // numpy's rad2deg: x * (180 / pi)
-/// bind_euler.cpp: the index in chasles::EulerSequence of the str `seq` (TypeError or ValueError naming `what`),
-/// and the conversions of one rotation for that index.
-int euler_sequence(py::handle seq, const char* what);
-Eigen::Matrix3d euler_to_matrix(int seq, const Eigen::Vector3d& angles);
-chasles::EulerAngles<double> euler_of(int seq, const chasles::SO3d& R);
+/// bind_euler.cpp: the chasles::EulerSequence of the str `seq` (TypeError or ValueError naming `what`).
+chasles::EulerSequence euler_sequence(py::handle seq, const char* what);
 
 }  // namespace chasles_py

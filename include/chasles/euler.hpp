@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cmath>
+#include <utility>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -217,6 +218,39 @@ inline EulerAngles<Scalar> as_euler(const SO3<Scalar>& R) noexcept {
   } else {
     return detail::intrinsic_euler<ax.a0, ax.a1, proper, false>(R.matrix());
   }
+}
+
+namespace detail {
+
+/// The 24 instances of from_euler and as_euler, in the order of EulerSequence.
+template <typename Scalar>
+struct EulerTable {
+  SO3<Scalar> (*from[24])(const Eigen::Matrix<Scalar, 3, 1>&) noexcept;
+  EulerAngles<Scalar> (*as[24])(const SO3<Scalar>&) noexcept;
+};
+
+template <typename Scalar, int... N>
+constexpr EulerTable<Scalar> euler_table(std::integer_sequence<int, N...>) noexcept {
+  return {{&from_euler<static_cast<EulerSequence>(N), Scalar>...},
+          {&as_euler<static_cast<EulerSequence>(N), Scalar>...}};
+}
+
+template <typename Scalar>
+inline constexpr EulerTable<Scalar> kEulerTable = euler_table<Scalar>(std::make_integer_sequence<int, 24>());
+
+}  // namespace detail
+
+/// from_euler with the sequence known at run time (read from a file, or
+/// scipy's string): one indirect call to the instance of `seq`.
+template <typename Scalar>
+inline SO3<Scalar> from_euler(EulerSequence seq, const Eigen::Matrix<Scalar, 3, 1>& angles) noexcept {
+  return detail::kEulerTable<Scalar>.from[static_cast<int>(seq)](angles);
+}
+
+/// as_euler with the sequence known at run time.
+template <typename Scalar>
+inline EulerAngles<Scalar> as_euler(EulerSequence seq, const SO3<Scalar>& R) noexcept {
+  return detail::kEulerTable<Scalar>.as[static_cast<int>(seq)](R);
 }
 
 /// Roll, pitch, yaw (URDF's `rpy`, ROS tf's getRPY / setRPY): about the fixed

@@ -122,6 +122,25 @@ TYPED_TEST(Euler, RebuildsEveryRotation) {
   });
 }
 
+TYPED_TEST(Euler, RunTimeSequenceIsTheCompileTimeOne) {
+  // from_euler(seq, t) and as_euler(seq, R): the same bits as the template instance of seq.
+  using T = TypeParam;
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-4.0, 4.0);
+  for_each_sequence([&](auto n) {
+    constexpr auto seq = static_cast<EulerSequence>(decltype(n)::value);
+    const char* name = kNames[decltype(n)::value];
+    for (int k = 0; k < 20; ++k) {
+      const Eigen::Matrix<T, 3, 1> t(T(u(rng)), T(u(rng)), T(u(rng)));
+      EXPECT_EQ(chasles::from_euler(seq, t).matrix(), chasles::from_euler<seq>(t).matrix()) << name;
+      const chasles::SO3<T> R = random_rotation<T>(rng);
+      const auto a = chasles::as_euler(seq, R), b = chasles::as_euler<seq>(R);
+      EXPECT_EQ(a.angles, b.angles) << name;
+      EXPECT_EQ(a.gimbal_lock, b.gimbal_lock) << name;
+    }
+  });
+}
+
 /// The lock of a sequence: middle angle pi/2 (Tait-Bryan) or 0 and pi (proper).
 bool proper(const char* name) { return (name[0] | 0x20) == (name[2] | 0x20); }
 
