@@ -114,10 +114,7 @@ Example:
 
   // SO3(matrix) and the like: say which constructor was meant.
   def_refusal(cls, [](const py::args& args, const py::kwargs& kwargs) {
-    std::string got;
-    for (const auto& a : args) got += (got.empty() ? "" : ", ") + describe_argument(a);
-    for (const auto& kw : kwargs)
-      got += (got.empty() ? "" : ", ") + py::str(kw.first).cast<std::string>() + "=" + describe_argument(kw.second);
+    const std::string got = describe_arguments(args, kwargs);
     return "SO3(" + got +
            "): SO3() takes no arguments, it is the identity. A rotation matrix is "
            "SO3.from_matrix(matrix) (checked: it refuses a matrix that is not a rotation), "
@@ -335,10 +332,7 @@ Example:
 
   // SO3.from_rpy(0.1, 0.2, 0.3) and other calls the signature refuses: the expected shape, not pybind11's list.
   def_static_refusal(cls, "from_rpy", [](const py::args& args, const py::kwargs& kwargs) {
-    std::string got;
-    for (const auto& a : args) got += (got.empty() ? "" : ", ") + describe_argument(a);
-    for (const auto& kw : kwargs)
-      got += (got.empty() ? "" : ", ") + py::str(kw.first).cast<std::string>() + "=" + describe_argument(kw.second);
+    const std::string got = describe_arguments(args, kwargs);
     return "SO3.from_rpy(rpy, degrees=False): expected rpy, one array_like of shape (3,) (roll, pitch, yaw), and "
            "degrees, a bool; got (" +
            got + ")" + (args.size() == 3 ? ". Three angles are one argument: SO3.from_rpy([roll, pitch, yaw])" : "");

@@ -545,6 +545,16 @@ inline std::string describe_argument(py::handle h) {
   return d;
 }
 
+/// The arguments of a call as an error message names them: "list of shape
+/// (3,), degrees=bool".
+inline std::string describe_arguments(const py::args& args, const py::kwargs& kwargs) {
+  std::string got;
+  for (const auto& a : args) got += (got.empty() ? "" : ", ") + describe_argument(a);
+  for (const auto& kw : kwargs)
+    got += (got.empty() ? "" : ", ") + py::str(kw.first).cast<std::string>() + "=" + describe_argument(kw.second);
+  return got;
+}
+
 /// A new, uninitialized, C-contiguous float64 array.
 inline py::array_t<double> new_array(int nd, const Py_intptr_t* dims) {
   const auto& api = npy();
