@@ -23,7 +23,7 @@
 #
 #   bash tests/run.sh [all|cpp|hardening|python]   # from the repository root
 #
-# On a 2-core machine `all` took 15 minutes; building the wheel needs about
+# In CI (2 cores) `all` took 36 to 41 minutes; building the wheel needs about
 # 1.7 GB of memory. CONTRIBUTING.md has a faster loop for a single change.
 #
 # BUILD_DIR (default build/tests), VENV (default build/venv), WHEEL_DIR
