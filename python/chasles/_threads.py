@@ -52,7 +52,13 @@ def _read_environment() -> None:
     if not text:
         return
     try:
-        _core._set_num_threads(_count("CHASLES_NUM_THREADS", int(text)))
+        n = int(text)
+    except ValueError:
+        warnings.warn(
+            f"CHASLES_NUM_THREADS must be {_RANGE}, got {text!r}; using 1 thread", RuntimeWarning, stacklevel=3
+        )
+        return
+    try:
+        _core._set_num_threads(_count("CHASLES_NUM_THREADS", n))
     except ValueError as e:
-        reason = str(e) if str(e).startswith("CHASLES") else f"CHASLES_NUM_THREADS must be {_RANGE}, got {text!r}"
-        warnings.warn(f"{reason}; using 1 thread", RuntimeWarning, stacklevel=3)
+        warnings.warn(f"{e}; using 1 thread", RuntimeWarning, stacklevel=3)
