@@ -292,6 +292,44 @@ enum class Role {
   other
 };
 
+/// Past the end of the XML declaration or processing instruction at `p`
+/// ("<?..."): its first '>', where urdfdom's XML parser (TinyXML) resumes
+/// too, but for one case, which is refused: TinyXML reads the quoted values
+/// of "<?xml"'s pseudo-attributes whole, a '>' in them included, so a '>'
+/// inside a quoted value does not end the markup for it. The scan follows
+/// the quotes as TinyXML can: a quote after '=' (blanks, and the bytes of
+/// multi-byte characters, between them) opens a value, the same quote
+/// closes it; a quote after '=' inside a value, or one that neither opens
+/// nor closes a value, and a value still open at the first '>', are refused
+/// (not well-formed XML: a pseudo-attribute's value holds no quote, '<' or
+/// '>'). Before this rule, a '<' in the declaration's version hid the whole
+/// robot, and a loop of its joints, from the checks, and urdfdom leaked the
+/// loop's shared_ptr cycle. (tinyxml2, under newer urdfdom, ends any "<?" at
+/// its first "?>", never before the first '>': the depth bound holds.)
+const char* processing_instruction_end(const char* begin, const char* p, const char* end) {
+  const char* const start = p;
+  char open = 0;  // the quote of the value being read, or 0
+  char last = 0;  // the last character before this one, blanks and bytes >= 0x80 skipped
+  for (p += 2; p < end && *p != '>'; ++p) {
+    const char c = *p;
+    if (c == '"' || c == '\'') {
+      if (last == '=') {
+        if (open) break;  // a value opened inside a value
+        open = c;
+      } else if (c == open) {
+        open = 0;
+      } else if (!open) {
+        break;  // a quote that opens no value
+      }
+    }
+    if (!std::strchr(" \t\r\n\v\f", c) && static_cast<unsigned char>(c) < 0x80) last = c;
+  }
+  if (p == end && !open) return end;  // no '>': the parser refuses the document
+  if (p < end && *p == '>' && !open) return p + 1;
+  fail("not well-formed XML: the declaration or processing instruction at byte " + std::to_string(start - begin) +
+       " has a quote that opens no value, or a value that holds a quote or a '>'");
+}
+
 /// One linear pass over the text (see the top of this file). Refuses a
 /// document nested more than max_depth deep; reads the elements of Role.
 /// Its view of the structure is the XML parser's on every well-formed
@@ -334,8 +372,12 @@ Scan scan(const std::string& text) {
       p = find(p + 9, "]]>");
       continue;
     }
-    if (next == '?' || next == '!' || next == '/') {
-      // a declaration, processing instruction or DOCTYPE; or an end tag
+    if (next == '?') {
+      p = processing_instruction_end(begin, p, end);
+      continue;
+    }
+    if (next == '!' || next == '/') {
+      // a DOCTYPE or another "<!" markup; or an end tag
       if (next == '/' && depth > 0) --depth;
       p = find(p + 2, ">");
       continue;

@@ -38,6 +38,13 @@
 //
 // Refused, each message after "chain_from_urdf: " naming the element (the
 // same text as the Python loader's after "Chain.from_urdf: "):
+// - an XML declaration or processing instruction ("<?...") whose quotes the
+//   XML parser could read past its first '>' (a quote that opens no value,
+//   or a value holding a quote or a '>'), before urdfdom: "not well-formed
+//   XML: the declaration or processing instruction at byte N has a quote
+//   that opens no value, or a value that holds a quote or a '>'" (the scan
+//   would not see what the parser sees after it; the Python loader's expat
+//   refuses these as not well-formed too, with its own reason);
 // - what urdfdom cannot read (not well-formed XML, a missing link, an
 //   unknown joint type, a revolute or prismatic joint without <limit>, a
 //   <limit> without effort or velocity, more than one root link), with

@@ -411,6 +411,35 @@ TEST(UrdfHostile, CyclicDescriptionsAreRefusedWithoutLeaks) {
                        joint("j1", "fixed", "a", "a", "") + "</robot>",
                    "a", "the description is not UTF-8 text (byte 53 of the text)");
   }
+  // The XML declaration ends where the parser ends it: a '<' in its quoted
+  // version hid the robot and its loop from the scan (the parser read the
+  // value whole), and urdfdom leaked the loop (found by fuzz_urdf). Every
+  // quote that the parser could read as opening a value is followed.
+  const std::string loop = abc + joint("j1", "fixed", "a", "b", "") + joint("j2", "fixed", "b", "a", "");
+  const std::string body = "<robot name=\"r\">" + loop + "</robot>";
+  const std::string hidden_by =
+      "not well-formed XML: the declaration or processing instruction at byte 0 has a quote "
+      "that opens no value, or a value that holds a quote or a '>'";
+  std::string nested;
+  for (int k = 0; k < 20; ++k) nested += "<x>";
+  for (int round = 0; round < 20; ++round) {
+    expect_refused("<?xml version=\">" + nested + "<1.0\"?>" + body, "a", hidden_by);
+    expect_refused("<?xml encoding='>" + nested + "' version=\"1.0\"?>" + body, "a", hidden_by);
+    // a quote the scan could take for a closing one where the parser opens a value
+    expect_refused("<?xml a=\"b version=\f\">" + nested + "\"?>" + body, "a", hidden_by);
+    expect_refused("<?xml a=\"b version=\xEF\xBB\xBF\">" + nested + "\"?>" + body, "a", hidden_by);
+    expect_refused("<?xml x\"y version=\">" + nested + "\"?>" + body, "a", hidden_by);
+  }
+  // what XML allows there loads, or meets the loop check
+  for (const char* declaration : {"<?xml version=\"1.0\"?>", "<?xml version = '1.0' encoding=\"UTF-8\" ?>",
+                                  "<?xml version=\"1.0\" standalone='yes'?><?xml-stylesheet href=\"a.xsl\"?>"}) {
+    expect_refused(declaration + body, "a", "a loop through link 'b'");
+    const Result r =
+        chasles::chain_from_urdf<double, 8>(std::string(declaration) + "<robot name=\"r\">" + link("a", 1.0) +
+                                                link("b", 1.0) + joint("j1", "revolute", "a", "b") + "</robot>",
+                                            "b");
+    EXPECT_TRUE(r) << declaration << ": " << r.error;
+  }
   // names are compared as the parser decodes them
   expect_refused(urdf(R"(<joint name="j1" type="fixed"><parent link="&#97;"/><child link="a"/></joint>)", abc), "a",
                  "a loop through link 'a'");
