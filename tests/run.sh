@@ -1,14 +1,19 @@
 #!/usr/bin/env bash
 # Runs the tests of chasles on a fresh Debian/Ubuntu machine: installs what
 # it needs (apt-get for Eigen, GoogleTest, Google Benchmark, urdfdom for the
-# C++ URDF loader; pip for the Python side), then, by stage:
-#   cpp        configures and builds the C++ tests, examples and benchmarks
-#              (portable only: bench/report.py builds the -march=native
-#              ones), and runs ctest (the tests, the examples, and a
-#              millisecond smoke run of every benchmark);
-#   hardening  the suites that reach memory under the sanitizers, and the
-#              fuzz targets (their seed corpus replayed, then 20 s of
-#              fuzzing per target);
+# C++ URDF loader, clang; pip for the Python side), then, by stage:
+#   cpp        two C++ builds. With g++ at -O3 (build/tests): the real-time
+#              exercise (every operation, three scalars) and each header
+#              alone under the strict flags, the allocation test, the
+#              examples, the mistakes that must not compile, find_package
+#              from an installed prefix. With clang at -O0 under
+#              AddressSanitizer and UndefinedBehaviorSanitizer
+#              (build/sanitize): every suite of tests/cpp, the exercise
+#              again with assertions on, each benchmark run once (a smoke
+#              run: bench/report.py builds the timed ones), and the fuzz
+#              targets on their seed corpus;
+#   fuzz       20 s of fuzzing per target (tests/fuzz/run.sh), on the cpp
+#              stage's build;
 #   python     builds the Python wheel (pip wheel .: scikit-build-core,
 #              pybind11 and cmeel-eigen from PyPI) with the system's Eigen
 #              hidden from CMake, so that it takes Eigen from cmeel-eigen as
@@ -18,13 +23,13 @@
 #              wheel needs no compiler), and runs pytest on it from outside
 #              the source tree (with the C++ URDF loader's cross-check, whose
 #              program it builds when the cpp stage has not);
-#   all        (the default, what CI runs) the three, in that order, the
-#              fuzzing of the hardening stage beside pytest.
+#   all        (the default, what CI runs) cpp, then python with the fuzzing
+#              beside pytest.
 #
-#   bash tests/run.sh [all|cpp|hardening|python]   # from the repository root
+#   bash tests/run.sh [all|cpp|fuzz|python]   # from the repository root
 #
-# In CI (2 cores) `all` took 36 to 41 minutes; building the wheel needs about
-# 1.7 GB of memory. CONTRIBUTING.md has a faster loop for a single change.
+# Building the wheel needs about 1.7 GB of memory. CONTRIBUTING.md has a
+# faster loop for a single change.
 #
 # BUILD_DIR (default build/tests), VENV (default build/venv), WHEEL_DIR
 # (default build/wheel), WHEEL_BUILD_DIR (default build/wheel-cmake, the
@@ -34,13 +39,14 @@ cd "$(dirname "$0")/.."
 ROOT=$PWD
 STAGE=${1:-all}
 case "$STAGE" in
-  all | cpp | hardening | python) ;;
+  all | cpp | fuzz | python) ;;
   *)
-    echo "usage: bash tests/run.sh [all|cpp|hardening|python] (default: all)" >&2
+    echo "usage: bash tests/run.sh [all|cpp|fuzz|python] (default: all)" >&2
     exit 2
     ;;
 esac
 BUILD_DIR=${BUILD_DIR:-$ROOT/build/tests}
+SANITIZE_DIR=$ROOT/build/sanitize
 VENV=${VENV:-$ROOT/build/venv}
 WHEEL_DIR=${WHEEL_DIR:-$ROOT/build/wheel}
 WHEEL_BUILD_DIR=${WHEEL_BUILD_DIR:-$ROOT/build/wheel-cmake}
@@ -66,78 +72,56 @@ apt_cpp() {
   apt_install libeigen3-dev libgtest-dev libbenchmark-dev liburdfdom-dev cmake g++ "${extra[@]}"
 }
 
-# Each C++ suite (tests/cpp/test_*.cpp) is built and run once: the suites
-# that reach memory beyond fixed-size values under the sanitizers (the
-# hardening stage below says which and why), every other one in the cpp
-# stage, with g++ at -O3. Building every suite in both builds cost the suite
-# 4.5 more CPU minutes for no further check: the optimized compile of every
-# operation is the real-time exercise's (chasles_realtime_exercise, which
-# chasles_strict_compile and the allocation test link, here), and the
-# Python suite runs the same headers compiled by g++ -O3.
-SANITIZED_SUITES="test_urdf;test_io;test_kinematics;test_inverse_kinematics;test_dynamics;test_spline;test_bspline"
-SANITIZED_SUITES+=";test_mean;test_arguments;test_random;test_finite;test_fuzz_regressions"
-OPTIMIZED_SUITES=""
-for source in "$ROOT"/tests/cpp/test_*.cpp; do
-  suite=$(basename "$source" .cpp)
-  case ";$SANITIZED_SUITES;" in
-    *";$suite;"*) ;;
-    *) OPTIMIZED_SUITES+="${OPTIMIZED_SUITES:+;}$suite" ;;
-  esac
-done
-
+# The g++ build: what needs the optimizer of the compiler that builds the
+# wheel, and no test suite: the real-time exercise compiled at -O3 -DNDEBUG
+# under the strict flags (the optimizer's warnings) and run by
+# chasles_strict_compile and the allocation test (the counting operator new,
+# malloc and realloc), each header alone under g++'s strict flags, the
+# examples, the compile-fail snippets, the install test, and the C++ URDF
+# loader's dump for the Python cross-check. The suites run once, in the
+# sanitizer build below: the Python suite runs the same headers compiled by
+# g++ -O3, over the same hard inputs.
 configure_cpp() {
-  cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DCHASLES_BUILD_TESTS=ON -DCHASLES_BUILD_BENCH=ON \
-    -DCHASLES_BENCH_NATIVE=OFF -DCHASLES_BUILD_EXAMPLES=ON "-DCHASLES_TEST_SUITES=$OPTIMIZED_SUITES"
+  cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DCHASLES_BUILD_TESTS=ON -DCHASLES_BUILD_BENCH=OFF \
+    -DCHASLES_BUILD_EXAMPLES=ON -DCHASLES_TEST_SUITES=none
+}
+
+# The clang build under AddressSanitizer and UndefinedBehaviorSanitizer
+# (-O0 -g1: test_group_laws takes 44 s of CPU there against 70 s with g++
+# at -O3; gcc took 7 CPU minutes to build the memory suites at -O0, 11 at
+# -O1 and 28 at -O2 -g): every suite (the URDF loader over urdfdom's heap,
+# where LeakSanitizer found its shared_ptr cycles; arms of a run-time joint
+# count, splines over caller storage, means over iterators, Eigen maps of
+# any stride, non-finite and huge inputs, and the typed suites of
+# fixed-size math), the real-time exercise with assertions on (Eigen's
+# no-malloc check is an assertion: it runs here), each header alone under
+# clang's strict flags, each benchmark once (at -O0: a run that it works,
+# not a timing), and the libFuzzer targets of tests/fuzz on their seed
+# corpus (their fuzzing is the fuzz stage; tests/fuzz/README.md builds them
+# optimized for long runs).
+configure_sanitize() {
+  CXX=clang++ cmake -S "$ROOT" -B "$SANITIZE_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O0 -g1" \
+    -DCHASLES_BUILD_TESTS=ON -DCHASLES_SANITIZE=ON -DCHASLES_BUILD_BENCH=ON -DCHASLES_BENCH_NATIVE=OFF \
+    -DCHASLES_BENCH_OPTIMIZE=OFF -DCHASLES_BUILD_FUZZ=ON
 }
 
 stage_cpp() {
   apt_cpp
-  echo "== C++: configure, build, ctest"
+  apt_install clang libclang-rt-14-dev
+  echo "== C++ with g++ -O3: configure, build, ctest"
   configure_cpp
   cmake --build "$BUILD_DIR" -j "$JOBS"
   ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"
+  echo "== C++ with clang under AddressSanitizer + UndefinedBehaviorSanitizer: configure, build, ctest"
+  configure_sanitize
+  cmake --build "$SANITIZE_DIR" -j "$JOBS"
+  ctest --test-dir "$SANITIZE_DIR" --output-on-failure -j "$JOBS"
 }
 
-# ---- Hardening (C++): under AddressSanitizer and UndefinedBehaviorSanitizer
-# (clang, build/sanitize, -O0 -g1: gcc took 7 CPU minutes to build the
-# suites at -O0, 11 at -O1 and 28 at -O2 -g; clang takes 4.7 at -O0) the
-# suites that reach memory beyond fixed-size values (SANITIZED_SUITES
-# above): the URDF loader over
-# urdfdom's heap (LeakSanitizer found its shared_ptr cycles), printing,
-# arms of a run-time joint count, inverse kinematics and dynamics, splines
-# over caller storage, means over iterators, Eigen maps of any stride
-# (test_arguments), generators, non-finite and huge inputs (test_finite),
-# and the fuzzers' findings; with them the real-time exercise, compiled with
-# assertions on under the strict flags (chasles_realtime_exercise) and run
-# by chasles_strict_compile and by the allocation test (Eigen's no-malloc
-# check is an assertion: it runs here; the counting operator new, malloc
-# and realloc run in both builds), and each header alone under clang's strict flags. The typed
-# suites of fixed-size math (group laws, accuracy, Jacobians, autodiff, ...)
-# run in the optimized g++ build above; their raw-input surface is the fuzz
-# targets', which run under the same sanitizers: building them here too cost
-# the suite 4 more CPU minutes. Then the libFuzzer targets of tests/fuzz
-# (clang, build/fuzz): their seed corpus replayed by ctest, and 20 s of
-# fuzzing per target (tests/fuzz/README.md); in `all`, in the background
-# while pytest runs (on one core most of the time) at the end.
-# Self-contained: its own packages and build directories.
-stage_hardening_builds() {
-  apt_cpp
-  apt_install clang libclang-rt-14-dev
-  echo "== C++ under AddressSanitizer + UndefinedBehaviorSanitizer: configure, build, ctest"
-  CXX=clang++ cmake -S "$ROOT" -B "$ROOT/build/sanitize" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O0 -g1" \
-    -DCHASLES_BUILD_TESTS=ON -DCHASLES_BUILD_BENCH=OFF -DCHASLES_SANITIZE=ON "-DCHASLES_TEST_SUITES=$SANITIZED_SUITES"
-  cmake --build "$ROOT/build/sanitize" -j "$JOBS"
-  ctest --test-dir "$ROOT/build/sanitize" --output-on-failure -j "$JOBS"
-  echo "== C++ fuzzing (libFuzzer, clang): build, seed corpus replay (20 s per target run beside pytest)"
-  CXX=clang++ cmake -S "$ROOT" -B "$ROOT/build/fuzz" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCHASLES_BUILD_FUZZ=ON
-  cmake --build "$ROOT/build/fuzz" -j "$JOBS"
-  ctest --test-dir "$ROOT/build/fuzz" --output-on-failure
-}
-
-FUZZ_LOG="$ROOT/build/fuzz/run.log"
+FUZZ_LOG="$SANITIZE_DIR/fuzz-run.log"
 FUZZ_PID=""
 start_fuzzing() {
-  bash "$ROOT/tests/fuzz/run.sh" "$ROOT/build/fuzz" 20 > "$FUZZ_LOG" 2>&1 &
+  bash "$ROOT/tests/fuzz/run.sh" "$SANITIZE_DIR" 20 > "$FUZZ_LOG" 2>&1 &
   FUZZ_PID=$!
   trap 'kill "$FUZZ_PID" 2>/dev/null || true' EXIT
 }
@@ -151,7 +135,6 @@ finish_fuzzing() {
     exit "$status"
   fi
 }
-# ---- end of the hardening stage (in `all`, its fuzzing runs beside pytest, below)
 
 stage_python() {
   apt_cpp
@@ -191,7 +174,7 @@ stage_python() {
   # One BLAS thread: the tests' small scipy/numpy products gain nothing from
   # more, and OpenBLAS threads spinning on a loaded 2-core machine made the
   # suite several times slower (116 s against 17 s for the same tests).
-  # In `all`, the fuzzing of the hardening stage runs meanwhile, on the core
+  # In `all`, the fuzzing (the fuzz stage) runs meanwhile, on the core
   # pytest leaves idle; its outcome is read after pytest.
   if [ "$STAGE" = all ]; then start_fuzzing; fi
   (cd "$VENV" && OPENBLAS_NUM_THREADS=1 CHASLES_REQUIRE_URDF_DUMP=1 \
@@ -202,15 +185,13 @@ stage_python() {
 
 case "$STAGE" in
   cpp) stage_cpp ;;
-  hardening)
-    stage_hardening_builds
-    echo "== C++ fuzzing: 20 s per target (tests/fuzz/run.sh)"
-    bash "$ROOT/tests/fuzz/run.sh" "$ROOT/build/fuzz" 20
+  fuzz)
+    echo "== C++ fuzzing: 20 s per target (tests/fuzz/run.sh), on the cpp stage's build"
+    bash "$ROOT/tests/fuzz/run.sh" "$SANITIZE_DIR" 20
     ;;
   python) stage_python ;;
   all)
     stage_cpp
-    stage_hardening_builds
     stage_python
     ;;
 esac

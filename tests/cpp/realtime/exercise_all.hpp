@@ -1,6 +1,6 @@
 // Calls every public operation of chasles once, for the real-time tests:
 // test_no_allocation.cpp runs it with allocation forbidden, strict_compile.cpp
-// runs it for the three scalars. Both link its one compile, exercise_all.cpp
+// runs it for the three scalars. Both link its one compile, exercise_*.cpp
 // (the instantiations declared extern at the end of this file), built with
 // -fno-exceptions -fno-rtti -Wpedantic -Werror (tests/cpp/CMakeLists.txt).
 #pragma once
@@ -384,7 +384,8 @@ S exercise_all() noexcept {
 /// The autodiff scalar of the exercise.
 using AutoDiff = Eigen::AutoDiffScalar<Eigen::Matrix<double, 6, 1>>;
 
-// Instantiated once, in exercise_all.cpp: the files that include this one
+// Instantiated once, in exercise_float.cpp, exercise_double.cpp and
+// exercise_autodiff.cpp: the files that include this one
 // do not compile the exercise again.
 extern template float exercise_all<float>() noexcept;
 extern template double exercise_all<double>() noexcept;

@@ -3,7 +3,7 @@
 // an autodiff scalar, compiled with -fno-exceptions -fno-rtti and the
 // warnings of tests/cpp/strict_flags.cmake as errors (tests/cpp/CMakeLists.txt):
 // a build that succeeds is the test. Every operation is compiled under the
-// same flags in exercise_all.cpp, which this program links and runs.
+// same flags in exercise_*.cpp, which this program links and runs.
 #include <cmath>
 #include <cstddef>
 #include <cstdio>

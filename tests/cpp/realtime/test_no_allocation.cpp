@@ -1,6 +1,6 @@
 // The real-time contract: no public operation allocates. Checked twice:
 // Eigen's own runtime check (EIGEN_RUNTIME_NO_MALLOC, set by CMake here and
-// in the exercise's object, exercise_all.cpp), which asserts inside Eigen on
+// in the exercise's object, exercise_*.cpp), which asserts inside Eigen on
 // its heap use, and a counting global operator new, which sees every
 // allocation through new, from any file of the program. Eigen's check is an
 // eigen_assert: it runs where assertions are on (tests/run.sh's sanitizer
