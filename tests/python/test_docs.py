@@ -144,10 +144,10 @@ def test_the_stages_of_tests_run_sh_are_the_documented_ones():
     run_sh = (ROOT / "tests" / "run.sh").read_text(encoding="utf-8")
     stages = re.search(r'case "\$STAGE" in\n  ([a-z |]+)\) ;;', run_sh)
     assert stages, "tests/run.sh does not check its stage argument"
-    assert sorted(s.strip() for s in stages.group(1).split("|")) == ["all", "cpp", "hardening", "python"]
+    assert sorted(s.strip() for s in stages.group(1).split("|")) == ["all", "cpp", "fuzz", "python"]
     assert "STAGE=${1:-all}" in run_sh
     contributing = (ROOT / "CONTRIBUTING.md").read_text(encoding="utf-8")
-    for stage in ("cpp", "hardening", "python"):
+    for stage in ("cpp", "fuzz", "python"):
         assert f"`bash tests/run.sh {stage}`" in contributing, stage
     ci = (ROOT / ".ci" / "run").read_text(encoding="utf-8")
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
