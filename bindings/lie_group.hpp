@@ -618,6 +618,28 @@ Example:
     >>> {G}.interpolate(a, b, 0.5).is_approx(a @ {G}.exp(0.5 * np.array({example})))
     True
 )doc"));
+  static const std::string pow_what = std::string(L::name) + " ** t";
+  cls.def(
+      "__pow__",
+      [](Obj<G> g, RealLike t) {
+        return chasles::interpolate(G::identity(), *g, to_finite_real(t.obj, pow_what.c_str()));
+      },
+      py::arg("t"), py::is_operator(), group_doc<G>(R"doc(The power exp(t log g): t = 0 gives the identity, t = 1
+this {kind}, t = -1 its inverse, t = 0.5 the {kind} half way along its
+geodesic from the identity (the one whose square it is, for angles below pi),
+as scipy's ``Rotation.__pow__``.
+
+Args:
+    t: the exponent, finite (not only an integer).
+
+Returns:
+    {G}: the power.
+
+Example:
+    >>> g = {G}.exp({example})
+    >>> ((g ** 0.5) @ (g ** 0.5)).is_approx(g) and (g ** -1).is_approx(g.inverse())
+    True
+)doc"));
   static const std::string tol_what = std::string(L::name) + ".is_approx(tol)";
   cls.def(
       "is_approx",

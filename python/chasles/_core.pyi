@@ -593,6 +593,24 @@ class SO3:
         Returns:
             bool.
         """
+    def __pow__(self, t: float) -> SO3:
+        """
+        The power exp(t log g): t = 0 gives the identity, t = 1
+        this rotation, t = -1 its inverse, t = 0.5 the rotation half way along its
+        geodesic from the identity (the one whose square it is, for angles below pi),
+        as scipy's ``Rotation.__pow__``.
+        
+        Args:
+            t: the exponent, finite (not only an integer).
+        
+        Returns:
+            SO3: the power.
+        
+        Example:
+            >>> g = SO3.exp([0.3, 0.2, 0.1])
+            >>> ((g ** 0.5) @ (g ** 0.5)).is_approx(g) and (g ** -1).is_approx(g.inverse())
+            True
+        """
     def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
         """
         Pickle support: (copyreg.__newobj__, (cls,), state).
@@ -1214,6 +1232,24 @@ class SE3:
         
         Returns:
             bool.
+        """
+    def __pow__(self, t: float) -> SE3:
+        """
+        The power exp(t log g): t = 0 gives the identity, t = 1
+        this motion, t = -1 its inverse, t = 0.5 the motion half way along its
+        geodesic from the identity (the one whose square it is, for angles below pi),
+        as scipy's ``Rotation.__pow__``.
+        
+        Args:
+            t: the exponent, finite (not only an integer).
+        
+        Returns:
+            SE3: the power.
+        
+        Example:
+            >>> g = SE3.exp([0.1, 0.2, 0.3, 0.4, 0.5, 0.6])
+            >>> ((g ** 0.5) @ (g ** 0.5)).is_approx(g) and (g ** -1).is_approx(g.inverse())
+            True
         """
     def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
         """

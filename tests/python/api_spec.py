@@ -1149,6 +1149,7 @@ def _build_spec():
         passes_arguments=False,
     )
     spec["SO3.normalized"] = _method(SO3, "normalized")
+    spec["SO3.__pow__"] = _binop(SO3, operator.pow, Real("SO3 ** t"), "__pow__")
     spec["SO3.interpolate"] = _static(
         SO3, "interpolate", Instance("a", (SO3,)), Instance("b", (SO3,)), Real("SO3.interpolate(t)")
     )
@@ -1204,6 +1205,7 @@ def _build_spec():
         "transform_defect",
         Array("SE3.transform_defect(matrix)", (4, 4), finite=False, valid=pose),
     )
+    spec["SE3.__pow__"] = _binop(SE3, operator.pow, Real("SE3 ** t"), "__pow__")
     spec["SE3.interpolate"] = _static(
         SE3, "interpolate", Instance("a", (SE3,)), Instance("b", (SE3,)), Real("SE3.interpolate(t)")
     )

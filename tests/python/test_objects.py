@@ -108,6 +108,40 @@ def test_group_axioms(G, data):
 
 @pytest.mark.parametrize("G", GROUPS, ids=ids)
 @given(data=st.data())
+def test_powers_are_exp_of_t_log(G, data):
+    g = data.draw(elements(G))
+    t = data.draw(st.floats(-3.0, 3.0))
+    # the definition, through an independent matrix exponential
+    assert close((g**t).as_matrix(), expm(t * hat_ref(G, g.log())), 1e-9)
+    assert_same(g**0, G.identity(), 0.0)
+    assert_same(g**1, g, 1e-12)
+    assert_same(g ** (-1), g.inverse(), 1e-12)
+    assert_same(g**2, g @ g, 1e-9)
+    half = g**0.5
+    assert_same(half @ half, g, 1e-9)
+    assert_same(g ** np.float32(2.0), g @ g, 1e-9)  # any real: numpy scalars, ints
+
+
+@pytest.mark.parametrize("G", GROUPS, ids=ids)
+@given(data=st.data())
+def test_powers_equal_scipys(G, data):
+    g = data.draw(elements(G))
+    # exponents exact in float32: scipy 1.17's RigidTransform ** t rounds t to
+    # float32 (g ** -0.3 moves a unit translation by -0.30000001)
+    t = data.draw(st.floats(-3.0, 3.0, width=32))
+    if angle_of(g.log()) > 3.0:  # near pi the two logs may pick opposite axes
+        return
+    if G is SO3:
+        theirs = Rotation.from_matrix(g.as_matrix()) ** t
+    else:
+        from scipy.spatial.transform import RigidTransform  # scipy >= 1.16 (the test extras)
+
+        theirs = RigidTransform.from_matrix(g.as_matrix()) ** t
+    assert close((g**t).as_matrix(), theirs.as_matrix(), 1e-9)
+
+
+@pytest.mark.parametrize("G", GROUPS, ids=ids)
+@given(data=st.data())
 def test_matrices_multiply_like_the_group(G, data):
     a, b = data.draw(elements(G)), data.draw(elements(G))
     assert close((a @ b).as_matrix(), a.as_matrix() @ b.as_matrix(), 1e-12)
