@@ -75,10 +75,20 @@ bool to_flag(py::handle h, const char* what) {
   return static_cast<bool>(flag);
 }
 
-/// The angles of as_euler / as_rpy, in degrees if asked, with the gimbal lock flag if asked.
+/// scipy's warning at the gimbal lock, word for word (a filter on scipy's
+/// catches chasles' too); SO3._GIMBAL_LOCK_WARNING, for so3_as_euler and
+/// so3_as_rpy (python/chasles/_arrays.py).
+constexpr const char* kGimbalLockWarning =
+    "Gimbal lock detected. Setting third angle to zero since it is not possible to uniquely determine all angles.";
+
+/// The angles of as_euler / as_rpy, in degrees if asked; with the gimbal
+/// lock flag if asked, and the warning at the lock if not.
 py::object euler_result(const chasles::EulerAngles<double>& e, bool degrees, bool return_gimbal_lock) {
   py::object angles = vec_out<3>(degrees ? Vector3(e.angles * kRadToDeg) : e.angles);
-  if (!return_gimbal_lock) return angles;
+  if (!return_gimbal_lock) {
+    if (e.gimbal_lock && PyErr_WarnEx(PyExc_UserWarning, kGimbalLockWarning, 1) != 0) throw py::error_already_set();
+    return angles;
+  }
   return py::make_tuple(angles, py::bool_(e.gimbal_lock));
 }
 
@@ -86,6 +96,7 @@ py::object euler_result(const chasles::EulerAngles<double>& e, bool degrees, boo
 
 void bind_so3(Class<SO3d>& cls) {
   cls.attr("__doc__") = std::string(kClassDoc) + kConventions;
+  cls.attr("_GIMBAL_LOCK_WARNING") = kGimbalLockWarning;
   hold_inline(cls);
   // What SO3 and SE3 share (lie_group.hpp), first: the composition comes
   // before the action on points among the overloads of @. The state: the matrix row by row, checked as SO3.from_matrix
@@ -284,7 +295,8 @@ scipy's ranges: the middle angle in [-pi/2, pi/2] for Tait-Bryan sequences
 (three distinct axes), [0, pi] for proper Euler sequences (first axis =
 last), the others in [-pi, pi]. At the gimbal lock (middle angle +-pi/2, or
 0 or pi, to working precision) only the sum or difference of the outer
-angles is defined, and the third angle is zero, as scipy. Robust there:
+angles is defined, and the third angle is zero, with scipy's UserWarning
+(not with return_gimbal_lock=True, which returns the flag). Robust there:
 ``SO3.from_euler(seq, R.as_euler(seq))`` reproduces R to a few ulps for
 every rotation (atan2 of well-conditioned pairs of entries; scipy declares
 the lock within 1e-7 of it and loses up to 1e-7 there).
@@ -348,7 +360,7 @@ Example:
 
 ``R.as_euler("xyz")``: R = Rz(yaw) Ry(pitch) Rx(roll), pitch in
 [-pi/2, pi/2], roll and yaw in [-pi, pi]; at the gimbal lock (pitch +-pi/2)
-yaw is zero.
+yaw is zero, with scipy's UserWarning (not with return_gimbal_lock=True).
 
 Args:
     degrees: return degrees (default radians).

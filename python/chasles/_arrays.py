@@ -4,6 +4,7 @@ every other keyword (out=, axes=, dtype=, ...) through to it."""
 
 from __future__ import annotations
 
+import warnings
 from typing import Any
 
 import numpy as np
@@ -125,11 +126,10 @@ def _with_scalars(kwargs: dict, scalars: int, flags: int = 0) -> dict:
 
 
 def _angles_and_flag(ufunc: np.ufunc, operands: tuple, kwargs: dict, return_gimbal_lock: bool) -> Any:
-    """Calls as_euler's ufunc; with return_gimbal_lock its `_lock` variant,
-    whose second result is the gimbal lock flag: an out= array is the
-    angles' (numpy makes the flags)."""
-    if not return_gimbal_lock:
-        return ufunc(*operands, **_with_scalars(kwargs, 1))
+    """Calls as_euler's `_lock` ufunc, whose second result is the gimbal lock
+    flag (an out= array is the angles'; numpy makes the flags): returns the
+    angles and the flags with return_gimbal_lock, else the angles, with
+    scipy's UserWarning when a rotation is at the lock (SO3.as_euler's)."""
     ufunc = getattr(_core, ufunc.__name__ + "_lock")
     kwargs = _with_scalars(kwargs, 1, 1)
     out = kwargs.get("out")
@@ -137,7 +137,12 @@ def _angles_and_flag(ufunc: np.ufunc, operands: tuple, kwargs: dict, return_gimb
         kwargs = dict(kwargs, out=(out, None))
     elif isinstance(out, tuple) and len(out) == 1:
         kwargs = dict(kwargs, out=(out[0], None))
-    return ufunc(*operands, **kwargs)
+    angles, lock = ufunc(*operands, **kwargs)
+    if return_gimbal_lock:
+        return angles, lock
+    if np.any(lock):
+        warnings.warn(_core.SO3._GIMBAL_LOCK_WARNING, UserWarning, stacklevel=3)
+    return angles
 
 
 def so3_from_euler(seq: str, angles: ArrayLike, /, degrees: bool = False, **kwargs: Any) -> np.ndarray:
@@ -185,7 +190,8 @@ def so3_as_euler(
     (first axis = last), the others in [-pi, pi]. At the gimbal lock (the
     middle angle +-pi/2, or 0 or pi, to working precision) only the sum or
     difference of the outer angles is defined and the third angle is zero,
-    as scipy (which does not warn here). Robust at and next to the lock:
+    with scipy's UserWarning (once per call; not with
+    return_gimbal_lock=True, which returns the flags). Robust at and next to the lock:
     ``so3_from_euler(seq, so3_as_euler(seq, R))`` reproduces R to a few ulps
     for every rotation (atan2 of well-conditioned pairs of entries).
 
@@ -245,7 +251,8 @@ def so3_as_rpy(R: ArrayLike, /, degrees: bool = False, *, return_gimbal_lock: bo
 
     ``so3_as_euler("xyz", R)``: R = Rz(yaw) Ry(pitch) Rx(roll), pitch in
     [-pi/2, pi/2], roll and yaw in [-pi, pi]; at the gimbal lock (pitch
-    +-pi/2) yaw is zero.
+    +-pi/2) yaw is zero, with scipy's UserWarning (not with
+    return_gimbal_lock=True).
 
     Args:
         R: array_like of shape (..., 3, 3): rotation matrices.

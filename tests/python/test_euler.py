@@ -119,7 +119,12 @@ def test_as_euler_at_and_near_the_lock(case):
     # within 1e-7 of it and sets the third angle to zero) loses up to 1e-7.
     seq, t = case
     R = chasles.so3_from_euler(seq, t)
-    ours = chasles.so3_as_euler(seq, R)
+    ours, lock = chasles.so3_as_euler(seq, R, return_gimbal_lock=True)
+    # without the flag asked for, the same angles, and scipy's warning at the lock only
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        assert np.array_equal(chasles.so3_as_euler(seq, R), ours)
+    assert len(caught) == int(bool(lock))
     assert np.abs(chasles.so3_from_euler(seq, ours) - R).max() <= 1e-15
     assert np.abs(Rotation.from_euler(seq, ours).as_matrix() - R).max() <= 2e-15
     lo, hi = (0, np.pi) if proper(seq) else (-np.pi / 2, np.pi / 2)
@@ -132,6 +137,44 @@ def test_as_euler_at_and_near_the_lock(case):
         theirs = scipy_as_euler(seq, R)
         assert theirs[2] == 0.0
         np.testing.assert_allclose(wrapped(ours - theirs), 0, atol=1e-14)
+
+
+def scipy_warning(seq, R):
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        Rotation.from_matrix(R).as_euler(seq)
+    assert len(caught) == 1
+    return caught[0]
+
+
+@pytest.mark.parametrize("seq", SEQUENCES)
+def test_the_gimbal_lock_warning_is_scipys(seq):
+    """At the lock, the object method and the array functions warn as scipy
+    does (category and text: a filter on scipy's catches chasles'), once per
+    call and at the caller's line; return_gimbal_lock=True returns the flag
+    instead; off the lock, no warning."""
+    at = chasles.so3_from_euler(seq, [0.4, locks(seq)[0], -1.2])
+    theirs = scipy_warning(seq, at)
+    batch = np.stack([at, chasles.so3_from_euler(seq, [0.1, 0.2, 0.3]), at])
+    calls = [
+        lambda: chasles.so3_as_euler(seq, batch),
+        lambda: chasles.so3_as_euler(seq, batch, out=np.empty((3, 3))),
+        lambda: chasles.SO3.from_matrix(at).as_euler(seq),
+    ]
+    if seq == "xyz":
+        calls += [lambda: chasles.so3_as_rpy(batch), lambda: chasles.SO3.from_matrix(at).as_rpy()]
+    for call in calls:
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            call()
+        assert [(w.category, str(w.message)) for w in caught] == [(theirs.category, str(theirs.message))]
+        assert caught[0].filename == __file__
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        angles, lock = chasles.so3_as_euler(seq, batch, return_gimbal_lock=True)
+        assert lock.tolist() == [True, False, True]
+        assert chasles.SO3.from_matrix(at).as_euler(seq, return_gimbal_lock=True)[1] is True
+        chasles.so3_as_euler(seq, batch[1])  # off the lock: silent
 
 
 @pytest.mark.parametrize("seq", SEQUENCES)
@@ -249,22 +292,27 @@ def test_the_gimbal_lock_flag_reaches_python(seq):
     R = chasles.so3_from_euler(seq, angles)
     got, flag = chasles.so3_as_euler(seq, R, return_gimbal_lock=True)
     assert flag.dtype == np.bool_ and flag.shape == (2,) and flag.tolist() == [True, False]
-    assert np.array_equal(got, chasles.so3_as_euler(seq, R))
+    with pytest.warns(UserWarning, match="Gimbal lock detected"):  # without the flag: scipy's warning
+        assert np.array_equal(got, chasles.so3_as_euler(seq, R))
     deg, flag_deg = chasles.so3_as_euler(seq, R, degrees=True, return_gimbal_lock=True)
-    assert np.array_equal(deg, chasles.so3_as_euler(seq, R, degrees=True)) and np.array_equal(flag, flag_deg)
+    with pytest.warns(UserWarning, match="Gimbal lock detected"):
+        assert np.array_equal(deg, chasles.so3_as_euler(seq, R, degrees=True)) and np.array_equal(flag, flag_deg)
     for k in range(2):
         one, locked = chasles.SO3.from_matrix(R[k]).as_euler(seq, return_gimbal_lock=True)
         assert locked is bool(flag[k]) and np.array_equal(one, got[k])
     out = np.empty((2, 3))
-    assert chasles.so3_as_euler(seq, R, out=out) is out and np.array_equal(out, got)
+    with pytest.warns(UserWarning, match="Gimbal lock detected"):
+        assert chasles.so3_as_euler(seq, R, out=out) is out and np.array_equal(out, got)
 
 
 def test_the_rpy_gimbal_lock_flag():
     R = chasles.so3_from_rpy([[0.1, np.pi / 2, 0.3], [0.1, 0.2, 0.3]])
     rpy, flag = chasles.so3_as_rpy(R, return_gimbal_lock=True)
-    assert flag.tolist() == [True, False] and np.array_equal(rpy, chasles.so3_as_rpy(R))
+    with pytest.warns(UserWarning, match="Gimbal lock detected"):
+        assert flag.tolist() == [True, False] and np.array_equal(rpy, chasles.so3_as_rpy(R))
     one, locked = chasles.SO3.from_matrix(R[0]).as_rpy(degrees=True, return_gimbal_lock=True)
-    assert locked is True and np.array_equal(one, chasles.so3_as_rpy(R[0], degrees=True))
+    with pytest.warns(UserWarning, match="Gimbal lock detected"):
+        assert locked is True and np.array_equal(one, chasles.so3_as_rpy(R[0], degrees=True))
     assert chasles.SO3().as_rpy(return_gimbal_lock=True)[1] is False
 
 
