@@ -100,6 +100,7 @@ from chasles._core import (
     se3_interpolate,
     se3_inverse,
     se3_log,
+    se3_normalize,
     se3_vee,
     so3_act,
     so3_act_jacobian,
@@ -112,6 +113,7 @@ from chasles._core import (
     so3_interpolate,
     so3_inverse,
     so3_log,
+    so3_normalize,
     so3_vee,
 )
 from chasles._mean import se3_mean, so3_mean
@@ -162,6 +164,7 @@ __all__ = [
     "se3_interpolate",
     "se3_inverse",
     "se3_log",
+    "se3_normalize",
     "se3_mean",
     "se3_random",
     "se3_vee",
@@ -185,6 +188,7 @@ __all__ = [
     "so3_inverse",
     "so3_log",
     "so3_mean",
+    "so3_normalize",
     "so3_random",
     "so3_vee",
 ]

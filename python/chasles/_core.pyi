@@ -8,7 +8,7 @@ import numpy
 import numpy.dtypes
 import numpy.typing
 import typing
-__all__: list[str] = ['Chain', 'SE3', 'SO3', 'Screw', 'SpatialInertia', 'Twist', 'Wrench', 'act_jacobians', 'between', 'between_jacobians', 'compose_jacobians', 'get_num_threads', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'lminus_jacobians', 'log_jacobian', 'lplus', 'lplus_jacobians', 'rminus', 'rminus_jacobians', 'rplus', 'rplus_jacobians', 'se3_act', 'se3_act_jacobian', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_distance', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_vee', 'so3_act', 'so3_act_jacobian', 'so3_angle', 'so3_compose', 'so3_distance', 'so3_exp', 'so3_from_uniforms', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_vee']
+__all__: list[str] = ['Chain', 'SE3', 'SO3', 'Screw', 'SpatialInertia', 'Twist', 'Wrench', 'act_jacobians', 'between', 'between_jacobians', 'compose_jacobians', 'get_num_threads', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'lminus_jacobians', 'log_jacobian', 'lplus', 'lplus_jacobians', 'rminus', 'rminus_jacobians', 'rplus', 'rplus_jacobians', 'se3_act', 'se3_act_jacobian', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_distance', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_normalize', 'se3_vee', 'so3_act', 'so3_act_jacobian', 'so3_angle', 'so3_compose', 'so3_distance', 'so3_exp', 'so3_from_uniforms', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_normalize', 'so3_vee']
 
 _Name = typing.TypeVar("_Name", bound=str)
 _Signature = typing.TypeVar("_Signature", bound=str)
@@ -140,6 +140,7 @@ class SO3:
     within a tolerance with ``is_approx(other, tol)``. Objects pickle and copy
     bit-exactly, and ``np.asarray(x)`` gives their matrix or vector.
     """
+    _GIMBAL_LOCK_WARNING: typing.ClassVar[str] = 'Gimbal lock detected. Setting third angle to zero since it is not possible to uniquely determine all angles.'
     __array_ufunc__ = None
     __hash__: typing.ClassVar[None] = None
     dtype: typing.ClassVar[numpy.dtypes.Float64DType]
@@ -672,7 +673,8 @@ class SO3:
         (three distinct axes), [0, pi] for proper Euler sequences (first axis =
         last), the others in [-pi, pi]. At the gimbal lock (middle angle +-pi/2, or
         0 or pi, to working precision) only the sum or difference of the outer
-        angles is defined, and the third angle is zero, as scipy. Robust there:
+        angles is defined, and the third angle is zero, with scipy's UserWarning
+        (not with return_gimbal_lock=True, which returns the flag). Robust there:
         ``SO3.from_euler(seq, R.as_euler(seq))`` reproduces R to a few ulps for
         every rotation (atan2 of well-conditioned pairs of entries; scipy declares
         the lock within 1e-7 of it and loses up to 1e-7 there).
@@ -725,7 +727,7 @@ class SO3:
         
         ``R.as_euler("xyz")``: R = Rz(yaw) Ry(pitch) Rx(roll), pitch in
         [-pi/2, pi/2], roll and yaw in [-pi, pi]; at the gimbal lock (pitch +-pi/2)
-        yaw is zero.
+        yaw is zero, with scipy's UserWarning (not with return_gimbal_lock=True).
         
         Args:
             degrees: return degrees (default radians).
@@ -2884,6 +2886,8 @@ se3_interpolate: _GUFunc_Nin3_Nout1[typing.Literal["se3_interpolate"], typing.Li
 se3_inverse: _GUFunc_Nin1_Nout1[typing.Literal["se3_inverse"], typing.Literal["(4,4)->(4,4)"]]
 # se3_log(g): (4,4)->(6)
 se3_log: _GUFunc_Nin1_Nout1[typing.Literal["se3_log"], typing.Literal["(4,4)->(6)"]]
+# se3_normalize(g): (4,4)->(4,4)
+se3_normalize: _GUFunc_Nin1_Nout1[typing.Literal["se3_normalize"], typing.Literal["(4,4)->(4,4)"]]
 # se3_vee(matrix): (4,4)->(6)
 se3_vee: _GUFunc_Nin1_Nout1[typing.Literal["se3_vee"], typing.Literal["(4,4)->(6)"]]
 # so3_act(R, points): (3,3),(3)->(3)
@@ -2908,5 +2912,7 @@ so3_interpolate: _GUFunc_Nin3_Nout1[typing.Literal["so3_interpolate"], typing.Li
 so3_inverse: _GUFunc_Nin1_Nout1[typing.Literal["so3_inverse"], typing.Literal["(3,3)->(3,3)"]]
 # so3_log(R): (3,3)->(3)
 so3_log: _GUFunc_Nin1_Nout1[typing.Literal["so3_log"], typing.Literal["(3,3)->(3)"]]
+# so3_normalize(R): (3,3)->(3,3)
+so3_normalize: _GUFunc_Nin1_Nout1[typing.Literal["so3_normalize"], typing.Literal["(3,3)->(3,3)"]]
 # so3_vee(matrix): (3,3)->(3)
 so3_vee: _GUFunc_Nin1_Nout1[typing.Literal["so3_vee"], typing.Literal["(3,3)->(3)"]]

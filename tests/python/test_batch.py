@@ -101,6 +101,7 @@ FUNCS = {
     "so3_from_quat": (("quat",), (3, 3)),
     "so3_as_quat": (("rot",), (4,)),
     "so3_interpolate": (("rot", "rot", "t"), (3, 3)),
+    "so3_normalize": (("rot",), (3, 3)),
     "se3_exp": (("twist",), (4, 4)),
     "se3_log": (("pose",), (6,)),
     "se3_compose": (("pose", "pose"), (4, 4)),
@@ -110,6 +111,7 @@ FUNCS = {
     "se3_act_twist": (("pose", "twist"), (6,)),
     "se3_act_wrench": (("pose", "wrench"), (6,)),
     "se3_interpolate": (("pose", "pose", "t"), (4, 4)),
+    "se3_normalize": (("pose",), (4, 4)),
     "se3_hat": (("twist",), (4, 4)),
     "se3_vee": (("twistmat",), (6,)),
 }
@@ -314,6 +316,72 @@ def test_interpolate_ends_and_middle():
     out = chasles.se3_interpolate(ga[0], gb[0], t)
     assert out.shape == (5, 4, 4)
     np.testing.assert_array_equal(out[2], chasles.se3_interpolate(ga[0], gb[0], t[2]))
+
+
+def nearest_rotation_svd(M):
+    """The rotation nearest to M in the Frobenius norm, by SVD (an oracle
+    independent of chasles' Jacobi iteration on a quaternion)."""
+    U, _, Vt = np.linalg.svd(M)
+    D = np.eye(3)
+    D[2, 2] = np.sign(np.linalg.det(U @ Vt))
+    return U @ D @ Vt
+
+
+def rotation_drift(R):
+    """max |R^T R - I|: how far matrices are from orthonormal."""
+    return float(np.abs(np.swapaxes(R, -1, -2) @ R - np.eye(3)).max())
+
+
+def test_normalize_is_the_nearest_rotation():
+    rng = np.random.default_rng(21)
+    R = rotations(200, rng)
+    np.testing.assert_allclose(chasles.so3_normalize(R), R, atol=1e-15)  # rotations stay
+    M = R + rng.normal(scale=0.2, size=R.shape)  # far off SO(3)
+    M[:5] *= -1  # reflections
+    M[5] = np.outer([1.0, 2.0, 3.0], [0.5, -1.0, 2.0])  # rank one: its nearest rotation is not unique
+    N = chasles.so3_normalize(M)
+    assert rotation_drift(N) <= 1e-15 and np.allclose(np.linalg.det(N), 1.0, atol=1e-15)
+    for k in range(6, 200):
+        np.testing.assert_allclose(N[k], nearest_rotation_svd(M[k]), atol=1e-13)
+        assert np.array_equal(N[k], chasles.SO3.from_matrix_projected(M[k]).as_matrix())
+    # and no closer one: the distance to the SVD's rotation is the minimum
+    assert np.linalg.norm(M[5] - N[5]) <= np.linalg.norm(M[5] - nearest_rotation_svd(M[5])) + 1e-12
+    # poses: the rotation block projected, the translation kept, the bottom row (0, 0, 0, 1)
+    G = poses(50, rng)
+    G[:, :3, :3] += rng.normal(scale=0.1, size=(50, 3, 3))
+    G[:, 3, :] = 7.0
+    H = chasles.se3_normalize(G)
+    np.testing.assert_array_equal(H[:, :3, :3], chasles.so3_normalize(G[:, :3, :3]))
+    np.testing.assert_array_equal(H[:, :3, 3], G[:, :3, 3])
+    np.testing.assert_array_equal(H[:, 3, :], np.tile([0.0, 0.0, 0.0, 1.0], (50, 1)))
+    # float32 in, float32 out, as orthonormal as float32 allows
+    N32 = chasles.so3_normalize(M[6:].astype(np.float32))
+    assert N32.dtype == np.float32 and rotation_drift(N32.astype(np.float64)) <= 1e-6
+
+
+def test_normalize_gives_nan_for_non_finite_matrices():
+    M = np.stack([np.eye(3), np.eye(3)])
+    M[1, 0, 2] = np.nan
+    N = chasles.so3_normalize(M)
+    assert np.array_equal(N[0], np.eye(3)) and np.isnan(N[1]).all()
+    G = np.stack([np.eye(4)] * 2)
+    G[1, 1, 1] = np.inf
+    assert np.isnan(chasles.se3_normalize(G)[1, :3, :3]).all()
+
+
+def test_drift_builds_up_in_products_that_feed_on_themselves():
+    """scipy's test_multiplication_stability, as scipy sets it up: 1000
+    rotations rs, and for each of 50 rotations q, rs = rs @ q @ rs. Each
+    product is off SO(3) by an ulp or so, and the error of rs is squared
+    into the next round: the matrices end far from rotations (max
+    |R^T R - I| = 1.05). One so3_normalize per round keeps them rotations."""
+    qs = Rotation.random(50, random_state=0).as_matrix()
+    drifting = normalized = Rotation.random(1000, random_state=1).as_matrix()
+    for q in qs:
+        drifting = chasles.so3_compose(chasles.so3_compose(drifting, q), drifting)
+        normalized = chasles.so3_normalize(chasles.so3_compose(chasles.so3_compose(normalized, q), normalized))
+    assert rotation_drift(drifting) > 0.5
+    assert rotation_drift(normalized) <= 1e-15
 
 
 @settings(max_examples=200, deadline=None)
