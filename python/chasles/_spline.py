@@ -187,7 +187,14 @@ class SO3Spline(_Spline):
             between 1e-100 and 1e100.
         rotations: (N, 3, 3) rotation matrices, or a sequence of N ``SO3``.
         ends: ``"natural"`` (zero angular acceleration at both ends, the
-            default) or ``"chord"`` (scipy's end rates).
+            default) or ``"chord"`` (scipy's end rates: the spline of
+            scipy's ``RotationSpline`` where scipy's solver converges. For
+            steps between keys drawn as rotation vectors N(0, s^2 I), the
+            two agree to 3e-10 at s = 0.4 rad (rotations, and the rates and
+            accelerations relative to 1 + their norm), 5e-9 at 0.6, 7e-7 at
+            0.8, 5e-6 at 1.0 and 2e-4 at 1.5: farther apart, scipy's
+            fixed-point iteration stops unconverged at its 10 iterations,
+            where chasles solves to 1e-12).
 """
         + _MATH
         + """
