@@ -9,9 +9,10 @@
 #              from an installed prefix. With clang at -O0 under
 #              AddressSanitizer and UndefinedBehaviorSanitizer
 #              (build/sanitize): every suite of tests/cpp, the exercise
-#              again with assertions on, each benchmark run once (a smoke
-#              run: bench/report.py builds the timed ones), and the fuzz
-#              targets on their seed corpus;
+#              again with assertions on, the benchmarks (each run once, a
+#              smoke run, but the latency tool, built only: bench/report.py
+#              builds the timed ones), and the fuzz targets on their seed
+#              corpus;
 #   fuzz       20 s of fuzzing per target (tests/fuzz/run.sh), on the cpp
 #              stage's build;
 #   python     builds the Python wheel (pip wheel .: scikit-build-core,
@@ -96,7 +97,8 @@ configure_cpp() {
 # fixed-size math), the real-time exercise with assertions on (Eigen's
 # no-malloc check is an assertion: it runs here), each header alone under
 # clang's strict flags, each benchmark once (at -O0: a run that it works,
-# not a timing), and the libFuzzer targets of tests/fuzz on their seed
+# not a timing; the latency tool is built, not run: bench/CMakeLists.txt),
+# and the libFuzzer targets of tests/fuzz on their seed
 # corpus (their fuzzing is the fuzz stage; tests/fuzz/README.md builds them
 # optimized for long runs).
 configure_sanitize() {
