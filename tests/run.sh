@@ -30,9 +30,9 @@
 #   bash tests/run.sh [all|cpp|fuzz|python]   # from the repository root
 #
 # On 2 cores `all` took 34 minutes: the g++ build 7, the sanitizer build 16
-# (its 25 suites about 18 CPU minutes), the wheel 6, pytest 4.5. Building
-# the wheel needs about 1.7 GB of memory. CONTRIBUTING.md has a faster loop
-# for a single change.
+# (its 25 suites about 18 CPU minutes), the wheel 6, its install and pytest
+# 6. Building the wheel needs about 1.7 GB of memory. CONTRIBUTING.md has a
+# faster loop for a single change.
 #
 # BUILD_DIR (default build/tests), VENV (default build/venv), WHEEL_DIR
 # (default build/wheel), WHEEL_BUILD_DIR (default build/wheel-cmake, the
