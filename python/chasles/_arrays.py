@@ -126,11 +126,10 @@ def _with_scalars(kwargs: dict, scalars: int, flags: int = 0) -> dict:
 
 
 def _angles_and_flag(ufunc: np.ufunc, operands: tuple, kwargs: dict, return_gimbal_lock: bool) -> Any:
-    """Calls as_euler's `_lock` ufunc, whose second result is the gimbal lock
+    """Calls an as_euler `_lock` ufunc, whose second result is the gimbal lock
     flag (an out= array is the angles'; numpy makes the flags): returns the
     angles and the flags with return_gimbal_lock, else the angles, with
     scipy's UserWarning when a rotation is at the lock (SO3.as_euler's)."""
-    ufunc = getattr(_core, ufunc.__name__ + "_lock")
     kwargs = _with_scalars(kwargs, 1, 1)
     out = kwargs.get("out")
     if out is not None and not isinstance(out, tuple):
@@ -220,7 +219,7 @@ def so3_as_euler(
         array([ 0.3, -0.2,  0.1])
     """
     code = _euler_sequence(seq, "so3_as_euler") + np.intc(24 if degrees else 0)
-    return _angles_and_flag(_core._so3_as_euler, (R, code), kwargs, return_gimbal_lock)
+    return _angles_and_flag(_core._so3_as_euler_lock, (R, code), kwargs, return_gimbal_lock)
 
 
 def so3_from_rpy(rpy: ArrayLike, /, degrees: bool = False, **kwargs: Any) -> np.ndarray:
@@ -272,4 +271,4 @@ def so3_as_rpy(R: ArrayLike, /, degrees: bool = False, *, return_gimbal_lock: bo
         >>> np.round(chasles.so3_as_rpy(chasles.so3_from_rpy([0.1, 0.2, 0.3])), 12)
         array([0.1, 0.2, 0.3])
     """
-    return _angles_and_flag(_core._so3_as_rpy, (R, np.intc(1 if degrees else 0)), kwargs, return_gimbal_lock)
+    return _angles_and_flag(_core._so3_as_rpy_lock, (R, np.intc(1 if degrees else 0)), kwargs, return_gimbal_lock)
