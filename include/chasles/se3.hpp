@@ -11,11 +11,51 @@
 #include "chasles/detail/approx.hpp"
 #include "chasles/detail/arguments.hpp"
 #include "chasles/detail/series.hpp"
+#include "chasles/lie_group.hpp"
 #include "chasles/so3.hpp"
 #include "chasles/twist.hpp"
 #include "chasles/wrench.hpp"
 
 namespace chasles {
+
+namespace detail {
+
+/// Q(v, w), the upper-right block of the SE(3) left Jacobian (Sola eq. 180,
+/// Barfoot eq. 7.86), with V = [v], W = [w]:
+///   Q = 1/2 V + C (W V + V W + W V W) + q3 (W W V + V W W - 3 W V W)
+///         + q4 (W V W W + W W V W)
+/// (C, q3, q4 in detail/series.hpp; Sola writes q3 as -(1 - t/2 - cos)/t^2,
+/// the same number).
+template <typename Scalar>
+inline Eigen::Matrix<Scalar, 3, 3> se3_q(const Eigen::Matrix<Scalar, 3, 1>& v,
+                                         const Eigen::Matrix<Scalar, 3, 1>& w) noexcept {
+  using Matrix3 = Eigen::Matrix<Scalar, 3, 3>;
+  const QCoefficients<Scalar> k = q_coefficients(Scalar(w.squaredNorm()));
+  const Matrix3 V = SO3<Scalar>::hat(v);
+  const Matrix3 W = SO3<Scalar>::hat(w);
+  const Matrix3 WV = W * V;
+  const Matrix3 VW = V * W;
+  const Matrix3 WVW = WV * W;
+  const Matrix3 WWV = W * WV;
+  const Matrix3 VWW = VW * W;
+  const Matrix3 WVWW = WVW * W;
+  const Matrix3 WWVW = W * WVW;
+  return Scalar(0.5) * V + k.c * (WV + VW + WVW) + k.q3 * (WWV + VWW - Scalar(3) * WVW) + k.q4 * (WVWW + WWVW);
+}
+
+/// [[A, B], [0, A]] (6x6).
+template <typename Scalar>
+inline Eigen::Matrix<Scalar, 6, 6> upper_block_triangular(const Eigen::Matrix<Scalar, 3, 3>& A,
+                                                          const Eigen::Matrix<Scalar, 3, 3>& B) noexcept {
+  Eigen::Matrix<Scalar, 6, 6> J;
+  J.template topLeftCorner<3, 3>() = A;
+  J.template topRightCorner<3, 3>() = B;
+  J.template bottomLeftCorner<3, 3>().setZero();
+  J.template bottomRightCorner<3, 3>() = A;
+  return J;
+}
+
+}  // namespace detail
 
 /// A rigid motion of R^3: an element of SE(3), stored as a rotation R (an
 /// SO3) and a translation p. Its 4x4 matrix is g = [[R, p], [0, 1]].
@@ -38,6 +78,8 @@ class SE3 {
   using Matrix4 = Eigen::Matrix<Scalar, 4, 4>;
   using Matrix6 = Eigen::Matrix<Scalar, 6, 6>;
   using Rotation = SO3<Scalar>;
+  using Tangent = Vector6;        ///< the twist (v, w)
+  using AdjointMatrix = Matrix6;  ///< Ad_g, and the Jacobians
   static constexpr int DoF = 6;
 
   /// The identity motion.
@@ -116,6 +158,41 @@ class SE3 {
     const auto k = detail::v_inverse_coefficients(r.theta2, r.half_theta_cot, r.near_identity);
     const Vector3& w = r.omega;
     return detail::stack<Scalar>(k.e * p_ - Scalar(0.5) * w.cross(p_) + (k.d * w.dot(p_)) * w, w);
+  }
+
+  // ---- Jacobians of exp (Sola app. D and eq. 180, our (v, w) being Sola's (rho, theta)) ----
+
+  /// Left Jacobian: exp(xi + dxi) = exp(J_l dxi + o(dxi)) exp(xi),
+  ///   J_l(xi) = [[J_l(w), Q(v, w)], [0, J_l(w)]].
+  template <typename Derived>
+  static Matrix6 left_jacobian(const Eigen::MatrixBase<Derived>& xi) noexcept {
+    static_assert(Derived::IsVectorAtCompileTime && Derived::SizeAtCompileTime == 6, "xi is a 6-vector (v, w)");
+    const Vector3 v = xi.template head<3>(), w = xi.template tail<3>();
+    return detail::upper_block_triangular<Scalar>(Rotation::left_jacobian(w), detail::se3_q<Scalar>(v, w));
+  }
+  /// Right Jacobian: exp(xi + dxi) = exp(xi) exp(J_r dxi + o(dxi)),
+  ///   J_r(xi) = J_l(-xi) = [[J_r(w), Q(-v, -w)], [0, J_r(w)]].
+  template <typename Derived>
+  static Matrix6 right_jacobian(const Eigen::MatrixBase<Derived>& xi) noexcept {
+    static_assert(Derived::IsVectorAtCompileTime && Derived::SizeAtCompileTime == 6, "xi is a 6-vector (v, w)");
+    const Vector3 v = -xi.template head<3>(), w = -xi.template tail<3>();
+    return detail::upper_block_triangular<Scalar>(Rotation::left_jacobian(w), detail::se3_q<Scalar>(v, w));
+  }
+  /// J_l(xi)^-1 by the block formula [[J_l^-1, -J_l^-1 Q J_l^-1], [0, J_l^-1]],
+  /// J_l^-1 = J_l(w)^-1, Q = Q(v, w).
+  template <typename Derived>
+  static Matrix6 left_jacobian_inverse(const Eigen::MatrixBase<Derived>& xi) noexcept {
+    static_assert(Derived::IsVectorAtCompileTime && Derived::SizeAtCompileTime == 6, "xi is a 6-vector (v, w)");
+    const Vector3 v = xi.template head<3>(), w = xi.template tail<3>();
+    const Matrix3 Ji = Rotation::left_jacobian_inverse(w);
+    const Matrix3 QJi = detail::se3_q<Scalar>(v, w) * Ji;
+    return detail::upper_block_triangular<Scalar>(Ji, Matrix3(-(Ji * QJi)));
+  }
+  /// J_r(xi)^-1 = J_l(-xi)^-1.
+  template <typename Derived>
+  static Matrix6 right_jacobian_inverse(const Eigen::MatrixBase<Derived>& xi) noexcept {
+    static_assert(Derived::IsVectorAtCompileTime && Derived::SizeAtCompileTime == 6, "xi is a 6-vector (v, w)");
+    return left_jacobian_inverse(Vector6(-xi));
   }
 
   // ---- group operations -------------------------------------------------
@@ -249,19 +326,6 @@ class SE3 {
   Rotation R_;
   Vector3 p_;
 };
-
-/// Geodesic (screw) interpolation: a exp(t log(a^-1 b)); t = 0 gives a,
-/// t = 1 gives b, and the motion in between is one screw motion.
-template <typename Scalar>
-inline SE3<Scalar> interpolate(const SE3<Scalar>& a, const SE3<Scalar>& b, const Scalar& t) noexcept {
-  return a * SE3<Scalar>::exp(Eigen::Matrix<Scalar, 6, 1>(t * (a.inverse() * b).log()));
-}
-/// The same with t of another arithmetic type, converted to Scalar
-/// (interpolate(a, b, 0.5) for float motions).
-template <typename Scalar, typename T, detail::EnableIfOtherArithmetic<Scalar, T> = 0>
-inline SE3<Scalar> interpolate(const SE3<Scalar>& a, const SE3<Scalar>& b, const T& t) noexcept {
-  return interpolate(a, b, detail::scalar_of<Scalar>(t));
-}
 
 using SE3f = SE3<float>;
 using SE3d = SE3<double>;

@@ -15,6 +15,7 @@
 #include "chasles/detail/rodrigues.hpp"
 #include "chasles/detail/series.hpp"
 #include "chasles/detail/so3_log.hpp"
+#include "chasles/lie_group.hpp"
 
 namespace chasles {
 
@@ -44,6 +45,8 @@ class SO3 {
   using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
   using Matrix3 = Eigen::Matrix<Scalar, 3, 3>;
   using Quaternion = Eigen::Quaternion<Scalar>;
+  using Tangent = Vector3;        ///< the rotation vector w
+  using AdjointMatrix = Matrix3;  ///< Ad_R, and the Jacobians
   static constexpr int DoF = 3;
 
   /// The identity rotation.
@@ -134,6 +137,30 @@ class SO3 {
     if (!(m > Scalar(0))) return Scalar(0);  // the identity: no sqrt of 0
     const Scalar x = u.x / m, y = u.y / m, z = u.z / m;
     return Scalar(2) * atan2(m * sqrt(x * x + y * y + z * z), abs(u.w));
+  }
+
+  // ---- Jacobians of exp (Sola app. B; B, C, D in detail/series.hpp) -------
+
+  /// Right Jacobian: exp(w + dw) = exp(w) exp(J_r(w) dw + o(dw)),
+  ///   J_r(w) = I - B [w] + C [w]^2.
+  static Matrix3 right_jacobian(const Vector3& w) noexcept {
+    const auto k = detail::exp_coefficients(Scalar(w.squaredNorm()));
+    return detail::rodrigues<Scalar>(w, Scalar(-k.b), k.c);
+  }
+  /// Left Jacobian: exp(w + dw) = exp(J_l(w) dw + o(dw)) exp(w),
+  ///   J_l(w) = I + B [w] + C [w]^2 = J_r(-w) = V(w).
+  static Matrix3 left_jacobian(const Vector3& w) noexcept {
+    const auto k = detail::exp_coefficients(Scalar(w.squaredNorm()));
+    return detail::rodrigues<Scalar>(w, k.b, k.c);
+  }
+  /// J_r(w)^-1 = I + 1/2 [w] + D [w]^2,  D = (1 - (theta/2) cot(theta/2)) / theta^2;
+  /// finite for |w| < 2 pi, in particular at and near pi.
+  static Matrix3 right_jacobian_inverse(const Vector3& w) noexcept {
+    return detail::rodrigues<Scalar>(w, Scalar(0.5), detail::jacobian_inverse_coefficient(Scalar(w.squaredNorm())));
+  }
+  /// J_l(w)^-1 = I - 1/2 [w] + D [w]^2 = V(w)^-1.
+  static Matrix3 left_jacobian_inverse(const Vector3& w) noexcept {
+    return detail::rodrigues<Scalar>(w, Scalar(-0.5), detail::jacobian_inverse_coefficient(Scalar(w.squaredNorm())));
   }
 
   // ---- group operations -------------------------------------------------
@@ -252,18 +279,6 @@ class SO3 {
 
   Matrix3 R_;
 };
-
-/// Geodesic interpolation: a exp(t log(a^-1 b)); t = 0 gives a, t = 1 gives b.
-template <typename Scalar>
-inline SO3<Scalar> interpolate(const SO3<Scalar>& a, const SO3<Scalar>& b, const Scalar& t) noexcept {
-  return a * SO3<Scalar>::exp(t * (a.inverse() * b).log());
-}
-/// The same with t of another arithmetic type, converted to Scalar
-/// (interpolate(a, b, 0.5) for float rotations).
-template <typename Scalar, typename T, detail::EnableIfOtherArithmetic<Scalar, T> = 0>
-inline SO3<Scalar> interpolate(const SO3<Scalar>& a, const SO3<Scalar>& b, const T& t) noexcept {
-  return interpolate(a, b, detail::scalar_of<Scalar>(t));
-}
 
 using SO3f = SO3<float>;
 using SO3d = SO3<double>;
