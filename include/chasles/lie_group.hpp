@@ -39,8 +39,7 @@ namespace detail {
 template <typename G, typename = void>
 struct IsLieGroup : std::false_type {};
 template <typename G>
-struct IsLieGroup<G, std::void_t<typename G::Tangent, typename G::AdjointMatrix, decltype(G::DoF)>>
-    : std::true_type {};
+struct IsLieGroup<G, std::void_t<typename G::Tangent, typename G::AdjointMatrix, decltype(G::DoF)>> : std::true_type {};
 template <typename G>
 using EnableIfLieGroup = std::enable_if_t<IsLieGroup<G>::value, int>;
 

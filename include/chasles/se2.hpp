@@ -40,7 +40,8 @@ inline PlanarExp<Scalar> planar_exp(const Scalar& theta) noexcept {
     return {Scalar(1) - t * b_over, theta * a, a, theta * b_over};
   }
   const Scalar c = cos(theta), s = sin(theta);
-  const Scalar one_minus_c = c > Scalar(0) ? s * s / (Scalar(1) + c) : Scalar(1) - c;
+  Scalar one_minus_c = Scalar(1) - c;
+  if (c > Scalar(0)) one_minus_c = s * s / (Scalar(1) + c);
   return {c, s, s / theta, one_minus_c / theta};
 }
 
@@ -99,7 +100,7 @@ class SE2 {
   ///   V = [[a, -b], [b, a]],  a = sin(w) / w,  b = (1 - cos(w)) / w
   /// (Sola, Deray and Atchuthan 2018, app. C). One sincos (detail::planar_exp).
   static SE2 exp(const Tangent& xi) noexcept {
-    const auto k = detail::planar_exp(xi[2]);
+    const auto k = detail::planar_exp<Scalar>(xi[2]);
     return SE2(Rotation::from_complex_unchecked(k.c, k.s),
                Vector2(k.a * xi[0] - k.b * xi[1], k.b * xi[0] + k.a * xi[1]));
   }
@@ -221,8 +222,8 @@ class SE2 {
   /// J_l(sign * xi): [[V, u], [0, 1]].
   static Matrix3 jacobian(const Tangent& xi, const Scalar& sign) noexcept {
     const Scalar vx = sign * xi[0], vy = sign * xi[1], w = sign * xi[2];
-    const auto p = detail::planar_exp(w);
-    const auto k = detail::exp_coefficients(Scalar(w * w));
+    const auto p = detail::planar_exp<Scalar>(w);
+    const auto k = detail::exp_coefficients<Scalar>(Scalar(w * w));
     const Scalar cw = k.c * w;  // (w - sin w) / w^2
     Matrix3 J;
     J << p.a, -p.b, cw * vx + k.b * vy, p.b, p.a, cw * vy - k.b * vx, Scalar(0), Scalar(0), Scalar(1);
@@ -232,7 +233,7 @@ class SE2 {
   static Matrix3 jacobian_inverse(const Tangent& xi, const Scalar& sign) noexcept {
     const Scalar vx = sign * xi[0], vy = sign * xi[1], w = sign * xi[2];
     const Scalar t = w * w;
-    const auto k = detail::exp_coefficients(t);
+    const auto k = detail::exp_coefficients<Scalar>(t);
     const Scalar e = Scalar(1) - detail::jacobian_inverse_coefficient(t) * t, half = Scalar(0.5) * w;
     const Scalar cw = k.c * w;
     const Scalar ux = cw * vx + k.b * vy, uy = cw * vy - k.b * vx;

@@ -191,9 +191,7 @@ class SO2 {
   }
 
   /// max |R_this - R_other| <= tol (entries of the matrices). No `==`.
-  bool is_approx(const SO2& other, const Real& tol) const noexcept {
-    return detail::approx_equal(cs_, other.cs_, tol);
-  }
+  bool is_approx(const SO2& other, const Real& tol) const noexcept { return detail::approx_equal(cs_, other.cs_, tol); }
 
  private:
   struct Unchecked {};

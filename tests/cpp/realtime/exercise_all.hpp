@@ -18,6 +18,41 @@
 
 namespace chasles_test {
 
+/// Every operation a group has (its class, and lie_group.hpp's generic
+/// functions) for the elements exp(x) and exp(y), and the series branch at
+/// exp(x * 1e-9); returns a checksum.
+template <typename G>
+typename G::Scalar exercise_group(const typename G::Tangent& x, const typename G::Tangent& y) noexcept {
+  using namespace chasles;
+  using S = typename G::Scalar;
+  using T = typename G::Tangent;
+  const G g = G::exp(x), h = G::exp(y), e = G::identity(), tiny = G::exp(T(x * S(1e-9)));
+  S sum = g.log().sum() + tiny.log().sum() + G::hat(x).sum() + G::vee(G::hat(x)).sum() + G::ad(x).sum();
+  sum += (g * h).matrix().sum() + g.inverse().matrix().sum() + g.adjoint().sum() + e.matrix().sum();
+  G m = g;
+  m *= h;
+  sum += m.matrix().sum() + G().matrix().sum();
+  const auto checked = G::from_matrix(g.matrix());
+  sum += checked ? checked->matrix().sum() : S(0);
+  sum += G::from_matrix_unchecked(g.matrix()).matrix().sum();
+  sum += G::from_matrix_projected(g.matrix() * S(1.01)).matrix().sum();
+  sum += g.normalized().matrix().sum() + g.template cast<S>().matrix().sum();
+  sum += S(g.is_approx(h, RealOf<S>(1e-6)) ? 1 : 0);
+  sum += G::right_jacobian(x).sum() + G::left_jacobian(x).sum() + G::right_jacobian(T::Zero()).sum();
+  sum += G::right_jacobian_inverse(x).sum() + G::left_jacobian_inverse(x).sum();
+  sum += G::left_jacobian_inverse(T::Zero()).sum();
+  sum += rplus(g, y).matrix().sum() + rminus(g, h).sum() + lplus(y, g).matrix().sum() + lminus(g, h).sum();
+  sum += rplus(g, T(y * S(0.5))).matrix().sum() + between(g, h).matrix().sum();
+  sum += interpolate(g, h, S(0.3)).matrix().sum() + interpolate(g, h, 0.25).matrix().sum();
+  sum += interpolate_jacobian_t(g, h, S(0.3)).sum() + log_jacobian(g).sum() + inverse_jacobian(g).sum();
+  const auto c = compose_jacobians(g, h);
+  const auto rp = rplus_jacobians(g, y), rm = rminus_jacobians(g, h);
+  const auto lp = lplus_jacobians(y, g), lm = lminus_jacobians(g, h), bt = between_jacobians(g, h);
+  sum += c.lhs.sum() + c.rhs.sum() + rp.lhs.sum() + rp.rhs.sum() + rm.lhs.sum() + rm.rhs.sum();
+  sum += lp.lhs.sum() + lp.rhs.sum() + lm.lhs.sum() + lm.rhs.sum() + bt.lhs.sum() + bt.rhs.sum();
+  return sum;
+}
+
 /// Every public operation of every class for one Scalar; returns a checksum
 /// so that nothing is optimized away.
 template <typename S>
@@ -118,6 +153,21 @@ S exercise_all() noexcept {
   sum += Wrench<S>::from_screw(fs).vector().sum() + Wrench<S>::from_screw(p, w, S(0.2), S(2)).vector().sum();
   sum += (F + F2 - F * S(2) + S(3) * (-F)).vector().sum() + F.template cast<S>().vector().sum();
   sum += S(F.is_approx(F2, RealOf<S>(1e-6)) ? 1 : 0);
+
+  // SO(2) and SE(2): the generic operations, and what only they have.
+  using V2 = Eigen::Matrix<S, 2, 1>;
+  using T1 = Eigen::Matrix<S, 1, 1>;
+  sum += exercise_group<SO2<S>>(T1(S(0.7)), T1(S(-3.1))) + exercise_group<SE2<S>>(p, w);
+  const SO2<S> r2 = SO2<S>::exp(S(0.4));
+  const SE2<S> g2 = SE2<S>::exp(w);
+  sum += r2.angle() + r2.complex().sum() + r2.act(V2(p.template head<2>())).sum() + (r2 * V2(S(1), S(2))).sum();
+  sum += SO2<S>::from_complex(S(3), S(4)).angle() + SO2<S>::from_complex_unchecked(S(1), S(0)).angle();
+  sum += g2.act(V2(S(1), S(2))).sum() + (g2 * V2(S(1), S(2))).sum() + g2.rotation().angle();
+  sum += g2.translation().sum() + SE2<S>(r2, V2(S(1), S(2))).matrix().sum() + SO2<S>::rotation_defect(r2.matrix());
+  sum += SE2<S>::transform_defect(g2.matrix());
+  const auto a1 = act_jacobians(r2, V2(S(1), S(2)));
+  const auto a2 = act_jacobians(g2, V2(S(1), S(2)));
+  sum += a1.group.sum() + a1.point.sum() + a2.group.sum() + a2.point.sum();
 
   // Jacobians and plus / minus (jacobians.hpp), including the series branches.
   const V3 w0 = V3::Zero(), wpi(S(3.14159), S(0), S(0));

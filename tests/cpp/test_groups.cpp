@@ -1,0 +1,350 @@
+// The groups written on lie_group.hpp's generic layer (SO2, SE2), as one
+// typed suite over {group} x {float, double}, against oracles independent of
+// the code under test:
+// - exp against the matrix exponential of the hat matrix, summed in long
+//   double (Taylor series after scaling, then squaring);
+// - log against exp: log(exp(x)) = x inside the principal range, and
+//   exp(log(g)) = g everywhere (angle pi included);
+// - every Jacobian (of exp and its inverse, of log, inverse, compose, rplus,
+//   rminus, lplus, lminus, between, the action) against central finite
+//   differences of its defining identity, taken on the long double group
+//   (step 1e-6: truncation 1e-12, rounding 1e-13);
+// - the group laws on the long double matrices, and the algebra's bracket
+//   against the commutator of the hat matrices.
+// Tolerances are k * eps of the scalar under test times the data's scale
+// (support/group_traits.hpp's `near`): kOp = 8 for one operation,
+// kExp = 16 for exp, log and their round trips, kFd = 1e-9 / eps
+// (absolute 1e-9 in double) for a Jacobian against finite differences.
+#include <cmath>
+#include <random>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <Eigen/Core>
+#include <unsupported/Eigen/AutoDiff>
+
+#include <chasles/chasles.hpp>
+
+#include "support/group_traits.hpp"
+
+namespace {
+
+using namespace chasles_test;
+using chasles::SE2;
+using chasles::SO2;
+
+constexpr LD kOp = 8;
+constexpr LD kExp = 16;
+
+/// What the suite needs of a group beyond the generic interface: its
+/// samples, its point size and the rotation angle of a tangent.
+template <typename G>
+struct Planar;
+
+template <typename S>
+struct Planar<SO2<S>> {
+  static constexpr int kPoint = 2;
+  using Tangent = Eigen::Matrix<S, 1, 1>;
+  static LD angle(const Tangent& x) { return std::fabs(static_cast<LD>(x[0])); }
+  static LD scale(const Tangent&) { return 1; }
+  static std::vector<Tangent> tangents() {
+    std::vector<Tangent> out;
+    const LD pi = kPi;
+    const LD special[] = {0, 1e-30L, 1e-12L, 1e-8L, 1e-4L, 0.1L, 1, pi / 2, pi - 1e-4L, pi - 1e-6L, pi, 4, 10};
+    for (LD a : special) {
+      out.push_back(Tangent(S(a)));
+      out.push_back(Tangent(S(-a)));
+    }
+    // Both sides of the series' cutoff, one ulp apart (constants.hpp).
+    const S cut = std::sqrt(chasles::Thresholds<S>::taylor_theta2);
+    out.push_back(Tangent(std::nextafter(cut, S(0))));
+    out.push_back(Tangent(std::nextafter(cut, S(1))));
+    std::mt19937_64 rng(kSeed);
+    std::uniform_real_distribution<double> u(-double(kPi), double(kPi));
+    for (int i = 0; i < 32; ++i) out.push_back(Tangent(S(u(rng))));
+    return out;
+  }
+};
+
+template <typename S>
+struct Planar<SE2<S>> {
+  static constexpr int kPoint = 2;
+  using Tangent = Eigen::Matrix<S, 3, 1>;
+  static LD angle(const Tangent& x) { return std::fabs(static_cast<LD>(x[2])); }
+  static LD scale(const Tangent& x) { return std::max(LD(1), max_abs(x)); }
+  static std::vector<Tangent> tangents() {
+    std::vector<Tangent> out;
+    std::mt19937_64 rng(kSeed + 1);
+    std::normal_distribution<double> n(0.0, 1.0);
+    const S sizes[] = {S(0), S(1e-6), S(1), S(100)};
+    int k = 0;
+    for (const auto& w : Planar<SO2<S>>::tangents()) {
+      Eigen::Vector2d v(n(rng), n(rng));
+      v = v.normalized() * double(sizes[k++ % 4]);
+      out.push_back(Tangent(S(v[0]), S(v[1]), w[0]));
+    }
+    out.push_back(Tangent(S(3), S(-4), S(0)));
+    return out;
+  }
+};
+
+/// exp(X) of a square long double matrix: Taylor series of X / 2^s (|X / 2^s|
+/// <= 1/2, 30 terms: far below long double's rounding), squared s times.
+template <int N>
+Eigen::Matrix<LD, N, N> expm(const Eigen::Matrix<LD, N, N>& X) {
+  int s = 0;
+  LD norm = X.cwiseAbs().rowwise().sum().maxCoeff();
+  while (norm > LD(0.5)) {
+    norm /= 2;
+    ++s;
+  }
+  const Eigen::Matrix<LD, N, N> A = X / std::ldexp(LD(1), s);
+  Eigen::Matrix<LD, N, N> E = Eigen::Matrix<LD, N, N>::Identity(), term = E;
+  for (int k = 1; k < 30; ++k) {
+    term = term * A / LD(k);
+    E += term;
+  }
+  for (int i = 0; i < s; ++i) E = E * E;
+  return E;
+}
+
+template <typename G>
+class Groups : public ::testing::Test {
+ public:
+  using S = typename G::Scalar;
+  using P = Planar<G>;
+  using Tangent = typename G::Tangent;
+  using GL = decltype(std::declval<G>().template cast<LD>());  // the same group over long double
+  using TL = typename GL::Tangent;
+  static constexpr int D = G::DoF;
+  std::vector<Tangent> xs = P::tangents();
+
+  static GL ld(const G& g) { return g.template cast<LD>(); }
+  /// Central differences, on the long double group, of the map d -> f(d) (a
+  /// tangent of the result), d along each tangent axis.
+  template <typename F>
+  static Eigen::Matrix<LD, Eigen::Dynamic, Eigen::Dynamic> fd(int rows, F f) {
+    const LD h = 1e-6L;
+    Eigen::Matrix<LD, Eigen::Dynamic, Eigen::Dynamic> J(rows, D);
+    for (int i = 0; i < D; ++i) {
+      TL d = TL::Zero();
+      d[i] = h;
+      J.col(i) = (f(d) - f(TL(-d))) / (2 * h);
+    }
+    return J;
+  }
+  /// Tolerance of a Jacobian against differences: 1e-9 absolute in double
+  /// (the differences' own error is about 1e-12), 1e3 eps in float.
+  static LD fd_k() { return std::is_same<S, float>::value ? LD(1e3) : LD(1e-9) / eps<S>(); }
+};
+
+struct Name {
+  template <typename G>
+  static std::string GetName(int) {
+    using S = typename G::Scalar;
+    const std::string n = std::is_same<G, SO2<S>>::value ? "SO2" : "SE2";
+    return n + (std::is_same<S, float>::value ? "f" : "d");
+  }
+};
+
+using Types = ::testing::Types<SO2<float>, SO2<double>, SE2<float>, SE2<double>>;
+TYPED_TEST_SUITE(Groups, Types, Name);
+
+TYPED_TEST(Groups, ExpIsTheMatrixExponentialOfHat) {
+  using S = typename TestFixture::S;
+  for (const auto& x : this->xs) {
+    const auto X = to_ld(TypeParam::hat(x));
+    EXPECT_TRUE(near<S>(TypeParam::exp(x).matrix(), expm(X), kExp, TestFixture::P::scale(x))) << x.transpose();
+  }
+}
+
+TYPED_TEST(Groups, LogInvertsExp) {
+  using S = typename TestFixture::S;
+  for (const auto& x : this->xs) {
+    const TypeParam g = TypeParam::exp(x);
+    // exp(log(g)) = g for every g, the angle pi included (either branch).
+    EXPECT_TRUE(near<S>(TypeParam::exp(g.log()).matrix(), g.matrix(), kExp, TestFixture::P::scale(x))) << x.transpose();
+    // log(exp(x)) = x in the principal range, away from pi by more than the
+    // rounding of the angle (either branch is right there).
+    if (TestFixture::P::angle(x) < LD(kPi) - 16 * eps<S>() * 4) {
+      EXPECT_TRUE(near<S>(g.log(), x, kExp, TestFixture::P::scale(x))) << x.transpose();
+    }
+  }
+  // At pi exactly (the rotation matrix [[-1, 0], [0, -1]]) the angle is pi, never NaN.
+  const auto M = TypeParam::exp(this->xs[0]).matrix();
+  auto Mpi = M;
+  Mpi.template topLeftCorner<2, 2>() = -Eigen::Matrix<S, 2, 2>::Identity();
+  const auto w = TypeParam::from_matrix_unchecked(Mpi).log();
+  EXPECT_EQ(std::fabs(w[TestFixture::D - 1]), S(kPi));
+}
+
+TYPED_TEST(Groups, GroupLawsOnTheMatrices) {
+  using S = typename TestFixture::S;
+  const auto& xs = this->xs;
+  for (std::size_t i = 0; i < xs.size(); ++i) {
+    const TypeParam a = TypeParam::exp(xs[i]), b = TypeParam::exp(xs[(7 * i + 3) % xs.size()]);
+    const LD scale = TestFixture::P::scale(xs[i]) + TestFixture::P::scale(xs[(7 * i + 3) % xs.size()]);
+    EXPECT_TRUE(near<S>((a * b).matrix(), to_ld(a.matrix()) * to_ld(b.matrix()), kOp, scale));
+    EXPECT_TRUE(near<S>(a.inverse().matrix(), to_ld(a.matrix()).inverse(), kOp, scale));
+    EXPECT_TRUE(near<S>((a * a.inverse()).matrix(), decltype(to_ld(a.matrix()))::Identity(), kOp, scale));
+    // Ad: a exp(y) a^-1 = exp(Ad_a y), on the matrices.
+    const auto& y = xs[(11 * i + 2) % xs.size()];
+    if (TestFixture::P::scale(y) < 10) {
+      const auto lhs = to_ld(a.matrix()) * expm(to_ld(TypeParam::hat(y))) * to_ld(a.matrix()).inverse();
+      EXPECT_TRUE(
+          near<S>(TypeParam::exp(typename TypeParam::Tangent(a.adjoint() * y)).matrix(), lhs, 4 * kExp, scale * scale));
+    }
+    // ad(x) y = vee([hat x, hat y]); vee(hat(x)) = x.
+    const auto X = to_ld(TypeParam::hat(xs[i])), Y = to_ld(TypeParam::hat(y));
+    const auto C = (X * Y - Y * X).eval();
+    EXPECT_TRUE(near<S>(TypeParam::ad(xs[i]) * y, TypeParam::vee(C.template cast<S>()), kOp, scale * scale));
+    EXPECT_TRUE((TypeParam::vee(TypeParam::hat(xs[i])).array() == xs[i].array()).all());
+    // The action: the matrix on the homogeneous point (or the point).
+    const Eigen::Matrix<S, 2, 1> p(S(0.3), S(-1.7));
+    Eigen::Matrix<LD, TypeParam::DoF == 1 ? 2 : 3, 1> hp;
+    hp.template head<2>() = to_ld(p);
+    if constexpr (TypeParam::DoF == 3) hp[2] = 1;
+    const auto q = (to_ld(a.matrix()) * hp).eval();
+    EXPECT_TRUE(near<S>(a.act(p), q.template head<2>(), kOp, scale));
+  }
+}
+
+TYPED_TEST(Groups, JacobiansOfExpAgainstDifferences) {
+  using S = typename TestFixture::S;
+  using GL = typename TestFixture::GL;
+  using TL = typename TestFixture::TL;
+  constexpr int D = TestFixture::D;
+  for (const auto& x : this->xs) {
+    if (TestFixture::P::angle(x) > 3 || TestFixture::P::scale(x) > 10) continue;  // J^-1 grows near 2 pi
+    const TL xl = x.template cast<LD>();
+    const GL g = GL::exp(xl);
+    const auto Jr = TestFixture::fd(D, [&](const TL& d) { return TL(rminus(GL::exp(TL(xl + d)), g)); });
+    const auto Jl = TestFixture::fd(D, [&](const TL& d) { return TL(lminus(GL::exp(TL(xl + d)), g)); });
+    EXPECT_TRUE(near<S>(TypeParam::right_jacobian(x), Jr, TestFixture::fd_k())) << x.transpose();
+    EXPECT_TRUE(near<S>(TypeParam::left_jacobian(x), Jl, TestFixture::fd_k())) << x.transpose();
+    const auto I = Eigen::Matrix<LD, D, D>::Identity();
+    EXPECT_TRUE(near<S>(to_ld(TypeParam::right_jacobian(x)) * to_ld(TypeParam::right_jacobian_inverse(x)), I, kExp));
+    EXPECT_TRUE(near<S>(to_ld(TypeParam::left_jacobian(x)) * to_ld(TypeParam::left_jacobian_inverse(x)), I, kExp));
+  }
+}
+
+TYPED_TEST(Groups, JacobiansOfTheOperationsAgainstDifferences) {
+  using S = typename TestFixture::S;
+  using GL = typename TestFixture::GL;
+  using TL = typename TestFixture::TL;
+  constexpr int D = TestFixture::D;
+  const auto& xs = this->xs;
+  for (std::size_t i = 0; i < xs.size(); ++i) {
+    const auto &x = xs[i], &y = xs[(5 * i + 1) % xs.size()];
+    if (TestFixture::P::angle(x) > 2.5 || TestFixture::P::angle(y) > 2.5 || TestFixture::P::scale(x) > 10 ||
+        TestFixture::P::scale(y) > 10)
+      continue;
+    const TypeParam a = TypeParam::exp(x), b = TypeParam::exp(y);
+    const GL al = TestFixture::ld(a), bl = TestFixture::ld(b);
+    const TL yl = y.template cast<LD>();
+    const auto k = TestFixture::fd_k();
+    const std::string at = "at x = " + std::to_string(double(x[D - 1])) + ", y = " + std::to_string(double(y[D - 1]));
+    auto same = [&](const auto& J, const auto& ref, const char* what) {
+      EXPECT_TRUE(near<S>(J, ref, k)) << what << " " << at;
+    };
+    same(log_jacobian(a), TestFixture::fd(D, [&](const TL& d) { return TL(rplus(al, d).log() - al.log()); }), "log");
+    same(inverse_jacobian(a),
+         TestFixture::fd(D, [&](const TL& d) { return TL(rminus(rplus(al, d).inverse(), al.inverse())); }), "inverse");
+    const auto cj = compose_jacobians(a, b);
+    same(cj.lhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(rplus(al, d) * bl, al * bl)); }), "compose a");
+    same(cj.rhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(al * rplus(bl, d), al * bl)); }), "compose b");
+    const auto rp = rplus_jacobians(a, y);
+    same(rp.lhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(rplus(rplus(al, d), yl), rplus(al, yl))); }),
+         "rplus g");
+    same(rp.rhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(rplus(al, TL(yl + d)), rplus(al, yl))); }),
+         "rplus xi");
+    const auto rm = rminus_jacobians(a, b);
+    same(rm.lhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(rplus(al, d), bl) - rminus(al, bl)); }),
+         "rminus g");
+    same(rm.rhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(al, rplus(bl, d)) - rminus(al, bl)); }),
+         "rminus h");
+    const auto lp = lplus_jacobians(y, a);
+    same(lp.lhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(lplus(TL(yl + d), al), lplus(yl, al))); }),
+         "lplus xi");
+    same(lp.rhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(lplus(yl, rplus(al, d)), lplus(yl, al))); }),
+         "lplus g");
+    const auto lm = lminus_jacobians(a, b);
+    same(lm.lhs, TestFixture::fd(D, [&](const TL& d) { return TL(lminus(rplus(al, d), bl) - lminus(al, bl)); }),
+         "lminus g");
+    same(lm.rhs, TestFixture::fd(D, [&](const TL& d) { return TL(lminus(al, rplus(bl, d)) - lminus(al, bl)); }),
+         "lminus h");
+    const auto bj = between_jacobians(a, b);
+    same(bj.lhs,
+         TestFixture::fd(D, [&](const TL& d) { return TL(rminus(between(rplus(al, d), bl), between(al, bl))); }),
+         "between a");
+    same(bj.rhs,
+         TestFixture::fd(D, [&](const TL& d) { return TL(rminus(between(al, rplus(bl, d)), between(al, bl))); }),
+         "between b");
+    const Eigen::Matrix<LD, 2, 1> p(0.3L, -1.7L);
+    const auto aj = act_jacobians(a, Eigen::Matrix<S, 2, 1>(p.template cast<S>()));
+    same(aj.group, TestFixture::fd(2, [&](const TL& d) { return Eigen::Matrix<LD, 2, 1>(rplus(al, d).act(p)); }),
+         "act g");
+    same(aj.point, to_ld(a.matrix().template topLeftCorner<2, 2>()), "act p");
+    EXPECT_TRUE(near<S>(interpolate_jacobian_t(a, b, S(0.3)), rminus(b, a), 0)) << at;
+  }
+}
+
+TYPED_TEST(Groups, ConstructionFromMatrices) {
+  using S = typename TestFixture::S;
+  using M = decltype(TypeParam().matrix());
+  for (const auto& x : this->xs) {
+    const TypeParam g = TypeParam::exp(x);
+    const M m = g.matrix();
+    // A group element's own matrix passes the check and comes back exactly.
+    ASSERT_TRUE(TypeParam::from_matrix(m).has_value());
+    EXPECT_TRUE((TypeParam::from_matrix(m)->matrix().array() == m.array()).all());
+    // Noise of 1e-3 on the rotation block: refused, and projected back to within it.
+    M noisy = m;
+    noisy.template topLeftCorner<2, 2>() += Eigen::Matrix<S, 2, 2>(Eigen::Matrix<S, 2, 2>::Constant(S(1e-3)));
+    EXPECT_FALSE(TypeParam::from_matrix(noisy).has_value());
+    EXPECT_TRUE(TypeParam::from_matrix_projected(noisy).is_approx(g, S(3e-3)));
+    EXPECT_TRUE(TypeParam::from_matrix_projected(noisy).normalized().is_approx(
+        TypeParam::from_matrix_projected(noisy), S(8) * std::numeric_limits<S>::epsilon()));
+    // A reflection is no rotation.
+    M reflected = m;
+    reflected.row(0) = -reflected.row(0);
+    EXPECT_FALSE(TypeParam::from_matrix(reflected).has_value());
+  }
+  M bad = TypeParam().matrix();
+  bad(0, 0) = S(NAN);
+  EXPECT_FALSE(TypeParam::from_matrix(bad).has_value());
+  EXPECT_TRUE(TypeParam::from_matrix_projected(bad).is_approx(TypeParam(), 0));
+}
+
+TYPED_TEST(Groups, AutodiffDerivativesAtTheIdentityAreExact) {
+  // d exp(x) / dx_i at x = 0 is hat(e_i) exactly: the series branch, no 0/0.
+  using S = typename TestFixture::S;
+  constexpr int D = TestFixture::D;
+  using AD = Eigen::AutoDiffScalar<Eigen::Matrix<S, D, 1>>;
+  using GA = decltype(std::declval<TypeParam>().template cast<AD>());
+  typename GA::Tangent x;
+  for (int i = 0; i < D; ++i) x[i] = AD(S(0), D, i);
+  const auto E = GA::exp(x).matrix();
+  const auto w = GA::exp(x).log();
+  for (int i = 0; i < D; ++i) {
+    typename TypeParam::Tangent e = TypeParam::Tangent::Zero();
+    e[i] = S(1);
+    const auto H = TypeParam::hat(e);
+    for (int r = 0; r < H.rows(); ++r)
+      for (int c = 0; c < H.cols(); ++c) EXPECT_EQ(E(r, c).derivatives()[i], H(r, c)) << r << "," << c;
+    for (int j = 0; j < D; ++j) EXPECT_EQ(w[j].derivatives()[i], S(i == j ? 1 : 0));
+  }
+}
+
+TEST(SO2, StoresTheUnitComplexNumber) {
+  const SO2<double> r = SO2<double>::exp(0.3);
+  EXPECT_EQ(r.complex()[0], std::cos(0.3));
+  EXPECT_EQ(r.complex()[1], std::sin(0.3));
+  EXPECT_EQ(SO2<double>::from_complex(3e-300, 4e-300).complex()[0], 0.6);
+  EXPECT_EQ(SO2<double>::from_complex(0, 0).complex()[0], 1.0);
+  EXPECT_NEAR(SO2<double>::from_complex(3e300, -4e300).angle(), std::atan2(-4.0, 3.0), 2.3e-16);
+}
+
+}  // namespace
