@@ -1,4 +1,4 @@
-// chasles._core: the array functions (so3_*, se3_*) as numpy generalized
+// chasles._core: the array functions (so2_*, se2_*, so3_*, se3_*) as numpy generalized
 // ufuncs.
 //
 // Each function is its kernel, a generic lambda that calls the chasles C++
@@ -10,7 +10,9 @@
 #include <string>
 #include <type_traits>
 
+#include <chasles/se2.hpp>
 #include <chasles/se3.hpp>
+#include <chasles/so2.hpp>
 #include <chasles/so3.hpp>
 #include <chasles/twist.hpp>
 #include <chasles/wrench.hpp>
@@ -31,6 +33,10 @@ template <typename T>
 using SO3 = chasles::SO3<T>;
 template <typename T>
 using SE3 = chasles::SE3<T>;
+template <typename T>
+using SO2 = chasles::SO2<T>;
+template <typename T>
+using SE2 = chasles::SE2<T>;
 
 /// so3_from_quat's kernel for one quaternion order: q as given (any nonzero
 /// norm, normalized by the C++ API); a zero or non-finite quaternion has no
@@ -87,17 +93,18 @@ Args:
 Returns:
     numpy.ndarray of shape (..., 4): the quaternions.)";
 
-// ---- what SO(3) and SE(3) share --------------------------------------------
+// ---- what the groups share -----------------------------------------------
 
 /// What a group's array functions take and say: the matrix size N, the
-/// tangent size D, the names (the ufunc keeps the pointer: literals), and
+/// tangent size D (a tangent of size 1, SO(2)'s angle, is a scalar: core
+/// shape ()), the point size P, the names (the ufunc keeps the pointer: literals), and
 /// the group's own sentences; the rest of each docstring is shared.
 template <template <typename> class Group>
 struct Batch;
 
 template <>
 struct Batch<SO3> {
-  static constexpr int N = 3, D = 3;
+  static constexpr int N = 3, D = 3, P = 3;
   static constexpr const char* names[9] = {"so3_exp", "so3_log", "so3_compose",     "so3_inverse",  "so3_act",
                                            "so3_hat", "so3_vee", "so3_interpolate", "so3_normalize"};
   static constexpr const char *element = "R", *tangent = "w", *matrices = "rotation matrices",
@@ -173,7 +180,7 @@ Returns:
 
 template <>
 struct Batch<SE3> {
-  static constexpr int N = 4, D = 6;
+  static constexpr int N = 4, D = 6, P = 3;
   static constexpr const char* names[9] = {"se3_exp", "se3_log", "se3_compose",     "se3_inverse",  "se3_act",
                                            "se3_hat", "se3_vee", "se3_interpolate", "se3_normalize"};
   static constexpr const char
@@ -241,6 +248,148 @@ Returns:
   }
 };
 
+template <>
+struct Batch<SO2> {
+  static constexpr int N = 2, D = 1, P = 2;
+  static constexpr const char* names[9] = {"so2_exp", "so2_log", "so2_compose",     "so2_inverse",  "so2_act",
+                                           "so2_hat", "so2_vee", "so2_interpolate", "so2_normalize"};
+  static constexpr const char *element = "R", *tangent = "theta", *matrices = "rotation matrices [[c, -s], [s, c]]",
+                              *compose = "Composition of plane rotations: a @ b (R_ac = R_ab R_bc).",
+                              *inverse = "Inverse plane rotations: R^-1 = R^T.", *acted = "points or vectors",
+                              *act = "Rotated points or vectors of the plane: p_a = R_ab p_b.", *one = "rotation",
+                              *moved = "rotated",
+                              *product = ", the batch shape being\n    the broadcast of a's and b's.",
+                              *interpolate = "Geodesic interpolation of plane rotations",
+                              *between = "constant angular velocity", *interpolated = "rotations";
+  static constexpr const char* exp = R"(Plane rotation matrices of angles: R = exp(theta) = [[c, -s], [s, c]].
+
+One sincos per angle, exact to the libm's rounding for every theta.
+
+Args:
+    theta: array_like of shape (...): angles in radians.
+
+Returns:
+    numpy.ndarray of shape (..., 2, 2): the rotation matrices.)";
+  static constexpr const char* log = R"(Angles of plane rotation matrices: theta = atan2(s, c) in [-pi, pi].
+
+(c, s) = ((R00 + R11) / 2, (R10 - R01) / 2); atan2 is accurate to an ulp
+over the whole range, and reads only the direction of (c, s).
+
+Args:
+    R: array_like of shape (..., 2, 2): rotation matrices.
+
+Returns:
+    numpy.ndarray of shape (...): the angles, radians.)";
+  static constexpr const char* hat = R"(Skew-symmetric 2x2 matrices of angles: hat(theta) = [[0, -theta], [theta, 0]].
+
+Args:
+    theta: array_like of shape (...): elements of so(2).
+
+Returns:
+    numpy.ndarray of shape (..., 2, 2): the matrices.)";
+  static constexpr const char* vee = R"(The angles of skew-symmetric 2x2 matrices: vee(W) = (W10 - W01) / 2.
+
+Args:
+    matrix: array_like of shape (..., 2, 2).
+
+Returns:
+    numpy.ndarray of shape (...): the angles.)";
+  static constexpr const char* normalize = R"(The nearest plane rotation matrices: SO2.normalized() over a batch.
+
+The rotation maximizing tr(R^T M): (c, s) along (M00 + M11, M10 - M01).
+Non-finite matrices give NaN.
+
+Args:
+    R: array_like of shape (..., 2, 2): matrices.
+
+Returns:
+    numpy.ndarray of shape (..., 2, 2): the rotation matrices.)";
+  template <typename T>
+  static Eigen::Matrix<T, 2, 2> stored(const SO2<T>& R) noexcept {
+    return R.matrix();
+  }
+};
+
+template <>
+struct Batch<SE2> {
+  static constexpr int N = 3, D = 3, P = 2;
+  static constexpr const char* names[9] = {"se2_exp", "se2_log", "se2_compose",     "se2_inverse",  "se2_act",
+                                           "se2_hat", "se2_vee", "se2_interpolate", "se2_normalize"};
+  static constexpr const char *element = "g", *tangent = "xi", *matrices = "homogeneous matrices [[R, t], [0, 1]]",
+                              *compose = "Composition of rigid motions of the plane: a @ b (g_ac = g_ab g_bc).",
+                              *inverse = "Inverse rigid motions of the plane: g^-1 = [[R^T, -R^T t], [0, 1]].",
+                              *acted = "points", *act = "Transformed points of the plane: q_a = R_ab q_b + t_ab.",
+                              *one = "pose", *moved = "transformed",
+                              *product = ", the batch shape being\n    the broadcast of a's and b's.",
+                              *interpolate = "Screw interpolation of rigid motions of the plane",
+                              *between = "one rotation about a fixed point (or one translation)",
+                              *interpolated = "motions";
+  static constexpr const char* exp = R"(Rigid motions of the plane of twists: g = exp([xi]) (3x3).
+
+Twist order xi = (vx, vy, w), linear part first. R = exp(w), t = V v with
+V = [[a, -b], [b, a]], a = sin(w) / w, b = (1 - cos(w)) / w: one sincos,
+series below the cutoff, a few ulps for every xi.
+
+Args:
+    xi: array_like of shape (..., 3): twists (vx, vy, w).
+
+Returns:
+    numpy.ndarray of shape (..., 3, 3): the matrices [[R, t], [0, 1]].)";
+  static constexpr const char* log = R"(Twists of rigid motions of the plane: xi = log(g)^vee = (vx, vy, w).
+
+w = atan2(s, c) in [-pi, pi]; v = V^-1 t with V^-1 = [[e, w/2], [-w/2, e]],
+e = (w/2) cot(w/2), without cancellation near 0 or near pi.
+
+Args:
+    g: array_like of shape (..., 3, 3): matrices [[R, t], [0, 1]].
+
+Returns:
+    numpy.ndarray of shape (..., 3): the twists (vx, vy, w).)";
+  static constexpr const char* hat = R"(Matrices of planar twists: [xi] = [[0, -w, vx], [w, 0, vy], [0, 0, 0]].
+
+Args:
+    xi: array_like of shape (..., 3): twists (vx, vy, w).
+
+Returns:
+    numpy.ndarray of shape (..., 3, 3): the matrices [xi].)";
+  static constexpr const char* vee = R"(Twists of 3x3 matrices: [xi]^vee = (vx, vy, w).
+
+(vx, vy) is the last column's top, w the antisymmetric part of the top-left
+block; the bottom row is not read.
+
+Args:
+    matrix: array_like of shape (..., 3, 3).
+
+Returns:
+    numpy.ndarray of shape (..., 3): the twists (vx, vy, w).)";
+  static constexpr const char* normalize =
+      R"(Homogeneous matrices with the nearest rotation: SE2.normalized() over a batch.
+
+The top-left block becomes the nearest rotation (so2_normalize), the
+translation is kept and the bottom row becomes (0, 0, 1). Non-finite
+matrices give NaN.
+
+Args:
+    g: array_like of shape (..., 3, 3): matrices.
+
+Returns:
+    numpy.ndarray of shape (..., 3, 3): the homogeneous matrices.)";
+  template <typename T>
+  static Eigen::Matrix<T, 3, 3> stored(const SE2<T>& g) noexcept {
+    return g.matrix();
+  }
+};
+
+/// A tangent as a ufunc result: SO(2)'s angle as a scalar, others as they are.
+template <typename V>
+auto tangent_out(const V& x) noexcept {
+  if constexpr (V::SizeAtCompileTime == 1) {
+    return x[0];
+  } else {
+    return x;
+  }
+}
+
 /// The element of G (over the matrix's scalar) of a matrix, taken as given.
 template <template <typename> class Group, typename M>
 Group<ScalarOf<M>> element_of(const M& m) noexcept {
@@ -251,14 +400,17 @@ Group<ScalarOf<M>> element_of(const M& m) noexcept {
 template <template <typename> class Group>
 void bind_group_batch(py::module_& m) {
   using B = Batch<Group>;
-  constexpr int N = B::N, D = B::D;
+  constexpr int N = B::N, D = B::D, P = B::P;
+  using TangentCore = std::conditional_t<D == 1, Core<>, Core<D>>;
   const std::string n = std::to_string(N), shape = "(..., " + n + ", " + n + ")";
   const std::string element = std::string(B::element), matrices = "array_like of shape " + shape + ": " + B::matrices;
   const std::string result = "numpy.ndarray of shape " + shape;
-  def_ufunc<Core<N, N>(Core<D>)>(m, B::names[0], B::tangent, array_doc(B::exp),
-                                 [](const auto& x) { return B::stored(Group<ScalarOf<decltype(x)>>::exp(x)); });
-  def_ufunc<Core<D>(Core<N, N>)>(m, B::names[1], B::element, array_doc(B::log),
-                                 [](const auto& g) { return element_of<Group>(g).log(); });
+  def_ufunc<Core<N, N>(TangentCore)>(m, B::names[0], B::tangent, array_doc(B::exp), [](const auto& x) {
+    using G = Group<ScalarOf<decltype(x)>>;
+    return B::stored(G::exp(typename G::Tangent(x)));
+  });
+  def_ufunc<TangentCore(Core<N, N>)>(m, B::names[1], B::element, array_doc(B::log),
+                                     [](const auto& g) { return tangent_out(element_of<Group>(g).log()); });
   def_ufunc<Core<N, N>(Core<N, N>, Core<N, N>)>(
       m, B::names[2], "a, b",
       array_doc((std::string(B::compose) + "\n\nArgs:\n    a: " + matrices + ".\n    b: " + matrices +
@@ -270,19 +422,22 @@ void bind_group_batch(py::module_& m) {
                                                ".\n\nReturns:\n    " + result + ": the inverses.")
                                                   .c_str()),
                                     [](const auto& g) { return B::stored(element_of<Group>(g).inverse()); });
-  def_ufunc<Core<3>(Core<N, N>, Core<3>)>(
+  const std::string p = std::to_string(P);
+  def_ufunc<Core<P>(Core<N, N>, Core<P>)>(
       m, B::names[4], (element + ", points").c_str(),
       array_doc((std::string(B::act) + "\n\nBroadcasts: one " + B::one + " of shape (" + n + ", " + n +
-                 ") with points of shape (N, 3), N\n" + B::one + "s with N points, (N, 1, " + n + ", " + n +
-                 ") with (M, 3) for every pair, ...\n\nArgs:\n    " + element + ": " + matrices +
-                 ".\n    points: array_like of shape (..., 3): " + B::acted +
-                 ".\n\nReturns:\n    numpy.ndarray of shape (..., 3): the " + B::moved + " points.")
+                 ") with points of shape (N, " + p + "), N\n" + B::one + "s with N points, (N, 1, " + n + ", " + n +
+                 ") with (M, " + p + ") for every pair, ...\n\nArgs:\n    " + element + ": " + matrices +
+                 ".\n    points: array_like of shape (..., " + p + "): " + B::acted +
+                 ".\n\nReturns:\n    numpy.ndarray of shape (..., " + p + "): the " + B::moved + " points.")
                     .c_str()),
       [](const auto& g, const auto& p) { return element_of<Group>(g).act(p); });
-  def_ufunc<Core<N, N>(Core<D>)>(m, B::names[5], B::tangent, array_doc(B::hat),
-                                 [](const auto& x) { return Group<ScalarOf<decltype(x)>>::hat(x); });
-  def_ufunc<Core<D>(Core<N, N>)>(m, B::names[6], "matrix", array_doc(B::vee),
-                                 [](const auto& X) { return Group<ScalarOf<decltype(X)>>::vee(X); });
+  def_ufunc<Core<N, N>(TangentCore)>(m, B::names[5], B::tangent, array_doc(B::hat), [](const auto& x) {
+    using G = Group<ScalarOf<decltype(x)>>;
+    return G::hat(typename G::Tangent(x));
+  });
+  def_ufunc<TangentCore(Core<N, N>)>(m, B::names[6], "matrix", array_doc(B::vee),
+                                     [](const auto& X) { return tangent_out(Group<ScalarOf<decltype(X)>>::vee(X)); });
   def_ufunc<Core<N, N>(Core<N, N>, Core<N, N>, Core<>)>(
       m, B::names[7], "a, b, t",
       array_doc((std::string(B::interpolate) + ": a exp(t log(a^-1 b)).\n\nt = 0 gives a, t = 1 gives b, " +
@@ -368,6 +523,8 @@ Returns:
 void bind_batch(py::module_& m) {
   bind_so3_batch(m);
   bind_se3_batch(m);
+  bind_group_batch<SO2>(m);
+  bind_group_batch<SE2>(m);
 }
 
 }  // namespace chasles_py

@@ -1,5 +1,5 @@
 // chasles._core: the module-level functions of the Lie groups, each written
-// once and overloaded for SO3 and SE3 (include/chasles/jacobians.hpp): rplus,
+// once and overloaded for SO2, SE2, SO3 and SE3 (include/chasles/lie_group.hpp): rplus,
 // rminus, lplus, lminus, between, interpolate, and the Jacobians of the group
 // operations in the right-local convention (log_jacobian, inverse_jacobian,
 // compose_jacobians, act_jacobians, rplus_jacobians, rminus_jacobians,
@@ -14,13 +14,16 @@
 
 #include "bindings.hpp"
 #include "convert.hpp"
+#include "lie_group.hpp"
 #include "ufunc.hpp"
 
 namespace chasles_py {
 
 namespace {
 
+using chasles::SE2d;
 using chasles::SE3d;
+using chasles::SO2d;
 using chasles::SO3d;
 using Matrices = std::tuple<py::array_t<double>, py::array_t<double>>;
 
@@ -31,34 +34,37 @@ Matrices pair(const J& j) {
 }
 
 /// Defines rplus, ..., interpolate_jacobian_t for the group G: called for
-/// SO3, then for SE3, which makes each function an overload set in that order.
-/// pybind11 shows the signatures of the overloads, each followed by its
-/// docstring: the text common to both groups is given once, with the SE3
+/// SO2, SE2, SO3, then SE3, which makes each function an overload set in that
+/// order. pybind11 shows the signatures of the overloads, each followed by
+/// its docstring: the text common to the groups is given once, with the SE3
 /// overload; SO3's own text, if any, with its overload.
 template <typename G>
 void def_group_functions(py::module_& m) {
   constexpr int D = G::DoF;
-  constexpr bool kSE3 = std::is_same_v<G, SE3d>;
+  constexpr int P = std::is_same_v<G, SO2d> || std::is_same_v<G, SE2d> ? 2 : 3;  // the point size
+  constexpr bool kSE3 = std::is_same_v<G, SE3d>, kSO3 = std::is_same_v<G, SO3d>;
   const auto shared = [](const char* doc) { return kSE3 ? doc : nullptr; };
   // The text of the Jacobians of a function of two elements x and y of the group.
   const auto pair_doc = [](const std::string& x, const std::string& y, const char* head, const char* example) {
-    return std::string(head) + "\n\nArgs:\n    " + x + ": SO3 or SE3.\n    " + y + ": of the same group as " + x +
-           ".\n\nReturns:\n    tuple[ndarray, ndarray]: (J_" + x + ", J_" + y +
-           "), each of shape (3, 3) for SO3,\n    (6, 6) for SE3 (twists (v, w), linear part first), float64.\n\n"
+    return std::string(head) + "\n\nArgs:\n    " + x + ": SO2, SE2, SO3 or SE3.\n    " + y + ": of the same group as " +
+           x + ".\n\nReturns:\n    tuple[ndarray, ndarray]: (J_" + x + ", J_" + y +
+           "), each of shape (D, D): (1, 1) for SO2,\n    (3, 3) for SE2 and SO3, (6, 6) for SE3 (twists (v, w)), "
+           "float64.\n\n"
            "Raises:\n    TypeError: " +
            x + " and " + y + " are not of the same group.\n\nExample:\n" + example;
   };
   m.def(
-      "rplus", [](Obj<G> x, ArrayLike xi) { return chasles::rplus(*x, to_finite_eigen<D>(xi.obj, "rplus(g, xi)")); },
+      "rplus", [](Obj<G> x, ArrayLike xi) { return chasles::rplus(*x, to_tangent<D>(xi.obj, "rplus(g, xi)", true)); },
       py::arg("g"), py::arg("xi"), shared(R"doc(g rplus xi = g exp(xi): a perturbation in g's own (local, right) frame.
 
 Args:
-    g: SO3 or SE3.
-    xi: tangent vector, shape (3,) for SO3 (rotation vector w), (6,) for SE3
-        (twist (v, w), linear part first), finite.
+    g: SO2, SE2, SO3 or SE3.
+    xi: tangent vector of g's group, finite: SO2's angle theta (a float),
+        shape (3,) for SE2 ((vx, vy, w)) and SO3 (rotation vector w), (6,)
+        for SE3 (twist (v, w)); linear part first.
 
 Returns:
-    SO3 or SE3: g exp(xi).
+    SO2, SE2, SO3 or SE3: g exp(xi).
 
 Raises:
     ValueError: xi has the wrong shape for g, or is not finite.
@@ -69,18 +75,19 @@ Example:
     array([1., 2., 0.])
 )doc"));
   m.def(
-      "rminus", [](Obj<G> x, Obj<G> h) { return vec_out(chasles::rminus(*x, *h)); }, py::arg("g"), py::arg("h"),
+      "rminus", [](Obj<G> x, Obj<G> h) { return tangent_out<D>(chasles::rminus(*x, *h)); }, py::arg("g"), py::arg("h"),
       shared(R"doc(g rminus h = log(h^-1 g): the xi with rplus(h, xi) == g ("g minus h").
 
 The order is manif's g.rminus(h); jaxlie's rminus(a, b) = log(a^-1 b) takes
 the arguments the other way round.
 
 Args:
-    g: SO3 or SE3.
+    g: SO2, SE2, SO3 or SE3.
     h: of the same group as g.
 
 Returns:
-    ndarray: shape (3,) for SO3, (6,) for SE3 ((v, w), linear part first).
+    float or ndarray: SO2's angle, shape (3,) for SE2 ((vx, vy, w)) and
+    SO3, (6,) for SE3 ((v, w)).
 
 Example:
     >>> h = chasles.SO3.exp([0.0, 0.0, 0.5])
@@ -89,41 +96,42 @@ Example:
     array([0.3, 0. , 0. ])
 )doc"));
   m.def(
-      "lplus", [](ArrayLike xi, Obj<G> x) { return chasles::lplus(to_finite_eigen<D>(xi.obj, "lplus(xi, g)"), *x); },
+      "lplus", [](ArrayLike xi, Obj<G> x) { return chasles::lplus(to_tangent<D>(xi.obj, "lplus(xi, g)", true), *x); },
       py::arg("xi"), py::arg("g"),
       shared(R"doc(xi lplus g = exp(xi) g: a perturbation in the fixed (global, left) frame.
 
 Args:
-    xi: tangent vector, shape (3,) for SO3, (6,) for SE3 ((v, w)), finite.
-    g: SO3 or SE3.
+    xi: tangent vector of g's group, finite (as for rplus).
+    g: SO2, SE2, SO3 or SE3.
 
 Returns:
-    SO3 or SE3: exp(xi) g.
+    SO2, SE2, SO3 or SE3: exp(xi) g.
 
 Raises:
     ValueError: xi has the wrong shape for g, or is not finite.
 )doc"));
   m.def(
-      "lminus", [](Obj<G> x, Obj<G> h) { return vec_out(chasles::lminus(*x, *h)); }, py::arg("g"), py::arg("h"),
+      "lminus", [](Obj<G> x, Obj<G> h) { return tangent_out<D>(chasles::lminus(*x, *h)); }, py::arg("g"), py::arg("h"),
       shared(R"doc(g lminus h = log(g h^-1): the xi with lplus(xi, h) == g.
 
 Args:
-    g: SO3 or SE3.
+    g: SO2, SE2, SO3 or SE3.
     h: of the same group as g.
 
 Returns:
-    ndarray: shape (3,) for SO3, (6,) for SE3 ((v, w), linear part first).
+    float or ndarray: SO2's angle, shape (3,) for SE2 ((vx, vy, w)) and
+    SO3, (6,) for SE3 ((v, w)).
 )doc"));
   m.def(
       "between", [](Obj<G> a, Obj<G> b) { return chasles::between(*a, *b); }, py::arg("a"), py::arg("b"),
       shared(R"doc(between(a, b) = a^-1 b: b seen from a (manif's a.between(b)).
 
 Args:
-    a: SO3 or SE3.
+    a: SO2, SE2, SO3 or SE3.
     b: of the same group as a.
 
 Returns:
-    SO3 or SE3: a^-1 b.
+    SO2, SE2, SO3 or SE3: a^-1 b.
 
 Raises:
     TypeError: a and b are not of the same group.
@@ -140,7 +148,7 @@ Example:
         return chasles::interpolate(*a, *b, to_finite_real(t.obj, "interpolate(t)"));
       },
       py::arg("a"), py::arg("b"), py::arg("t"),
-      kSE3 ? R"doc(Screw interpolation of rigid motions a exp(t log(a^-1 b)) (as SE3.interpolate).
+      kSE3   ? R"doc(Screw interpolation of rigid motions a exp(t log(a^-1 b)) (as SE3.interpolate).
 
 Args:
     a: SE3, the start (t = 0).
@@ -155,7 +163,7 @@ Example:
     >>> m.translation
     array([0., 0., 1.])
 )doc"
-           : R"doc(Geodesic interpolation of rotations a exp(t log(a^-1 b)) (as SO3.interpolate).
+      : kSO3 ? R"doc(Geodesic interpolation of rotations a exp(t log(a^-1 b)) (as SO3.interpolate).
 
 Args:
     a: SO3, the start (t = 0).
@@ -164,7 +172,8 @@ Args:
 
 Returns:
     SO3: the interpolated rotation.
-)doc");
+)doc"
+             : nullptr);
   m.def(
       "log_jacobian", [](Obj<G> x) { return mat_out(chasles::log_jacobian(*x)); }, py::arg("g"),
       shared(R"doc(The Jacobian of g -> log(g), in the right-local convention.
@@ -175,11 +184,11 @@ f(g exp(dx)) = f(g) + J dx + o(dx); here J = J_r(log g)^-1 (Sola et al.
 w and -w (J is that of the branch log returns).
 
 Args:
-    g: SO3 or SE3.
+    g: SO2, SE2, SO3 or SE3.
 
 Returns:
-    ndarray: shape (3, 3) for SO3, (6, 6) for SE3 (rows and columns (v, w),
-    linear part first), float64.
+    ndarray: shape (D, D), D the tangent size: (1, 1) for SO2, (3, 3) for
+    SE2 and SO3, (6, 6) for SE3 (rows and columns (v, w)), float64.
 
 Example:
     >>> g = chasles.SO3.exp([0.0, 0.0, 0.5])
@@ -197,11 +206,11 @@ Right-local: f(g exp(dx)) = f(g) exp(J dx + o(dx)); here
 section IV).
 
 Args:
-    g: SO3 or SE3.
+    g: SO2, SE2, SO3 or SE3.
 
 Returns:
-    ndarray: shape (3, 3) for SO3 (-R), (6, 6) for SE3 (-Ad_g, twists
-    (v, w), linear part first), float64.
+    ndarray: shape (D, D): (1, 1) for SO2 (-1), (3, 3) for SE2 and SO3
+    (-R), (6, 6) for SE3 (-Ad_g, twists (v, w)), float64.
 
 Example:
     >>> g = chasles.SO3.exp([0.0, 0.0, np.pi / 2])
@@ -226,25 +235,27 @@ with J_a = Ad_{b^-1} and J_b = I (Sola et al. 2018, section IV).)doc",
   m.def(
       "act_jacobians",
       [](Obj<G> x, ArrayLike p) {
-        const auto J = chasles::act_jacobians(*x, to_finite_eigen<3>(p.obj, "act_jacobians(g, p)"));
+        const auto J = chasles::act_jacobians(*x, to_finite_eigen<P>(p.obj, "act_jacobians(g, p)"));
         return Matrices(mat_out(J.group), mat_out(J.point));
       },
       py::arg("g"), py::arg("p"), shared(R"doc(The Jacobians (J_g, J_p) of (g, p) -> g p (the action on a point).
 
 Right-local in g: (g exp(dx)) (p + dp) = g p + J_g dx + J_p dp + o(dx, dp).
 SO3: J_g = -R [p], J_p = R; SE3: J_g = [R, -R [p]] (columns (v, w), linear
-part first), J_p = R (Sola et al. 2018, appendices B and D).
+part first), J_p = R (Sola et al. 2018, appendices B and D). SO2:
+J_g = R (-p_y, p_x); SE2: J_g = [R, R (-p_y, p_x)] (columns (vx, vy, w)).
 
 Args:
-    g: SO3 or SE3.
-    p: point, shape (3,), finite.
+    g: SO2, SE2, SO3 or SE3.
+    p: point, shape (2,) for SO2 and SE2, (3,) for SO3 and SE3, finite.
 
 Returns:
-    tuple[ndarray, ndarray]: (J_g, J_p); J_g of shape (3, 3) for SO3,
-    (3, 6) for SE3, J_p of shape (3, 3); float64.
+    tuple[ndarray, ndarray]: (J_g, J_p); J_g of shape (2, 1) for SO2, (2, 3)
+    for SE2, (3, 3) for SO3, (3, 6) for SE3; J_p = R, shape (2, 2) or (3, 3);
+    float64.
 
 Raises:
-    ValueError: p is not of shape (3,), or not finite.
+    ValueError: p is not of g's point shape, or not finite.
 
 Example:
     >>> g = chasles.SE3(translation=[1.0, 0.0, 0.0])
@@ -257,7 +268,7 @@ Example:
   m.def(
       "rplus_jacobians",
       [](Obj<G> x, ArrayLike xi) {
-        return pair(chasles::rplus_jacobians(*x, to_finite_eigen<D>(xi.obj, "rplus_jacobians(g, xi)")));
+        return pair(chasles::rplus_jacobians(*x, to_tangent<D>(xi.obj, "rplus_jacobians(g, xi)", true)));
       },
       py::arg("g"), py::arg("xi"), shared(R"doc(The Jacobians (J_g, J_xi) of (g, xi) -> rplus(g, xi) = g exp(xi).
 
@@ -266,13 +277,12 @@ Right-local: rplus(g exp(dg), xi + dxi) = rplus(g, xi) exp(J_g dg + J_xi dxi
 al. 2018, section IV; manif's rplus Jacobians).
 
 Args:
-    g: SO3 or SE3.
-    xi: tangent vector, shape (3,) for SO3, (6,) for SE3 ((v, w), linear
-        part first), finite.
+    g: SO2, SE2, SO3 or SE3.
+    xi: tangent vector of g's group, finite (as for rplus).
 
 Returns:
-    tuple[ndarray, ndarray]: (J_g, J_xi), each of shape (3, 3) for SO3,
-    (6, 6) for SE3, float64.
+    tuple[ndarray, ndarray]: (J_g, J_xi), each of shape (D, D): (1, 1) for SO2,
+    (3, 3) for SE2 and SO3, (6, 6) for SE3, float64.
 
 Raises:
     ValueError: xi has the wrong shape for g, or is not finite.
@@ -299,7 +309,7 @@ log returns: finite up to the angle pi, where log jumps between w and -w.)doc",
   m.def(
       "lplus_jacobians",
       [](ArrayLike xi, Obj<G> x) {
-        return pair(chasles::lplus_jacobians(to_finite_eigen<D>(xi.obj, "lplus_jacobians(xi, g)"), *x));
+        return pair(chasles::lplus_jacobians(to_tangent<D>(xi.obj, "lplus_jacobians(xi, g)", true), *x));
       },
       py::arg("xi"), py::arg("g"), shared(R"doc(The Jacobians (J_xi, J_g) of (xi, g) -> lplus(xi, g) = exp(xi) g.
 
@@ -308,13 +318,12 @@ lplus(xi, g) exp(J_xi dxi + J_g dg + o), with J_xi = Ad_{g^-1} J_r(xi) and
 J_g = I (Sola et al. 2018, sections III and IV).
 
 Args:
-    xi: tangent vector, shape (3,) for SO3, (6,) for SE3 ((v, w), linear
-        part first), finite.
-    g: SO3 or SE3.
+    xi: tangent vector of g's group, finite (as for rplus).
+    g: SO2, SE2, SO3 or SE3.
 
 Returns:
-    tuple[ndarray, ndarray]: (J_xi, J_g), each of shape (3, 3) for SO3,
-    (6, 6) for SE3, float64.
+    tuple[ndarray, ndarray]: (J_xi, J_g), each of shape (D, D): (1, 1) for SO2,
+    (3, 3) for SE2 and SO3, (6, 6) for SE3, float64.
 
 Raises:
     ValueError: xi has the wrong shape for g, or is not finite.
@@ -357,7 +366,8 @@ section IV; manif's between Jacobians).)doc",
   m.def(
       "interpolate_jacobian_t",
       [](Obj<G> a, Obj<G> b, RealLike t) {
-        return vec_out(chasles::interpolate_jacobian_t(*a, *b, to_finite_real(t.obj, "interpolate_jacobian_t(t)")));
+        return tangent_out<D>(
+            chasles::interpolate_jacobian_t(*a, *b, to_finite_real(t.obj, "interpolate_jacobian_t(t)")));
       },
       py::arg("a"), py::arg("b"), py::arg("t"),
       shared(R"doc(The derivative in t of interpolate(a, b, t) = a exp(t log(a^-1 b)).
@@ -367,13 +377,13 @@ and J = J_r(t xi) xi = xi = rminus(b, a) = log(a^-1 b), the same for every t
 (the geodesic has constant body velocity).
 
 Args:
-    a: SO3 or SE3, the start.
+    a: SO2, SE2, SO3 or SE3, the start.
     b: of the same group as a, the end.
     t: the fraction, finite.
 
 Returns:
-    ndarray: shape (3,) for SO3, (6,) for SE3 ((v, w), linear part first),
-    float64.
+    float or ndarray: SO2's angle, shape (3,) for SE2 and SO3, (6,) for
+    SE3 ((v, w), linear part first).
 
 Raises:
     ValueError: t is not finite.
@@ -389,6 +399,8 @@ Example:
 }  // namespace
 
 void bind_jacobians(py::module_& m) {
+  def_group_functions<SO2d>(m);
+  def_group_functions<SE2d>(m);
   def_group_functions<SO3d>(m);
   def_group_functions<SE3d>(m);
 

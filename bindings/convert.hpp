@@ -535,6 +535,20 @@ inline bool raw_shape(py::handle h, std::vector<Py_intptr_t>& shape) {
   return true;
 }
 
+/// A tangent vector of size D: array-like of shape (D,), finite if `finite`;
+/// of size 1 (SO2's angle theta) a real number as well.
+template <int D>
+inline Eigen::Matrix<double, D, 1> to_tangent(py::handle h, const char* what, bool finite) {
+  if constexpr (D == 1) {
+    std::vector<Py_intptr_t> shape;
+    if (!raw_shape(h, shape) || shape.empty()) {
+      const double x = finite ? to_finite_real(h, what) : to_real(h, what);
+      return Eigen::Matrix<double, 1, 1>(x);
+    }
+  }
+  return finite ? to_finite_eigen<D>(h, what) : to_eigen<D>(h, what);
+}
+
 /// An argument as an error message names it: "ndarray of shape (3, 3)",
 /// "list of shape (4, 4)", "None", "chasles._core.SE3".
 inline std::string describe_argument(py::handle h) {
@@ -584,7 +598,8 @@ template <int R, int C>
 inline py::array_t<double> mat_out(const Eigen::Matrix<double, R, C>& m) {
   const Py_intptr_t dims[2] = {R, C};
   py::array_t<double> a = new_array(2, dims);
-  Eigen::Map<Eigen::Matrix<double, R, C, Eigen::RowMajor>>(array_data(a)) = m;
+  // (A column is the same in either order; Eigen refuses a row-major one.)
+  Eigen::Map<Eigen::Matrix<double, R, C, C == 1 ? Eigen::ColMajor : Eigen::RowMajor>>(array_data(a)) = m;
   return a;
 }
 

@@ -1,11 +1,12 @@
 // chasles._core: what the classes of the Lie groups share, written once for
-// SO3 and SE3 from the traits Lie<G> (after manif's
+// SO2, SE2, SO3 and SE3 from the traits Lie<G> (after manif's
 // python/bindings_lie_group_base.h): the Jacobians of exp as static methods,
 // the action on points through the array function, the object protocol
 // (==, repr, __array__, copy, pickle), numpy's Generator for random, scipy's
 // classes. Each group's class is made and bound in its own file
-// (bind_so3.cpp, bind_se3.cpp), which calls def_lie_group with what only it
-// has; the module-level functions of the groups are in bind_jacobians.cpp.
+// (bind_so3.cpp, bind_se3.cpp, bind_planar.cpp), which calls def_lie_group
+// with what only it has; the module-level functions of the groups are in
+// bind_jacobians.cpp.
 #pragma once
 
 #include <cstdio>
@@ -15,7 +16,9 @@
 #include <utility>
 
 #include <chasles/jacobians.hpp>
+#include <chasles/se2.hpp>
 #include <chasles/se3.hpp>
+#include <chasles/so2.hpp>
 #include <chasles/so3.hpp>
 #include <chasles/twist.hpp>
 
@@ -29,7 +32,7 @@ struct Lie;
 
 template <>
 struct Lie<chasles::SO3d> {
-  static constexpr int N = 3, D = 3;  // the matrix size, the tangent dimension
+  static constexpr int N = 3, D = 3, P = 3;  // the matrix size, the tangent dimension, the point size
   using Tangent = Eigen::Matrix<double, D, 1>;
   using Jacobian = Eigen::Matrix<double, D, D>;
   static constexpr const char* name = "SO3";
@@ -200,7 +203,7 @@ Raises:
 
 template <>
 struct Lie<chasles::SE3d> {
-  static constexpr int N = 4, D = 6;
+  static constexpr int N = 4, D = 6, P = 3;
   using Tangent = Eigen::Matrix<double, D, 1>;
   using Jacobian = Eigen::Matrix<double, D, D>;
   static constexpr const char* name = "SE3";
@@ -363,7 +366,7 @@ Raises:
 )doc";
 };
 
-/// g's action on points: the array function so3_act / se3_act with g's
+/// g's action on points: the array function so3_act, se3_act, ... with g's
 /// matrix (numpy's rules for dtypes, broadcasting and the GIL), or for one
 /// point of float64 the same kernel without numpy's dispatch (the same
 /// bits). Points of float32 give float32: the matrix is rounded to float32
@@ -375,9 +378,9 @@ py::object act_points(const G& g, ArrayLike points, const char* what) {
   const auto& api = npy();
   PyObject* o = points.obj.ptr();
   if (!api.PyArray_Check_(o) && is_bound_object(points.obj))
-    raise_type_error(std::string(what) + ": expected points of shape (..., 3), got " + type_name(points.obj) + " (" +
-                     L::act_hint + ")");
-  if (Eigen::Vector3d p; single_element(points.obj, p.data(), 3)) return vec_out<3>(g.act(p));
+    raise_type_error(std::string(what) + ": expected points of shape (..., " + std::to_string(L::P) + "), got " +
+                     type_name(points.obj) + " (" + L::act_hint + ")");
+  if (Eigen::Matrix<double, L::P, 1> p; single_element(points.obj, p.data(), L::P)) return vec_out<L::P>(g.act(p));
   py::object M = mat_out<L::N, L::N>(g.matrix());
   if (api.PyArray_Check_(o) && py::detail::array_descriptor_proxy(py::detail::array_proxy(o)->descr)->type_num ==
                                    py::detail::npy_api::NPY_FLOAT_)
@@ -446,9 +449,20 @@ inline void check_single_scipy(py::handle obj, const char* kind, const char* wha
   }
 }
 
+/// A tangent result: SO2's angle as a float, others as an array of shape (D,).
+template <int D>
+py::object tangent_out(const Eigen::Matrix<double, D, 1>& x) {
+  if constexpr (D == 1) {
+    return py::float_(x[0]);
+  } else {
+    return vec_out<D>(x);
+  }
+}
+
 /// `text` with {G} (the class), {kind}, {inverse}, {matrix}, {example},
 /// {adjoint}, {between}, {approx}, {tol}, {N}, {D}, {t} (the tangent's name), {acted},
-/// {action}, {g} (the element's symbol), {moved} and {act} (the array function) of the group G.
+/// {action}, {g} (the element's symbol), {moved}, {act} (the array function) and {P} (the point size) of the
+/// group G.
 template <typename G>
 std::string group_text(std::string text) {
   using L = Lie<G>;
@@ -468,7 +482,8 @@ std::string group_text(std::string text) {
                                                         {"{action}", L::action},
                                                         {"{g}", L::symbol},
                                                         {"{moved}", L::moved},
-                                                        {"{act}", L::act_ufunc}};
+                                                        {"{act}", L::act_ufunc},
+                                                        {"{P}", std::to_string(L::P)}};
   for (const auto& [key, value] : fields)
     for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + value.size()))
       text.replace(at, std::strlen(key), value);
@@ -481,7 +496,7 @@ const char* group_doc(const char* text) {
   return (new std::string(group_text<G>(text)))->c_str();
 }
 
-/// What SO3 and SE3 share: the group operations (inverse, @, the action on
+/// What the groups share: the group operations (inverse, @, the action on
 /// points, adjoint, as_matrix, normalized, interpolate, is_approx) with one
 /// docstring for both, the Jacobians of exp (static methods), the matrix as
 /// __array__, exp, log, hat, vee, the three constructions from a matrix
@@ -496,14 +511,14 @@ void def_lie_group(Class<G>& cls, Repr repr, State state, FromState from_state,
   static const char* const exp_what = group_doc<G>("{G}.exp({t})");
   cls.def_static(
       "exp", [](ArrayLike x) { return G::exp(L::tangent_arg(x.obj, exp_what)); }, py::arg(L::tangent), L::exp_doc);
-  cls.def("log", [](Obj<G> g) { return vec_out<L::D>(g->log()); }, L::log_doc);
+  cls.def("log", [](Obj<G> g) { return tangent_out<L::D>(g->log()); }, L::log_doc);
   static const char* const hat_what = group_doc<G>("{G}.hat({t})");
   cls.def_static(
-      "hat", [](ArrayLike x) { return mat_out<L::N, L::N>(G::hat(to_eigen<L::D>(x.obj, hat_what))); },
+      "hat", [](ArrayLike x) { return mat_out<L::N, L::N>(G::hat(to_tangent<L::D>(x.obj, hat_what, false))); },
       py::arg(L::tangent), L::hat_doc);
   static const char* const vee_what = group_doc<G>("{G}.vee(matrix)");
   cls.def_static(
-      "vee", [](ArrayLike X) { return vec_out<L::D>(G::vee(to_eigen<L::N, L::N>(X.obj, vee_what))); },
+      "vee", [](ArrayLike X) { return tangent_out<L::D>(G::vee(to_eigen<L::N, L::N>(X.obj, vee_what))); },
       py::arg("matrix"), L::vee_doc);
   static const char* const matrix_what = group_doc<G>("{G}.from_matrix(matrix)");
   static const char* const tol_arg_what = group_doc<G>("{G}.from_matrix(tol)");
@@ -559,10 +574,10 @@ The array function {act} with this {kind}: numpy's rules for dtypes and
 broadcasting.
 
 Args:
-    points: array_like of shape (..., 3).
+    points: array_like of shape (..., {P}).
 
 Returns:
-    ndarray: the {moved} points, shape (..., 3).
+    ndarray: the {moved} points, shape (..., {P}).
 )doc");
   static const std::string matmul_doc = group_text<G>("Action on {acted}: {action}.") + act_doc;
   static const char* const matmul_what = group_doc<G>("{G} @ points");
@@ -667,12 +682,13 @@ Returns:
     const std::string what = std::string(L::name) + "." + names[k] + "(" + L::tangent + ")";
     const auto J = L::jacobians[k];
     cls.def_static(
-        names[k], [J, what](ArrayLike x) { return mat_out<L::D, L::D>(J(to_finite_eigen<L::D>(x.obj, what.c_str()))); },
+        names[k],
+        [J, what](ArrayLike x) { return mat_out<L::D, L::D>(J(to_tangent<L::D>(x.obj, what.c_str(), true))); },
         py::arg(L::tangent), docs[k].c_str());
   }
-  static const std::string array_doc = std::string("The ") + (L::N == 3 ? "rotation" : "homogeneous") +
-                                       " matrix, shape (" + std::to_string(L::N) + ", " + std::to_string(L::N) +
-                                       "), for np.asarray (numpy's dtype and copy keywords).";
+  static const std::string array_doc =
+      std::string("The ") + (std::string(L::kind) == "rotation" ? "rotation" : "homogeneous") + " matrix, shape (" +
+      std::to_string(L::N) + ", " + std::to_string(L::N) + "), for np.asarray (numpy's dtype and copy keywords).";
   def_array(cls, [](const G& g) { return mat_out<L::N, L::N>(g.matrix()); }, array_doc.c_str());
   def_value_protocol<S>(cls, repr, state, from_state);
 }

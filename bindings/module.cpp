@@ -13,11 +13,15 @@ PYBIND11_MODULE(_core, m) {
   // The classes first, then their bindings in any order (bindings.hpp).
   cp::Class<chasles::SO3d> so3(m, "SO3");
   cp::Class<chasles::SE3d> se3(m, "SE3");
+  cp::Class<chasles::SO2d> so2(m, "SO2");
+  cp::Class<chasles::SE2d> se2(m, "SE2");
   cp::Class<chasles::Twistd> twist(m, "Twist");
   cp::Class<chasles::Wrenchd> wrench(m, "Wrench");
   pybind11::class_<chasles::Screw<double>> screw(m, "Screw");
   cp::bind_so3(so3);
   cp::bind_se3(se3);
+  cp::bind_so2(so2);
+  cp::bind_se2(se2);
   cp::bind_twist_wrench(twist, wrench, screw);
   cp::bind_batch(m);
   cp::bind_jacobians(m);

@@ -625,9 +625,18 @@ void loop(char** args, const ssize* dims, const ssize* steps, void* data) noexce
 
 // ---- registration -----------------------------------------------------------
 
-/// The real type of a kernel argument (an Eigen matrix or a map of one).
+/// The real type of a kernel argument: an Eigen matrix's or map's Scalar, or
+/// the argument's own type (a `Core<>` scalar).
+template <typename V, typename = void>
+struct ScalarOfArgument {
+  using type = V;
+};
 template <typename V>
-using ScalarOf = typename std::decay_t<V>::Scalar;
+struct ScalarOfArgument<V, std::void_t<typename V::Scalar>> {
+  using type = typename V::Scalar;
+};
+template <typename V>
+using ScalarOf = typename ScalarOfArgument<std::decay_t<V>>::type;
 
 /// An array function's docstring: `body`, then the paragraph every one ends
 /// with (the rules themselves are stated once, in the module's docstring).
