@@ -451,9 +451,9 @@ inline void check_single_scipy(py::handle obj, const char* kind, const char* wha
 
 /// A tangent result: SO2's angle as a float, others as an array of shape (D,).
 template <int D>
-py::object tangent_out(const Eigen::Matrix<double, D, 1>& x) {
+auto tangent_out(const Eigen::Matrix<double, D, 1>& x) {
   if constexpr (D == 1) {
-    return py::float_(x[0]);
+    return x[0];
   } else {
     return vec_out<D>(x);
   }

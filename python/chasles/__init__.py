@@ -1,9 +1,10 @@
-"""chasles: Lie groups of rigid-body motion, SO(3) and SE(3), with twists,
-wrenches and screws, over the C++ headers of the same name.
+"""chasles: Lie groups of rigid-body motion, SO(3) and SE(3) (and the plane's
+SO(2) and SE(2)), with twists, wrenches and screws, over the C++ headers of
+the same name.
 
 Two layers over the same C++ kernels:
 
-- objects for one element: ``SO3``, ``SE3``, ``Twist``, ``Wrench``,
+- objects for one element: ``SO3``, ``SE3``, ``SO2``, ``SE2``, ``Twist``, ``Wrench``,
   ``Screw`` and ``SpatialInertia`` (a rigid body's inertia), with ``@``
   for composition and action (``g @ h``, ``g @ p``);
 - array functions for batches: ``so3_exp``, ``se3_log``, ``se3_compose``,
@@ -64,7 +65,9 @@ from chasles._arrays import (
 from chasles._bspline import SE3BSpline, SO3BSpline
 from chasles._chain import Chain
 from chasles._core import (
+    SE2,
     SE3,
+    SO2,
     SO3,
     Screw,
     SpatialInertia,
@@ -88,6 +91,15 @@ from chasles._core import (
     rminus_jacobians,
     rplus,
     rplus_jacobians,
+    se2_act,
+    se2_compose,
+    se2_exp,
+    se2_hat,
+    se2_interpolate,
+    se2_inverse,
+    se2_log,
+    se2_normalize,
+    se2_vee,
     se3_act,
     se3_act_jacobian,
     se3_act_twist,
@@ -102,6 +114,15 @@ from chasles._core import (
     se3_log,
     se3_normalize,
     se3_vee,
+    so2_act,
+    so2_compose,
+    so2_exp,
+    so2_hat,
+    so2_interpolate,
+    so2_inverse,
+    so2_log,
+    so2_normalize,
+    so2_vee,
     so3_act,
     so3_act_jacobian,
     so3_angle,
@@ -123,9 +144,11 @@ from chasles._threads import set_num_threads
 
 __all__ = [
     "Chain",
+    "SE2",
     "SE3",
     "SE3BSpline",
     "SE3Spline",
+    "SO2",
     "SO3",
     "SO3BSpline",
     "SO3Spline",
@@ -151,6 +174,15 @@ __all__ = [
     "rminus_jacobians",
     "rplus",
     "rplus_jacobians",
+    "se2_act",
+    "se2_compose",
+    "se2_exp",
+    "se2_hat",
+    "se2_interpolate",
+    "se2_inverse",
+    "se2_log",
+    "se2_normalize",
+    "se2_vee",
     "se3_act",
     "se3_act_jacobian",
     "se3_act_twist",
@@ -169,6 +201,15 @@ __all__ = [
     "se3_random",
     "se3_vee",
     "set_num_threads",
+    "so2_act",
+    "so2_compose",
+    "so2_exp",
+    "so2_hat",
+    "so2_interpolate",
+    "so2_inverse",
+    "so2_log",
+    "so2_normalize",
+    "so2_vee",
     "so3_act",
     "so3_act_jacobian",
     "so3_angle",

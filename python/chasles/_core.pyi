@@ -8,7 +8,7 @@ import numpy
 import numpy.dtypes
 import numpy.typing
 import typing
-__all__: list[str] = ['Chain', 'SE3', 'SO3', 'Screw', 'SpatialInertia', 'Twist', 'Wrench', 'act_jacobians', 'between', 'between_jacobians', 'compose_jacobians', 'get_num_threads', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'lminus_jacobians', 'log_jacobian', 'lplus', 'lplus_jacobians', 'rminus', 'rminus_jacobians', 'rplus', 'rplus_jacobians', 'se3_act', 'se3_act_jacobian', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_distance', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_normalize', 'se3_vee', 'so3_act', 'so3_act_jacobian', 'so3_angle', 'so3_compose', 'so3_distance', 'so3_exp', 'so3_from_uniforms', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_normalize', 'so3_vee']
+__all__: list[str] = ['Chain', 'SE2', 'SE3', 'SO2', 'SO3', 'Screw', 'SpatialInertia', 'Twist', 'Wrench', 'act_jacobians', 'between', 'between_jacobians', 'compose_jacobians', 'get_num_threads', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'lminus_jacobians', 'log_jacobian', 'lplus', 'lplus_jacobians', 'rminus', 'rminus_jacobians', 'rplus', 'rplus_jacobians', 'se2_act', 'se2_compose', 'se2_exp', 'se2_hat', 'se2_interpolate', 'se2_inverse', 'se2_log', 'se2_normalize', 'se2_vee', 'se3_act', 'se3_act_jacobian', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_distance', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_normalize', 'se3_vee', 'so2_act', 'so2_compose', 'so2_exp', 'so2_hat', 'so2_interpolate', 'so2_inverse', 'so2_log', 'so2_normalize', 'so2_vee', 'so3_act', 'so3_act_jacobian', 'so3_angle', 'so3_compose', 'so3_distance', 'so3_exp', 'so3_from_uniforms', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_normalize', 'so3_vee']
 
 _Name = typing.TypeVar("_Name", bound=str)
 _Signature = typing.TypeVar("_Signature", bound=str)
@@ -1439,6 +1439,800 @@ class SE3:
         """
         ndarray: the translation p of g = [[R, p], [0, 1]], shape (3,) (a stored part; a new array).
         """
+class SO2:
+    """
+    A rotation of the plane: an element of SO(2), stored as (cos theta, sin theta) (float64).
+    
+    Its matrix is R = [[c, -s], [s, c]]; ``R_ab`` maps frame b to frame a,
+    ``R_ac = R_ab @ R_bc``. The tangent space is R: the angle theta (a float in
+    Python; a 1-vector for the generic C++ code). The array functions so2_exp,
+    so2_log, ... take angles of shape (...) and matrices of shape (..., 2, 2).
+    
+    Example:
+        >>> R = SO2.exp(np.pi / 2)
+        >>> np.round(R @ [1.0, 0.0], 12) + 0.0
+        array([0., 1.])
+        >>> (R @ R.inverse()).log()
+        0.0
+    """
+    __array_ufunc__ = None
+    __hash__: typing.ClassVar[None] = None
+    dtype: typing.ClassVar[numpy.dtypes.Float64DType]
+    @staticmethod
+    def exp(theta: numpy.typing.ArrayLike) -> SO2:
+        """
+        The rotation by theta: exp(theta) = [[cos, -sin], [sin, cos]].
+        
+        One sincos, exact to the libm's rounding for every theta.
+        
+        Args:
+            theta: the angle in radians, a float (or shape (1,)), finite.
+        
+        Returns:
+            SO2: the rotation.
+        
+        Raises:
+            ValueError: theta is not finite, or of another shape.
+            TypeError: theta is not real.
+        
+        Example:
+            >>> np.round(SO2.exp(np.pi / 2).as_matrix(), 12) + 0.0
+            array([[ 0., -1.],
+                   [ 1.,  0.]])
+        """
+    @staticmethod
+    def from_matrix(matrix: numpy.typing.ArrayLike, tol: float = 1.4901161193847656e-08) -> SO2:
+        """
+        Checked construction from a 2x2 rotation matrix.
+        
+        Accepts M when max(|M^T M - I|_max, |det M - 1|) is at most tol (default
+        sqrt(eps) = 1.49e-08).
+        
+        Args:
+            matrix: shape (2, 2), finite.
+            tol: the largest accepted defect.
+        
+        Returns:
+            SO2: the rotation ((c, s) = ((M00 + M11) / 2, (M10 - M01) / 2)).
+        
+        Raises:
+            ValueError: M is not a rotation within tol (the message gives the defect
+                and det M), or M is not finite, or not of shape (2, 2).
+        
+        Example:
+            >>> SO2.from_matrix([[0.0, -1.0], [1.0, 0.0]]).log() == np.pi / 2
+            True
+        """
+    @staticmethod
+    def from_matrix_projected(matrix: numpy.typing.ArrayLike) -> SO2:
+        """
+        The rotation nearest to a 2x2 matrix in the Frobenius norm.
+        
+        (c, s) along (M00 + M11, M10 - M01), made unit; defined for every finite M
+        (the identity where that vector is 0).
+        
+        Args:
+            matrix: shape (2, 2), finite.
+        
+        Returns:
+            SO2: the nearest rotation.
+        """
+    @staticmethod
+    def from_matrix_unchecked(matrix: numpy.typing.ArrayLike) -> SO2:
+        """
+        Construction without a check, for data known to be a rotation.
+        
+        (c, s) = ((M00 + M11) / 2, (M10 - M01) / 2): a rotation matrix's own numbers.
+        
+        Args:
+            matrix: shape (2, 2), finite.
+        
+        Returns:
+            SO2: the rotation.
+        """
+    @staticmethod
+    def hat(theta: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The skew-symmetric matrix of an angle: [[0, -theta], [theta, 0]].
+        
+        Args:
+            theta: a float (or shape (1,)).
+        
+        Returns:
+            ndarray: shape (2, 2).
+        """
+    @staticmethod
+    def identity() -> SO2:
+        """
+        The identity rotation.
+        """
+    @staticmethod
+    def interpolate(a: SO2, b: SO2, t: float) -> SO2:
+        """
+        Geodesic interpolation a exp(t log(a^-1 b)).
+        
+        t = 0 gives a, t = 1 gives b, in between, the rotation at constant angular velocity.
+        
+        Args:
+            a: SO2, the start.
+            b: SO2, the end.
+            t: the fraction, finite.
+        
+        Returns:
+            SO2: the interpolated rotation.
+        
+        Example:
+            >>> a, b = SO2(), SO2.exp(0.5)
+            >>> SO2.interpolate(a, b, 0.5).is_approx(a @ SO2.exp(0.5 * np.array(0.5)))
+            True
+        """
+    @staticmethod
+    def left_jacobian(theta: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The left Jacobian J_l of SO(2) at theta: [[1.]] for every theta.
+        
+        The plane's rotations commute, so exp(theta + d) = exp(theta) exp(d) exactly
+        and every Jacobian of exp is the identity (shape (1, 1), for the generic
+        code and for SE2's blocks).
+        
+        Args:
+            theta: a float (or shape (1,)), finite.
+        
+        Returns:
+            ndarray: [[1.]], shape (1, 1), float64.
+        """
+    @staticmethod
+    def left_jacobian_inverse(theta: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The inverse left Jacobian J_l^-1 of SO(2) at theta: [[1.]] for every theta.
+        
+        The plane's rotations commute, so exp(theta + d) = exp(theta) exp(d) exactly
+        and every Jacobian of exp is the identity (shape (1, 1), for the generic
+        code and for SE2's blocks).
+        
+        Args:
+            theta: a float (or shape (1,)), finite.
+        
+        Returns:
+            ndarray: [[1.]], shape (1, 1), float64.
+        """
+    @staticmethod
+    def right_jacobian(theta: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The right Jacobian J_r of SO(2) at theta: [[1.]] for every theta.
+        
+        The plane's rotations commute, so exp(theta + d) = exp(theta) exp(d) exactly
+        and every Jacobian of exp is the identity (shape (1, 1), for the generic
+        code and for SE2's blocks).
+        
+        Args:
+            theta: a float (or shape (1,)), finite.
+        
+        Returns:
+            ndarray: [[1.]], shape (1, 1), float64.
+        """
+    @staticmethod
+    def right_jacobian_inverse(theta: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The inverse right Jacobian J_r^-1 of SO(2) at theta: [[1.]] for every theta.
+        
+        The plane's rotations commute, so exp(theta + d) = exp(theta) exp(d) exactly
+        and every Jacobian of exp is the identity (shape (1, 1), for the generic
+        code and for SE2's blocks).
+        
+        Args:
+            theta: a float (or shape (1,)), finite.
+        
+        Returns:
+            ndarray: [[1.]], shape (1, 1), float64.
+        """
+    @staticmethod
+    def rotation_defect(matrix: numpy.typing.ArrayLike) -> float:
+        """
+        How far a 2x2 matrix is from a rotation: max(|M^T M - I|_max, |det M - 1|).
+        
+        Args:
+            matrix: shape (2, 2).
+        
+        Returns:
+            float: the defect (inf when an entry is not finite).
+        """
+    @staticmethod
+    def vee(matrix: numpy.typing.ArrayLike) -> float:
+        """
+        The angle of a skew-symmetric 2x2 matrix: (W[1, 0] - W[0, 1]) / 2.
+        
+        Args:
+            matrix: shape (2, 2).
+        
+        Returns:
+            float: theta.
+        """
+    def __array__(self, dtype: numpy.typing.DTypeLike = None, copy: bool | None = None) -> numpy.ndarray:
+        """
+        The rotation matrix, shape (2, 2), for np.asarray (numpy's dtype and copy keywords).
+        """
+    def __copy__(self) -> SO2:
+        ...
+    def __deepcopy__(self, memo: typing.Any) -> SO2:
+        ...
+    def __eq__(self, other: typing.Any) -> bool:
+        """
+        Exact equality of the stored numbers: SO2s are values, compared as floats
+        (-0.0 == 0.0; a NaN is unequal to everything, itself included).
+        
+        For a tolerance, use ``is_approx(other, tol)``. An object of another type gives
+        NotImplemented, so ``==`` is False. SO2s are unhashable.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self) -> None:
+        """
+        The identity rotation.
+        """
+    @typing.overload
+    def __matmul__(self, other: SO2) -> SO2:
+        """
+        Composition: g_ab @ g_bc = g_ac.
+        
+        Args:
+            other: SO2.
+        
+        Returns:
+            SO2: the composed rotation.
+        """
+    @typing.overload
+    def __matmul__(self, points: numpy.typing.ArrayLike) -> typing.Any:
+        """
+        Action on points or vectors of the plane: p_a = R_ab p_b.
+        
+        The array function so2_act with this rotation: numpy's rules for dtypes and
+        broadcasting.
+        
+        Args:
+            points: array_like of shape (..., 2).
+        
+        Returns:
+            ndarray: the rotated points, shape (..., 2).
+        """
+    def __ne__(self, other: typing.Any) -> bool:
+        """
+        The negation of ``==``: some stored number differs (or is NaN), or other is not a SO2.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
+    def __pow__(self, t: float) -> SO2:
+        """
+        The power exp(t log g): t = 0 gives the identity, t = 1
+        this rotation, t = -1 its inverse, t = 0.5 the rotation half way along its
+        geodesic from the identity (the one whose square it is, for angles below pi),
+        as scipy's ``Rotation.__pow__``.
+        
+        Args:
+            t: the exponent, finite (not only an integer).
+        
+        Returns:
+            SO2: the power.
+        
+        Example:
+            >>> g = SO2.exp(0.5)
+            >>> ((g ** 0.5) @ (g ** 0.5)).is_approx(g) and (g ** -1).is_approx(g.inverse())
+            True
+        """
+    def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support: (copyreg.__newobj__, (cls,), state).
+        """
+    def __reduce_ex__(self, protocol: typing.SupportsInt | typing.SupportsIndex) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support (every protocol): (copyreg.__newobj__, (cls,), state).
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: typing.Any) -> None:
+        ...
+    def act(self, points: numpy.typing.ArrayLike) -> typing.Any:
+        """
+        Action on points or vectors of the plane: p_a = R_ab p_b (the same as ``R @ points``).
+        
+        The array function so2_act with this rotation: numpy's rules for dtypes and
+        broadcasting.
+        
+        Args:
+            points: array_like of shape (..., 2).
+        
+        Returns:
+            ndarray: the rotated points, shape (..., 2).
+        
+        Example:
+            >>> np.round(SO2.exp(np.pi / 2).act([[1.0, 0.0], [0.0, 2.0]]), 12) + 0.0
+            array([[ 0.,  1.],
+                   [-2.,  0.]])
+        """
+    def adjoint(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The adjoint Ad_R = 1 (1x1): the plane's rotations commute.
+        
+        Returns:
+            ndarray: shape (1, 1).
+        """
+    def as_matrix(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The rotation matrix R = [[c, -s], [s, c]].
+        
+        Returns:
+            ndarray: shape (2, 2), float64 (a new array).
+        """
+    def inverse(self) -> SO2:
+        """
+        The inverse rotation R^-1 = R^T.
+        
+        Returns:
+            SO2: the inverse.
+        
+        Example:
+            >>> g = SO2.exp(0.5)
+            >>> (g @ g.inverse()).is_approx(SO2.identity())
+            True
+        """
+    def is_approx(self, other: SO2, tol: float = 1e-09) -> bool:
+        """
+        Whether two rotations are equal within tol: the stored (cos, sin) within tol.
+        
+        ``==`` is the exact comparison (every stored number equal).
+        
+        Args:
+            other: SO2.
+            tol: the largest accepted difference (>= 0).
+        
+        Returns:
+            bool.
+        """
+    def log(self) -> float:
+        """
+        The angle theta = atan2(sin, cos) in [-pi, pi].
+        
+        Accurate to an ulp over the whole range (no acos).
+        
+        Returns:
+            float: theta.
+        
+        Example:
+            >>> SO2.exp(0.5).log()
+            0.5
+        """
+    def normalized(self) -> SO2:
+        """
+        The same rotation with the nearest rotation.
+        
+        Removes the drift that accumulates over many compositions.
+        
+        Returns:
+            SO2: the projected rotation.
+        """
+class SE2:
+    """
+    A rigid motion of the plane: an element of SE(2), stored as a rotation R (an SO2) and a translation t.
+    
+    Its matrix is g = [[R, t], [0, 1]] (3x3); ``g_ab`` maps frame b to frame a,
+    ``q_a = R q_b + t`` (``g @ q``), ``g_ac = g_ab @ g_bc``. The tangent space is
+    the planar twists xi = (vx, vy, w), linear part first (as SE3, manif and
+    jaxlie).
+    
+    Example:
+        >>> g = SE2(SO2.exp(np.pi / 2), [1.0, 2.0])
+        >>> np.round(g @ [1.0, 0.0], 12) + 0.0
+        array([1., 3.])
+        >>> SE2.exp(g.log()).is_approx(g)
+        True
+    """
+    __array_ufunc__ = None
+    __hash__: typing.ClassVar[None] = None
+    dtype: typing.ClassVar[numpy.dtypes.Float64DType]
+    @staticmethod
+    def exp(xi: numpy.typing.ArrayLike) -> SE2:
+        """
+        The motion exp([xi]) of a planar twist xi = (vx, vy, w), linear part first.
+        
+        R = exp(w), t = V (vx, vy) with V = [[a, -b], [b, a]], a = sin(w) / w,
+        b = (1 - cos(w)) / w: one sincos, series below the cutoff, exact to a few
+        ulps for every xi.
+        
+        Args:
+            xi: (vx, vy, w), shape (3,), finite.
+        
+        Returns:
+            SE2: exp([xi]).
+        
+        Example:
+            >>> np.round(SE2.exp([1.0, 0.0, np.pi / 2]).translation, 12) + 0.0
+            array([0.63661977, 0.63661977])
+        """
+    @staticmethod
+    def from_matrix(matrix: numpy.typing.ArrayLike, tol: float = 1.4901161193847656e-08) -> SE2:
+        """
+        Checked construction from a 3x3 homogeneous matrix [[R, t], [0, 1]].
+        
+        Accepts M when the rotation defect of its top-left block and the deviation
+        of its bottom row from (0, 0, 1) are both at most tol (default sqrt(eps)).
+        
+        Args:
+            matrix: shape (3, 3), finite.
+            tol: the largest accepted defect.
+        
+        Returns:
+            SE2: the motion.
+        
+        Raises:
+            ValueError: M is not a rigid motion within tol (the message gives both
+                defects), or M is not finite, or not of shape (3, 3).
+        
+        Example:
+            >>> SE2.from_matrix(np.eye(3)) == SE2()
+            True
+        """
+    @staticmethod
+    def from_matrix_projected(matrix: numpy.typing.ArrayLike) -> SE2:
+        """
+        The nearest rotation to the top-left block, and the translation column.
+        
+        The bottom row is not read.
+        
+        Args:
+            matrix: shape (3, 3), finite.
+        
+        Returns:
+            SE2: the projected motion.
+        """
+    @staticmethod
+    def from_matrix_unchecked(matrix: numpy.typing.ArrayLike) -> SE2:
+        """
+        Construction without a check from [[R, t], [*, *]], for valid data.
+        
+        Args:
+            matrix: shape (3, 3), finite.
+        
+        Returns:
+            SE2: the motion.
+        """
+    @staticmethod
+    def hat(xi: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The 3x3 matrix [xi] = [[0, -w, vx], [w, 0, vy], [0, 0, 0]].
+        
+        Args:
+            xi: (vx, vy, w), shape (3,).
+        
+        Returns:
+            ndarray: shape (3, 3).
+        """
+    @staticmethod
+    def identity() -> SE2:
+        """
+        The identity motion.
+        """
+    @staticmethod
+    def interpolate(a: SE2, b: SE2, t: float) -> SE2:
+        """
+        Geodesic interpolation a exp(t log(a^-1 b)).
+        
+        t = 0 gives a, t = 1 gives b, and the motion in between is one rotation about a fixed point.
+        
+        Args:
+            a: SE2, the start.
+            b: SE2, the end.
+            t: the fraction, finite.
+        
+        Returns:
+            SE2: the interpolated motion.
+        
+        Example:
+            >>> a, b = SE2(), SE2.exp([0.1, 0.2, 0.3])
+            >>> SE2.interpolate(a, b, 0.5).is_approx(a @ SE2.exp(0.5 * np.array([0.1, 0.2, 0.3])))
+            True
+        """
+    @staticmethod
+    def left_jacobian(xi: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The left Jacobian J_l of SE(2) at xi = (vx, vy, w), shape (3, 3).
+        
+        Linear part first. Right (local) convention, as manif:
+        exp(xi + dxi) = exp(xi) exp(J_r(xi) dxi + o(dxi)) and
+        exp(xi + dxi) = exp(J_l(xi) dxi + o(dxi)) exp(xi), with
+        J_l = [[a, -b, C vx + B vy], [b, a, -B vx + C vy], [0, 0, 1]],
+        a = sin(w) / w, b = (1 - cos w) / w, B = b / w, C = (w - sin w) / w^2
+        (Sola et al. 2018, appendix C), J_r(xi) = J_l(-xi), and the inverses by the
+        block formula [[V^-1, -V^-1 u], [0, 1]] (finite for |w| < 2 pi).
+        
+        Args:
+            xi: (vx, vy, w), shape (3,), finite.
+        
+        Returns:
+            ndarray: shape (3, 3), float64.
+        """
+    @staticmethod
+    def left_jacobian_inverse(xi: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The inverse left Jacobian J_l^-1 of SE(2) at xi = (vx, vy, w), shape (3, 3).
+        
+        Linear part first. Right (local) convention, as manif:
+        exp(xi + dxi) = exp(xi) exp(J_r(xi) dxi + o(dxi)) and
+        exp(xi + dxi) = exp(J_l(xi) dxi + o(dxi)) exp(xi), with
+        J_l = [[a, -b, C vx + B vy], [b, a, -B vx + C vy], [0, 0, 1]],
+        a = sin(w) / w, b = (1 - cos w) / w, B = b / w, C = (w - sin w) / w^2
+        (Sola et al. 2018, appendix C), J_r(xi) = J_l(-xi), and the inverses by the
+        block formula [[V^-1, -V^-1 u], [0, 1]] (finite for |w| < 2 pi).
+        
+        Args:
+            xi: (vx, vy, w), shape (3,), finite.
+        
+        Returns:
+            ndarray: shape (3, 3), float64.
+        """
+    @staticmethod
+    def right_jacobian(xi: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The right Jacobian J_r of SE(2) at xi = (vx, vy, w), shape (3, 3).
+        
+        Linear part first. Right (local) convention, as manif:
+        exp(xi + dxi) = exp(xi) exp(J_r(xi) dxi + o(dxi)) and
+        exp(xi + dxi) = exp(J_l(xi) dxi + o(dxi)) exp(xi), with
+        J_l = [[a, -b, C vx + B vy], [b, a, -B vx + C vy], [0, 0, 1]],
+        a = sin(w) / w, b = (1 - cos w) / w, B = b / w, C = (w - sin w) / w^2
+        (Sola et al. 2018, appendix C), J_r(xi) = J_l(-xi), and the inverses by the
+        block formula [[V^-1, -V^-1 u], [0, 1]] (finite for |w| < 2 pi).
+        
+        Args:
+            xi: (vx, vy, w), shape (3,), finite.
+        
+        Returns:
+            ndarray: shape (3, 3), float64.
+        """
+    @staticmethod
+    def right_jacobian_inverse(xi: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The inverse right Jacobian J_r^-1 of SE(2) at xi = (vx, vy, w), shape (3, 3).
+        
+        Linear part first. Right (local) convention, as manif:
+        exp(xi + dxi) = exp(xi) exp(J_r(xi) dxi + o(dxi)) and
+        exp(xi + dxi) = exp(J_l(xi) dxi + o(dxi)) exp(xi), with
+        J_l = [[a, -b, C vx + B vy], [b, a, -B vx + C vy], [0, 0, 1]],
+        a = sin(w) / w, b = (1 - cos w) / w, B = b / w, C = (w - sin w) / w^2
+        (Sola et al. 2018, appendix C), J_r(xi) = J_l(-xi), and the inverses by the
+        block formula [[V^-1, -V^-1 u], [0, 1]] (finite for |w| < 2 pi).
+        
+        Args:
+            xi: (vx, vy, w), shape (3,), finite.
+        
+        Returns:
+            ndarray: shape (3, 3), float64.
+        """
+    @staticmethod
+    def transform_defect(matrix: numpy.typing.ArrayLike) -> float:
+        """
+        How far a 3x3 matrix is from a rigid motion of the plane.
+        
+        The rotation defect of its top-left block or the deviation of its bottom
+        row from (0, 0, 1), whichever is larger.
+        
+        Args:
+            matrix: shape (3, 3).
+        
+        Returns:
+            float: the defect.
+        """
+    @staticmethod
+    def vee(matrix: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The twist (vx, vy, w) of a 3x3 matrix: the inverse of hat.
+        
+        w is read from the antisymmetric part of the top-left block; the bottom row
+        is ignored.
+        
+        Args:
+            matrix: shape (3, 3).
+        
+        Returns:
+            ndarray: shape (3,).
+        """
+    def __array__(self, dtype: numpy.typing.DTypeLike = None, copy: bool | None = None) -> numpy.ndarray:
+        """
+        The homogeneous matrix, shape (3, 3), for np.asarray (numpy's dtype and copy keywords).
+        """
+    def __copy__(self) -> SE2:
+        ...
+    def __deepcopy__(self, memo: typing.Any) -> SE2:
+        ...
+    def __eq__(self, other: typing.Any) -> bool:
+        """
+        Exact equality of the stored numbers: SE2s are values, compared as floats
+        (-0.0 == 0.0; a NaN is unequal to everything, itself included).
+        
+        For a tolerance, use ``is_approx(other, tol)``. An object of another type gives
+        NotImplemented, so ``==`` is False. SE2s are unhashable.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, rotation: SO2 = ..., translation: numpy.typing.ArrayLike = (0.0, 0.0)) -> None:
+        """
+        The rigid motion g = [[R, t], [0, 1]] of a rotation and a translation.
+        
+        Args:
+            rotation: SO2, R (default: the identity).
+            translation: shape (2,), t, finite (default: 0).
+        """
+    @typing.overload
+    def __matmul__(self, other: SE2) -> SE2:
+        """
+        Composition: g_ab @ g_bc = g_ac.
+        
+        Args:
+            other: SE2.
+        
+        Returns:
+            SE2: the composed motion.
+        """
+    @typing.overload
+    def __matmul__(self, points: numpy.typing.ArrayLike) -> typing.Any:
+        """
+        Action on points of the plane: q_a = R q_b + t.
+        
+        The array function se2_act with this motion: numpy's rules for dtypes and
+        broadcasting.
+        
+        Args:
+            points: array_like of shape (..., 2).
+        
+        Returns:
+            ndarray: the moved points, shape (..., 2).
+        """
+    def __ne__(self, other: typing.Any) -> bool:
+        """
+        The negation of ``==``: some stored number differs (or is NaN), or other is not a SE2.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
+    def __pow__(self, t: float) -> SE2:
+        """
+        The power exp(t log g): t = 0 gives the identity, t = 1
+        this motion, t = -1 its inverse, t = 0.5 the motion half way along its
+        geodesic from the identity (the one whose square it is, for angles below pi),
+        as scipy's ``Rotation.__pow__``.
+        
+        Args:
+            t: the exponent, finite (not only an integer).
+        
+        Returns:
+            SE2: the power.
+        
+        Example:
+            >>> g = SE2.exp([0.1, 0.2, 0.3])
+            >>> ((g ** 0.5) @ (g ** 0.5)).is_approx(g) and (g ** -1).is_approx(g.inverse())
+            True
+        """
+    def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support: (copyreg.__newobj__, (cls,), state).
+        """
+    def __reduce_ex__(self, protocol: typing.SupportsInt | typing.SupportsIndex) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support (every protocol): (copyreg.__newobj__, (cls,), state).
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: typing.Any) -> None:
+        ...
+    def act(self, points: numpy.typing.ArrayLike) -> typing.Any:
+        """
+        Action on points of the plane: q_a = R q_b + t (the same as ``g @ points``).
+        
+        The array function se2_act with this motion: numpy's rules for dtypes and
+        broadcasting.
+        
+        Args:
+            points: array_like of shape (..., 2).
+        
+        Returns:
+            ndarray: the moved points, shape (..., 2).
+        
+        Example:
+            >>> SE2(translation=[1.0, 0.0]).act([[0.0, 0.0], [1.0, 1.0]])
+            array([[1., 0.],
+                   [2., 1.]])
+        """
+    def adjoint(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The adjoint Ad_g = [[R, (t_y, -t_x)], [0, 1]] (3x3), so that g [xi] g^-1 = [Ad_g xi].
+        
+        Returns:
+            ndarray: shape (3, 3).
+        """
+    def as_matrix(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The homogeneous matrix g = [[R, t], [0, 1]] (3x3).
+        
+        Returns:
+            ndarray: shape (3, 3), float64 (a new array).
+        """
+    def inverse(self) -> SE2:
+        """
+        The inverse motion g^-1 = [[R^T, -R^T t], [0, 1]].
+        
+        Returns:
+            SE2: the inverse.
+        
+        Example:
+            >>> g = SE2.exp([0.1, 0.2, 0.3])
+            >>> (g @ g.inverse()).is_approx(SE2.identity())
+            True
+        """
+    def is_approx(self, other: SE2, tol: float = 1e-09) -> bool:
+        """
+        Whether two motions are equal within tol: rotations within tol (absolute), translations within
+        tol * max(1, |t|_max).
+        
+        ``==`` is the exact comparison (every stored number equal).
+        
+        Args:
+            other: SE2.
+            tol: the tolerance (>= 0).
+        
+        Returns:
+            bool.
+        """
+    def log(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The twist xi = (vx, vy, w) with exp([xi]) = g, w in [-pi, pi].
+        
+        w = atan2(sin, cos); (vx, vy) = V^-1 t with V^-1 = [[e, w/2], [-w/2, e]],
+        e = (w/2) cot(w/2), without cancellation near 0 or pi.
+        
+        Returns:
+            ndarray: xi = (vx, vy, w), shape (3,).
+        
+        Example:
+            >>> SE2(translation=[1.0, 2.0]).log()
+            array([1., 2., 0.])
+        """
+    def normalized(self) -> SE2:
+        """
+        The same motion with the nearest rotation.
+        
+        Removes the drift that accumulates over many compositions.
+        
+        Returns:
+            SE2: the projected motion.
+        """
+    @property
+    def rotation(self) -> SO2:
+        """
+        SO2: the rotation R of g = [[R, t], [0, 1]].
+        """
+    @property
+    def translation(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        ndarray: the translation t of g = [[R, t], [0, 1]], shape (2,) (a new array).
+        """
 class Twist:
     """
     A twist xi = (v, w) in se(3): linear part first, angular part second
@@ -2404,6 +3198,12 @@ def _threads_started() -> int:
     For the tests: how many threads the array functions' loops have started since import.
     """
 @typing.overload
+def act_jacobians(g: SO2, p: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
+@typing.overload
+def act_jacobians(g: SE2, p: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
+@typing.overload
 def act_jacobians(g: SO3, p: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     ...
 @typing.overload
@@ -2413,18 +3213,20 @@ def act_jacobians(g: SE3, p: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArr
     
     Right-local in g: (g exp(dx)) (p + dp) = g p + J_g dx + J_p dp + o(dx, dp).
     SO3: J_g = -R [p], J_p = R; SE3: J_g = [R, -R [p]] (columns (v, w), linear
-    part first), J_p = R (Sola et al. 2018, appendices B and D).
+    part first), J_p = R (Sola et al. 2018, appendices B and D). SO2:
+    J_g = R (-p_y, p_x); SE2: J_g = [R, R (-p_y, p_x)] (columns (vx, vy, w)).
     
     Args:
-        g: SO3 or SE3.
-        p: point, shape (3,), finite.
+        g: SO2, SE2, SO3 or SE3.
+        p: point, shape (2,) for SO2 and SE2, (3,) for SO3 and SE3, finite.
     
     Returns:
-        tuple[ndarray, ndarray]: (J_g, J_p); J_g of shape (3, 3) for SO3,
-        (3, 6) for SE3, J_p of shape (3, 3); float64.
+        tuple[ndarray, ndarray]: (J_g, J_p); J_g of shape (2, 1) for SO2, (2, 3)
+        for SE2, (3, 3) for SO3, (3, 6) for SE3; J_p = R, shape (2, 2) or (3, 3);
+        float64.
     
     Raises:
-        ValueError: p is not of shape (3,), or not finite.
+        ValueError: p is not of g's point shape, or not finite.
     
     Example:
         >>> g = chasles.SE3(translation=[1.0, 0.0, 0.0])
@@ -2435,6 +3237,12 @@ def act_jacobians(g: SE3, p: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArr
                [ 0.,  0.,  1.,  0.,  0.,  0.]])
     """
 @typing.overload
+def between(a: SO2, b: SO2) -> SO2:
+    ...
+@typing.overload
+def between(a: SE2, b: SE2) -> SE2:
+    ...
+@typing.overload
 def between(a: SO3, b: SO3) -> SO3:
     ...
 @typing.overload
@@ -2443,11 +3251,11 @@ def between(a: SE3, b: SE3) -> SE3:
     between(a, b) = a^-1 b: b seen from a (manif's a.between(b)).
     
     Args:
-        a: SO3 or SE3.
+        a: SO2, SE2, SO3 or SE3.
         b: of the same group as a.
     
     Returns:
-        SO3 or SE3: a^-1 b.
+        SO2, SE2, SO3 or SE3: a^-1 b.
     
     Raises:
         TypeError: a and b are not of the same group.
@@ -2458,6 +3266,12 @@ def between(a: SE3, b: SE3) -> SE3:
         >>> chasles.between(a, b).translation
         array([0., 2., 0.])
     """
+@typing.overload
+def between_jacobians(a: SO2, b: SO2) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
+@typing.overload
+def between_jacobians(a: SE2, b: SE2) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
 @typing.overload
 def between_jacobians(a: SO3, b: SO3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     ...
@@ -2471,12 +3285,12 @@ def between_jacobians(a: SE3, b: SE3) -> tuple[numpy.typing.NDArray[numpy.float6
     section IV; manif's between Jacobians).
     
     Args:
-        a: SO3 or SE3.
+        a: SO2, SE2, SO3 or SE3.
         b: of the same group as a.
     
     Returns:
-        tuple[ndarray, ndarray]: (J_a, J_b), each of shape (3, 3) for SO3,
-        (6, 6) for SE3 (twists (v, w), linear part first), float64.
+        tuple[ndarray, ndarray]: (J_a, J_b), each of shape (D, D): (1, 1) for SO2,
+        (3, 3) for SE2 and SO3, (6, 6) for SE3 (twists (v, w)), float64.
     
     Raises:
         TypeError: a and b are not of the same group.
@@ -2487,6 +3301,12 @@ def between_jacobians(a: SE3, b: SE3) -> tuple[numpy.typing.NDArray[numpy.float6
         >>> bool(np.allclose(J_a, -a.as_matrix())), bool(np.array_equal(J_b, np.eye(3)))
         (True, True)
     """
+@typing.overload
+def compose_jacobians(a: SO2, b: SO2) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
+@typing.overload
+def compose_jacobians(a: SE2, b: SE2) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
 @typing.overload
 def compose_jacobians(a: SO3, b: SO3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     ...
@@ -2499,12 +3319,12 @@ def compose_jacobians(a: SE3, b: SE3) -> tuple[numpy.typing.NDArray[numpy.float6
     with J_a = Ad_{b^-1} and J_b = I (Sola et al. 2018, section IV).
     
     Args:
-        a: SO3 or SE3.
+        a: SO2, SE2, SO3 or SE3.
         b: of the same group as a.
     
     Returns:
-        tuple[ndarray, ndarray]: (J_a, J_b), each of shape (3, 3) for SO3,
-        (6, 6) for SE3 (twists (v, w), linear part first), float64.
+        tuple[ndarray, ndarray]: (J_a, J_b), each of shape (D, D): (1, 1) for SO2,
+        (3, 3) for SE2 and SO3, (6, 6) for SE3 (twists (v, w)), float64.
     
     Raises:
         TypeError: a and b are not of the same group.
@@ -2519,6 +3339,12 @@ def get_num_threads() -> int:
     """
     The number of threads an array function may split a large batch across (set_num_threads).
     """
+@typing.overload
+def interpolate(a: SO2, b: SO2, t: float) -> SO2:
+    ...
+@typing.overload
+def interpolate(a: SE2, b: SE2, t: float) -> SE2:
+    ...
 @typing.overload
 def interpolate(a: SO3, b: SO3, t: float) -> SO3:
     """
@@ -2551,6 +3377,12 @@ def interpolate(a: SE3, b: SE3, t: float) -> SE3:
         array([0., 0., 1.])
     """
 @typing.overload
+def interpolate_jacobian_t(a: SO2, b: SO2, t: float) -> float:
+    ...
+@typing.overload
+def interpolate_jacobian_t(a: SE2, b: SE2, t: float) -> numpy.typing.NDArray[numpy.float64]:
+    ...
+@typing.overload
 def interpolate_jacobian_t(a: SO3, b: SO3, t: float) -> numpy.typing.NDArray[numpy.float64]:
     ...
 @typing.overload
@@ -2563,13 +3395,13 @@ def interpolate_jacobian_t(a: SE3, b: SE3, t: float) -> numpy.typing.NDArray[num
     (the geodesic has constant body velocity).
     
     Args:
-        a: SO3 or SE3, the start.
+        a: SO2, SE2, SO3 or SE3, the start.
         b: of the same group as a, the end.
         t: the fraction, finite.
     
     Returns:
-        ndarray: shape (3,) for SO3, (6,) for SE3 ((v, w), linear part first),
-        float64.
+        float or ndarray: SO2's angle, shape (3,) for SE2 and SO3, (6,) for
+        SE3 ((v, w), linear part first).
     
     Raises:
         ValueError: t is not finite.
@@ -2580,6 +3412,12 @@ def interpolate_jacobian_t(a: SE3, b: SE3, t: float) -> numpy.typing.NDArray[num
         >>> chasles.interpolate_jacobian_t(a, b, 0.5)
         array([2., 0., 0., 0., 0., 0.])
     """
+@typing.overload
+def inverse_jacobian(g: SO2) -> numpy.typing.NDArray[numpy.float64]:
+    ...
+@typing.overload
+def inverse_jacobian(g: SE2) -> numpy.typing.NDArray[numpy.float64]:
+    ...
 @typing.overload
 def inverse_jacobian(g: SO3) -> numpy.typing.NDArray[numpy.float64]:
     ...
@@ -2593,11 +3431,11 @@ def inverse_jacobian(g: SE3) -> numpy.typing.NDArray[numpy.float64]:
     section IV).
     
     Args:
-        g: SO3 or SE3.
+        g: SO2, SE2, SO3 or SE3.
     
     Returns:
-        ndarray: shape (3, 3) for SO3 (-R), (6, 6) for SE3 (-Ad_g, twists
-        (v, w), linear part first), float64.
+        ndarray: shape (D, D): (1, 1) for SO2 (-1), (3, 3) for SE2 and SO3
+        (-R), (6, 6) for SE3 (-Ad_g, twists (v, w)), float64.
     
     Example:
         >>> g = chasles.SO3.exp([0.0, 0.0, np.pi / 2])
@@ -2607,6 +3445,12 @@ def inverse_jacobian(g: SE3) -> numpy.typing.NDArray[numpy.float64]:
                [ 0.,  0., -1.]])
     """
 @typing.overload
+def lminus(g: SO2, h: SO2) -> float:
+    ...
+@typing.overload
+def lminus(g: SE2, h: SE2) -> numpy.typing.NDArray[numpy.float64]:
+    ...
+@typing.overload
 def lminus(g: SO3, h: SO3) -> numpy.typing.NDArray[numpy.float64]:
     ...
 @typing.overload
@@ -2615,12 +3459,19 @@ def lminus(g: SE3, h: SE3) -> numpy.typing.NDArray[numpy.float64]:
     g lminus h = log(g h^-1): the xi with lplus(xi, h) == g.
     
     Args:
-        g: SO3 or SE3.
+        g: SO2, SE2, SO3 or SE3.
         h: of the same group as g.
     
     Returns:
-        ndarray: shape (3,) for SO3, (6,) for SE3 ((v, w), linear part first).
+        float or ndarray: SO2's angle, shape (3,) for SE2 ((vx, vy, w)) and
+        SO3, (6,) for SE3 ((v, w)).
     """
+@typing.overload
+def lminus_jacobians(g: SO2, h: SO2) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
+@typing.overload
+def lminus_jacobians(g: SE2, h: SE2) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
 @typing.overload
 def lminus_jacobians(g: SO3, h: SO3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     ...
@@ -2635,12 +3486,12 @@ def lminus_jacobians(g: SE3, h: SE3) -> tuple[numpy.typing.NDArray[numpy.float64
     log jumps between w and -w.
     
     Args:
-        g: SO3 or SE3.
+        g: SO2, SE2, SO3 or SE3.
         h: of the same group as g.
     
     Returns:
-        tuple[ndarray, ndarray]: (J_g, J_h), each of shape (3, 3) for SO3,
-        (6, 6) for SE3 (twists (v, w), linear part first), float64.
+        tuple[ndarray, ndarray]: (J_g, J_h), each of shape (D, D): (1, 1) for SO2,
+        (3, 3) for SE2 and SO3, (6, 6) for SE3 (twists (v, w)), float64.
     
     Raises:
         TypeError: g and h are not of the same group.
@@ -2651,6 +3502,12 @@ def lminus_jacobians(g: SE3, h: SE3) -> tuple[numpy.typing.NDArray[numpy.float64
         >>> bool(np.allclose(J_g, h.as_matrix())), bool(np.array_equal(J_h, -J_g))
         (True, True)
     """
+@typing.overload
+def log_jacobian(g: SO2) -> numpy.typing.NDArray[numpy.float64]:
+    ...
+@typing.overload
+def log_jacobian(g: SE2) -> numpy.typing.NDArray[numpy.float64]:
+    ...
 @typing.overload
 def log_jacobian(g: SO3) -> numpy.typing.NDArray[numpy.float64]:
     ...
@@ -2665,11 +3522,11 @@ def log_jacobian(g: SE3) -> numpy.typing.NDArray[numpy.float64]:
     w and -w (J is that of the branch log returns).
     
     Args:
-        g: SO3 or SE3.
+        g: SO2, SE2, SO3 or SE3.
     
     Returns:
-        ndarray: shape (3, 3) for SO3, (6, 6) for SE3 (rows and columns (v, w),
-        linear part first), float64.
+        ndarray: shape (D, D), D the tangent size: (1, 1) for SO2, (3, 3) for
+        SE2 and SO3, (6, 6) for SE3 (rows and columns (v, w)), float64.
     
     Example:
         >>> g = chasles.SO3.exp([0.0, 0.0, 0.5])
@@ -2679,6 +3536,12 @@ def log_jacobian(g: SE3) -> numpy.typing.NDArray[numpy.float64]:
         True
     """
 @typing.overload
+def lplus(xi: numpy.typing.ArrayLike, g: SO2) -> SO2:
+    ...
+@typing.overload
+def lplus(xi: numpy.typing.ArrayLike, g: SE2) -> SE2:
+    ...
+@typing.overload
 def lplus(xi: numpy.typing.ArrayLike, g: SO3) -> SO3:
     ...
 @typing.overload
@@ -2687,15 +3550,21 @@ def lplus(xi: numpy.typing.ArrayLike, g: SE3) -> SE3:
     xi lplus g = exp(xi) g: a perturbation in the fixed (global, left) frame.
     
     Args:
-        xi: tangent vector, shape (3,) for SO3, (6,) for SE3 ((v, w)), finite.
-        g: SO3 or SE3.
+        xi: tangent vector of g's group, finite (as for rplus).
+        g: SO2, SE2, SO3 or SE3.
     
     Returns:
-        SO3 or SE3: exp(xi) g.
+        SO2, SE2, SO3 or SE3: exp(xi) g.
     
     Raises:
         ValueError: xi has the wrong shape for g, or is not finite.
     """
+@typing.overload
+def lplus_jacobians(xi: numpy.typing.ArrayLike, g: SO2) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
+@typing.overload
+def lplus_jacobians(xi: numpy.typing.ArrayLike, g: SE2) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
 @typing.overload
 def lplus_jacobians(xi: numpy.typing.ArrayLike, g: SO3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     ...
@@ -2709,13 +3578,12 @@ def lplus_jacobians(xi: numpy.typing.ArrayLike, g: SE3) -> tuple[numpy.typing.ND
     J_g = I (Sola et al. 2018, sections III and IV).
     
     Args:
-        xi: tangent vector, shape (3,) for SO3, (6,) for SE3 ((v, w), linear
-            part first), finite.
-        g: SO3 or SE3.
+        xi: tangent vector of g's group, finite (as for rplus).
+        g: SO2, SE2, SO3 or SE3.
     
     Returns:
-        tuple[ndarray, ndarray]: (J_xi, J_g), each of shape (3, 3) for SO3,
-        (6, 6) for SE3, float64.
+        tuple[ndarray, ndarray]: (J_xi, J_g), each of shape (D, D): (1, 1) for SO2,
+        (3, 3) for SE2 and SO3, (6, 6) for SE3, float64.
     
     Raises:
         ValueError: xi has the wrong shape for g, or is not finite.
@@ -2726,6 +3594,12 @@ def lplus_jacobians(xi: numpy.typing.ArrayLike, g: SE3) -> tuple[numpy.typing.ND
         >>> bool(np.allclose(J_xi, g.inverse().as_matrix())), bool(np.array_equal(J_g, np.eye(3)))
         (True, True)
     """
+@typing.overload
+def rminus(g: SO2, h: SO2) -> float:
+    ...
+@typing.overload
+def rminus(g: SE2, h: SE2) -> numpy.typing.NDArray[numpy.float64]:
+    ...
 @typing.overload
 def rminus(g: SO3, h: SO3) -> numpy.typing.NDArray[numpy.float64]:
     ...
@@ -2738,11 +3612,12 @@ def rminus(g: SE3, h: SE3) -> numpy.typing.NDArray[numpy.float64]:
     the arguments the other way round.
     
     Args:
-        g: SO3 or SE3.
+        g: SO2, SE2, SO3 or SE3.
         h: of the same group as g.
     
     Returns:
-        ndarray: shape (3,) for SO3, (6,) for SE3 ((v, w), linear part first).
+        float or ndarray: SO2's angle, shape (3,) for SE2 ((vx, vy, w)) and
+        SO3, (6,) for SE3 ((v, w)).
     
     Example:
         >>> h = chasles.SO3.exp([0.0, 0.0, 0.5])
@@ -2750,6 +3625,12 @@ def rminus(g: SE3, h: SE3) -> numpy.typing.NDArray[numpy.float64]:
         >>> np.round(chasles.rminus(g, h), 12) + 0.0
         array([0.3, 0. , 0. ])
     """
+@typing.overload
+def rminus_jacobians(g: SO2, h: SO2) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
+@typing.overload
+def rminus_jacobians(g: SE2, h: SE2) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
 @typing.overload
 def rminus_jacobians(g: SO3, h: SO3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     ...
@@ -2764,12 +3645,12 @@ def rminus_jacobians(g: SE3, h: SE3) -> tuple[numpy.typing.NDArray[numpy.float64
     log returns: finite up to the angle pi, where log jumps between w and -w.
     
     Args:
-        g: SO3 or SE3.
+        g: SO2, SE2, SO3 or SE3.
         h: of the same group as g.
     
     Returns:
-        tuple[ndarray, ndarray]: (J_g, J_h), each of shape (3, 3) for SO3,
-        (6, 6) for SE3 (twists (v, w), linear part first), float64.
+        tuple[ndarray, ndarray]: (J_g, J_h), each of shape (D, D): (1, 1) for SO2,
+        (3, 3) for SE2 and SO3, (6, 6) for SE3 (twists (v, w)), float64.
     
     Raises:
         TypeError: g and h are not of the same group.
@@ -2780,6 +3661,12 @@ def rminus_jacobians(g: SE3, h: SE3) -> tuple[numpy.typing.NDArray[numpy.float64
         (True, True)
     """
 @typing.overload
+def rplus(g: SO2, xi: numpy.typing.ArrayLike) -> SO2:
+    ...
+@typing.overload
+def rplus(g: SE2, xi: numpy.typing.ArrayLike) -> SE2:
+    ...
+@typing.overload
 def rplus(g: SO3, xi: numpy.typing.ArrayLike) -> SO3:
     ...
 @typing.overload
@@ -2788,12 +3675,13 @@ def rplus(g: SE3, xi: numpy.typing.ArrayLike) -> SE3:
     g rplus xi = g exp(xi): a perturbation in g's own (local, right) frame.
     
     Args:
-        g: SO3 or SE3.
-        xi: tangent vector, shape (3,) for SO3 (rotation vector w), (6,) for SE3
-            (twist (v, w), linear part first), finite.
+        g: SO2, SE2, SO3 or SE3.
+        xi: tangent vector of g's group, finite: SO2's angle theta (a float),
+            shape (3,) for SE2 ((vx, vy, w)) and SO3 (rotation vector w), (6,)
+            for SE3 (twist (v, w)); linear part first.
     
     Returns:
-        SO3 or SE3: g exp(xi).
+        SO2, SE2, SO3 or SE3: g exp(xi).
     
     Raises:
         ValueError: xi has the wrong shape for g, or is not finite.
@@ -2803,6 +3691,12 @@ def rplus(g: SE3, xi: numpy.typing.ArrayLike) -> SE3:
         >>> chasles.rplus(g, [0.0, 2.0, 0.0, 0.0, 0.0, 0.0]).translation
         array([1., 2., 0.])
     """
+@typing.overload
+def rplus_jacobians(g: SO2, xi: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
+@typing.overload
+def rplus_jacobians(g: SE2, xi: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
 @typing.overload
 def rplus_jacobians(g: SO3, xi: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     ...
@@ -2816,13 +3710,12 @@ def rplus_jacobians(g: SE3, xi: numpy.typing.ArrayLike) -> tuple[numpy.typing.ND
     al. 2018, section IV; manif's rplus Jacobians).
     
     Args:
-        g: SO3 or SE3.
-        xi: tangent vector, shape (3,) for SO3, (6,) for SE3 ((v, w), linear
-            part first), finite.
+        g: SO2, SE2, SO3 or SE3.
+        xi: tangent vector of g's group, finite (as for rplus).
     
     Returns:
-        tuple[ndarray, ndarray]: (J_g, J_xi), each of shape (3, 3) for SO3,
-        (6, 6) for SE3, float64.
+        tuple[ndarray, ndarray]: (J_g, J_xi), each of shape (D, D): (1, 1) for SO2,
+        (3, 3) for SE2 and SO3, (6, 6) for SE3, float64.
     
     Raises:
         ValueError: xi has the wrong shape for g, or is not finite.
@@ -2862,6 +3755,24 @@ _so3_from_quat_xyzw: numpy.ufunc
 _so3_from_rpy: numpy.ufunc
 _so3_spline: numpy.ufunc
 _so3_spline_rates: numpy.ufunc
+# se2_act(g, points): (3,3),(2)->(2)
+se2_act: _GUFunc_Nin2_Nout1[typing.Literal["se2_act"], typing.Literal["(3,3),(2)->(2)"]]
+# se2_compose(a, b): (3,3),(3,3)->(3,3)
+se2_compose: _GUFunc_Nin2_Nout1[typing.Literal["se2_compose"], typing.Literal["(3,3),(3,3)->(3,3)"]]
+# se2_exp(xi): (3)->(3,3)
+se2_exp: _GUFunc_Nin1_Nout1[typing.Literal["se2_exp"], typing.Literal["(3)->(3,3)"]]
+# se2_hat(xi): (3)->(3,3)
+se2_hat: _GUFunc_Nin1_Nout1[typing.Literal["se2_hat"], typing.Literal["(3)->(3,3)"]]
+# se2_interpolate(a, b, t): (3,3),(3,3),()->(3,3)
+se2_interpolate: _GUFunc_Nin3_Nout1[typing.Literal["se2_interpolate"], typing.Literal["(3,3),(3,3),()->(3,3)"]]
+# se2_inverse(g): (3,3)->(3,3)
+se2_inverse: _GUFunc_Nin1_Nout1[typing.Literal["se2_inverse"], typing.Literal["(3,3)->(3,3)"]]
+# se2_log(g): (3,3)->(3)
+se2_log: _GUFunc_Nin1_Nout1[typing.Literal["se2_log"], typing.Literal["(3,3)->(3)"]]
+# se2_normalize(g): (3,3)->(3,3)
+se2_normalize: _GUFunc_Nin1_Nout1[typing.Literal["se2_normalize"], typing.Literal["(3,3)->(3,3)"]]
+# se2_vee(matrix): (3,3)->(3)
+se2_vee: _GUFunc_Nin1_Nout1[typing.Literal["se2_vee"], typing.Literal["(3,3)->(3)"]]
 # se3_act(g, points): (4,4),(3)->(3)
 se3_act: _GUFunc_Nin2_Nout1[typing.Literal["se3_act"], typing.Literal["(4,4),(3)->(3)"]]
 # se3_act_jacobian(g, points): (4,4),(3)->(3,6)
@@ -2890,6 +3801,24 @@ se3_log: _GUFunc_Nin1_Nout1[typing.Literal["se3_log"], typing.Literal["(4,4)->(6
 se3_normalize: _GUFunc_Nin1_Nout1[typing.Literal["se3_normalize"], typing.Literal["(4,4)->(4,4)"]]
 # se3_vee(matrix): (4,4)->(6)
 se3_vee: _GUFunc_Nin1_Nout1[typing.Literal["se3_vee"], typing.Literal["(4,4)->(6)"]]
+# so2_act(R, points): (2,2),(2)->(2)
+so2_act: _GUFunc_Nin2_Nout1[typing.Literal["so2_act"], typing.Literal["(2,2),(2)->(2)"]]
+# so2_compose(a, b): (2,2),(2,2)->(2,2)
+so2_compose: _GUFunc_Nin2_Nout1[typing.Literal["so2_compose"], typing.Literal["(2,2),(2,2)->(2,2)"]]
+# so2_exp(theta): ()->(2,2)
+so2_exp: _GUFunc_Nin1_Nout1[typing.Literal["so2_exp"], typing.Literal["()->(2,2)"]]
+# so2_hat(theta): ()->(2,2)
+so2_hat: _GUFunc_Nin1_Nout1[typing.Literal["so2_hat"], typing.Literal["()->(2,2)"]]
+# so2_interpolate(a, b, t): (2,2),(2,2),()->(2,2)
+so2_interpolate: _GUFunc_Nin3_Nout1[typing.Literal["so2_interpolate"], typing.Literal["(2,2),(2,2),()->(2,2)"]]
+# so2_inverse(R): (2,2)->(2,2)
+so2_inverse: _GUFunc_Nin1_Nout1[typing.Literal["so2_inverse"], typing.Literal["(2,2)->(2,2)"]]
+# so2_log(R): (2,2)->()
+so2_log: _GUFunc_Nin1_Nout1[typing.Literal["so2_log"], typing.Literal["(2,2)->()"]]
+# so2_normalize(R): (2,2)->(2,2)
+so2_normalize: _GUFunc_Nin1_Nout1[typing.Literal["so2_normalize"], typing.Literal["(2,2)->(2,2)"]]
+# so2_vee(matrix): (2,2)->()
+so2_vee: _GUFunc_Nin1_Nout1[typing.Literal["so2_vee"], typing.Literal["(2,2)->()"]]
 # so3_act(R, points): (3,3),(3)->(3)
 so3_act: _GUFunc_Nin2_Nout1[typing.Literal["so3_act"], typing.Literal["(3,3),(3)->(3)"]]
 # so3_act_jacobian(R, points): (3,3),(3)->(3,3)

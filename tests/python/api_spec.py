@@ -89,6 +89,8 @@ class Gives:
 BOUND = (
     chasles.SO3,
     chasles.SE3,
+    chasles.SO2,
+    chasles.SE2,
     chasles.Twist,
     chasles.Wrench,
     chasles.Screw,
@@ -221,13 +223,16 @@ class TwistOr(Array):
 
 @dataclass
 class Points(Arg):
-    """Points of an object's action: the array function so3_act or se3_act
-    with the object's float64 matrix (float32 for a float32 ndarray: float32
-    points give float32), so shape (..., 3), any dtype numpy casts safely to
-    float64, NaN allowed; errors name the call."""
+    """Points of an object's action: the array function so3_act, se3_act,
+    so2_act or se2_act with the object's float64 matrix (float32 for a
+    float32 ndarray: float32 points give float32), so shape (..., n) (n = 3,
+    or 2 in the plane), any dtype numpy casts safely to float64, NaN allowed;
+    errors name the call."""
+
+    n: int = 3
 
     def good(self):
-        return np.array([[0.5, -1.0, 2.0], [1.0, 0.0, 0.25]])
+        return np.array([[0.5, -1.0, 2.0], [1.0, 0.0, 0.25]])[:, : self.n]
 
     def judge(self, value):
         if isinstance(value, BOUND):
@@ -239,7 +244,7 @@ class Points(Arg):
             return Refused(a.error, (self.label,))
         if not castable_to_float64(a.dtype):
             return Refused(TypeError, (self.label, "not supported for the input types"))
-        shape = core_shape_refusal(a.shape, (3,))
+        shape = core_shape_refusal(a.shape, (self.n,))
         if shape:
             return Refused(ValueError, (self.label,) + shape)
         float32 = isinstance(value, np.ndarray) and value.dtype.type is np.float32
@@ -509,6 +514,26 @@ def _rule(x, label, rule):
 
 
 @dataclass
+class Angle(Arg):
+    """SO2's tangent, the angle theta: a real number (Real), or an
+    array-like of shape (1,) (Array); finite unless `finite` is False."""
+
+    finite: bool = True
+
+    def good(self):
+        return 0.5
+
+    def judge(self, value):
+        if isinstance(value, (np.ndarray, list, tuple)) or (
+            hasattr(value, "__array__") and not isinstance(value, (np.generic, *BOUND))
+        ):
+            a = _asarray(value)
+            if not isinstance(a, Refused) and a.ndim >= 1:
+                return judge_fixed_array(value, self.label, ((1,),), self.finite)
+        return Real(self.label, "finite" if self.finite else "any").judge(value)
+
+
+@dataclass
 class Scalar(Arg):
     """The number of ``x * s``, ``s * x``, ``x / s`` (Twist, Wrench): a real
     scalar; anything else is not a number the operator knows (TypeError,
@@ -673,6 +698,11 @@ def _valid_state(cls_name, state):
         return False
     if cls_name in ("SO3", "SE3"):
         return _rotation_defect(x[:9].reshape(3, 3)) <= tol
+    if cls_name in ("SO2", "SE2"):
+        c, s = x[0], x[1]
+        R = np.array([[c, -s], [s, c]])
+        with np.errstate(all="ignore"):
+            return max(np.abs(R.T @ R - np.eye(2)).max(), abs(np.linalg.det(R) - 1.0)) <= tol
     if cls_name == "SpatialInertia":
         return x[0] > 0 and isinstance(RotationalInertia("I").judge(x[4:].reshape(3, 3)), Accepted)
     if cls_name == "Chain":
@@ -919,6 +949,8 @@ URDF_TEXT = (
 GOOD = {  # a fresh valid object of each class
     chasles.SO3: lambda: chasles.SO3.exp([0.1, 0.2, 0.3]),
     chasles.SE3: lambda: chasles.SE3(chasles.SO3.exp([0.1, 0.2, 0.3]), [1.0, 2.0, 3.0]),
+    chasles.SO2: lambda: chasles.SO2.exp(0.4),
+    chasles.SE2: lambda: chasles.SE2(chasles.SO2.exp(0.4), [1.0, 2.0]),
     chasles.Twist: lambda: chasles.Twist(v=[1.0, 0.0, 0.5], w=[0.0, 0.2, 1.0]),
     chasles.Wrench: lambda: chasles.Wrench(f=[0.0, 1.0, 1.0], tau=[0.5, 0.0, 0.0]),
     chasles.Screw: lambda: chasles.Screw([0.0, 1.0, 0.0], [0.0, 0.0, 1.0], 0.5, 1.0),
@@ -1085,21 +1117,30 @@ def _array_function(name, operands, kw=()):
     )
 
 
+GROUPS = {chasles.SO2: (1, 2), chasles.SE2: (3, 2), chasles.SO3: (3, 3), chasles.SE3: (6, 3)}  # tangent, point
+
+
 def _group_function(name, make, **kw):
-    """A module function overloaded on SO3 and SE3: make(group, tangent_size).
-    Its group arguments take either group (the overload is picked by them)."""
+    """A module function overloaded on SO2, SE2, SO3 and SE3:
+    make(group, tangent_size). Its group arguments take any group (the
+    overload is picked by them)."""
     f = getattr(chasles, name)
-    return Entry([make(chasles.SO3, 3), make(chasles.SE3, 6)], call=f, **kw)
+    return Entry([make(G, n) for G, (n, _) in GROUPS.items()], call=f, **kw)
 
 
 def _element(label, group):
-    """A group argument of a function overloaded on SO3 and SE3: either is
+    """A group argument of a function overloaded on the groups: any is
     taken (and picks the overload), its valid value being of `group`."""
-    return Instance(label, (chasles.SO3, chasles.SE3), valid=GOOD[group])
+    return Instance(label, tuple(GROUPS), valid=GOOD[group])
+
+
+def _tangent(label, n, finite=True):
+    """A tangent argument of size n: SO2's angle for n = 1."""
+    return Angle(label, finite) if n == 1 else Array(label, (n,), finite)
 
 
 def _build_spec():
-    SO3, SE3, Twist, Wrench, Screw, Chain, _ = BOUND
+    SO3, SE3, _, _, Twist, Wrench, Screw, Chain, _ = BOUND
     spec: dict[str, Entry] = {}
 
     # SO3
@@ -1227,6 +1268,48 @@ def _build_spec():
         SE3, "is_approx", Instance("other", (SE3,)), Real("SE3.is_approx(tol)", "tolerance", 1e-6)
     )
     spec.update(_protocols(SE3, [12]))
+
+    # SO2 and SE2
+    SO2, SE2 = chasles.SO2, chasles.SE2
+    for G, name, n, N, t in ((SO2, "SO2", 1, 2, "theta"), (SE2, "SE2", 3, 3, "xi")):
+        matrix = lambda G=G: GOOD[G]().as_matrix()  # noqa: E731
+        spec[f"{name}.identity"] = _static(G, "identity")
+        spec[f"{name}.exp"] = _static(G, "exp", _tangent(f"{name}.exp({t})", n))
+        spec[f"{name}.hat"] = _static(G, "hat", _tangent(f"{name}.hat({t})", n, finite=False))
+        spec[f"{name}.vee"] = _static(G, "vee", Array(f"{name}.vee(matrix)", (N, N), finite=False))
+        for m in ("log", "inverse", "adjoint", "as_matrix", "normalized"):
+            spec[f"{name}.{m}"] = _method(G, m)
+        spec[f"{name}.__matmul__"] = _binop(G, operator.matmul, PlanarOr(f"{name} @ points", (G,)), "__matmul__")
+        spec[f"{name}.act"] = _method(G, "act", Points(f"{name}.act(points)", 2))
+        spec[f"{name}.from_matrix"] = _static(
+            G,
+            "from_matrix",
+            Array(f"{name}.from_matrix(matrix)", (N, N), valid=matrix),
+            Real(f"{name}.from_matrix(tol)", "tolerance", 1e-6),
+        )
+        for form in ("projected", "unchecked"):
+            label = f"{name}.from_matrix_{form}(matrix)"
+            spec[f"{name}.from_matrix_{form}"] = _static(G, f"from_matrix_{form}", Array(label, (N, N), valid=matrix))
+        spec[f"{name}.__pow__"] = _binop(G, operator.pow, Real(f"{name} ** t"), "__pow__")
+        spec[f"{name}.interpolate"] = _static(
+            G, "interpolate", Instance("a", (G,)), Instance("b", (G,)), Real(f"{name}.interpolate(t)")
+        )
+        spec[f"{name}.is_approx"] = _method(
+            G, "is_approx", Instance("other", (G,)), Real(f"{name}.is_approx(tol)", "tolerance", 1e-6)
+        )
+        for jac in ("right_jacobian", "left_jacobian", "right_jacobian_inverse", "left_jacobian_inverse"):
+            spec[f"{name}.{jac}"] = _static(G, jac, _tangent(f"{name}.{jac}({t})", n))
+        spec.update(_protocols(G, [2 if G is SO2 else 4]))
+    spec["SO2.__init__"] = Entry([[]], call=SO2)
+    spec["SO2.rotation_defect"] = _static(
+        SO2, "rotation_defect", Array("SO2.rotation_defect(matrix)", (2, 2), finite=False)
+    )
+    spec["SE2.__init__"] = Entry([[Instance("rotation", (SO2,)), Array("SE2(translation)", (2,))]], call=SE2)
+    for p in ("rotation", "translation"):
+        spec[f"SE2.{p}"] = _prop(SE2, p)
+    spec["SE2.transform_defect"] = _static(
+        SE2, "transform_defect", Array("SE2.transform_defect(matrix)", (3, 3), finite=False)
+    )
 
     # from_screw of SE3, Twist, Wrench, and Screw itself
     for owner, cls, amount in (
@@ -1444,21 +1527,21 @@ def _build_spec():
 
     # module functions on objects, overloaded for SO3 and SE3
     E = _element
-    spec["rplus"] = _group_function("rplus", lambda G, n: [E("g", G), Array("rplus(g, xi)", (n,))])
-    spec["lplus"] = _group_function("lplus", lambda G, n: [Array("lplus(xi, g)", (n,)), E("g", G)])
+    spec["rplus"] = _group_function("rplus", lambda G, n: [E("g", G), _tangent("rplus(g, xi)", n)])
+    spec["lplus"] = _group_function("lplus", lambda G, n: [_tangent("lplus(xi, g)", n), E("g", G)])
     for f in ("rminus", "lminus"):
         spec[f] = _group_function(f, lambda G, n: [E("g", G), E("h", G)])
     for f in ("log_jacobian", "inverse_jacobian"):
         spec[f] = _group_function(f, lambda G, n: [E("g", G)])
     spec["compose_jacobians"] = _group_function("compose_jacobians", lambda G, n: [E("a", G), E("b", G)])
     spec["act_jacobians"] = _group_function(
-        "act_jacobians", lambda G, n: [E("g", G), Array("act_jacobians(g, p)", (3,))]
+        "act_jacobians", lambda G, n: [E("g", G), Array("act_jacobians(g, p)", (GROUPS[G][1],))]
     )
     spec["rplus_jacobians"] = _group_function(
-        "rplus_jacobians", lambda G, n: [E("g", G), Array("rplus_jacobians(g, xi)", (n,))]
+        "rplus_jacobians", lambda G, n: [E("g", G), _tangent("rplus_jacobians(g, xi)", n)]
     )
     spec["lplus_jacobians"] = _group_function(
-        "lplus_jacobians", lambda G, n: [Array("lplus_jacobians(xi, g)", (n,)), E("g", G)]
+        "lplus_jacobians", lambda G, n: [_tangent("lplus_jacobians(xi, g)", n), E("g", G)]
     )
     for f in ("rminus_jacobians", "lminus_jacobians"):
         spec[f] = _group_function(f, lambda G, n: [E("g", G), E("h", G)])
@@ -1476,7 +1559,8 @@ def _build_spec():
 
     # array functions
     R3, G4 = ((3, 3), rotation), ((4, 4), pose)
-    v3 = ((3,), None)
+    R2, G3 = ((2, 2), lambda: GOOD[chasles.SO2]().as_matrix()), ((3, 3), lambda: GOOD[chasles.SE2]().as_matrix())
+    v2, v3 = ((2,), None), ((3,), None)
     six = ((6,), None)
     arrays = {
         "so3_exp": [("w",) + v3],
@@ -1502,6 +1586,24 @@ def _build_spec():
         "se3_normalize": [("g", (4, 4), None)],
         "se3_hat": [("xi",) + six],
         "se3_vee": [("matrix", (4, 4), lambda: XI0.hat())],
+        "so2_exp": [("theta", (), None)],
+        "so2_log": [("R",) + R2],
+        "so2_compose": [("a",) + R2, ("b",) + R2],
+        "so2_inverse": [("R",) + R2],
+        "so2_act": [("R",) + R2, ("points",) + v2],
+        "so2_hat": [("theta", (), None)],
+        "so2_vee": [("matrix", (2, 2), None)],
+        "so2_interpolate": [("a",) + R2, ("b",) + R2, ("t", (), None)],
+        "so2_normalize": [("R", (2, 2), None)],
+        "se2_exp": [("xi",) + v3],
+        "se2_log": [("g",) + G3],
+        "se2_compose": [("a",) + G3, ("b",) + G3],
+        "se2_inverse": [("g",) + G3],
+        "se2_act": [("g",) + G3, ("points",) + v2],
+        "se2_hat": [("xi",) + v3],
+        "se2_vee": [("matrix", (3, 3), None)],
+        "se2_interpolate": [("a",) + G3, ("b",) + G3, ("t", (), None)],
+        "se2_normalize": [("g", (3, 3), None)],
         "so3_angle": [("R",) + R3],
         "so3_distance": [("a",) + R3, ("b",) + R3],
         "se3_distance": [("a",) + G4, ("b",) + G4],
@@ -1661,6 +1763,22 @@ class SO3Or(Arg):
         if isinstance(value, chasles.SO3):
             return Instance(self.label, (chasles.SO3,)).judge(value)
         return Points(self.label).judge(value)
+
+
+@dataclass
+class PlanarOr(Arg):
+    """The right operand of ``g @ x`` for SO2 and SE2: one of `objects`
+    (composition) or points of the plane."""
+
+    objects: tuple = ()
+
+    def good(self):
+        return np.array([[0.5, -1.0]])
+
+    def judge(self, value):
+        if isinstance(value, self.objects):
+            return Instance(self.label, self.objects).judge(value)
+        return Points(self.label, 2).judge(value)
 
 
 @dataclass

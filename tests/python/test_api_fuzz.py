@@ -162,19 +162,20 @@ def run(call, args):
 def broadcast_verdict(name, signature, args):
     """The array functions' cross-operand rules: batch shapes must broadcast;
     the result has the broadcast batch shape, float32 iff every operand that
-    is not a Python scalar is float32."""
+    is not a Python int or float casts safely to float32 (NEP 50: a Python
+    bool is numpy's bool, not a weak scalar; so2_exp(True) is float32)."""
     shapes, strong = [], []
     for arg, value in zip(signature, args):
         if isinstance(arg, A.Operand):
             a = np.asarray(value)
             shapes.append(a.shape[: a.ndim - len(arg.core)])
-            if type(value) not in (float, int, bool):
+            if type(value) not in (float, int):
                 strong.append(a.dtype)
     try:
         batch = np.broadcast_shapes(*shapes)
     except ValueError:
         return A.Refused(ValueError, ("could not be broadcast",)), None
-    f32 = bool(strong) and all(d == np.float32 for d in strong)
+    f32 = bool(strong) and all(A.castable_to_float32(d) for d in strong)
     return None, (batch, np.float32 if f32 else np.float64)
 
 
