@@ -498,11 +498,90 @@ void register_statistics(const std::string& sn) {
 
 }  // namespace
 
+/// SO2 and SE2: exp and log on generic, tiny (~1e-9) and near-pi angles with
+/// their worst error against a long double reference (the closed forms with
+/// sinl, cosl and atan2l, 1 - cos as 2 sin^2(theta/2): no cancellation),
+/// compose, inverse and the action; the floor is one sincos (floor/sincos).
+template <typename S>
+void register_planar(const std::string& sn) {
+  using namespace chasles;
+  using ld = long double;
+  using V2 = Eigen::Matrix<S, 2, 1>;
+  using V3 = Eigen::Matrix<S, 3, 1>;
+  std::mt19937_64 rng(31);
+  std::normal_distribution<double> n(0, 1);
+  std::uniform_real_distribution<double> u(0.1, 3.0), sign(-1, 1);
+  for (const std::string kind : {"generic", "tiny", "near_pi"}) {
+    std::vector<S> thetas;
+    std::vector<V3> xs;
+    for (std::size_t i = 0; i < kN; ++i) {
+      const double a = kind == "tiny" ? 1e-9 * (1 + u(rng)) : kind == "near_pi" ? kPi - 1e-6 : u(rng);
+      thetas.push_back(S(sign(rng) < 0 ? -a : a));
+      xs.push_back(V3(S(n(rng)), S(n(rng)), thetas.back()));
+    }
+    add_measured<S>(
+        "SO2/exp/" + kind + "/" + sn, thetas, [](S t) { return SO2<S>::exp(t); },
+        [](S t, const SO2<S>& R) {
+          return std::max(std::fabs(ld(R.complex()[0]) - std::cos(ld(t))),
+                          std::fabs(ld(R.complex()[1]) - std::sin(ld(t))));
+        });
+    std::vector<SO2<S>> Rs;
+    for (S t : thetas) Rs.push_back(SO2<S>::exp(t));
+    add_measured<S>(
+        "SO2/log/" + kind + "/" + sn, Rs, [](const SO2<S>& R) { return R.angle(); },
+        [](const SO2<S>& R, S t) { return std::fabs(ld(t) - std::atan2(ld(R.complex()[1]), ld(R.complex()[0]))); });
+    add_measured<S>(
+        "SE2/exp/" + kind + "/" + sn, xs, [](const V3& xi) { return SE2<S>::exp(xi); },
+        [](const V3& xi, const SE2<S>& g) {
+          const ld w = xi[2], a = std::sin(w) / w, h = std::sin(w / 2), b = 2 * h * h / w;
+          const ld tx = a * xi[0] - b * xi[1], ty = b * xi[0] + a * xi[1];
+          const ld rot = std::max(std::fabs(ld(g.rotation().complex()[0]) - std::cos(w)),
+                                  std::fabs(ld(g.rotation().complex()[1]) - std::sin(w)));
+          const ld scale = std::max({std::fabs(tx), std::fabs(ty), ld(1e-300)});
+          return std::max(rot,
+                          std::max(std::fabs(g.translation()[0] - tx), std::fabs(g.translation()[1] - ty)) / scale);
+        });
+    std::vector<SE2<S>> gs;
+    for (const V3& xi : xs) gs.push_back(SE2<S>::exp(xi));
+    add_measured<S>(
+        "SE2/log/" + kind + "/" + sn, gs, [](const SE2<S>& g) { return g.log(); },
+        [](const SE2<S>& g, const V3& xi) {
+          const ld c = g.rotation().complex()[0], s = g.rotation().complex()[1];
+          const ld w = std::atan2(s, c), e = w / 2 * std::cos(w / 2) / std::sin(w / 2);
+          const ld tx = g.translation()[0], ty = g.translation()[1];
+          const ld vx = e * tx + w / 2 * ty, vy = e * ty - w / 2 * tx;
+          const ld scale = std::max({std::fabs(vx), std::fabs(vy), ld(1e-300)});
+          return std::max(std::fabs(xi[2] - w), std::max(std::fabs(xi[0] - vx), std::fabs(xi[1] - vy)) / scale);
+        });
+  }
+  std::vector<SO2<S>> Rs;
+  std::vector<SE2<S>> gs;
+  for (std::size_t i = 0; i < kN; ++i) {
+    Rs.push_back(SO2<S>::exp(S(u(rng))));
+    gs.push_back(SE2<S>::exp(V3(S(n(rng)), S(n(rng)), S(u(rng)))));
+  }
+  std::vector<std::pair<SO2<S>, SO2<S>>> Rpairs;
+  std::vector<std::pair<SE2<S>, SE2<S>>> gpairs;
+  std::vector<std::pair<SE2<S>, V2>> gpoints;
+  for (std::size_t i = 0; i < kN; ++i) {
+    const std::size_t j = (i + 1) & (kN - 1);
+    Rpairs.emplace_back(Rs[i], Rs[j]);
+    gpairs.emplace_back(gs[i], gs[j]);
+    gpoints.emplace_back(gs[i], gs[j].translation());
+  }
+  add("SO2/compose/generic/" + sn, Rpairs, [](const auto& p) { return p.first * p.second; });
+  add("SE2/compose/generic/" + sn, gpairs, [](const auto& p) { return p.first * p.second; });
+  add("SE2/inverse/generic/" + sn, gs, [](const SE2<S>& g) { return g.inverse(); });
+  add("SE2/act/generic/" + sn, gpoints, [](const auto& p) { return V2(p.first * p.second); });
+}
+
 int main(int argc, char** argv) {
   register_all<double>("double");
   register_all<float>("float");
   register_statistics<double>("double");
   register_statistics<float>("float");
+  register_planar<double>("double");
+  register_planar<float>("float");
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

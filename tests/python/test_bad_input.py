@@ -47,6 +47,12 @@ VALID = {
     "SE3.from_matrix_unchecked(matrix)": np.eye(4),
     "SE3.transform_defect(matrix)": np.eye(4),
     "Twist.vee(matrix)": np.zeros((4, 4)),
+    "SO2.from_matrix(matrix)": np.eye(2),
+    "SO2.from_matrix_projected(matrix)": np.eye(2),
+    "SO2.from_matrix_unchecked(matrix)": np.eye(2),
+    "SE2.from_matrix(matrix)": np.eye(3),
+    "SE2.from_matrix_projected(matrix)": np.eye(3),
+    "SE2.from_matrix_unchecked(matrix)": np.eye(3),
     "Twist.spatial(g_dot)": GDOT,
     "Twist.body(g_dot)": GDOT,
 }

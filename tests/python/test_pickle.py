@@ -45,8 +45,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 LEGACY = os.path.join(HERE, "data", "pickles")
 PROTOCOLS = list(range(pickle.HIGHEST_PROTOCOL + 1))
 
-# Classes that did not pickle in chasles 0.1.0: no legacy pickles of them.
-NOT_PICKLED_IN_0_1_0 = {"SO3BSpline", "SE3BSpline"}
+# Classes that did not pickle in chasles 0.1.0 (or did not exist): no legacy pickles of them.
+NOT_PICKLED_IN_0_1_0 = {"SO3BSpline", "SE3BSpline", "SO2", "SE2"}
 
 
 def public_classes():
@@ -98,6 +98,8 @@ def _key_poses():
 EXAMPLES = {
     "SO3": {"rotation": lambda: chasles.SO3.exp([0.1, -0.2, 1.0 / 3.0])},
     "SE3": {"pose": lambda: chasles.SE3.exp([1.0, -2.0, 1.0 / 3.0, 0.3, 0.2, -0.1])},
+    "SO2": {"rotation": lambda: chasles.SO2.exp(1.0 / 3.0)},
+    "SE2": {"pose": lambda: chasles.SE2.exp([1.0, -2.0, 1.0 / 3.0])},
     "Twist": {"twist": lambda: chasles.Twist([0.1, 0.2, 1.0 / 3.0], [1e-300, -0.0, 5.0])},
     "Wrench": {"wrench": lambda: chasles.Wrench([1.0, 2.0, 3.0], [math.pi, 0.0, -1e10])},
     "Screw": {
@@ -181,6 +183,11 @@ TAMPERED = {
         ("a reflection", lambda s: (1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, -1.0)),
     ],
     "SE3": [("2 I, not a rotation", _not_rotation), ("an infinite translation", _set(11, math.inf))],
+    "SO2": [("(2, 0), not a rotation", lambda s: (2.0, 0.0))],
+    "SE2": [
+        ("(0, 0), not a rotation", lambda s: (0.0, 0.0) + tuple(s[2:])),
+        ("an infinite translation", _set(3, math.inf)),
+    ],
     "Twist": [("inf", _set(5, -math.inf))],
     "Wrench": [("inf", _set(2, math.inf))],
     "Screw": [("a NaN pitch", _set(6, math.nan)), ("an infinite point", _set(1, math.inf))],
