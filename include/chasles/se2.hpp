@@ -107,21 +107,12 @@ class SE2 {
 
   /// The xi = (v, w) with exp([xi]) = g, w = atan2(s, c) in [-pi, pi]:
   ///   v = V^-1 t = [[e, w/2], [-w/2, e]] t,  e = (w/2) cot(w/2),
-  /// e = (w/2) (1 + c) / s where c > 0 and (w/2) s / (1 - c) elsewhere (no
-  /// cancellation in either; 0 at w = pi exactly), the series
-  /// 1 - t/12 - t^2/720 (t = w^2) below taylor_theta2.
+  /// w and e from the half angle without a libm call or a cancellation, 0 at
+  /// w = pi exactly (detail::planar_log).
   Tangent log() const noexcept {
-    const Scalar w = R_.angle();
-    const Scalar c = R_.complex()[0], s = R_.complex()[1];
-    const Scalar t = w * w, half = Scalar(0.5) * w;
-    Scalar e;
-    if (t < Scalar(ThresholdsOf<Scalar>::taylor_theta2))
-      e = Scalar(1) - t / Scalar(12) * (Scalar(1) + t / Scalar(60));
-    else if (c > Scalar(0))
-      e = half * (Scalar(1) + c) / s;
-    else
-      e = half * s / (Scalar(1) - c);
-    return Tangent(e * t_[0] + half * t_[1], e * t_[1] - half * t_[0], w);
+    const auto k = detail::planar_log<Scalar>(R_.complex()[0], R_.complex()[1]);
+    const Scalar half = Scalar(0.5) * k.theta;
+    return Tangent(k.e * t_[0] + half * t_[1], k.e * t_[1] - half * t_[0], k.theta);
   }
 
   // ---- Jacobians of exp (Sola app. C) ---------------------------------------

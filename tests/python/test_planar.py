@@ -101,7 +101,9 @@ def test_se2_log_is_the_matrix_logarithm(xi):
     else:
         ref = se2_log_mp(g)
     got = chasles.se2_log(g)
-    assert np.max(np.abs(got - ref)) / max(1.0, np.max(np.abs(ref))) <= 4 * EPS
+    # 8 eps: SE2's angle and e come from a rational atan of the half angle
+    # (include/chasles/so2.hpp, planar_log: within 4.0 eps over 2e6 angles).
+    assert np.max(np.abs(got - ref)) / max(1.0, np.max(np.abs(ref))) <= 8 * EPS
     assert np.array_equal(SE2.from_matrix_unchecked(g).log(), got)
     if abs(xi[2]) < PI - 1e-9:  # inside the principal range, log gives back xi itself
         assert np.max(np.abs(got - xi)) / max(1.0, np.max(np.abs(xi))) <= 8 * EPS
