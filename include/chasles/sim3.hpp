@@ -295,6 +295,12 @@ class Sim3 {
   // block structure's zeros exact. The inverses by the block formula
   //   J_l^-1 = [[W^-1, -W^-1 Q J^-1, -W^-1 q], [0, J^-1, 0], [0, 0, 1]],
   // W^-1 in closed form (as log), J^-1 SO3's left Jacobian inverse.
+  // Accuracy (against the same computation in long double, 20000 random xi,
+  // |w| <= 3, |sigma| <= 5, |v| from 0.01 to 100): within 10 eps of the
+  // largest entry for |v|, |sigma| < 2, but up to 550 eps (double) and 400
+  // (float) for |v| ~ 100 and |sigma| ~ 5, where 7 to 9 doublings of a
+  // matrix with entries e^sigma |v| lose digits in Q and q: a closed form of
+  // Q and q would not.
 
   /// Left Jacobian: exp(xi + dxi) = exp(J_l dxi + o(dxi)) exp(xi).
   static Matrix7 left_jacobian(const Tangent& xi) noexcept { return jacobian(xi); }
