@@ -23,6 +23,7 @@
 #include "chasles/screw.hpp"
 #include "chasles/se2.hpp"
 #include "chasles/se3.hpp"
+#include "chasles/sim3.hpp"
 #include "chasles/so2.hpp"
 #include "chasles/so3.hpp"
 #include "chasles/spatial_inertia.hpp"

@@ -86,6 +86,24 @@ struct Thresholds;
 //   finite value, so 2 / |q|^2 is finite and |q|^2 is a sum of squares
 //   that have not underflowed to subnormals. Below it q is first scaled by
 //   its largest component. SO3::angle uses it for |u_v|^2 likewise.
+//
+// taylor_theta2 also bounds Sim(3)'s series (sim3.hpp, detail::
+//   sim3_coefficients), by the same rule. Its W coefficients A, B, C are
+//   functions of (sigma, theta^2); below sigma^2 + theta^2 = taylor_theta2
+//   they are the double series in sigma and theta^2 kept to total degree 5
+//   in r = |(sigma, theta)|, the omitted degree-6 terms having coefficients
+//   that sum to less than 1 (the largest is 1/720): under r^6 < eps. Below
+//   sigma^2 = taylor_theta2 alone (with theta^2 above it) the functions of
+//   sigma, phi(sigma) = (e^sigma - 1)/sigma, sigma^2 phi'(sigma) and
+//   sigma^2 phi''(sigma)/2, are their series in sigma to sigma^5 (the
+//   same bound); the functions of theta^2 are series.hpp's as before.
+//
+// sim3_jacobian_norm, sim3_jacobian_degree: Sim(3)'s Jacobians of exp
+//   take phi(ad_xi) = sum_k ad^k / (k+1)! (7x7) by scaling and squaring:
+//   ad / 2^s with its 1-norm at most sim3_jacobian_norm, Taylor series of
+//   exp and phi to degree m = sim3_jacobian_degree (phi's first omitted
+//   term, of norm <= 0.5^(m+1) / (m+2)!, and exp's, <= 0.5^(m+2) / (m+2)!,
+//   both under eps / 8), then s doublings.
 
 template <>
 struct Thresholds<float> {
@@ -112,6 +130,8 @@ struct Thresholds<float> {
   static constexpr float screw_tolerance = 3.4526698e-04f;  // eps^(1/2)
   static constexpr float inertia_tolerance = 3.4526698e-04f;  // eps^(1/2)
   static constexpr float mass_matrix_pivot_tolerance = 4.7683716e-07f;  // 4 eps
+  static constexpr float sim3_jacobian_norm = 0.5f;
+  static constexpr int sim3_jacobian_degree = 7;  // 0.5^9 / 9! = 5.4e-9 < eps / 8
 };
 
 template <>
@@ -139,6 +159,8 @@ struct Thresholds<double> {
   static constexpr double screw_tolerance = 1.4901161193847656e-08;  // eps^(1/2)
   static constexpr double inertia_tolerance = 1.4901161193847656e-08;  // eps^(1/2)
   static constexpr double mass_matrix_pivot_tolerance = 8.881784197001252e-16;  // 4 eps
+  static constexpr double sim3_jacobian_norm = 0.5;
+  static constexpr int sim3_jacobian_degree = 13;  // 0.5^15 / 15! = 2.3e-17 < eps / 8
 };
 
 template <>
@@ -168,6 +190,8 @@ struct Thresholds<long double> {
   static constexpr long double screw_tolerance = 3.2927225399135962334e-10L;  // eps^(1/2)
   static constexpr long double inertia_tolerance = 3.2927225399135962334e-10L;  // eps^(1/2)
   static constexpr long double mass_matrix_pivot_tolerance = 4.3368086899420177360e-19L;  // 4 eps
+  static constexpr long double sim3_jacobian_norm = 0.5L;
+  static constexpr int sim3_jacobian_degree = 16;  // 0.5^18 / 18! = 6e-22 < eps / 8
 };
 
 // mean_step_tolerance: the geodesic (Karcher) mean (mean.hpp) stops after

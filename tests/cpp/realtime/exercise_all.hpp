@@ -169,6 +169,17 @@ S exercise_all() noexcept {
   const auto a2 = act_jacobians(g2, V2(S(1), S(2)));
   sum += a1.group.sum() + a1.point.sum() + a2.group.sum() + a2.point.sum();
 
+  // Sim(3): the generic operations, and what only it has.
+  using V7 = Eigen::Matrix<S, 7, 1>;
+  V7 x7, y7;
+  x7 << p, w, S(0.3);
+  y7 << w, p * S(0.1), S(-0.2);
+  sum += exercise_group<Sim3<S>>(x7, y7);
+  const Sim3<S> s3 = Sim3<S>::exp(x7), s3h(R, p, S(2));
+  sum += s3.act(p).sum() + (s3 * p).sum() + s3.rotation().matrix().sum() + s3.translation().sum() + s3.scale();
+  sum += s3h.matrix().sum() + Sim3<S>::transform_defect(s3.matrix()) + Sim3<S>::matrix_scale(s3.matrix());
+  sum += Sim3<S>::exp(V7(V7::Zero())).log().sum() + Sim3<S>::exp(V7(x7 * S(1e-3))).log().sum();
+
   // Jacobians and plus / minus (jacobians.hpp), including the series branches.
   const V3 w0 = V3::Zero(), wpi(S(3.14159), S(0), S(0));
   const V6 xi0 = V6::Zero();
