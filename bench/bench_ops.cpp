@@ -575,6 +575,46 @@ void register_planar(const std::string& sn) {
   add("SE2/act/generic/" + sn, gpoints, [](const auto& p) { return V2(p.first * p.second); });
 }
 
+/// Sim3: exp and log on generic (angle in (0.1, 3), sigma in (-2, 2)), tiny
+/// (angle and sigma ~1e-9: the double series) and near-pi angles, compose and
+/// the action. (Accuracy: tests/cpp/test_sim3.cpp, against the long double
+/// matrix exponential.)
+template <typename S>
+void register_sim3(const std::string& sn) {
+  using namespace chasles;
+  using V3 = Eigen::Matrix<S, 3, 1>;
+  using V7 = Eigen::Matrix<S, 7, 1>;
+  std::mt19937_64 rng(41);
+  std::normal_distribution<double> n(0, 1);
+  std::uniform_real_distribution<double> u(-2, 2);
+  for (const std::string kind : {"generic", "tiny", "near_pi"}) {
+    std::vector<V7> xs;
+    for (const auto& w : rotation_vectors<S>(kind, 43)) {
+      V7 xi;
+      xi << S(n(rng)), S(n(rng)), S(n(rng)), w, S(kind == "tiny" ? 1e-9 * u(rng) : u(rng));
+      xs.push_back(xi);
+    }
+    add("Sim3/exp/" + kind + "/" + sn, xs, [](const V7& xi) { return Sim3<S>::exp(xi); });
+    std::vector<Sim3<S>> gs;
+    for (const V7& xi : xs) gs.push_back(Sim3<S>::exp(xi));
+    add("Sim3/log/" + kind + "/" + sn, gs, [](const Sim3<S>& g) { return g.log(); });
+  }
+  std::vector<Sim3<S>> gs;
+  for (const auto& w : rotation_vectors<S>("generic", 44)) {
+    V7 xi;
+    xi << S(n(rng)), S(n(rng)), S(n(rng)), w, S(u(rng));
+    gs.push_back(Sim3<S>::exp(xi));
+  }
+  std::vector<std::pair<Sim3<S>, Sim3<S>>> pairs;
+  std::vector<std::pair<Sim3<S>, V3>> points;
+  for (std::size_t i = 0; i < kN; ++i) {
+    pairs.emplace_back(gs[i], gs[(i + 1) & (kN - 1)]);
+    points.emplace_back(gs[i], gs[(i + 5) & (kN - 1)].translation());
+  }
+  add("Sim3/compose/generic/" + sn, pairs, [](const auto& p) { return p.first * p.second; });
+  add("Sim3/act/generic/" + sn, points, [](const auto& p) { return V3(p.first * p.second); });
+}
+
 int main(int argc, char** argv) {
   register_all<double>("double");
   register_all<float>("float");
@@ -582,6 +622,8 @@ int main(int argc, char** argv) {
   register_statistics<float>("float");
   register_planar<double>("double");
   register_planar<float>("float");
+  register_sim3<double>("double");
+  register_sim3<float>("float");
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();
