@@ -1,4 +1,4 @@
-// chasles._core: the array functions (so2_*, se2_*, so3_*, se3_*) as numpy generalized
+// chasles._core: the array functions (so2_*, se2_*, so3_*, se3_*, sim3_*) as numpy generalized
 // ufuncs.
 //
 // Each function is its kernel, a generic lambda that calls the chasles C++
@@ -12,6 +12,7 @@
 
 #include <chasles/se2.hpp>
 #include <chasles/se3.hpp>
+#include <chasles/sim3.hpp>
 #include <chasles/so2.hpp>
 #include <chasles/so3.hpp>
 #include <chasles/twist.hpp>
@@ -37,6 +38,8 @@ template <typename T>
 using SO2 = chasles::SO2<T>;
 template <typename T>
 using SE2 = chasles::SE2<T>;
+template <typename T>
+using Sim3 = chasles::Sim3<T>;
 
 /// so3_from_quat's kernel for one quaternion order: q as given (any nonzero
 /// norm, normalized by the C++ API); a zero or non-finite quaternion has no
@@ -380,6 +383,74 @@ Returns:
   }
 };
 
+template <>
+struct Batch<Sim3> {
+  static constexpr int N = 4, D = 7, P = 3;
+  static constexpr const char* names[9] = {"sim3_exp", "sim3_log", "sim3_compose",     "sim3_inverse",  "sim3_act",
+                                           "sim3_hat", "sim3_vee", "sim3_interpolate", "sim3_normalize"};
+  static constexpr const char *element = "g", *tangent = "xi", *matrices = "similarity matrices [[s R, t], [0, 1]]",
+                              *compose = "Composition of similarities: a @ b = (R_a R_b, s_a R_a t_b + t_a, s_a s_b).",
+                              *inverse = "Inverse similarities: (R^T, -R^T t / s, 1 / s).", *acted = "points",
+                              *act = "Transformed points: q_a = s R q_b + t.", *one = "similarity",
+                              *moved = "transformed",
+                              *product = ", the batch shape being\n    the broadcast of a's and b's.",
+                              *interpolate = "Geodesic interpolation of similarities",
+                              *between = "one screw motion with a steady scaling", *interpolated = "similarities";
+  static constexpr const char* exp = R"(Similarity matrices of xi = (v, w, sigma): g = exp([xi]) (4x4).
+
+Sophus' order; R = exp([w]), s = e^sigma, t = W v with W the integral of
+e^(sigma u) exp(u [w]) over [0, 1] (no 0/0 in theta = |w| or sigma: a few
+ulps over the whole domain).
+
+Args:
+    xi: array_like of shape (..., 7): (v, w, sigma).
+
+Returns:
+    numpy.ndarray of shape (..., 4, 4): the matrices [[s R, t], [0, 1]].)";
+  static constexpr const char* log = R"(The (v, w, sigma) of similarity matrices: xi = log(g)^vee.
+
+s = |block|_F / sqrt(3), w = log(block / s) with |w| in [0, pi], sigma =
+log(s), v = W^-1 t in closed form.
+
+Args:
+    g: array_like of shape (..., 4, 4): matrices [[s R, t], [0, 1]].
+
+Returns:
+    numpy.ndarray of shape (..., 7): (v, w, sigma).)";
+  static constexpr const char* hat = R"(Matrices of xi = (v, w, sigma): [xi] = [[ [w] + sigma I, v ], [0, 0]] (4x4).
+
+Args:
+    xi: array_like of shape (..., 7).
+
+Returns:
+    numpy.ndarray of shape (..., 4, 4): the matrices [xi].)";
+  static constexpr const char* vee = R"(The (v, w, sigma) of 4x4 matrices: the inverse of sim3_hat.
+
+w from the antisymmetric part of the top-left block, sigma the mean of its
+diagonal; the bottom row is not read.
+
+Args:
+    matrix: array_like of shape (..., 4, 4).
+
+Returns:
+    numpy.ndarray of shape (..., 7).)";
+  static constexpr const char* normalize =
+      R"(The nearest similarity matrices: Sim3.from_matrix_projected over a batch.
+
+R the nearest rotation to the top-left block, s = tr(R^T block) / 3, the
+translation kept, the bottom row (0, 0, 0, 1). Non-finite matrices give NaN.
+
+Args:
+    g: array_like of shape (..., 4, 4): matrices.
+
+Returns:
+    numpy.ndarray of shape (..., 4, 4): the similarity matrices.)";
+  template <typename T>
+  static Eigen::Matrix<T, 4, 4> stored(const Sim3<T>& g) noexcept {
+    return g.matrix();
+  }
+};
+
 /// A tangent as a ufunc result: SO(2)'s angle as a scalar, others as they are.
 template <typename V>
 auto tangent_out(const V& x) noexcept {
@@ -525,6 +596,7 @@ void bind_batch(py::module_& m) {
   bind_se3_batch(m);
   bind_group_batch<SO2>(m);
   bind_group_batch<SE2>(m);
+  bind_group_batch<Sim3>(m);
 }
 
 }  // namespace chasles_py

@@ -369,7 +369,8 @@ Raises:
 /// g's action on points: the array function so3_act, se3_act, ... with g's
 /// matrix (numpy's rules for dtypes, broadcasting and the GIL), or for one
 /// point of float64 the same kernel without numpy's dispatch (the same
-/// bits). Points of float32 give float32: the matrix is rounded to float32
+/// bits; for Sim3 within an ulp or two: the array function reads s and R
+/// back from the matrix s R). Points of float32 give float32: the matrix is rounded to float32
 /// once and the float32 kernel runs, as se3_act on a float32 pose would
 /// (without it numpy would promote the points to float64: twice the memory).
 template <typename G>

@@ -22,6 +22,7 @@
 #include "chasles/lie_group.hpp"
 #include "chasles/se2.hpp"
 #include "chasles/se3.hpp"
+#include "chasles/sim3.hpp"
 #include "chasles/so2.hpp"
 #include "chasles/so3.hpp"
 #include "chasles/twist.hpp"
@@ -138,6 +139,19 @@ inline ActJacobians<Eigen::Matrix<Scalar, 2, 3>> act_jacobians(const SE2<Scalar>
   Jg.template leftCols<2>() = R;
   Jg.col(2) = R * Eigen::Matrix<Scalar, 2, 1>(-p[1], p[0]);
   return {Jg, R};
+}
+
+/// Sim(3): d(g p)/dg = [s R, -s R [p], s R p] (3x7, columns (v, w, sigma)),
+/// d(g p)/dp = s R (g exp(xi) p = g (p + v + w x p + sigma p) to first order).
+template <typename Scalar>
+inline ActJacobians<Eigen::Matrix<Scalar, 3, 7>> act_jacobians(const Sim3<Scalar>& g,
+                                                               const Vector3Of<Scalar>& p) noexcept {
+  const Matrix3Of<Scalar> sR = g.scale() * g.rotation().matrix();
+  Eigen::Matrix<Scalar, 3, 7> Jg;
+  Jg.template leftCols<3>() = sR;
+  Jg.template block<3, 3>(0, 3) = -(sR * SO3<Scalar>::hat(p));
+  Jg.col(6) = sR * p;
+  return {Jg, sR};
 }
 
 }  // namespace chasles

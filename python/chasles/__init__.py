@@ -1,10 +1,10 @@
 """chasles: Lie groups of rigid-body motion, SO(3) and SE(3) (and the plane's
-SO(2) and SE(2)), with twists, wrenches and screws, over the C++ headers of
-the same name.
+SO(2) and SE(2), and the similarities Sim(3)), with twists, wrenches and
+screws, over the C++ headers of the same name.
 
 Two layers over the same C++ kernels:
 
-- objects for one element: ``SO3``, ``SE3``, ``SO2``, ``SE2``, ``Twist``, ``Wrench``,
+- objects for one element: ``SO3``, ``SE3``, ``SO2``, ``SE2``, ``Sim3``, ``Twist``, ``Wrench``,
   ``Screw`` and ``SpatialInertia`` (a rigid body's inertia), with ``@``
   for composition and action (``g @ h``, ``g @ p``);
 - array functions for batches: ``so3_exp``, ``se3_log``, ``se3_compose``,
@@ -70,6 +70,7 @@ from chasles._core import (
     SO2,
     SO3,
     Screw,
+    Sim3,
     SpatialInertia,
     Twist,
     Wrench,
@@ -114,6 +115,15 @@ from chasles._core import (
     se3_log,
     se3_normalize,
     se3_vee,
+    sim3_act,
+    sim3_compose,
+    sim3_exp,
+    sim3_hat,
+    sim3_interpolate,
+    sim3_inverse,
+    sim3_log,
+    sim3_normalize,
+    sim3_vee,
     so2_act,
     so2_compose,
     so2_exp,
@@ -153,6 +163,7 @@ __all__ = [
     "SO3BSpline",
     "SO3Spline",
     "Screw",
+    "Sim3",
     "SpatialInertia",
     "Twist",
     "Wrench",
@@ -201,6 +212,15 @@ __all__ = [
     "se3_random",
     "se3_vee",
     "set_num_threads",
+    "sim3_act",
+    "sim3_compose",
+    "sim3_exp",
+    "sim3_hat",
+    "sim3_interpolate",
+    "sim3_inverse",
+    "sim3_log",
+    "sim3_normalize",
+    "sim3_vee",
     "so2_act",
     "so2_compose",
     "so2_exp",

@@ -91,6 +91,7 @@ BOUND = (
     chasles.SE3,
     chasles.SO2,
     chasles.SE2,
+    chasles.Sim3,
     chasles.Twist,
     chasles.Wrench,
     chasles.Screw,
@@ -698,6 +699,8 @@ def _valid_state(cls_name, state):
         return False
     if cls_name in ("SO3", "SE3"):
         return _rotation_defect(x[:9].reshape(3, 3)) <= tol
+    if cls_name == "Sim3":
+        return _rotation_defect(x[:9].reshape(3, 3)) <= tol and x[12] > 0
     if cls_name in ("SO2", "SE2"):
         c, s = x[0], x[1]
         R = np.array([[c, -s], [s, c]])
@@ -951,6 +954,7 @@ GOOD = {  # a fresh valid object of each class
     chasles.SE3: lambda: chasles.SE3(chasles.SO3.exp([0.1, 0.2, 0.3]), [1.0, 2.0, 3.0]),
     chasles.SO2: lambda: chasles.SO2.exp(0.4),
     chasles.SE2: lambda: chasles.SE2(chasles.SO2.exp(0.4), [1.0, 2.0]),
+    chasles.Sim3: lambda: chasles.Sim3(chasles.SO3.exp([0.1, 0.2, 0.3]), [1.0, 2.0, 3.0], 1.5),
     chasles.Twist: lambda: chasles.Twist(v=[1.0, 0.0, 0.5], w=[0.0, 0.2, 1.0]),
     chasles.Wrench: lambda: chasles.Wrench(f=[0.0, 1.0, 1.0], tau=[0.5, 0.0, 0.0]),
     chasles.Screw: lambda: chasles.Screw([0.0, 1.0, 0.0], [0.0, 0.0, 1.0], 0.5, 1.0),
@@ -1117,7 +1121,8 @@ def _array_function(name, operands, kw=()):
     )
 
 
-GROUPS = {chasles.SO2: (1, 2), chasles.SE2: (3, 2), chasles.SO3: (3, 3), chasles.SE3: (6, 3)}  # tangent, point
+# tangent, point
+GROUPS = {chasles.SO2: (1, 2), chasles.SE2: (3, 2), chasles.SO3: (3, 3), chasles.Sim3: (7, 3), chasles.SE3: (6, 3)}
 
 
 def _group_function(name, make, **kw):
@@ -1140,7 +1145,7 @@ def _tangent(label, n, finite=True):
 
 
 def _build_spec():
-    SO3, SE3, _, _, Twist, Wrench, Screw, Chain, _ = BOUND
+    SO3, SE3, _, _, _, Twist, Wrench, Screw, Chain, _ = BOUND
     spec: dict[str, Entry] = {}
 
     # SO3
@@ -1310,6 +1315,46 @@ def _build_spec():
     spec["SE2.transform_defect"] = _static(
         SE2, "transform_defect", Array("SE2.transform_defect(matrix)", (3, 3), finite=False)
     )
+
+    # Sim3
+    Sim3 = chasles.Sim3
+    sim_matrix = lambda: GOOD[Sim3]().as_matrix()  # noqa: E731
+    spec["Sim3.__init__"] = Entry(
+        [[Instance("rotation", (SO3,)), Array("Sim3(translation)", (3,)), Real("Sim3(scale)", "positive", 1.5)]],
+        call=Sim3,
+    )
+    spec["Sim3.identity"] = _static(Sim3, "identity")
+    spec["Sim3.exp"] = _static(Sim3, "exp", Array("Sim3.exp(xi)", (7,)))
+    spec["Sim3.hat"] = _static(Sim3, "hat", Array("Sim3.hat(xi)", (7,), finite=False))
+    spec["Sim3.vee"] = _static(Sim3, "vee", Array("Sim3.vee(matrix)", (4, 4), finite=False))
+    for m in ("log", "inverse", "adjoint", "as_matrix", "normalized"):
+        spec[f"Sim3.{m}"] = _method(Sim3, m)
+    for p in ("rotation", "translation", "scale"):
+        spec[f"Sim3.{p}"] = _prop(Sim3, p)
+    spec["Sim3.__matmul__"] = _binop(Sim3, operator.matmul, SE3Or("Sim3 @ points", (Sim3,)), "__matmul__")
+    spec["Sim3.act"] = _method(Sim3, "act", Points("Sim3.act(points)"))
+    spec["Sim3.from_matrix"] = _static(
+        Sim3,
+        "from_matrix",
+        Array("Sim3.from_matrix(matrix)", (4, 4), valid=sim_matrix),
+        Real("Sim3.from_matrix(tol)", "tolerance", 1e-6),
+    )
+    for form in ("projected", "unchecked"):
+        label = f"Sim3.from_matrix_{form}(matrix)"
+        spec[f"Sim3.from_matrix_{form}"] = _static(Sim3, f"from_matrix_{form}", Array(label, (4, 4), valid=sim_matrix))
+    spec["Sim3.transform_defect"] = _static(
+        Sim3, "transform_defect", Array("Sim3.transform_defect(matrix)", (4, 4), finite=False)
+    )
+    spec["Sim3.__pow__"] = _binop(Sim3, operator.pow, Real("Sim3 ** t"), "__pow__")
+    spec["Sim3.interpolate"] = _static(
+        Sim3, "interpolate", Instance("a", (Sim3,)), Instance("b", (Sim3,)), Real("Sim3.interpolate(t)")
+    )
+    spec["Sim3.is_approx"] = _method(
+        Sim3, "is_approx", Instance("other", (Sim3,)), Real("Sim3.is_approx(tol)", "tolerance", 1e-6)
+    )
+    for jac in ("right_jacobian", "left_jacobian", "right_jacobian_inverse", "left_jacobian_inverse"):
+        spec[f"Sim3.{jac}"] = _static(Sim3, jac, Array(f"Sim3.{jac}(xi)", (7,)))
+    spec.update(_protocols(Sim3, [13]))
 
     # from_screw of SE3, Twist, Wrench, and Screw itself
     for owner, cls, amount in (
@@ -1561,6 +1606,7 @@ def _build_spec():
     R3, G4 = ((3, 3), rotation), ((4, 4), pose)
     R2, G3 = ((2, 2), lambda: GOOD[chasles.SO2]().as_matrix()), ((3, 3), lambda: GOOD[chasles.SE2]().as_matrix())
     v2, v3 = ((2,), None), ((3,), None)
+    S4 = ((4, 4), lambda: GOOD[chasles.Sim3]().as_matrix())
     six = ((6,), None)
     arrays = {
         "so3_exp": [("w",) + v3],
@@ -1604,6 +1650,15 @@ def _build_spec():
         "se2_vee": [("matrix", (3, 3), None)],
         "se2_interpolate": [("a",) + G3, ("b",) + G3, ("t", (), None)],
         "se2_normalize": [("g", (3, 3), None)],
+        "sim3_exp": [("xi", (7,), None)],
+        "sim3_log": [("g",) + S4],
+        "sim3_compose": [("a",) + S4, ("b",) + S4],
+        "sim3_inverse": [("g",) + S4],
+        "sim3_act": [("g",) + S4, ("points",) + v3],
+        "sim3_hat": [("xi", (7,), None)],
+        "sim3_vee": [("matrix", (4, 4), None)],
+        "sim3_interpolate": [("a",) + S4, ("b",) + S4, ("t", (), None)],
+        "sim3_normalize": [("g", (4, 4), None)],
         "so3_angle": [("R",) + R3],
         "so3_distance": [("a",) + R3, ("b",) + R3],
         "se3_distance": [("a",) + G4, ("b",) + G4],

@@ -53,6 +53,9 @@ VALID = {
     "SE2.from_matrix(matrix)": np.eye(3),
     "SE2.from_matrix_projected(matrix)": np.eye(3),
     "SE2.from_matrix_unchecked(matrix)": np.eye(3),
+    "Sim3.from_matrix(matrix)": np.eye(4),
+    "Sim3.from_matrix_projected(matrix)": np.eye(4),
+    "Sim3.from_matrix_unchecked(matrix)": np.eye(4),
     "Twist.spatial(g_dot)": GDOT,
     "Twist.body(g_dot)": GDOT,
 }
