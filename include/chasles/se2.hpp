@@ -23,7 +23,7 @@ namespace detail {
 /// b = (1 - cos(theta)) / theta. Below taylor_theta2 (constants.hpp) the
 /// series a = 1 - t/6 + t^2/120, b = theta (1/2 - t/24 + t^2/720), t =
 /// theta^2, and (c, s) from them (no libm call, exact at 0, autodiff
-/// derivatives exact there). Above, one sincos: a = s / theta, and
+/// derivatives exact there). Above, one sincos and one divide: a = s / theta, and
 /// 1 - cos theta as s^2 / (1 + c) where c > 0, where 1 - c would cancel.
 template <typename Scalar>
 struct PlanarExp {
@@ -40,9 +40,12 @@ inline PlanarExp<Scalar> planar_exp(const Scalar& theta) noexcept {
     return {Scalar(1) - t * b_over, theta * a, a, theta * b_over};
   }
   const Scalar c = cos(theta), s = sin(theta);
-  Scalar one_minus_c = Scalar(1) - c;
-  if (c > Scalar(0)) one_minus_c = s * s / (Scalar(1) + c);
-  return {c, s, s / theta, one_minus_c / theta};
+  if (c > Scalar(0)) {  // one divide: a = s (1 + c) r, b = s^2 r, r = 1 / ((1 + c) theta)
+    const Scalar one_plus_c = Scalar(1) + c, r = Scalar(1) / (one_plus_c * theta);
+    return {c, s, s * one_plus_c * r, s * s * r};
+  }
+  const Scalar r = Scalar(1) / theta;
+  return {c, s, s * r, (Scalar(1) - c) * r};
 }
 
 }  // namespace detail
