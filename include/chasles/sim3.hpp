@@ -274,8 +274,15 @@ class Sim3 {
     const Vector3& w = r.omega;
     const Vector3 wt = w.cross(t_);
     const Vector3 v = ki.alpha * t_ + ki.beta * wt + ki.gamma * w.cross(wt);
+    // Entry by entry: Eigen's comma initializer of a float 7-vector from
+    // 3-vectors trips GCC 12's -Warray-bounds (a false positive, as
+    // detail/approx.hpp's stack notes).
     Tangent xi;
-    xi << v, w, sigma;
+    for (int i = 0; i < 3; ++i) {
+      xi[i] = v[i];
+      xi[3 + i] = w[i];
+    }
+    xi[6] = sigma;
     return xi;
   }
 

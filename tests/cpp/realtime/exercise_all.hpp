@@ -171,9 +171,12 @@ S exercise_all() noexcept {
 
   // Sim(3): the generic operations, and what only it has.
   using V7 = Eigen::Matrix<S, 7, 1>;
-  V7 x7, y7;
-  x7 << p, w, S(0.3);
-  y7 << w, p * S(0.1), S(-0.2);
+  V7 x7, y7;  // entry by entry: a comma initializer from 3-vectors trips GCC 12's -Warray-bounds
+  for (int i = 0; i < 3; ++i) {
+    x7[i] = p[i], x7[3 + i] = w[i];
+    y7[i] = w[i], y7[3 + i] = S(0.1) * p[i];
+  }
+  x7[6] = S(0.3), y7[6] = S(-0.2);
   sum += exercise_group<Sim3<S>>(x7, y7);
   const Sim3<S> s3 = Sim3<S>::exp(x7), s3h(R, p, S(2));
   sum += s3.act(p).sum() + (s3 * p).sum() + s3.rotation().matrix().sum() + s3.translation().sum() + s3.scale();
