@@ -89,7 +89,9 @@ inline Sim3Coefficients<Scalar> sim3_coefficients(const Scalar& sigma, const Sca
   const Scalar one(1);
   Sim3Coefficients<Scalar> k;
   // phi(sigma) = sum_m sigma^m / (m + 1)!, to sigma^5.
-  auto phi_series = [&]() {
+  // (Returns a Scalar, not an expression: an autodiff expression would
+  // refer to the lambda's temporaries after it returns.)
+  auto phi_series = [&]() -> Scalar {
     return one + s * (one / Scalar(2) +
                       s * (one / Scalar(6) + s * (one / Scalar(24) + s * (one / Scalar(120) + s / Scalar(720)))));
   };

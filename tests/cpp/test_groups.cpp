@@ -192,7 +192,7 @@ TYPED_TEST(Groups, GroupLawsOnTheMatrices) {
     // Ad: a exp(y) a^-1 = exp(Ad_a y), on the matrices.
     const auto& y = xs[(11 * i + 2) % xs.size()];
     if (TestFixture::P::scale(y) < 10) {
-      const auto lhs = to_ld(a.matrix()) * expm(to_ld(TypeParam::hat(y))) * to_ld(a.matrix()).inverse();
+      const auto lhs = (to_ld(a.matrix()) * expm(to_ld(TypeParam::hat(y))) * to_ld(a.matrix()).inverse()).eval();
       EXPECT_TRUE(
           near<S>(TypeParam::exp(typename TypeParam::Tangent(a.adjoint() * y)).matrix(), lhs, 4 * kExp, scale * scale));
     }
