@@ -43,6 +43,60 @@ inline Eigen::Matrix<Scalar, 3, 3> se3_q(const Eigen::Matrix<Scalar, 3, 1>& v,
   return Scalar(0.5) * V + k.c * (WV + VW + WVW) + k.q3 * (WWV + VWW - Scalar(3) * WVW) + k.q4 * (WVWW + WWVW);
 }
 
+/// exp([w]) with the left Jacobian V = J_l(w) of SO(3) kept as the map
+///   x -> V x = a x + u x x + (s . x) d,
+/// the translational part of SE(3)'s and SE_2(3)'s exp (V applied to one
+/// translation or to two). Below huge_theta2, V = A I + B [w] + C w w^T
+/// (A, B, C in detail/series.hpp): u = B w, s = C w, d = w, the coefficients
+/// scaling w before it meets x (|B w| <= 0.73 and |C w| |w| <= 1.2, so no
+/// intermediate exceeds a few |x|: w x x itself would overflow for |w| |x|
+/// past the largest finite value). Above it, the unit-axis form
+/// V x = A x + (B theta) n x x + (1 - A) (n . x) n.
+template <typename Scalar>
+struct ExpWithV {
+  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
+  Eigen::Matrix<Scalar, 3, 3> rotation;
+  Scalar a;
+  Vector3 u, s, d;
+  Vector3 v(const Vector3& x) const noexcept { return a * x + u.cross(x) + s.dot(x) * d; }
+};
+template <typename Scalar>
+inline ExpWithV<Scalar> exp_with_v(const Eigen::Matrix<Scalar, 3, 1>& w) noexcept {
+  const Scalar t = w.squaredNorm();
+  if (!(t < Scalar(ThresholdsOf<Scalar>::huge_theta2))) {
+    const auto r = long_rotation(w);
+    const Eigen::Matrix<Scalar, 3, 1>& n = r.axis;
+    return {rodrigues(n, r.sin_theta, r.one_minus_cos), r.a, r.b_theta * n, (Scalar(1) - r.a) * n, n};
+  }
+  const auto k = exp_coefficients(t);
+  return {rodrigues(w, k.a, k.b), k.a, k.b * w, k.c * w, w};
+}
+
+/// log(R) with the inverse of V = J_l(w) kept as the map
+///   x -> V^-1 x = E x - 1/2 w x x + (D w . x) w,
+///   E = (theta/2) cot(theta/2), D = (1 - E) / theta^2,
+/// from what the rotation's log already has (no trigonometric call): the
+/// translational part of SE(3)'s and SE_2(3)'s log.
+template <typename Scalar>
+struct LogWithVInverse {
+  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
+  So3Log<Scalar> log;  ///< log.omega = w
+  Scalar e, d;
+  Vector3 v_inverse(const Vector3& x) const noexcept {
+    const Vector3& w = log.omega;
+    return e * x - Scalar(0.5) * w.cross(x) + (d * w.dot(x)) * w;
+  }
+};
+template <typename Scalar>
+inline LogWithVInverse<Scalar> log_with_v_inverse(const Eigen::Matrix<Scalar, 3, 3>& R) noexcept {
+  LogWithVInverse<Scalar> l;
+  l.log = so3_log(R);
+  const auto k = v_inverse_coefficients(l.log.theta2, l.log.half_theta_cot, l.log.near_identity);
+  l.e = k.e;
+  l.d = k.d;
+  return l;
+}
+
 /// [[A, B], [0, A]] (6x6).
 template <typename Scalar>
 inline Eigen::Matrix<Scalar, 6, 6> upper_block_triangular(const Eigen::Matrix<Scalar, 3, 3>& A,
@@ -129,22 +183,8 @@ class SE3 {
     // cost in batch loops.
     static_assert(Derived::IsVectorAtCompileTime && Derived::SizeAtCompileTime == 6,
                   "SE3::exp: a twist is a 6-vector (v, w)");
-    const Vector3 v = xi.template head<3>();
-    const Vector3 w = xi.template tail<3>();
-    const Scalar t = w.squaredNorm();
-    if (!(t < Scalar(ThresholdsOf<Scalar>::huge_theta2))) {
-      // Unit-axis form: V v = A v + (B theta) n x v + (1 - A) (n.v) n.
-      const auto r = detail::long_rotation(w);
-      const Vector3& n = r.axis;
-      return SE3(Rotation::from_matrix_unchecked(detail::rodrigues(n, r.sin_theta, r.one_minus_cos)),
-                 r.a * v + r.b_theta * n.cross(v) + ((Scalar(1) - r.a) * n.dot(v)) * n);
-    }
-    const auto k = detail::exp_coefficients(t);
-    // The coefficients scale w before it meets v: |B w| <= 0.73 and
-    // |C w| |w| <= 1.2, so no intermediate exceeds a few |v| (w x v itself
-    // would overflow for |w| |v| past the largest finite value).
-    const Vector3 bw = k.b * w, cw = k.c * w;
-    return SE3(Rotation::from_matrix_unchecked(detail::rodrigues(w, k.a, k.b)), k.a * v + bw.cross(v) + cw.dot(v) * w);
+    const auto e = detail::exp_with_v<Scalar>(xi.template tail<3>());
+    return SE3(Rotation::from_matrix_unchecked(e.rotation), e.v(xi.template head<3>()));
   }
   static SE3 exp(const Twist<Scalar>& xi) noexcept { return exp(xi.vector()); }
 
@@ -154,10 +194,8 @@ class SE3 {
   ///   E = (theta/2) cot(theta/2), D = (1 - E) / theta^2,
   /// from what the rotation's log already has (no trigonometric call).
   Vector6 log() const noexcept {
-    const auto r = detail::so3_log(R_.matrix());
-    const auto k = detail::v_inverse_coefficients(r.theta2, r.half_theta_cot, r.near_identity);
-    const Vector3& w = r.omega;
-    return detail::stack<Scalar>(k.e * p_ - Scalar(0.5) * w.cross(p_) + (k.d * w.dot(p_)) * w, w);
+    const auto l = detail::log_with_v_inverse(R_.matrix());
+    return detail::stack<Scalar>(l.v_inverse(p_), l.log.omega);
   }
 
   // ---- Jacobians of exp (Sola app. D and eq. 180, our (v, w) being Sola's (rho, theta)) ----
