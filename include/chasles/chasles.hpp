@@ -22,6 +22,7 @@
 #include "chasles/random.hpp"
 #include "chasles/screw.hpp"
 #include "chasles/se2.hpp"
+#include "chasles/se23.hpp"
 #include "chasles/se3.hpp"
 #include "chasles/sim3.hpp"
 #include "chasles/so2.hpp"

@@ -3,7 +3,7 @@
 // What every group shares (plus and minus, between, the Jacobians of log,
 // inverse, compose, plus, minus, between and interpolate) is written once in
 // lie_group.hpp; each group's Jacobians of exp are its static members
-// (so3.hpp, se3.hpp, so2.hpp, se2.hpp).
+// (so3.hpp, se3.hpp, so2.hpp, se2.hpp, sim3.hpp, se23.hpp).
 //
 // Convention: right (local) perturbations everywhere, as manif and
 // Pinocchio (lie_group.hpp). Tangent vectors are w (SO(3)) and xi = (v, w),
@@ -21,6 +21,7 @@
 
 #include "chasles/lie_group.hpp"
 #include "chasles/se2.hpp"
+#include "chasles/se23.hpp"
 #include "chasles/se3.hpp"
 #include "chasles/sim3.hpp"
 #include "chasles/so2.hpp"
@@ -152,6 +153,20 @@ inline ActJacobians<Eigen::Matrix<Scalar, 3, 7>> act_jacobians(const Sim3<Scalar
   Jg.template block<3, 3>(0, 3) = -(sR * SO3<Scalar>::hat(p));
   Jg.col(6) = sR * p;
   return {Jg, sR};
+}
+
+/// SE_2(3): d(X p)/dX = [R, 0, -R [p]] (3x9, columns (rho, nu, w)),
+/// d(X p)/dp = R (X exp(xi) p = X (p + rho + w x p) to first order; nu moves
+/// no point).
+template <typename Scalar>
+inline ActJacobians<Eigen::Matrix<Scalar, 3, 9>> act_jacobians(const SE23<Scalar>& g,
+                                                               const Vector3Of<Scalar>& p) noexcept {
+  const Matrix3Of<Scalar>& R = g.rotation().matrix();
+  Eigen::Matrix<Scalar, 3, 9> Jg;
+  Jg.template leftCols<3>() = R;
+  Jg.template block<3, 3>(0, 3).setZero();
+  Jg.template rightCols<3>() = -(R * SO3<Scalar>::hat(p));
+  return {Jg, R};
 }
 
 }  // namespace chasles

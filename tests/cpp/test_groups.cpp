@@ -1,5 +1,5 @@
-// The groups written on lie_group.hpp's generic layer (SO2, SE2), as one
-// typed suite over {group} x {float, double}, against oracles independent of
+// The groups written on lie_group.hpp's generic layer (SO2, SE2, SE23), as
+// one typed suite over {group} x {float, double}, against oracles independent of
 // the code under test:
 // - exp against the matrix exponential of the hat matrix, summed in long
 //   double (Taylor series after scaling, then squaring);
@@ -33,19 +33,23 @@ namespace {
 
 using namespace chasles_test;
 using chasles::SE2;
+using chasles::SE23;
 using chasles::SO2;
 
 constexpr LD kOp = 8;
 constexpr LD kExp = 16;
 
 /// What the suite needs of a group beyond the generic interface: its
-/// samples, its point size and the rotation angle of a tangent.
+/// samples, its point size, the rotation angle of a tangent, a point in the
+/// matrix's coordinates, and the rotation by pi.
 template <typename G>
-struct Planar;
+struct Samples;
 
 template <typename S>
-struct Planar<SO2<S>> {
+struct Samples<SO2<S>> {
   static constexpr int kPoint = 2;
+  static Eigen::Matrix<LD, 2, 1> homogeneous(const Eigen::Matrix<LD, 2, 1>& p) { return p; }
+  static Eigen::Matrix<S, 2, 2> rotation_by_pi() { return -Eigen::Matrix<S, 2, 2>::Identity(); }
   using Tangent = Eigen::Matrix<S, 1, 1>;
   static LD angle(const Tangent& x) { return std::fabs(static_cast<LD>(x[0])); }
   static LD scale(const Tangent&) { return 1; }
@@ -69,8 +73,10 @@ struct Planar<SO2<S>> {
 };
 
 template <typename S>
-struct Planar<SE2<S>> {
+struct Samples<SE2<S>> {
   static constexpr int kPoint = 2;
+  static Eigen::Matrix<LD, 3, 1> homogeneous(const Eigen::Matrix<LD, 2, 1>& p) { return {p[0], p[1], 1}; }
+  static Eigen::Matrix<S, 2, 2> rotation_by_pi() { return -Eigen::Matrix<S, 2, 2>::Identity(); }
   using Tangent = Eigen::Matrix<S, 3, 1>;
   static LD angle(const Tangent& x) { return std::fabs(static_cast<LD>(x[2])); }
   static LD scale(const Tangent& x) { return std::max(LD(1), max_abs(x)); }
@@ -80,12 +86,52 @@ struct Planar<SE2<S>> {
     std::normal_distribution<double> n(0.0, 1.0);
     const S sizes[] = {S(0), S(1e-6), S(1), S(100)};
     int k = 0;
-    for (const auto& w : Planar<SO2<S>>::tangents()) {
+    for (const auto& w : Samples<SO2<S>>::tangents()) {
       Eigen::Vector2d v(n(rng), n(rng));
       v = v.normalized() * double(sizes[k++ % 4]);
       out.push_back(Tangent(S(v[0]), S(v[1]), w[0]));
     }
     out.push_back(Tangent(S(3), S(-4), S(0)));
+    return out;
+  }
+};
+
+template <typename S>
+struct Samples<SE23<S>> {
+  static constexpr int kPoint = 3;
+  using Tangent = Eigen::Matrix<S, 9, 1>;
+  static Eigen::Matrix<LD, 5, 1> homogeneous(const Eigen::Matrix<LD, 3, 1>& p) {
+    Eigen::Matrix<LD, 5, 1> h;
+    h << p, 1, 0;
+    return h;
+  }
+  static Eigen::Matrix<S, 3, 3> rotation_by_pi() { return Eigen::Matrix<S, 3, 1>(1, -1, -1).asDiagonal(); }
+  static LD angle(const Tangent& x) { return to_ld(Eigen::Matrix<S, 3, 1>(x.template tail<3>())).norm(); }
+  static LD scale(const Tangent& x) { return std::max(LD(1), max_abs(x)); }
+  /// SO2's angles (the hard ones and the cutoff's sides) about random axes
+  /// and about the x axis, with position and velocity parts of four sizes.
+  static std::vector<Tangent> tangents() {
+    std::vector<Tangent> out;
+    std::mt19937_64 rng(kSeed + 2);
+    std::normal_distribution<double> n(0.0, 1.0);
+    const S sizes[] = {S(0), S(1e-6), S(1), S(100)};
+    int k = 0;
+    for (const auto& a : Samples<SO2<S>>::tangents()) {
+      Eigen::Vector3d axis(n(rng), n(rng), n(rng));
+      if (k % 3 == 0) axis = Eigen::Vector3d::UnitX();
+      Tangent x;
+      for (int i = 0; i < 6; ++i) x[i] = S(n(rng) * double(sizes[(k + i / 3) % 4]) / std::sqrt(3.0));
+      x.template tail<3>() = (axis.normalized() * double(a[0])).template cast<S>();
+      ++k;
+      out.push_back(x);
+    }
+    // Both sides of the series' cutoff, one ulp apart, about the x axis.
+    const S cut = std::sqrt(chasles::Thresholds<S>::taylor_theta2);
+    for (S a : {std::nextafter(cut, S(0)), std::nextafter(cut, S(1))}) {
+      Tangent x;
+      x << S(0.3), S(-0.2), S(0.1), S(1), S(2), S(-3), a, S(0), S(0);
+      out.push_back(x);
+    }
     return out;
   }
 };
@@ -114,7 +160,7 @@ template <typename G>
 class Groups : public ::testing::Test {
  public:
   using S = typename G::Scalar;
-  using P = Planar<G>;
+  using P = Samples<G>;
   using Tangent = typename G::Tangent;
   using GL = decltype(std::declval<G>().template cast<LD>());  // the same group over long double
   using TL = typename GL::Tangent;
@@ -144,12 +190,12 @@ struct Name {
   template <typename G>
   static std::string GetName(int) {
     using S = typename G::Scalar;
-    const std::string n = std::is_same<G, SO2<S>>::value ? "SO2" : "SE2";
+    const std::string n = std::is_same<G, SO2<S>>::value ? "SO2" : std::is_same<G, SE2<S>>::value ? "SE2" : "SE23";
     return n + (std::is_same<S, float>::value ? "f" : "d");
   }
 };
 
-using Types = ::testing::Types<SO2<float>, SO2<double>, SE2<float>, SE2<double>>;
+using Types = ::testing::Types<SO2<float>, SO2<double>, SE2<float>, SE2<double>, SE23<float>, SE23<double>>;
 TYPED_TEST_SUITE(Groups, Types, Name);
 
 TYPED_TEST(Groups, ExpIsTheMatrixExponentialOfHat) {
@@ -175,9 +221,10 @@ TYPED_TEST(Groups, LogInvertsExp) {
   // At pi exactly (the rotation matrix [[-1, 0], [0, -1]]) the angle is pi, never NaN.
   const auto M = TypeParam::exp(this->xs[0]).matrix();
   auto Mpi = M;
-  Mpi.template topLeftCorner<2, 2>() = -Eigen::Matrix<S, 2, 2>::Identity();
+  constexpr int kP = TestFixture::P::kPoint;
+  Mpi.template topLeftCorner<kP, kP>() = TestFixture::P::rotation_by_pi();
   const auto w = TypeParam::from_matrix_unchecked(Mpi).log();
-  EXPECT_EQ(std::fabs(w[TestFixture::D - 1]), S(kPi));
+  EXPECT_EQ(TestFixture::P::angle(w), LD(S(kPi)));
 }
 
 TYPED_TEST(Groups, GroupLawsOnTheMatrices) {
@@ -202,12 +249,10 @@ TYPED_TEST(Groups, GroupLawsOnTheMatrices) {
     EXPECT_TRUE(near<S>(TypeParam::ad(xs[i]) * y, TypeParam::vee(C.template cast<S>()), kOp, scale * scale));
     EXPECT_TRUE((TypeParam::vee(TypeParam::hat(xs[i])).array() == xs[i].array()).all());
     // The action: the matrix on the homogeneous point (or the point).
-    const Eigen::Matrix<S, 2, 1> p(S(0.3), S(-1.7));
-    Eigen::Matrix<LD, TypeParam::DoF == 1 ? 2 : 3, 1> hp;
-    hp.template head<2>() = to_ld(p);
-    if constexpr (TypeParam::DoF == 3) hp[2] = 1;
-    const auto q = (to_ld(a.matrix()) * hp).eval();
-    EXPECT_TRUE(near<S>(a.act(p), q.template head<2>(), kOp, scale));
+    constexpr int kP = TestFixture::P::kPoint;
+    const Eigen::Matrix<S, kP, 1> p = Eigen::Matrix<S, kP, 1>::LinSpaced(S(0.3), S(-1.7));
+    const auto q = (to_ld(a.matrix()) * TestFixture::P::homogeneous(to_ld(p))).eval();
+    EXPECT_TRUE(near<S>(a.act(p), q.template head<kP>(), kOp, scale));
   }
 }
 
@@ -282,11 +327,12 @@ TYPED_TEST(Groups, JacobiansOfTheOperationsAgainstDifferences) {
     same(bj.rhs,
          TestFixture::fd(D, [&](const TL& d) { return TL(rminus(between(al, rplus(bl, d)), between(al, bl))); }),
          "between b");
-    const Eigen::Matrix<LD, 2, 1> p(0.3L, -1.7L);
-    const auto aj = act_jacobians(a, Eigen::Matrix<S, 2, 1>(p.template cast<S>()));
-    same(aj.group, TestFixture::fd(2, [&](const TL& d) { return Eigen::Matrix<LD, 2, 1>(rplus(al, d).act(p)); }),
+    constexpr int kP = TestFixture::P::kPoint;
+    const Eigen::Matrix<LD, kP, 1> p = Eigen::Matrix<LD, kP, 1>::LinSpaced(0.3L, -1.7L);
+    const auto aj = act_jacobians(a, Eigen::Matrix<S, kP, 1>(p.template cast<S>()));
+    same(aj.group, TestFixture::fd(kP, [&](const TL& d) { return Eigen::Matrix<LD, kP, 1>(rplus(al, d).act(p)); }),
          "act g");
-    same(aj.point, to_ld(a.matrix().template topLeftCorner<2, 2>()), "act p");
+    same(aj.point, to_ld(a.matrix().template topLeftCorner<kP, kP>()), "act p");
     EXPECT_TRUE(near<S>(interpolate_jacobian_t(a, b, S(0.3)), rminus(b, a), 0)) << at;
   }
 }
@@ -302,7 +348,8 @@ TYPED_TEST(Groups, ConstructionFromMatrices) {
     EXPECT_TRUE((TypeParam::from_matrix(m)->matrix().array() == m.array()).all());
     // Noise of 1e-3 on the rotation block: refused, and projected back to within it.
     M noisy = m;
-    noisy.template topLeftCorner<2, 2>() += Eigen::Matrix<S, 2, 2>(Eigen::Matrix<S, 2, 2>::Constant(S(1e-3)));
+    constexpr int kP = TestFixture::P::kPoint;
+    noisy.template topLeftCorner<kP, kP>() += Eigen::Matrix<S, kP, kP>::Constant(S(1e-3));
     EXPECT_FALSE(TypeParam::from_matrix(noisy).has_value());
     EXPECT_TRUE(TypeParam::from_matrix_projected(noisy).is_approx(g, S(3e-3)));
     EXPECT_TRUE(TypeParam::from_matrix_projected(noisy).normalized().is_approx(

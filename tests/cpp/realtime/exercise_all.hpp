@@ -183,6 +183,20 @@ S exercise_all() noexcept {
   sum += s3h.matrix().sum() + Sim3<S>::transform_defect(s3.matrix()) + Sim3<S>::matrix_scale(s3.matrix());
   sum += Sim3<S>::exp(V7(V7::Zero())).log().sum() + Sim3<S>::exp(V7(x7 * S(1e-3))).log().sum();
 
+  // SE_2(3): the generic operations, and what only it has.
+  using V9 = Eigen::Matrix<S, 9, 1>;
+  V9 x9, y9;  // entry by entry, as x7
+  for (int i = 0; i < 3; ++i) {
+    x9[i] = p[i], x9[3 + i] = S(0.5) * w[i], x9[6 + i] = w[i];
+    y9[i] = w[i], y9[3 + i] = S(-2) * p[i], y9[6 + i] = S(0.1) * p[i];
+  }
+  sum += exercise_group<SE23<S>>(x9, y9);
+  const SE23<S> x23 = SE23<S>::exp(x9), x23h(R, p, w);
+  sum += x23.act(p).sum() + (x23 * p).sum() + x23.rotation().matrix().sum() + x23.translation().sum();
+  sum += x23.velocity().sum() + x23h.matrix().sum() + SE23<S>::transform_defect(x23.matrix());
+  const auto a23 = act_jacobians(x23, p);
+  sum += a23.group.sum() + a23.point.sum();
+
   // Jacobians and plus / minus (jacobians.hpp), including the series branches.
   const V3 w0 = V3::Zero(), wpi(S(3.14159), S(0), S(0));
   const V6 xi0 = V6::Zero();
