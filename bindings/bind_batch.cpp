@@ -1,5 +1,5 @@
-// chasles._core: the array functions (so2_*, se2_*, so3_*, se3_*, sim3_*) as numpy generalized
-// ufuncs.
+// chasles._core: the array functions (so2_*, se2_*, so3_*, se3_*, sim3_*, se23_*) as numpy
+// generalized ufuncs.
 //
 // Each function is its kernel, a generic lambda that calls the chasles C++
 // API on one element, registered by ufunc.hpp with the core shapes of its
@@ -11,6 +11,7 @@
 #include <type_traits>
 
 #include <chasles/se2.hpp>
+#include <chasles/se23.hpp>
 #include <chasles/se3.hpp>
 #include <chasles/sim3.hpp>
 #include <chasles/so2.hpp>
@@ -40,6 +41,8 @@ template <typename T>
 using SE2 = chasles::SE2<T>;
 template <typename T>
 using Sim3 = chasles::Sim3<T>;
+template <typename T>
+using SE23 = chasles::SE23<T>;
 
 /// so3_from_quat's kernel for one quaternion order: q as given (any nonzero
 /// norm, normalized by the C++ API); a zero or non-finite quaternion has no
@@ -451,6 +454,77 @@ Returns:
   }
 };
 
+template <>
+struct Batch<SE23> {
+  static constexpr int N = 5, D = 9, P = 3;
+  static constexpr const char* names[9] = {"se23_exp", "se23_log", "se23_compose",     "se23_inverse",  "se23_act",
+                                           "se23_hat", "se23_vee", "se23_interpolate", "se23_normalize"};
+  static constexpr const char *element = "X", *tangent = "xi",
+                              *matrices = "extended pose matrices [[R, p, v], [0, 1, 0], [0, 0, 1]]",
+                              *compose =
+                                  "Composition of extended poses: a @ b = (R_a R_b, R_a p_b + p_a, R_a v_b + v_a).",
+                              *inverse = "Inverse extended poses: (R^T, -R^T p, -R^T v).", *acted = "points",
+                              *act = "Transformed points: q_a = R q_b + p (the velocity moves no point).",
+                              *one = "extended pose", *moved = "transformed",
+                              *product = ", the batch shape being\n    the broadcast of a's and b's.",
+                              *interpolate = "Geodesic interpolation of extended poses",
+                              *between = "one screw motion, the velocity along the same rotation",
+                              *interpolated = "extended poses";
+  static constexpr const char* exp = R"(Extended pose matrices of xi = (rho, nu, w): X = exp([xi]) (5x5).
+
+R = exp([w]), p = V rho, v = V nu with V = J_l(w) = A I + B [w] + C w w^T
+(SE3's exp applied to both translations: a few ulps for every xi).
+
+Args:
+    xi: array_like of shape (..., 9): (rho, nu, w).
+
+Returns:
+    numpy.ndarray of shape (..., 5, 5): the matrices [[R, p, v], [0, 1, 0], [0, 0, 1]].)";
+  static constexpr const char* log = R"(The (rho, nu, w) of extended pose matrices: xi = log(X)^vee.
+
+w = log(R) with |w| in [0, pi], rho = V^-1 p, nu = V^-1 v in closed form.
+
+Args:
+    X: array_like of shape (..., 5, 5): matrices [[R, p, v], [0, 1, 0], [0, 0, 1]].
+
+Returns:
+    numpy.ndarray of shape (..., 9): (rho, nu, w).)";
+  static constexpr const char* hat =
+      R"(Matrices of xi = (rho, nu, w): [xi] = [[ [w], rho, nu ], [0, 0, 0], [0, 0, 0]] (5x5).
+
+Args:
+    xi: array_like of shape (..., 9).
+
+Returns:
+    numpy.ndarray of shape (..., 5, 5): the matrices [xi].)";
+  static constexpr const char* vee = R"(The (rho, nu, w) of 5x5 matrices: the inverse of se23_hat.
+
+rho and nu are the top of the last two columns, w the antisymmetric part of
+the top-left block; the bottom rows are not read.
+
+Args:
+    matrix: array_like of shape (..., 5, 5).
+
+Returns:
+    numpy.ndarray of shape (..., 9).)";
+  static constexpr const char* normalize =
+      R"(Extended pose matrices with the nearest rotation: SE23.normalized() over a batch.
+
+The top-left block becomes the nearest rotation (so3_normalize), the
+position and velocity columns are kept and the bottom rows become
+[[0, 0, 0, 1, 0], [0, 0, 0, 0, 1]]. Non-finite matrices give NaN.
+
+Args:
+    X: array_like of shape (..., 5, 5): matrices.
+
+Returns:
+    numpy.ndarray of shape (..., 5, 5): the extended pose matrices.)";
+  template <typename T>
+  static Eigen::Matrix<T, 5, 5> stored(const SE23<T>& X) noexcept {
+    return X.matrix();
+  }
+};
+
 /// A tangent as a ufunc result: SO(2)'s angle as a scalar, others as they are.
 template <typename V>
 auto tangent_out(const V& x) noexcept {
@@ -597,6 +671,7 @@ void bind_batch(py::module_& m) {
   bind_group_batch<SO2>(m);
   bind_group_batch<SE2>(m);
   bind_group_batch<Sim3>(m);
+  bind_group_batch<SE23>(m);
 }
 
 }  // namespace chasles_py

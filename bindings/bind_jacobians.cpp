@@ -1,5 +1,5 @@
 // chasles._core: the module-level functions of the Lie groups, each written
-// once and overloaded for SO2, SE2, SO3 and SE3 (include/chasles/lie_group.hpp): rplus,
+// once and overloaded for SO2, SE2, SO3, Sim3, SE23 and SE3 (include/chasles/lie_group.hpp): rplus,
 // rminus, lplus, lminus, between, interpolate, and the Jacobians of the group
 // operations in the right-local convention (log_jacobian, inverse_jacobian,
 // compose_jacobians, act_jacobians, rplus_jacobians, rminus_jacobians,
@@ -21,6 +21,7 @@ namespace chasles_py {
 
 namespace {
 
+using chasles::SE23d;
 using chasles::SE2d;
 using chasles::SE3d;
 using chasles::Sim3d;
@@ -35,7 +36,7 @@ Matrices pair(const J& j) {
 }
 
 /// Defines rplus, ..., interpolate_jacobian_t for the group G: called for
-/// SO2, SE2, SO3, then SE3, which makes each function an overload set in that
+/// SO2, SE2, SO3, Sim3, SE23, then SE3, which makes each function an overload set in that
 /// order. pybind11 shows the signatures of the overloads, each followed by
 /// its docstring: the text common to the groups is given once, with the SE3
 /// overload; SO3's own text, if any, with its overload.
@@ -47,11 +48,11 @@ void def_group_functions(py::module_& m) {
   const auto shared = [](const char* doc) { return kSE3 ? doc : nullptr; };
   // The text of the Jacobians of a function of two elements x and y of the group.
   const auto pair_doc = [](const std::string& x, const std::string& y, const char* head, const char* example) {
-    return std::string(head) + "\n\nArgs:\n    " + x + ": SO2, SE2, SO3, Sim3 or SE3.\n    " + y +
+    return std::string(head) + "\n\nArgs:\n    " + x + ": SO2, SE2, SO3, SE3, Sim3 or SE23.\n    " + y +
            ": of the same group as " + x + ".\n\nReturns:\n    tuple[ndarray, ndarray]: (J_" + x + ", J_" + y +
            "), each of shape (D, D): (1, 1) for SO2,\n    (3, 3) for SE2 and SO3, (6, 6) for SE3 (twists (v, w)), (7, "
            "7) "
-           "for Sim3, float64.\n\n"
+           "for Sim3, (9, 9) for SE23, float64.\n\n"
            "Raises:\n    TypeError: " +
            x + " and " + y + " are not of the same group.\n\nExample:\n" + example;
   };
@@ -60,13 +61,14 @@ void def_group_functions(py::module_& m) {
       py::arg("g"), py::arg("xi"), shared(R"doc(g rplus xi = g exp(xi): a perturbation in g's own (local, right) frame.
 
 Args:
-    g: SO2, SE2, SO3, Sim3 or SE3.
+    g: SO2, SE2, SO3, SE3, Sim3 or SE23.
     xi: tangent vector of g's group, finite: SO2's angle theta (a float),
         shape (3,) for SE2 ((vx, vy, w)) and SO3 (rotation vector w), (6,)
-        for SE3 (twist (v, w)), (7,) for Sim3 ((v, w, sigma)).
+        for SE3 (twist (v, w)), (7,) for Sim3 ((v, w, sigma)),
+        (9,) for SE23 ((rho, nu, w)).
 
 Returns:
-    SO2, SE2, SO3, Sim3 or SE3: g exp(xi).
+    SO2, SE2, SO3, SE3, Sim3 or SE23: g exp(xi).
 
 Raises:
     ValueError: xi has the wrong shape for g, or is not finite.
@@ -84,12 +86,12 @@ The order is manif's g.rminus(h); jaxlie's rminus(a, b) = log(a^-1 b) takes
 the arguments the other way round.
 
 Args:
-    g: SO2, SE2, SO3, Sim3 or SE3.
+    g: SO2, SE2, SO3, SE3, Sim3 or SE23.
     h: of the same group as g.
 
 Returns:
     float or ndarray: SO2's angle, shape (3,) for SE2 ((vx, vy, w)) and
-    SO3, (6,) for SE3 ((v, w)), (7,) for Sim3.
+    SO3, (6,) for SE3 ((v, w)), (7,) for Sim3, (9,) for SE23.
 
 Example:
     >>> h = chasles.SO3.exp([0.0, 0.0, 0.5])
@@ -104,10 +106,10 @@ Example:
 
 Args:
     xi: tangent vector of g's group, finite (as for rplus).
-    g: SO2, SE2, SO3, Sim3 or SE3.
+    g: SO2, SE2, SO3, SE3, Sim3 or SE23.
 
 Returns:
-    SO2, SE2, SO3, Sim3 or SE3: exp(xi) g.
+    SO2, SE2, SO3, SE3, Sim3 or SE23: exp(xi) g.
 
 Raises:
     ValueError: xi has the wrong shape for g, or is not finite.
@@ -117,23 +119,23 @@ Raises:
       shared(R"doc(g lminus h = log(g h^-1): the xi with lplus(xi, h) == g.
 
 Args:
-    g: SO2, SE2, SO3, Sim3 or SE3.
+    g: SO2, SE2, SO3, SE3, Sim3 or SE23.
     h: of the same group as g.
 
 Returns:
     float or ndarray: SO2's angle, shape (3,) for SE2 ((vx, vy, w)) and
-    SO3, (6,) for SE3 ((v, w)), (7,) for Sim3.
+    SO3, (6,) for SE3 ((v, w)), (7,) for Sim3, (9,) for SE23.
 )doc"));
   m.def(
       "between", [](Obj<G> a, Obj<G> b) { return chasles::between(*a, *b); }, py::arg("a"), py::arg("b"),
       shared(R"doc(between(a, b) = a^-1 b: b seen from a (manif's a.between(b)).
 
 Args:
-    a: SO2, SE2, SO3, Sim3 or SE3.
+    a: SO2, SE2, SO3, SE3, Sim3 or SE23.
     b: of the same group as a.
 
 Returns:
-    SO2, SE2, SO3, Sim3 or SE3: a^-1 b.
+    SO2, SE2, SO3, SE3, Sim3 or SE23: a^-1 b.
 
 Raises:
     TypeError: a and b are not of the same group.
@@ -186,11 +188,12 @@ f(g exp(dx)) = f(g) + J dx + o(dx); here J = J_r(log g)^-1 (Sola et al.
 w and -w (J is that of the branch log returns).
 
 Args:
-    g: SO2, SE2, SO3, Sim3 or SE3.
+    g: SO2, SE2, SO3, SE3, Sim3 or SE23.
 
 Returns:
     ndarray: shape (D, D), D the tangent size: (1, 1) for SO2, (3, 3) for
     SE2 and SO3, (6, 6) for SE3 (rows and columns (v, w)), (7, 7) for Sim3,
+    (9, 9) for SE23,
     float64.
 
 Example:
@@ -209,11 +212,13 @@ Right-local: f(g exp(dx)) = f(g) exp(J dx + o(dx)); here
 section IV).
 
 Args:
-    g: SO2, SE2, SO3, Sim3 or SE3.
+    g: SO2, SE2, SO3, SE3, Sim3 or SE23.
 
 Returns:
     ndarray: shape (D, D): (1, 1) for SO2 (-1), (3, 3) for SE2 and SO3
-    (-R), (6, 6) for SE3 (-Ad_g, twists (v, w)), (7, 7) for Sim3, float64.
+    (-R), (6, 6) for SE3 (-Ad_g, twists (v, w)), (7, 7) for Sim3,
+    (9, 9) for SE23,
+    float64.
 
 Example:
     >>> g = chasles.SO3.exp([0.0, 0.0, np.pi / 2])
@@ -248,15 +253,16 @@ SO3: J_g = -R [p], J_p = R; SE3: J_g = [R, -R [p]] (columns (v, w), linear
 part first), J_p = R (Sola et al. 2018, appendices B and D). SO2:
 J_g = R (-p_y, p_x); SE2: J_g = [R, R (-p_y, p_x)] (columns (vx, vy, w)).
 Sim3: J_g = [s R, -s R [p], s R p] (columns (v, w, sigma)), J_p = s R.
+SE23: J_g = [R, 0, -R [p]] (columns (rho, nu, w)), J_p = R.
 
 Args:
-    g: SO2, SE2, SO3, Sim3 or SE3.
+    g: SO2, SE2, SO3, SE3, Sim3 or SE23.
     p: point, shape (2,) for SO2 and SE2, (3,) for SO3 and SE3, finite.
 
 Returns:
     tuple[ndarray, ndarray]: (J_g, J_p); J_g of shape (2, 1) for SO2, (2, 3)
-    for SE2, (3, 3) for SO3, (3, 6) for SE3, (3, 7) for Sim3; J_p = R (s R
-    for Sim3), shape (2, 2) or (3, 3); float64.
+    for SE2, (3, 3) for SO3, (3, 6) for SE3, (3, 7) for Sim3, (3, 9) for
+    SE23; J_p = R (s R for Sim3), shape (2, 2) or (3, 3); float64.
 
 Raises:
     ValueError: p is not of g's point shape, or not finite.
@@ -281,12 +287,14 @@ Right-local: rplus(g exp(dg), xi + dxi) = rplus(g, xi) exp(J_g dg + J_xi dxi
 al. 2018, section IV; manif's rplus Jacobians).
 
 Args:
-    g: SO2, SE2, SO3, Sim3 or SE3.
+    g: SO2, SE2, SO3, SE3, Sim3 or SE23.
     xi: tangent vector of g's group, finite (as for rplus).
 
 Returns:
     tuple[ndarray, ndarray]: (J_g, J_xi), each of shape (D, D): (1, 1) for SO2,
-    (3, 3) for SE2 and SO3, (6, 6) for SE3, (7, 7) for Sim3, float64.
+    (3, 3) for SE2 and SO3, (6, 6) for SE3, (7, 7) for Sim3,
+    (9, 9) for SE23,
+    float64.
 
 Raises:
     ValueError: xi has the wrong shape for g, or is not finite.
@@ -323,11 +331,13 @@ J_g = I (Sola et al. 2018, sections III and IV).
 
 Args:
     xi: tangent vector of g's group, finite (as for rplus).
-    g: SO2, SE2, SO3, Sim3 or SE3.
+    g: SO2, SE2, SO3, SE3, Sim3 or SE23.
 
 Returns:
     tuple[ndarray, ndarray]: (J_xi, J_g), each of shape (D, D): (1, 1) for SO2,
-    (3, 3) for SE2 and SO3, (6, 6) for SE3, (7, 7) for Sim3, float64.
+    (3, 3) for SE2 and SO3, (6, 6) for SE3, (7, 7) for Sim3,
+    (9, 9) for SE23,
+    float64.
 
 Raises:
     ValueError: xi has the wrong shape for g, or is not finite.
@@ -381,13 +391,13 @@ and J = J_r(t xi) xi = xi = rminus(b, a) = log(a^-1 b), the same for every t
 (the geodesic has constant body velocity).
 
 Args:
-    a: SO2, SE2, SO3, Sim3 or SE3, the start.
+    a: SO2, SE2, SO3, SE3, Sim3 or SE23, the start.
     b: of the same group as a, the end.
     t: the fraction, finite.
 
 Returns:
     float or ndarray: SO2's angle, shape (3,) for SE2 and SO3, (6,) for
-    SE3 ((v, w), linear part first), (7,) for Sim3.
+    SE3 ((v, w), linear part first), (7,) for Sim3, (9,) for SE23.
 
 Raises:
     ValueError: t is not finite.
@@ -407,6 +417,7 @@ void bind_jacobians(py::module_& m) {
   def_group_functions<SE2d>(m);
   def_group_functions<SO3d>(m);
   def_group_functions<Sim3d>(m);
+  def_group_functions<SE23d>(m);
   def_group_functions<SE3d>(m);
 
   // ---- the Jacobian of the point action for many points (array functions) ----

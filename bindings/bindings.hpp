@@ -11,6 +11,7 @@
 #include <chasles/euler.hpp>
 #include <chasles/screw.hpp>
 #include <chasles/se2.hpp>
+#include <chasles/se23.hpp>
 #include <chasles/sim3.hpp>
 #include <chasles/so2.hpp>
 
@@ -29,6 +30,7 @@ void bind_se3(Class<chasles::SE3d>& cls);  // bind_se3.cpp: class SE3
 void bind_so2(Class<chasles::SO2d>& cls);  // bind_planar.cpp: class SO2
 void bind_se2(Class<chasles::SE2d>& cls);    // bind_planar.cpp: class SE2
 void bind_sim3(Class<chasles::Sim3d>& cls);  // bind_sim3.cpp: class Sim3
+void bind_se23(Class<chasles::SE23d>& cls);  // bind_se23.cpp: class SE23
 void bind_twist_wrench(Class<chasles::Twistd>& twist, Class<chasles::Wrenchd>& wrench,
                        py::class_<chasles::Screw<double>>& screw);  // bind_twist_wrench.cpp: Twist, Wrench, Screw
 void bind_batch(py::module_& m);         // bind_batch.cpp: broadcasting array functions

@@ -16,6 +16,7 @@ PYBIND11_MODULE(_core, m) {
   cp::Class<chasles::SO2d> so2(m, "SO2");
   cp::Class<chasles::SE2d> se2(m, "SE2");
   cp::Class<chasles::Sim3d> sim3(m, "Sim3");
+  cp::Class<chasles::SE23d> se23(m, "SE23");
   cp::Class<chasles::Twistd> twist(m, "Twist");
   cp::Class<chasles::Wrenchd> wrench(m, "Wrench");
   pybind11::class_<chasles::Screw<double>> screw(m, "Screw");
@@ -24,6 +25,7 @@ PYBIND11_MODULE(_core, m) {
   cp::bind_so2(so2);
   cp::bind_se2(se2);
   cp::bind_sim3(sim3);
+  cp::bind_se23(se23);
   cp::bind_twist_wrench(twist, wrench, screw);
   cp::bind_batch(m);
   cp::bind_jacobians(m);

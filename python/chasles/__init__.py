@@ -1,10 +1,10 @@
 """chasles: Lie groups of rigid-body motion, SO(3) and SE(3) (and the plane's
-SO(2) and SE(2), and the similarities Sim(3)), with twists, wrenches and
-screws, over the C++ headers of the same name.
+SO(2) and SE(2), the similarities Sim(3) and the extended poses SE_2(3)),
+with twists, wrenches and screws, over the C++ headers of the same name.
 
 Two layers over the same C++ kernels:
 
-- objects for one element: ``SO3``, ``SE3``, ``SO2``, ``SE2``, ``Sim3``, ``Twist``, ``Wrench``,
+- objects for one element: ``SO3``, ``SE3``, ``SO2``, ``SE2``, ``Sim3``, ``SE23``, ``Twist``, ``Wrench``,
   ``Screw`` and ``SpatialInertia`` (a rigid body's inertia), with ``@``
   for composition and action (``g @ h``, ``g @ p``);
 - array functions for batches: ``so3_exp``, ``se3_log``, ``se3_compose``,
@@ -67,6 +67,7 @@ from chasles._chain import Chain
 from chasles._core import (
     SE2,
     SE3,
+    SE23,
     SO2,
     SO3,
     Screw,
@@ -115,6 +116,15 @@ from chasles._core import (
     se3_log,
     se3_normalize,
     se3_vee,
+    se23_act,
+    se23_compose,
+    se23_exp,
+    se23_hat,
+    se23_interpolate,
+    se23_inverse,
+    se23_log,
+    se23_normalize,
+    se23_vee,
     sim3_act,
     sim3_compose,
     sim3_exp,
@@ -155,6 +165,7 @@ from chasles._threads import set_num_threads
 __all__ = [
     "Chain",
     "SE2",
+    "SE23",
     "SE3",
     "SE3BSpline",
     "SE3Spline",
@@ -211,6 +222,15 @@ __all__ = [
     "se3_mean",
     "se3_random",
     "se3_vee",
+    "se23_act",
+    "se23_compose",
+    "se23_exp",
+    "se23_hat",
+    "se23_interpolate",
+    "se23_inverse",
+    "se23_log",
+    "se23_normalize",
+    "se23_vee",
     "set_num_threads",
     "sim3_act",
     "sim3_compose",

@@ -8,7 +8,7 @@ import numpy
 import numpy.dtypes
 import numpy.typing
 import typing
-__all__: list[str] = ['Chain', 'SE2', 'SE3', 'SO2', 'SO3', 'Screw', 'Sim3', 'SpatialInertia', 'Twist', 'Wrench', 'act_jacobians', 'between', 'between_jacobians', 'compose_jacobians', 'get_num_threads', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'lminus_jacobians', 'log_jacobian', 'lplus', 'lplus_jacobians', 'rminus', 'rminus_jacobians', 'rplus', 'rplus_jacobians', 'se2_act', 'se2_compose', 'se2_exp', 'se2_hat', 'se2_interpolate', 'se2_inverse', 'se2_log', 'se2_normalize', 'se2_vee', 'se3_act', 'se3_act_jacobian', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_distance', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_normalize', 'se3_vee', 'sim3_act', 'sim3_compose', 'sim3_exp', 'sim3_hat', 'sim3_interpolate', 'sim3_inverse', 'sim3_log', 'sim3_normalize', 'sim3_vee', 'so2_act', 'so2_compose', 'so2_exp', 'so2_hat', 'so2_interpolate', 'so2_inverse', 'so2_log', 'so2_normalize', 'so2_vee', 'so3_act', 'so3_act_jacobian', 'so3_angle', 'so3_compose', 'so3_distance', 'so3_exp', 'so3_from_uniforms', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_normalize', 'so3_vee']
+__all__: list[str] = ['Chain', 'SE2', 'SE23', 'SE3', 'SO2', 'SO3', 'Screw', 'Sim3', 'SpatialInertia', 'Twist', 'Wrench', 'act_jacobians', 'between', 'between_jacobians', 'compose_jacobians', 'get_num_threads', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'lminus_jacobians', 'log_jacobian', 'lplus', 'lplus_jacobians', 'rminus', 'rminus_jacobians', 'rplus', 'rplus_jacobians', 'se23_act', 'se23_compose', 'se23_exp', 'se23_hat', 'se23_interpolate', 'se23_inverse', 'se23_log', 'se23_normalize', 'se23_vee', 'se2_act', 'se2_compose', 'se2_exp', 'se2_hat', 'se2_interpolate', 'se2_inverse', 'se2_log', 'se2_normalize', 'se2_vee', 'se3_act', 'se3_act_jacobian', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_distance', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_normalize', 'se3_vee', 'sim3_act', 'sim3_compose', 'sim3_exp', 'sim3_hat', 'sim3_interpolate', 'sim3_inverse', 'sim3_log', 'sim3_normalize', 'sim3_vee', 'so2_act', 'so2_compose', 'so2_exp', 'so2_hat', 'so2_interpolate', 'so2_inverse', 'so2_log', 'so2_normalize', 'so2_vee', 'so3_act', 'so3_act_jacobian', 'so3_angle', 'so3_compose', 'so3_distance', 'so3_exp', 'so3_from_uniforms', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_normalize', 'so3_vee']
 
 _Name = typing.TypeVar("_Name", bound=str)
 _Signature = typing.TypeVar("_Signature", bound=str)
@@ -2660,6 +2660,423 @@ class Sim3:
         """
         ndarray: the translation t, shape (3,) (a new array).
         """
+class SE23:
+    """
+    An extended pose: an element of SE_2(3), stored as a rotation R (an SO3), a position p and a velocity v.
+    
+    Its matrix is X = [[R, p, v], [0, 1, 0], [0, 0, 1]] (5x5, manif's layout);
+    it composes as ``(R1, p1, v1) @ (R2, p2, v2) = (R1 R2, R1 p2 + p1, R1 v2 + v1)``
+    and acts on points as ``q_a = R q_b + p`` (``X @ q``; the velocity moves no
+    point). The tangent is xi = (rho, nu, w), in the order of the matrix's
+    columns: [xi] = [[ [w], rho, nu ], [0, 0, 0], [0, 0, 0]]. manif orders it
+    (rho, w, nu), gtsam's NavState (w, rho, nu). The state of IMU
+    preintegration and of invariant Kalman filters.
+    
+    Example:
+        >>> X = SE23(SO3.exp([0.0, 0.0, np.pi / 2]), [1.0, 0.0, 0.0], [0.0, 0.0, 2.0])
+        >>> np.round(X @ [1.0, 0.0, 0.0], 12) + 0.0
+        array([1., 1., 0.])
+        >>> SE23.exp(X.log()).is_approx(X)
+        True
+    """
+    __array_ufunc__ = None
+    __hash__: typing.ClassVar[None] = None
+    dtype: typing.ClassVar[numpy.dtypes.Float64DType]
+    @staticmethod
+    def exp(xi: numpy.typing.ArrayLike) -> SE23:
+        """
+        The extended pose exp([xi]) of xi = (rho, nu, w).
+        
+        R = exp([w]), p = V rho, v = V nu with V = J_l(w) = A I + B [w] + C w w^T:
+        SE3's exp applied to both translations, one sincos, a few ulps over the
+        whole domain. (manif orders its tangent (rho, w, nu), gtsam's NavState
+        (w, rho, nu).)
+        
+        Args:
+            xi: (rho, nu, w), shape (9,), finite.
+        
+        Returns:
+            SE23: exp([xi]).
+        
+        Example:
+            >>> X = SE23.exp([1.0, 0.0, 0.0, 0.0, 2.0, 0.0, 0.0, 0.0, 0.0])
+            >>> X.translation, X.velocity
+            (array([1., 0., 0.]), array([0., 2., 0.]))
+        """
+    @staticmethod
+    def from_matrix(matrix: numpy.typing.ArrayLike, tol: float = 1.4901161193847656e-08) -> SE23:
+        """
+        Checked construction from a 5x5 matrix [[R, p, v], [0, 1, 0], [0, 0, 1]].
+        
+        Accepts M when the rotation defect of its top-left block and the deviation
+        of its bottom rows from [[0, 1, 0], [0, 0, 1]] are both at most tol
+        (default sqrt(eps)).
+        
+        Args:
+            matrix: shape (5, 5), finite.
+            tol: the largest accepted defect.
+        
+        Returns:
+            SE23: the extended pose.
+        
+        Raises:
+            ValueError: M is not an extended pose within tol (the message gives the
+                defects), or M is not finite, or not of shape (5, 5).
+        
+        Example:
+            >>> SE23.from_matrix(np.eye(5)).velocity
+            array([0., 0., 0.])
+        """
+    @staticmethod
+    def from_matrix_projected(matrix: numpy.typing.ArrayLike) -> SE23:
+        """
+        The nearest rotation to the top-left block, with the position and velocity columns.
+        
+        The bottom rows are not read.
+        
+        Args:
+            matrix: shape (5, 5), finite.
+        
+        Returns:
+            SE23: the projected extended pose.
+        """
+    @staticmethod
+    def from_matrix_unchecked(matrix: numpy.typing.ArrayLike) -> SE23:
+        """
+        Construction without a check from [[R, p, v], [*]], for valid data.
+        
+        Args:
+            matrix: shape (5, 5), finite.
+        
+        Returns:
+            SE23: the extended pose.
+        """
+    @staticmethod
+    def hat(xi: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The 5x5 matrix [xi] = [[ [w], rho, nu ], [0, 0, 0], [0, 0, 0]] of xi = (rho, nu, w).
+        
+        Args:
+            xi: shape (9,).
+        
+        Returns:
+            ndarray: shape (5, 5).
+        """
+    @staticmethod
+    def identity() -> SE23:
+        """
+        The identity extended pose.
+        """
+    @staticmethod
+    def interpolate(a: SE23, b: SE23, t: float) -> SE23:
+        """
+        Geodesic interpolation a exp(t log(a^-1 b)).
+        
+        t = 0 gives a, t = 1 gives b, and the extended pose in between follows one screw motion, the velocity along the same rotation.
+        
+        Args:
+            a: SE23, the start.
+            b: SE23, the end.
+            t: the fraction, finite.
+        
+        Returns:
+            SE23: the interpolated extended pose.
+        
+        Example:
+            >>> a, b = SE23(), SE23.exp([0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9])
+            >>> SE23.interpolate(a, b, 0.5).is_approx(a @ SE23.exp(0.5 * np.array([0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9])))
+            True
+        """
+    @staticmethod
+    def left_jacobian(xi: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The left Jacobian J_l of SE_2(3) at xi = (rho, nu, w), shape (9, 9).
+        
+        Right (local) convention, as for the other groups:
+        exp(xi + dxi) = exp(xi) exp(J_r(xi) dxi + o(dxi)) and
+        exp(xi + dxi) = exp(J_l(xi) dxi + o(dxi)) exp(xi). SE3's, block by block:
+        J_l = [[J_l(w), 0, Q(rho, w)], [0, J_l(w), Q(nu, w)], [0, 0, J_l(w)]];
+        J_r(xi) = J_l(-xi); the inverses by the block formula.
+        
+        Args:
+            xi: (rho, nu, w), shape (9,), finite.
+        
+        Returns:
+            ndarray: shape (9, 9), float64.
+        """
+    @staticmethod
+    def left_jacobian_inverse(xi: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The inverse left Jacobian J_l^-1 of SE_2(3) at xi = (rho, nu, w), shape (9, 9).
+        
+        Right (local) convention, as for the other groups:
+        exp(xi + dxi) = exp(xi) exp(J_r(xi) dxi + o(dxi)) and
+        exp(xi + dxi) = exp(J_l(xi) dxi + o(dxi)) exp(xi). SE3's, block by block:
+        J_l = [[J_l(w), 0, Q(rho, w)], [0, J_l(w), Q(nu, w)], [0, 0, J_l(w)]];
+        J_r(xi) = J_l(-xi); the inverses by the block formula.
+        
+        Args:
+            xi: (rho, nu, w), shape (9,), finite.
+        
+        Returns:
+            ndarray: shape (9, 9), float64.
+        """
+    @staticmethod
+    def right_jacobian(xi: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The right Jacobian J_r of SE_2(3) at xi = (rho, nu, w), shape (9, 9).
+        
+        Right (local) convention, as for the other groups:
+        exp(xi + dxi) = exp(xi) exp(J_r(xi) dxi + o(dxi)) and
+        exp(xi + dxi) = exp(J_l(xi) dxi + o(dxi)) exp(xi). SE3's, block by block:
+        J_l = [[J_l(w), 0, Q(rho, w)], [0, J_l(w), Q(nu, w)], [0, 0, J_l(w)]];
+        J_r(xi) = J_l(-xi); the inverses by the block formula.
+        
+        Args:
+            xi: (rho, nu, w), shape (9,), finite.
+        
+        Returns:
+            ndarray: shape (9, 9), float64.
+        """
+    @staticmethod
+    def right_jacobian_inverse(xi: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The inverse right Jacobian J_r^-1 of SE_2(3) at xi = (rho, nu, w), shape (9, 9).
+        
+        Right (local) convention, as for the other groups:
+        exp(xi + dxi) = exp(xi) exp(J_r(xi) dxi + o(dxi)) and
+        exp(xi + dxi) = exp(J_l(xi) dxi + o(dxi)) exp(xi). SE3's, block by block:
+        J_l = [[J_l(w), 0, Q(rho, w)], [0, J_l(w), Q(nu, w)], [0, 0, J_l(w)]];
+        J_r(xi) = J_l(-xi); the inverses by the block formula.
+        
+        Args:
+            xi: (rho, nu, w), shape (9,), finite.
+        
+        Returns:
+            ndarray: shape (9, 9), float64.
+        """
+    @staticmethod
+    def transform_defect(matrix: numpy.typing.ArrayLike) -> float:
+        """
+        How far a 5x5 matrix is from an extended pose.
+        
+        The rotation defect of its top-left block or the deviation of its bottom
+        rows from [[0, 0, 0, 1, 0], [0, 0, 0, 0, 1]], whichever is larger (inf for a
+        non-finite matrix).
+        
+        Args:
+            matrix: shape (5, 5).
+        
+        Returns:
+            float: the defect.
+        """
+    @staticmethod
+    def vee(matrix: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The (rho, nu, w) of a 5x5 matrix: the inverse of hat.
+        
+        rho and nu are the top of the last two columns, w the antisymmetric part of
+        the top-left block; the bottom rows are not read.
+        
+        Args:
+            matrix: shape (5, 5).
+        
+        Returns:
+            ndarray: shape (9,).
+        """
+    def __array__(self, dtype: numpy.typing.DTypeLike = None, copy: bool | None = None) -> numpy.ndarray:
+        """
+        The homogeneous matrix, shape (5, 5), for np.asarray (numpy's dtype and copy keywords).
+        """
+    def __copy__(self) -> SE23:
+        ...
+    def __deepcopy__(self, memo: typing.Any) -> SE23:
+        ...
+    def __eq__(self, other: typing.Any) -> bool:
+        """
+        Exact equality of the stored numbers: SE23s are values, compared as floats
+        (-0.0 == 0.0; a NaN is unequal to everything, itself included).
+        
+        For a tolerance, use ``is_approx(other, tol)``. An object of another type gives
+        NotImplemented, so ``==`` is False. SE23s are unhashable.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, rotation: SO3 = ..., translation: numpy.typing.ArrayLike = (0.0, 0.0, 0.0), velocity: numpy.typing.ArrayLike = (0.0, 0.0, 0.0)) -> None:
+        """
+        The extended pose X = [[R, p, v], [0, 1, 0], [0, 0, 1]] of a rotation, a position and a velocity.
+        
+        Args:
+            rotation: SO3, R (default: the identity).
+            translation: shape (3,), the position p, finite (default: 0).
+            velocity: shape (3,), v, finite (default: 0).
+        """
+    @typing.overload
+    def __matmul__(self, other: SE23) -> SE23:
+        """
+        Composition: g_ab @ g_bc = g_ac.
+        
+        Args:
+            other: SE23.
+        
+        Returns:
+            SE23: the composed extended pose.
+        """
+    @typing.overload
+    def __matmul__(self, points: numpy.typing.ArrayLike) -> typing.Any:
+        """
+        Action on points: q_a = R q_b + p.
+        
+        The array function se23_act with this extended pose: numpy's rules for dtypes and
+        broadcasting.
+        
+        Args:
+            points: array_like of shape (..., 3).
+        
+        Returns:
+            ndarray: the moved points, shape (..., 3).
+        """
+    def __ne__(self, other: typing.Any) -> bool:
+        """
+        The negation of ``==``: some stored number differs (or is NaN), or other is not a SE23.
+        
+        Args:
+            other: any object.
+        
+        Returns:
+            bool.
+        """
+    def __pow__(self, t: float) -> SE23:
+        """
+        The power exp(t log g): t = 0 gives the identity, t = 1
+        this extended pose, t = -1 its inverse, t = 0.5 the extended pose half way along its
+        geodesic from the identity (the one whose square it is, for angles below pi),
+        as scipy's ``Rotation.__pow__``.
+        
+        Args:
+            t: the exponent, finite (not only an integer).
+        
+        Returns:
+            SE23: the power.
+        
+        Example:
+            >>> g = SE23.exp([0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9])
+            >>> ((g ** 0.5) @ (g ** 0.5)).is_approx(g) and (g ** -1).is_approx(g.inverse())
+            True
+        """
+    def __reduce__(self) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support: (copyreg.__newobj__, (cls,), state).
+        """
+    def __reduce_ex__(self, protocol: typing.SupportsInt | typing.SupportsIndex) -> tuple[typing.Any, tuple[typing.Any], typing.Any]:
+        """
+        Pickle support (every protocol): (copyreg.__newobj__, (cls,), state).
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: typing.Any) -> None:
+        ...
+    def act(self, points: numpy.typing.ArrayLike) -> typing.Any:
+        """
+        Action on points: q_a = R q_b + p (the same as ``X @ points``).
+        
+        The array function se23_act with this extended pose: numpy's rules for dtypes and
+        broadcasting.
+        
+        Args:
+            points: array_like of shape (..., 3).
+        
+        Returns:
+            ndarray: the moved points, shape (..., 3).
+        
+        Example:
+            >>> SE23(translation=[1.0, 0.0, 0.0], velocity=[5.0, 5.0, 5.0]).act([[1.0, 0.0, 0.0]])
+            array([[2., 0., 0.]])
+        """
+    def adjoint(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The adjoint Ad_X = [[R, 0, [p] R], [0, R, [v] R], [0, 0, R]] (9x9), so that X [xi] X^-1 = [Ad_X xi].
+        
+        Returns:
+            ndarray: shape (9, 9).
+        """
+    def as_matrix(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The matrix X = [[R, p, v], [0, 1, 0], [0, 0, 1]] (5x5).
+        
+        Returns:
+            ndarray: shape (5, 5), float64 (a new array).
+        """
+    def inverse(self) -> SE23:
+        """
+        The inverse extended pose (R^T, -R^T p, -R^T v).
+        
+        Returns:
+            SE23: the inverse.
+        
+        Example:
+            >>> g = SE23.exp([0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9])
+            >>> (g @ g.inverse()).is_approx(SE23.identity())
+            True
+        """
+    def is_approx(self, other: SE23, tol: float = 1e-09) -> bool:
+        """
+        Whether two extended poses are equal within tol: rotations within tol (absolute), positions and velocities within
+        tol * max(1, |x|_max).
+        
+        ``==`` is the exact comparison (every stored number equal).
+        
+        Args:
+            other: SE23.
+            tol: the tolerance (>= 0).
+        
+        Returns:
+            bool.
+        """
+    def log(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The xi = (rho, nu, w) with exp([xi]) = X, rotation angle |w| in [0, pi].
+        
+        w = log(R) (SO3's), rho = V^-1 p, nu = V^-1 v with
+        V^-1 = E I - 1/2 [w] + D w w^T, E = (theta/2) cot(theta/2).
+        
+        Returns:
+            ndarray: xi = (rho, nu, w), shape (9,).
+        
+        Example:
+            >>> SE23(translation=[1.0, 2.0, 3.0], velocity=[4.0, 5.0, 6.0]).log()
+            array([1., 2., 3., 4., 5., 6., 0., 0., 0.])
+        """
+    def normalized(self) -> SE23:
+        """
+        The same extended pose with the nearest rotation.
+        
+        Removes the drift that accumulates over many compositions.
+        
+        Returns:
+            SE23: the projected extended pose.
+        """
+    @property
+    def rotation(self) -> SO3:
+        """
+        SO3: the rotation R of X.
+        """
+    @property
+    def translation(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        ndarray: the position p, shape (3,) (a new array): the column that acts on points.
+        """
+    @property
+    def velocity(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        ndarray: the velocity v, shape (3,) (a new array).
+        """
 class Twist:
     """
     A twist xi = (v, w) in se(3): linear part first, angular part second
@@ -3637,6 +4054,9 @@ def act_jacobians(g: SO3, p: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArr
 def act_jacobians(g: Sim3, p: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     ...
 @typing.overload
+def act_jacobians(g: SE23, p: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
+@typing.overload
 def act_jacobians(g: SE3, p: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     """
     The Jacobians (J_g, J_p) of (g, p) -> g p (the action on a point).
@@ -3646,15 +4066,16 @@ def act_jacobians(g: SE3, p: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArr
     part first), J_p = R (Sola et al. 2018, appendices B and D). SO2:
     J_g = R (-p_y, p_x); SE2: J_g = [R, R (-p_y, p_x)] (columns (vx, vy, w)).
     Sim3: J_g = [s R, -s R [p], s R p] (columns (v, w, sigma)), J_p = s R.
+    SE23: J_g = [R, 0, -R [p]] (columns (rho, nu, w)), J_p = R.
     
     Args:
-        g: SO2, SE2, SO3, Sim3 or SE3.
+        g: SO2, SE2, SO3, SE3, Sim3 or SE23.
         p: point, shape (2,) for SO2 and SE2, (3,) for SO3 and SE3, finite.
     
     Returns:
         tuple[ndarray, ndarray]: (J_g, J_p); J_g of shape (2, 1) for SO2, (2, 3)
-        for SE2, (3, 3) for SO3, (3, 6) for SE3, (3, 7) for Sim3; J_p = R (s R
-        for Sim3), shape (2, 2) or (3, 3); float64.
+        for SE2, (3, 3) for SO3, (3, 6) for SE3, (3, 7) for Sim3, (3, 9) for
+        SE23; J_p = R (s R for Sim3), shape (2, 2) or (3, 3); float64.
     
     Raises:
         ValueError: p is not of g's point shape, or not finite.
@@ -3680,16 +4101,19 @@ def between(a: SO3, b: SO3) -> SO3:
 def between(a: Sim3, b: Sim3) -> Sim3:
     ...
 @typing.overload
+def between(a: SE23, b: SE23) -> SE23:
+    ...
+@typing.overload
 def between(a: SE3, b: SE3) -> SE3:
     """
     between(a, b) = a^-1 b: b seen from a (manif's a.between(b)).
     
     Args:
-        a: SO2, SE2, SO3, Sim3 or SE3.
+        a: SO2, SE2, SO3, SE3, Sim3 or SE23.
         b: of the same group as a.
     
     Returns:
-        SO2, SE2, SO3, Sim3 or SE3: a^-1 b.
+        SO2, SE2, SO3, SE3, Sim3 or SE23: a^-1 b.
     
     Raises:
         TypeError: a and b are not of the same group.
@@ -3713,6 +4137,9 @@ def between_jacobians(a: SO3, b: SO3) -> tuple[numpy.typing.NDArray[numpy.float6
 def between_jacobians(a: Sim3, b: Sim3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     ...
 @typing.overload
+def between_jacobians(a: SE23, b: SE23) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
+@typing.overload
 def between_jacobians(a: SE3, b: SE3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     """
     The Jacobians (J_a, J_b) of (a, b) -> between(a, b) = a^-1 b.
@@ -3722,12 +4149,12 @@ def between_jacobians(a: SE3, b: SE3) -> tuple[numpy.typing.NDArray[numpy.float6
     section IV; manif's between Jacobians).
     
     Args:
-        a: SO2, SE2, SO3, Sim3 or SE3.
+        a: SO2, SE2, SO3, SE3, Sim3 or SE23.
         b: of the same group as a.
     
     Returns:
         tuple[ndarray, ndarray]: (J_a, J_b), each of shape (D, D): (1, 1) for SO2,
-        (3, 3) for SE2 and SO3, (6, 6) for SE3 (twists (v, w)), (7, 7) for Sim3, float64.
+        (3, 3) for SE2 and SO3, (6, 6) for SE3 (twists (v, w)), (7, 7) for Sim3, (9, 9) for SE23, float64.
     
     Raises:
         TypeError: a and b are not of the same group.
@@ -3751,6 +4178,9 @@ def compose_jacobians(a: SO3, b: SO3) -> tuple[numpy.typing.NDArray[numpy.float6
 def compose_jacobians(a: Sim3, b: Sim3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     ...
 @typing.overload
+def compose_jacobians(a: SE23, b: SE23) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
+@typing.overload
 def compose_jacobians(a: SE3, b: SE3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     """
     The Jacobians (J_a, J_b) of (a, b) -> a b, in the right-local convention.
@@ -3759,12 +4189,12 @@ def compose_jacobians(a: SE3, b: SE3) -> tuple[numpy.typing.NDArray[numpy.float6
     with J_a = Ad_{b^-1} and J_b = I (Sola et al. 2018, section IV).
     
     Args:
-        a: SO2, SE2, SO3, Sim3 or SE3.
+        a: SO2, SE2, SO3, SE3, Sim3 or SE23.
         b: of the same group as a.
     
     Returns:
         tuple[ndarray, ndarray]: (J_a, J_b), each of shape (D, D): (1, 1) for SO2,
-        (3, 3) for SE2 and SO3, (6, 6) for SE3 (twists (v, w)), (7, 7) for Sim3, float64.
+        (3, 3) for SE2 and SO3, (6, 6) for SE3 (twists (v, w)), (7, 7) for Sim3, (9, 9) for SE23, float64.
     
     Raises:
         TypeError: a and b are not of the same group.
@@ -3802,6 +4232,9 @@ def interpolate(a: SO3, b: SO3, t: float) -> SO3:
 def interpolate(a: Sim3, b: Sim3, t: float) -> Sim3:
     ...
 @typing.overload
+def interpolate(a: SE23, b: SE23, t: float) -> SE23:
+    ...
+@typing.overload
 def interpolate(a: SE3, b: SE3, t: float) -> SE3:
     """
     Screw interpolation of rigid motions a exp(t log(a^-1 b)) (as SE3.interpolate).
@@ -3832,6 +4265,9 @@ def interpolate_jacobian_t(a: SO3, b: SO3, t: float) -> numpy.typing.NDArray[num
 def interpolate_jacobian_t(a: Sim3, b: Sim3, t: float) -> numpy.typing.NDArray[numpy.float64]:
     ...
 @typing.overload
+def interpolate_jacobian_t(a: SE23, b: SE23, t: float) -> numpy.typing.NDArray[numpy.float64]:
+    ...
+@typing.overload
 def interpolate_jacobian_t(a: SE3, b: SE3, t: float) -> numpy.typing.NDArray[numpy.float64]:
     """
     The derivative in t of interpolate(a, b, t) = a exp(t log(a^-1 b)).
@@ -3841,13 +4277,13 @@ def interpolate_jacobian_t(a: SE3, b: SE3, t: float) -> numpy.typing.NDArray[num
     (the geodesic has constant body velocity).
     
     Args:
-        a: SO2, SE2, SO3, Sim3 or SE3, the start.
+        a: SO2, SE2, SO3, SE3, Sim3 or SE23, the start.
         b: of the same group as a, the end.
         t: the fraction, finite.
     
     Returns:
         float or ndarray: SO2's angle, shape (3,) for SE2 and SO3, (6,) for
-        SE3 ((v, w), linear part first), (7,) for Sim3.
+        SE3 ((v, w), linear part first), (7,) for Sim3, (9,) for SE23.
     
     Raises:
         ValueError: t is not finite.
@@ -3871,6 +4307,9 @@ def inverse_jacobian(g: SO3) -> numpy.typing.NDArray[numpy.float64]:
 def inverse_jacobian(g: Sim3) -> numpy.typing.NDArray[numpy.float64]:
     ...
 @typing.overload
+def inverse_jacobian(g: SE23) -> numpy.typing.NDArray[numpy.float64]:
+    ...
+@typing.overload
 def inverse_jacobian(g: SE3) -> numpy.typing.NDArray[numpy.float64]:
     """
     The Jacobian of g -> g^-1, in the right-local convention: -Ad_g.
@@ -3880,11 +4319,13 @@ def inverse_jacobian(g: SE3) -> numpy.typing.NDArray[numpy.float64]:
     section IV).
     
     Args:
-        g: SO2, SE2, SO3, Sim3 or SE3.
+        g: SO2, SE2, SO3, SE3, Sim3 or SE23.
     
     Returns:
         ndarray: shape (D, D): (1, 1) for SO2 (-1), (3, 3) for SE2 and SO3
-        (-R), (6, 6) for SE3 (-Ad_g, twists (v, w)), (7, 7) for Sim3, float64.
+        (-R), (6, 6) for SE3 (-Ad_g, twists (v, w)), (7, 7) for Sim3,
+        (9, 9) for SE23,
+        float64.
     
     Example:
         >>> g = chasles.SO3.exp([0.0, 0.0, np.pi / 2])
@@ -3906,17 +4347,20 @@ def lminus(g: SO3, h: SO3) -> numpy.typing.NDArray[numpy.float64]:
 def lminus(g: Sim3, h: Sim3) -> numpy.typing.NDArray[numpy.float64]:
     ...
 @typing.overload
+def lminus(g: SE23, h: SE23) -> numpy.typing.NDArray[numpy.float64]:
+    ...
+@typing.overload
 def lminus(g: SE3, h: SE3) -> numpy.typing.NDArray[numpy.float64]:
     """
     g lminus h = log(g h^-1): the xi with lplus(xi, h) == g.
     
     Args:
-        g: SO2, SE2, SO3, Sim3 or SE3.
+        g: SO2, SE2, SO3, SE3, Sim3 or SE23.
         h: of the same group as g.
     
     Returns:
         float or ndarray: SO2's angle, shape (3,) for SE2 ((vx, vy, w)) and
-        SO3, (6,) for SE3 ((v, w)), (7,) for Sim3.
+        SO3, (6,) for SE3 ((v, w)), (7,) for Sim3, (9,) for SE23.
     """
 @typing.overload
 def lminus_jacobians(g: SO2, h: SO2) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
@@ -3931,6 +4375,9 @@ def lminus_jacobians(g: SO3, h: SO3) -> tuple[numpy.typing.NDArray[numpy.float64
 def lminus_jacobians(g: Sim3, h: Sim3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     ...
 @typing.overload
+def lminus_jacobians(g: SE23, h: SE23) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
+@typing.overload
 def lminus_jacobians(g: SE3, h: SE3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     """
     The Jacobians (J_g, J_h) of (g, h) -> lminus(g, h) = log(g h^-1).
@@ -3941,12 +4388,12 @@ def lminus_jacobians(g: SE3, h: SE3) -> tuple[numpy.typing.NDArray[numpy.float64
     log jumps between w and -w.
     
     Args:
-        g: SO2, SE2, SO3, Sim3 or SE3.
+        g: SO2, SE2, SO3, SE3, Sim3 or SE23.
         h: of the same group as g.
     
     Returns:
         tuple[ndarray, ndarray]: (J_g, J_h), each of shape (D, D): (1, 1) for SO2,
-        (3, 3) for SE2 and SO3, (6, 6) for SE3 (twists (v, w)), (7, 7) for Sim3, float64.
+        (3, 3) for SE2 and SO3, (6, 6) for SE3 (twists (v, w)), (7, 7) for Sim3, (9, 9) for SE23, float64.
     
     Raises:
         TypeError: g and h are not of the same group.
@@ -3970,6 +4417,9 @@ def log_jacobian(g: SO3) -> numpy.typing.NDArray[numpy.float64]:
 def log_jacobian(g: Sim3) -> numpy.typing.NDArray[numpy.float64]:
     ...
 @typing.overload
+def log_jacobian(g: SE23) -> numpy.typing.NDArray[numpy.float64]:
+    ...
+@typing.overload
 def log_jacobian(g: SE3) -> numpy.typing.NDArray[numpy.float64]:
     """
     The Jacobian of g -> log(g), in the right-local convention.
@@ -3980,11 +4430,12 @@ def log_jacobian(g: SE3) -> numpy.typing.NDArray[numpy.float64]:
     w and -w (J is that of the branch log returns).
     
     Args:
-        g: SO2, SE2, SO3, Sim3 or SE3.
+        g: SO2, SE2, SO3, SE3, Sim3 or SE23.
     
     Returns:
         ndarray: shape (D, D), D the tangent size: (1, 1) for SO2, (3, 3) for
         SE2 and SO3, (6, 6) for SE3 (rows and columns (v, w)), (7, 7) for Sim3,
+        (9, 9) for SE23,
         float64.
     
     Example:
@@ -4007,16 +4458,19 @@ def lplus(xi: numpy.typing.ArrayLike, g: SO3) -> SO3:
 def lplus(xi: numpy.typing.ArrayLike, g: Sim3) -> Sim3:
     ...
 @typing.overload
+def lplus(xi: numpy.typing.ArrayLike, g: SE23) -> SE23:
+    ...
+@typing.overload
 def lplus(xi: numpy.typing.ArrayLike, g: SE3) -> SE3:
     """
     xi lplus g = exp(xi) g: a perturbation in the fixed (global, left) frame.
     
     Args:
         xi: tangent vector of g's group, finite (as for rplus).
-        g: SO2, SE2, SO3, Sim3 or SE3.
+        g: SO2, SE2, SO3, SE3, Sim3 or SE23.
     
     Returns:
-        SO2, SE2, SO3, Sim3 or SE3: exp(xi) g.
+        SO2, SE2, SO3, SE3, Sim3 or SE23: exp(xi) g.
     
     Raises:
         ValueError: xi has the wrong shape for g, or is not finite.
@@ -4034,6 +4488,9 @@ def lplus_jacobians(xi: numpy.typing.ArrayLike, g: SO3) -> tuple[numpy.typing.ND
 def lplus_jacobians(xi: numpy.typing.ArrayLike, g: Sim3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     ...
 @typing.overload
+def lplus_jacobians(xi: numpy.typing.ArrayLike, g: SE23) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
+@typing.overload
 def lplus_jacobians(xi: numpy.typing.ArrayLike, g: SE3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     """
     The Jacobians (J_xi, J_g) of (xi, g) -> lplus(xi, g) = exp(xi) g.
@@ -4044,11 +4501,13 @@ def lplus_jacobians(xi: numpy.typing.ArrayLike, g: SE3) -> tuple[numpy.typing.ND
     
     Args:
         xi: tangent vector of g's group, finite (as for rplus).
-        g: SO2, SE2, SO3, Sim3 or SE3.
+        g: SO2, SE2, SO3, SE3, Sim3 or SE23.
     
     Returns:
         tuple[ndarray, ndarray]: (J_xi, J_g), each of shape (D, D): (1, 1) for SO2,
-        (3, 3) for SE2 and SO3, (6, 6) for SE3, (7, 7) for Sim3, float64.
+        (3, 3) for SE2 and SO3, (6, 6) for SE3, (7, 7) for Sim3,
+        (9, 9) for SE23,
+        float64.
     
     Raises:
         ValueError: xi has the wrong shape for g, or is not finite.
@@ -4072,6 +4531,9 @@ def rminus(g: SO3, h: SO3) -> numpy.typing.NDArray[numpy.float64]:
 def rminus(g: Sim3, h: Sim3) -> numpy.typing.NDArray[numpy.float64]:
     ...
 @typing.overload
+def rminus(g: SE23, h: SE23) -> numpy.typing.NDArray[numpy.float64]:
+    ...
+@typing.overload
 def rminus(g: SE3, h: SE3) -> numpy.typing.NDArray[numpy.float64]:
     """
     g rminus h = log(h^-1 g): the xi with rplus(h, xi) == g ("g minus h").
@@ -4080,12 +4542,12 @@ def rminus(g: SE3, h: SE3) -> numpy.typing.NDArray[numpy.float64]:
     the arguments the other way round.
     
     Args:
-        g: SO2, SE2, SO3, Sim3 or SE3.
+        g: SO2, SE2, SO3, SE3, Sim3 or SE23.
         h: of the same group as g.
     
     Returns:
         float or ndarray: SO2's angle, shape (3,) for SE2 ((vx, vy, w)) and
-        SO3, (6,) for SE3 ((v, w)), (7,) for Sim3.
+        SO3, (6,) for SE3 ((v, w)), (7,) for Sim3, (9,) for SE23.
     
     Example:
         >>> h = chasles.SO3.exp([0.0, 0.0, 0.5])
@@ -4106,6 +4568,9 @@ def rminus_jacobians(g: SO3, h: SO3) -> tuple[numpy.typing.NDArray[numpy.float64
 def rminus_jacobians(g: Sim3, h: Sim3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     ...
 @typing.overload
+def rminus_jacobians(g: SE23, h: SE23) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
+@typing.overload
 def rminus_jacobians(g: SE3, h: SE3) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     """
     The Jacobians (J_g, J_h) of (g, h) -> rminus(g, h) = log(h^-1 g).
@@ -4116,12 +4581,12 @@ def rminus_jacobians(g: SE3, h: SE3) -> tuple[numpy.typing.NDArray[numpy.float64
     log returns: finite up to the angle pi, where log jumps between w and -w.
     
     Args:
-        g: SO2, SE2, SO3, Sim3 or SE3.
+        g: SO2, SE2, SO3, SE3, Sim3 or SE23.
         h: of the same group as g.
     
     Returns:
         tuple[ndarray, ndarray]: (J_g, J_h), each of shape (D, D): (1, 1) for SO2,
-        (3, 3) for SE2 and SO3, (6, 6) for SE3 (twists (v, w)), (7, 7) for Sim3, float64.
+        (3, 3) for SE2 and SO3, (6, 6) for SE3 (twists (v, w)), (7, 7) for Sim3, (9, 9) for SE23, float64.
     
     Raises:
         TypeError: g and h are not of the same group.
@@ -4144,18 +4609,22 @@ def rplus(g: SO3, xi: numpy.typing.ArrayLike) -> SO3:
 def rplus(g: Sim3, xi: numpy.typing.ArrayLike) -> Sim3:
     ...
 @typing.overload
+def rplus(g: SE23, xi: numpy.typing.ArrayLike) -> SE23:
+    ...
+@typing.overload
 def rplus(g: SE3, xi: numpy.typing.ArrayLike) -> SE3:
     """
     g rplus xi = g exp(xi): a perturbation in g's own (local, right) frame.
     
     Args:
-        g: SO2, SE2, SO3, Sim3 or SE3.
+        g: SO2, SE2, SO3, SE3, Sim3 or SE23.
         xi: tangent vector of g's group, finite: SO2's angle theta (a float),
             shape (3,) for SE2 ((vx, vy, w)) and SO3 (rotation vector w), (6,)
-            for SE3 (twist (v, w)), (7,) for Sim3 ((v, w, sigma)).
+            for SE3 (twist (v, w)), (7,) for Sim3 ((v, w, sigma)),
+            (9,) for SE23 ((rho, nu, w)).
     
     Returns:
-        SO2, SE2, SO3, Sim3 or SE3: g exp(xi).
+        SO2, SE2, SO3, SE3, Sim3 or SE23: g exp(xi).
     
     Raises:
         ValueError: xi has the wrong shape for g, or is not finite.
@@ -4178,6 +4647,9 @@ def rplus_jacobians(g: SO3, xi: numpy.typing.ArrayLike) -> tuple[numpy.typing.ND
 def rplus_jacobians(g: Sim3, xi: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     ...
 @typing.overload
+def rplus_jacobians(g: SE23, xi: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
+    ...
+@typing.overload
 def rplus_jacobians(g: SE3, xi: numpy.typing.ArrayLike) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     """
     The Jacobians (J_g, J_xi) of (g, xi) -> rplus(g, xi) = g exp(xi).
@@ -4187,12 +4659,14 @@ def rplus_jacobians(g: SE3, xi: numpy.typing.ArrayLike) -> tuple[numpy.typing.ND
     al. 2018, section IV; manif's rplus Jacobians).
     
     Args:
-        g: SO2, SE2, SO3, Sim3 or SE3.
+        g: SO2, SE2, SO3, SE3, Sim3 or SE23.
         xi: tangent vector of g's group, finite (as for rplus).
     
     Returns:
         tuple[ndarray, ndarray]: (J_g, J_xi), each of shape (D, D): (1, 1) for SO2,
-        (3, 3) for SE2 and SO3, (6, 6) for SE3, (7, 7) for Sim3, float64.
+        (3, 3) for SE2 and SO3, (6, 6) for SE3, (7, 7) for Sim3,
+        (9, 9) for SE23,
+        float64.
     
     Raises:
         ValueError: xi has the wrong shape for g, or is not finite.
@@ -4232,6 +4706,24 @@ _so3_from_quat_xyzw: numpy.ufunc
 _so3_from_rpy: numpy.ufunc
 _so3_spline: numpy.ufunc
 _so3_spline_rates: numpy.ufunc
+# se23_act(X, points): (5,5),(3)->(3)
+se23_act: _GUFunc_Nin2_Nout1[typing.Literal["se23_act"], typing.Literal["(5,5),(3)->(3)"]]
+# se23_compose(a, b): (5,5),(5,5)->(5,5)
+se23_compose: _GUFunc_Nin2_Nout1[typing.Literal["se23_compose"], typing.Literal["(5,5),(5,5)->(5,5)"]]
+# se23_exp(xi): (9)->(5,5)
+se23_exp: _GUFunc_Nin1_Nout1[typing.Literal["se23_exp"], typing.Literal["(9)->(5,5)"]]
+# se23_hat(xi): (9)->(5,5)
+se23_hat: _GUFunc_Nin1_Nout1[typing.Literal["se23_hat"], typing.Literal["(9)->(5,5)"]]
+# se23_interpolate(a, b, t): (5,5),(5,5),()->(5,5)
+se23_interpolate: _GUFunc_Nin3_Nout1[typing.Literal["se23_interpolate"], typing.Literal["(5,5),(5,5),()->(5,5)"]]
+# se23_inverse(X): (5,5)->(5,5)
+se23_inverse: _GUFunc_Nin1_Nout1[typing.Literal["se23_inverse"], typing.Literal["(5,5)->(5,5)"]]
+# se23_log(X): (5,5)->(9)
+se23_log: _GUFunc_Nin1_Nout1[typing.Literal["se23_log"], typing.Literal["(5,5)->(9)"]]
+# se23_normalize(X): (5,5)->(5,5)
+se23_normalize: _GUFunc_Nin1_Nout1[typing.Literal["se23_normalize"], typing.Literal["(5,5)->(5,5)"]]
+# se23_vee(matrix): (5,5)->(9)
+se23_vee: _GUFunc_Nin1_Nout1[typing.Literal["se23_vee"], typing.Literal["(5,5)->(9)"]]
 # se2_act(g, points): (3,3),(2)->(2)
 se2_act: _GUFunc_Nin2_Nout1[typing.Literal["se2_act"], typing.Literal["(3,3),(2)->(2)"]]
 # se2_compose(a, b): (3,3),(3,3)->(3,3)

@@ -92,6 +92,7 @@ BOUND = (
     chasles.SO2,
     chasles.SE2,
     chasles.Sim3,
+    chasles.SE23,
     chasles.Twist,
     chasles.Wrench,
     chasles.Screw,
@@ -697,7 +698,7 @@ def _valid_state(cls_name, state):
         return bool(np.all(np.isfinite(x[[0, 1, 2, 3, 4, 5, 7]]))) and not (math.isnan(x[6]) or x[6] == -math.inf)
     if not np.all(np.isfinite(x)):
         return False
-    if cls_name in ("SO3", "SE3"):
+    if cls_name in ("SO3", "SE3", "SE23"):
         return _rotation_defect(x[:9].reshape(3, 3)) <= tol
     if cls_name == "Sim3":
         return _rotation_defect(x[:9].reshape(3, 3)) <= tol and x[12] > 0
@@ -955,6 +956,7 @@ GOOD = {  # a fresh valid object of each class
     chasles.SO2: lambda: chasles.SO2.exp(0.4),
     chasles.SE2: lambda: chasles.SE2(chasles.SO2.exp(0.4), [1.0, 2.0]),
     chasles.Sim3: lambda: chasles.Sim3(chasles.SO3.exp([0.1, 0.2, 0.3]), [1.0, 2.0, 3.0], 1.5),
+    chasles.SE23: lambda: chasles.SE23(chasles.SO3.exp([0.1, 0.2, 0.3]), [1.0, 2.0, 3.0], [-0.5, 0.4, 2.0]),
     chasles.Twist: lambda: chasles.Twist(v=[1.0, 0.0, 0.5], w=[0.0, 0.2, 1.0]),
     chasles.Wrench: lambda: chasles.Wrench(f=[0.0, 1.0, 1.0], tau=[0.5, 0.0, 0.0]),
     chasles.Screw: lambda: chasles.Screw([0.0, 1.0, 0.0], [0.0, 0.0, 1.0], 0.5, 1.0),
@@ -1122,7 +1124,14 @@ def _array_function(name, operands, kw=()):
 
 
 # tangent, point
-GROUPS = {chasles.SO2: (1, 2), chasles.SE2: (3, 2), chasles.SO3: (3, 3), chasles.Sim3: (7, 3), chasles.SE3: (6, 3)}
+GROUPS = {
+    chasles.SO2: (1, 2),
+    chasles.SE2: (3, 2),
+    chasles.SO3: (3, 3),
+    chasles.Sim3: (7, 3),
+    chasles.SE23: (9, 3),
+    chasles.SE3: (6, 3),
+}
 
 
 def _group_function(name, make, **kw):
@@ -1145,7 +1154,7 @@ def _tangent(label, n, finite=True):
 
 
 def _build_spec():
-    SO3, SE3, _, _, _, Twist, Wrench, Screw, Chain, _ = BOUND
+    SO3, SE3, _, _, _, _, Twist, Wrench, Screw, Chain, _ = BOUND
     spec: dict[str, Entry] = {}
 
     # SO3
@@ -1316,45 +1325,62 @@ def _build_spec():
         SE2, "transform_defect", Array("SE2.transform_defect(matrix)", (3, 3), finite=False)
     )
 
-    # Sim3
-    Sim3 = chasles.Sim3
-    sim_matrix = lambda: GOOD[Sim3]().as_matrix()  # noqa: E731
-    spec["Sim3.__init__"] = Entry(
-        [[Instance("rotation", (SO3,)), Array("Sim3(translation)", (3,)), Real("Sim3(scale)", "positive", 1.5)]],
-        call=Sim3,
-    )
-    spec["Sim3.identity"] = _static(Sim3, "identity")
-    spec["Sim3.exp"] = _static(Sim3, "exp", Array("Sim3.exp(xi)", (7,)))
-    spec["Sim3.hat"] = _static(Sim3, "hat", Array("Sim3.hat(xi)", (7,), finite=False))
-    spec["Sim3.vee"] = _static(Sim3, "vee", Array("Sim3.vee(matrix)", (4, 4), finite=False))
-    for m in ("log", "inverse", "adjoint", "as_matrix", "normalized"):
-        spec[f"Sim3.{m}"] = _method(Sim3, m)
-    for p in ("rotation", "translation", "scale"):
-        spec[f"Sim3.{p}"] = _prop(Sim3, p)
-    spec["Sim3.__matmul__"] = _binop(Sim3, operator.matmul, SE3Or("Sim3 @ points", (Sim3,)), "__matmul__")
-    spec["Sim3.act"] = _method(Sim3, "act", Points("Sim3.act(points)"))
-    spec["Sim3.from_matrix"] = _static(
-        Sim3,
-        "from_matrix",
-        Array("Sim3.from_matrix(matrix)", (4, 4), valid=sim_matrix),
-        Real("Sim3.from_matrix(tol)", "tolerance", 1e-6),
-    )
-    for form in ("projected", "unchecked"):
-        label = f"Sim3.from_matrix_{form}(matrix)"
-        spec[f"Sim3.from_matrix_{form}"] = _static(Sim3, f"from_matrix_{form}", Array(label, (4, 4), valid=sim_matrix))
-    spec["Sim3.transform_defect"] = _static(
-        Sim3, "transform_defect", Array("Sim3.transform_defect(matrix)", (4, 4), finite=False)
-    )
-    spec["Sim3.__pow__"] = _binop(Sim3, operator.pow, Real("Sim3 ** t"), "__pow__")
-    spec["Sim3.interpolate"] = _static(
-        Sim3, "interpolate", Instance("a", (Sim3,)), Instance("b", (Sim3,)), Real("Sim3.interpolate(t)")
-    )
-    spec["Sim3.is_approx"] = _method(
-        Sim3, "is_approx", Instance("other", (Sim3,)), Real("Sim3.is_approx(tol)", "tolerance", 1e-6)
-    )
-    for jac in ("right_jacobian", "left_jacobian", "right_jacobian_inverse", "left_jacobian_inverse"):
-        spec[f"Sim3.{jac}"] = _static(Sim3, jac, Array(f"Sim3.{jac}(xi)", (7,)))
-    spec.update(_protocols(Sim3, [13]))
+    # Sim3 and SE23: (class, name, tangent size, matrix size, state size, constructor, properties)
+    Sim3, SE23 = chasles.Sim3, chasles.SE23
+    for G, name, n, N, state, init, props in (
+        (
+            Sim3,
+            "Sim3",
+            7,
+            4,
+            13,
+            [Instance("rotation", (SO3,)), Array("Sim3(translation)", (3,)), Real("Sim3(scale)", "positive", 1.5)],
+            ("rotation", "translation", "scale"),
+        ),
+        (
+            SE23,
+            "SE23",
+            9,
+            5,
+            15,
+            [Instance("rotation", (SO3,)), Array("SE23(translation)", (3,)), Array("SE23(velocity)", (3,))],
+            ("rotation", "translation", "velocity"),
+        ),
+    ):
+        matrix = lambda G=G: GOOD[G]().as_matrix()  # noqa: E731
+        spec[f"{name}.__init__"] = Entry([init], call=G)
+        spec[f"{name}.identity"] = _static(G, "identity")
+        spec[f"{name}.exp"] = _static(G, "exp", Array(f"{name}.exp(xi)", (n,)))
+        spec[f"{name}.hat"] = _static(G, "hat", Array(f"{name}.hat(xi)", (n,), finite=False))
+        spec[f"{name}.vee"] = _static(G, "vee", Array(f"{name}.vee(matrix)", (N, N), finite=False))
+        for m in ("log", "inverse", "adjoint", "as_matrix", "normalized"):
+            spec[f"{name}.{m}"] = _method(G, m)
+        for p in props:
+            spec[f"{name}.{p}"] = _prop(G, p)
+        spec[f"{name}.__matmul__"] = _binop(G, operator.matmul, SE3Or(f"{name} @ points", (G,)), "__matmul__")
+        spec[f"{name}.act"] = _method(G, "act", Points(f"{name}.act(points)"))
+        spec[f"{name}.from_matrix"] = _static(
+            G,
+            "from_matrix",
+            Array(f"{name}.from_matrix(matrix)", (N, N), valid=matrix),
+            Real(f"{name}.from_matrix(tol)", "tolerance", 1e-6),
+        )
+        for form in ("projected", "unchecked"):
+            label = f"{name}.from_matrix_{form}(matrix)"
+            spec[f"{name}.from_matrix_{form}"] = _static(G, f"from_matrix_{form}", Array(label, (N, N), valid=matrix))
+        spec[f"{name}.transform_defect"] = _static(
+            G, "transform_defect", Array(f"{name}.transform_defect(matrix)", (N, N), finite=False)
+        )
+        spec[f"{name}.__pow__"] = _binop(G, operator.pow, Real(f"{name} ** t"), "__pow__")
+        spec[f"{name}.interpolate"] = _static(
+            G, "interpolate", Instance("a", (G,)), Instance("b", (G,)), Real(f"{name}.interpolate(t)")
+        )
+        spec[f"{name}.is_approx"] = _method(
+            G, "is_approx", Instance("other", (G,)), Real(f"{name}.is_approx(tol)", "tolerance", 1e-6)
+        )
+        for jac in ("right_jacobian", "left_jacobian", "right_jacobian_inverse", "left_jacobian_inverse"):
+            spec[f"{name}.{jac}"] = _static(G, jac, Array(f"{name}.{jac}(xi)", (n,)))
+        spec.update(_protocols(G, [state]))
 
     # from_screw of SE3, Twist, Wrench, and Screw itself
     for owner, cls, amount in (
@@ -1607,6 +1633,7 @@ def _build_spec():
     R2, G3 = ((2, 2), lambda: GOOD[chasles.SO2]().as_matrix()), ((3, 3), lambda: GOOD[chasles.SE2]().as_matrix())
     v2, v3 = ((2,), None), ((3,), None)
     S4 = ((4, 4), lambda: GOOD[chasles.Sim3]().as_matrix())
+    X5 = ((5, 5), lambda: GOOD[chasles.SE23]().as_matrix())
     six = ((6,), None)
     arrays = {
         "so3_exp": [("w",) + v3],
@@ -1659,6 +1686,15 @@ def _build_spec():
         "sim3_vee": [("matrix", (4, 4), None)],
         "sim3_interpolate": [("a",) + S4, ("b",) + S4, ("t", (), None)],
         "sim3_normalize": [("g", (4, 4), None)],
+        "se23_exp": [("xi", (9,), None)],
+        "se23_log": [("X",) + X5],
+        "se23_compose": [("a",) + X5, ("b",) + X5],
+        "se23_inverse": [("X",) + X5],
+        "se23_act": [("X",) + X5, ("points",) + v3],
+        "se23_hat": [("xi", (9,), None)],
+        "se23_vee": [("matrix", (5, 5), None)],
+        "se23_interpolate": [("a",) + X5, ("b",) + X5, ("t", (), None)],
+        "se23_normalize": [("X", (5, 5), None)],
         "so3_angle": [("R",) + R3],
         "so3_distance": [("a",) + R3, ("b",) + R3],
         "se3_distance": [("a",) + G4, ("b",) + G4],

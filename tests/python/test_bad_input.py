@@ -56,6 +56,9 @@ VALID = {
     "Sim3.from_matrix(matrix)": np.eye(4),
     "Sim3.from_matrix_projected(matrix)": np.eye(4),
     "Sim3.from_matrix_unchecked(matrix)": np.eye(4),
+    "SE23.from_matrix(matrix)": np.eye(5),
+    "SE23.from_matrix_projected(matrix)": np.eye(5),
+    "SE23.from_matrix_unchecked(matrix)": np.eye(5),
     "Twist.spatial(g_dot)": GDOT,
     "Twist.body(g_dot)": GDOT,
 }

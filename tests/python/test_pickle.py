@@ -46,7 +46,7 @@ LEGACY = os.path.join(HERE, "data", "pickles")
 PROTOCOLS = list(range(pickle.HIGHEST_PROTOCOL + 1))
 
 # Classes that did not pickle in chasles 0.1.0 (or did not exist): no legacy pickles of them.
-NOT_PICKLED_IN_0_1_0 = {"SO3BSpline", "SE3BSpline", "SO2", "SE2", "Sim3"}
+NOT_PICKLED_IN_0_1_0 = {"SO3BSpline", "SE3BSpline", "SO2", "SE2", "Sim3", "SE23"}
 
 
 def public_classes():
@@ -101,6 +101,7 @@ EXAMPLES = {
     "SO2": {"rotation": lambda: chasles.SO2.exp(1.0 / 3.0)},
     "SE2": {"pose": lambda: chasles.SE2.exp([1.0, -2.0, 1.0 / 3.0])},
     "Sim3": {"similarity": lambda: chasles.Sim3.exp([1.0, -2.0, 1.0 / 3.0, 0.3, 0.2, -0.1, 0.7])},
+    "SE23": {"extended pose": lambda: chasles.SE23.exp([1.0, -2.0, 1.0 / 3.0, 4.0, 0.5, -6.0, 0.3, 0.2, -0.1])},
     "Twist": {"twist": lambda: chasles.Twist([0.1, 0.2, 1.0 / 3.0], [1e-300, -0.0, 5.0])},
     "Wrench": {"wrench": lambda: chasles.Wrench([1.0, 2.0, 3.0], [math.pi, 0.0, -1e10])},
     "Screw": {
@@ -189,6 +190,11 @@ TAMPERED = {
         ("2 I, not a rotation", _not_rotation),
         ("a zero scale", _set(12, 0.0)),
         ("a negative scale", _set(12, -1.0)),
+    ],
+    "SE23": [
+        ("2 I, not a rotation", _not_rotation),
+        ("a reflection", lambda s: (1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, -1.0) + tuple(s[9:])),
+        ("an infinite velocity", _set(14, math.inf)),
     ],
     "SE2": [
         ("(0, 0), not a rotation", lambda s: (0.0, 0.0) + tuple(s[2:])),
