@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
-"""The planar groups of chasles (SO2, SE2) beside their peers on PyPI, timed in one run.
+"""The groups of chasles beyond SO3/SE3 (SO2, SE2, Sim3, SE23) beside their peers on PyPI, timed in one run.
 
     python bench/bench_groups.py [--rounds 7] [--sizes 100000] [--groups so2 se2] [--loop-size 10000]
                                  [--samples 1000] [--budget 0.02] [--no-accuracy]
 
-Needs numpy; chasles, gtsam (Rot2, Pose2), jaxlie (SO2, SE2, on jax for CPU)
-and mpmath are each used when importable and skipped otherwise (a chasles
-without SO2 / SE2 yet prints "n/a" in its cells). Prints markdown tables, with
+Needs numpy; chasles, gtsam (Rot2, Pose2, Similarity3, NavState), jaxlie
+(SO2, SE2, on jax for CPU) and mpmath are each used when importable and
+skipped otherwise (a group a library lacks prints "n/a" in its cells). Prints markdown tables, with
 a header line naming the version of each contender:
 
 1. Per call (us): one element at a time through each library's object API,
@@ -37,10 +37,12 @@ its best round: machines are shared and noisy, so the least disturbed round
 is the one closest to the cost of the code, and contenders measured in the
 same rounds see the same machine.
 
-Adding a group (Sim3 against gtsam.Similarity3, SE23 against gtsam.NavState):
-one more GroupSpec in GROUPS, with its mpmath exp and log, its hard inputs and
-its contenders (chasles_impl / gtsam_impl / jaxlie_impl are generic over the
-class).
+For Sim3 the hard inputs add the log-scales sigma = 0, 1e-12, 1e-8, 1e-4, 1
+and -5 to each angle (random axes); for SE23 each angle has position parts
+of size 1e-6, 1 and 1e3. Adding a group: one more GroupSpec in GROUPS, with
+its mpmath exp and log, its hard inputs and its contenders (chasles_impl /
+gtsam_impl / jaxlie_impl are generic over the class; gtsam_impl converts the
+tangent order and the matrix).
 """
 
 from __future__ import annotations
@@ -227,21 +229,35 @@ def chasles_impl(cls_name: str, prefix: str, scalar: bool) -> Impl | None:
     )
 
 
-def gtsam_impl(cls_name: str, from_matrix: Callable[[np.ndarray], Any]) -> Impl | None:
+def gtsam_impl(
+    cls_name: str,
+    from_matrix: Callable[[np.ndarray], Any],
+    order: Sequence[int] | None = None,
+    matrix: Callable[[Any], np.ndarray] | None = None,
+) -> Impl | None:
     """gtsam.<cls_name>: Expmap / Logmap (static, on numpy vectors) and compose.
-    gtsam has no batch form: its batch is a Python loop over a list of its objects."""
+    gtsam has no batch form: its batch is a Python loop over a list of its objects.
+    `order`: gtsam's tangent is chasles' x[order] (converted outside the timed
+    calls; its logs are put back in chasles' order for the accuracy table);
+    `matrix`: chasles' matrix of a gtsam element (default: its .matrix())."""
     if gtsam is None or not hasattr(gtsam, cls_name):
         return None
     G = getattr(gtsam, cls_name)
+    perm = np.arange(len(order)) if order is None else np.asarray(order)
+    back = np.argsort(perm)
+    to_matrix = matrix or (lambda g: g.matrix())
+
+    def ours(x: np.ndarray) -> np.ndarray:  # chasles' tangent -> gtsam's
+        return np.array(np.asarray(x, dtype=float)[..., perm] if order is not None else x, dtype=float)
 
     def calls(x1: np.ndarray, x2: np.ndarray) -> dict[str, Thunk]:
-        v1 = np.array(x1, dtype=float)  # Expmap takes a vector, even of one entry (Rot2)
-        a, b = G.Expmap(v1), G.Expmap(np.array(x2, dtype=float))
+        v1 = ours(x1)  # Expmap takes a vector, even of one entry (Rot2)
+        a, b = G.Expmap(v1), G.Expmap(ours(x2))
         return {"exp": lambda: G.Expmap(v1), "log": lambda: G.Logmap(a), "compose": lambda: a.compose(b)}
 
     def batch(X1: np.ndarray, X2: np.ndarray) -> dict[str, Thunk]:
-        V1 = list(np.array(X1, dtype=float))
-        A, B = [G.Expmap(v) for v in V1], [G.Expmap(v) for v in np.array(X2, dtype=float)]
+        V1 = list(ours(X1))
+        A, B = [G.Expmap(v) for v in V1], [G.Expmap(v) for v in ours(X2)]
         return {
             "exp": lambda: [G.Expmap(v) for v in V1],
             "log": lambda: [G.Logmap(a) for a in A],
@@ -249,10 +265,10 @@ def gtsam_impl(cls_name: str, from_matrix: Callable[[np.ndarray], Any]) -> Impl 
         }
 
     def exp_many(X: np.ndarray) -> np.ndarray:
-        return np.stack([G.Expmap(np.array(x, dtype=float)).matrix() for x in X])
+        return np.stack([to_matrix(G.Expmap(v)) for v in ours(X)])
 
     def log_many(M: np.ndarray) -> np.ndarray:
-        return np.stack([np.asarray(G.Logmap(from_matrix(m)), dtype=float).reshape(-1) for m in M])
+        return np.stack([np.asarray(G.Logmap(from_matrix(m)), dtype=float).reshape(-1)[back] for m in M])
 
     return Impl(calls, batch, {"gtsam": (exp_many, log_many)}, loop=True)
 
@@ -315,6 +331,22 @@ def gtsam_rot2(m: np.ndarray) -> Any:
 
 def gtsam_pose2(m: np.ndarray) -> Any:
     return gtsam.Pose2(gtsam_rot2(m), np.array(m[:2, 2]))
+
+
+# gtsam's Similarity3 matrix is [[R, t'], [0, 1/s]]: the same projective element
+# as chasles' [[s R, t], [0, 1]] with t = s t' (docs/coming_from.md).
+def gtsam_similarity3(m: np.ndarray) -> Any:
+    s = float(np.linalg.norm(m[:3, :3]) / math.sqrt(3.0))
+    return gtsam.Similarity3(gtsam.Rot3(m[:3, :3] / s), np.array(m[:3, 3]) / s, s)
+
+
+def chasles_matrix_of_similarity3(g: Any) -> np.ndarray:
+    m = np.asarray(g.matrix(), dtype=float)
+    return m / m[3, 3]
+
+
+def gtsam_navstate(m: np.ndarray) -> Any:
+    return gtsam.NavState(gtsam.Rot3(m[:3, :3]), np.array(m[:3, 3]), np.array(m[:3, 4]))
 
 
 # ---------------------------------------------------------------------------
@@ -418,13 +450,178 @@ def se2_sample(rng: np.random.Generator, k: int) -> np.ndarray:
     return np.concatenate([v, rng.uniform(-math.pi, math.pi, size=(k, 1))], axis=1)
 
 
+# The 3D groups: references from mpmath's expm of the hat matrix; logs of a
+# double matrix from its rotation's exact log (the quaternion of the double
+# block, normalized: within an ulp of any other reading of a block that is
+# off SO(3) by an ulp) and the integral W = int_0^1 exp(u A) du of the
+# translation part, from one 6x6 expm ([[A, I], [0, 0]] has W top right).
+
+
+def mp_hat(w: Sequence[Any]) -> Any:
+    return mpmath.matrix([[0, -w[2], w[1]], [w[2], 0, -w[0]], [-w[1], w[0], 0]])
+
+
+def mp_rows(E: Any, n: int) -> list[list[Any]]:
+    return [[E[i, j] for j in range(n)] for i in range(n)]
+
+
+def mp_rotation_logs(R: np.ndarray) -> list[list[Any]]:
+    """The rotation vectors of the double matrix R (up to a rounding, its
+    quaternion's), and near pi the other branch, (theta - 2 pi) n, too."""
+    r = [[mpmath.mpf(float(R[i, j])) for j in range(3)] for i in range(3)]
+    t = r[0][0] + r[1][1] + r[2][2]
+    # Shepperd: the largest of 1 + t, 1 + 2 r_ii - t, for a well-conditioned quaternion (w, x, y, z).
+    k = max(range(4), key=lambda i: [t, r[0][0], r[1][1], r[2][2]][i] * (1 if i == 0 else 2) - (0 if i == 0 else t))
+    if k == 0:
+        q = [1 + t, r[2][1] - r[1][2], r[0][2] - r[2][0], r[1][0] - r[0][1]]
+    elif k == 1:
+        q = [r[2][1] - r[1][2], 1 + 2 * r[0][0] - t, r[0][1] + r[1][0], r[0][2] + r[2][0]]
+    elif k == 2:
+        q = [r[0][2] - r[2][0], r[0][1] + r[1][0], 1 + 2 * r[1][1] - t, r[1][2] + r[2][1]]
+    else:
+        q = [r[1][0] - r[0][1], r[0][2] + r[2][0], r[1][2] + r[2][1], 1 + 2 * r[2][2] - t]
+    if q[0] < 0:
+        q = [-e for e in q]
+    nv = mpmath.sqrt(q[1] ** 2 + q[2] ** 2 + q[3] ** 2)
+    if nv == 0:
+        return [[mpmath.mpf(0)] * 3]
+    theta = 2 * mpmath.atan2(nv, q[0])
+    n = [e / nv for e in q[1:]]
+    logs = [[theta * e for e in n]]
+    if theta > 3:
+        logs.append([(theta - 2 * mpmath.pi) * e for e in n])
+    return logs
+
+
+def mp_integral_exp(A: Any) -> Any:
+    """int_0^1 exp(u A) du of a 3x3 mp matrix A (exact at A = 0 too)."""
+    B = mpmath.zeros(6, 6)
+    for i in range(3):
+        B[i, 3 + i] = 1
+        for j in range(3):
+            B[i, j] = A[i, j]
+    E = mpmath.expm(B)
+    return mpmath.matrix([[E[i, 3 + j] for j in range(3)] for i in range(3)])
+
+
+def sim3_mp_exp(x: np.ndarray) -> list[list[Any]]:
+    """exp of xi = (v, w, sigma): expm of [[ [w] + sigma I, v ], [0, 0]]."""
+    v, w, (sigma,) = ([mpmath.mpf(float(e)) for e in x[k : k + n]] for k, n in ((0, 3), (3, 3), (6, 1)))
+    H = mpmath.zeros(4, 4)
+    W = mp_hat(w)
+    for i in range(3):
+        H[i, 3] = v[i]
+        for j in range(3):
+            H[i, j] = W[i, j] + (sigma if i == j else 0)
+    return mp_rows(mpmath.expm(H), 4)
+
+
+def sim3_mp_logs(m: np.ndarray) -> list[list[Any]]:
+    """log of [[s R, t], [0, 1]]: s = |block|_F / sqrt(3), sigma = log s, w = log R,
+    v = W^-1 t with W = int_0^1 exp(u (sigma I + [w])) du."""
+    block = np.asarray(m[:3, :3], dtype=float)
+    s = mpmath.sqrt(mpmath.fsum(mpmath.mpf(float(e)) ** 2 for e in block.ravel()) / 3)
+    sigma = mpmath.log(s)
+    R = np.array([[float(mpmath.mpf(float(block[i, j])) / s) for j in range(3)] for i in range(3)])
+    t = mpmath.matrix([mpmath.mpf(float(e)) for e in m[:3, 3]])
+    logs = []
+    for w in mp_rotation_logs(R):
+        A = mp_hat(w) + sigma * mpmath.eye(3)
+        v = mpmath.lu_solve(mp_integral_exp(A), t)
+        logs.append([v[0], v[1], v[2], *w, sigma])
+    return logs
+
+
+def sim3_hard() -> list[tuple[str, np.ndarray]]:
+    rng = np.random.default_rng(11)
+    out = []
+    for i, (la, theta) in enumerate(HARD_ANGLES):
+        for j, (ls, sigma) in enumerate(HARD_SIGMAS):
+            lv, size = HARD_TRANSLATIONS[(i + j) % len(HARD_TRANSLATIONS)]
+            axis = rng.normal(size=3)
+            v = rng.normal(size=3)
+            out.append(
+                (
+                    f"theta={la}, sigma={ls}, v={lv}",
+                    np.concatenate([size * v / np.linalg.norm(v), theta * axis / np.linalg.norm(axis), [sigma]]),
+                )
+            )
+    return out
+
+
+def sim3_sample(rng: np.random.Generator, k: int) -> np.ndarray:
+    v = rng.normal(size=(k, 3)) * 10.0 ** rng.uniform(-3, 3, size=(k, 1))
+    return np.concatenate([v, ball3(rng, k), rng.uniform(-3, 3, size=(k, 1))], axis=1)
+
+
+def ball3(rng: np.random.Generator, k: int) -> np.ndarray:
+    """Rotation vectors of random axes and angles uniform in (0, pi)."""
+    n = rng.normal(size=(k, 3))
+    return n / np.linalg.norm(n, axis=1, keepdims=True) * rng.uniform(0, math.pi, size=(k, 1))
+
+
+def se23_mp_exp(x: np.ndarray) -> list[list[Any]]:
+    """exp of xi = (rho, nu, w): expm of [[ [w], rho, nu ], [0, 0, 0], [0, 0, 0]]."""
+    rho, nu, w = ([mpmath.mpf(float(e)) for e in x[k : k + 3]] for k in (0, 3, 6))
+    H = mpmath.zeros(5, 5)
+    W = mp_hat(w)
+    for i in range(3):
+        H[i, 3], H[i, 4] = rho[i], nu[i]
+        for j in range(3):
+            H[i, j] = W[i, j]
+    return mp_rows(mpmath.expm(H), 5)
+
+
+def se23_mp_logs(m: np.ndarray) -> list[list[Any]]:
+    """log of [[R, p, v], [0, 1, 0], [0, 0, 1]]: w = log R, rho = V^-1 p,
+    nu = V^-1 v with V = int_0^1 exp(u [w]) du."""
+    p = mpmath.matrix([mpmath.mpf(float(e)) for e in m[:3, 3]])
+    v = mpmath.matrix([mpmath.mpf(float(e)) for e in m[:3, 4]])
+    logs = []
+    for w in mp_rotation_logs(np.asarray(m[:3, :3], dtype=float)):
+        V = mp_integral_exp(mp_hat(w))
+        rho, nu = mpmath.lu_solve(V, p), mpmath.lu_solve(V, v)
+        logs.append([*rho, *nu, *w])
+    return logs
+
+
+def se23_hard() -> list[tuple[str, np.ndarray]]:
+    rng = np.random.default_rng(12)
+    out = []
+    for i, (la, theta) in enumerate(HARD_ANGLES):
+        for lv, size in HARD_TRANSLATIONS:
+            axis = np.array([1.0, 0.0, 0.0]) if i % 2 else rng.normal(size=3)
+            rho, nu = rng.normal(size=3), rng.normal(size=3)
+            x = np.concatenate(
+                [size * rho / np.linalg.norm(rho), nu / np.linalg.norm(nu), theta * axis / np.linalg.norm(axis)]
+            )
+            out.append((f"theta={la}, rho={lv}", x))
+    return out
+
+
+def se23_sample(rng: np.random.Generator, k: int) -> np.ndarray:
+    rho = rng.normal(size=(k, 3)) * 10.0 ** rng.uniform(-3, 3, size=(k, 1))
+    nu = rng.normal(size=(k, 3)) * 10.0 ** rng.uniform(-3, 3, size=(k, 1))
+    return np.concatenate([rho, nu, ball3(rng, k)], axis=1)
+
+
+HARD_SIGMAS: list[tuple[str, float]] = [
+    ("0", 0.0),
+    ("1e-12", 1e-12),
+    ("1e-8", 1e-8),
+    ("1e-4", 1e-4),
+    ("1", 1.0),
+    ("-5", -5.0),
+]
+
+
 # Tangent orders: chasles, gtsam (Pose2::Expmap / Logmap, checked: the
 # translation of Expmap([1, 2, 0.5]) is V(0.5) (1, 2)) and jaxlie (SE2.exp reads
 # the angle from tangent[..., 2]) all order the SE2 tangent (vx, vy, w).
-# To add Sim3 / SE23: GroupSpec("sim3", "Sim3", 7, 4, ..., {"chasles": lambda:
-# chasles_impl("Sim3", "sim3", False), "gtsam": lambda: gtsam_impl("Similarity3",
-# ...)}) and ("se23", "SE23", 9, 5, ..., gtsam.NavState), after checking each
-# peer's tangent order against chasles'.
+# gtsam's Similarity3 tangent is (w, v, lambda) = chasles' (v, w, sigma)
+# reordered (its hat [[ [w], v ], [0, -lambda]] is chasles' minus lambda I: the
+# same projective element), and NavState's (w, rho, nu) = chasles' (rho, nu, w)
+# reordered (checked: Expmap against scipy's expm of chasles' hat).
 GROUPS: dict[str, GroupSpec] = {
     g.key: g
     for g in (
@@ -460,6 +657,40 @@ GROUPS: dict[str, GroupSpec] = {
                 "chasles": lambda: chasles_impl("SE2", "se2", scalar=False),
                 "gtsam": lambda: gtsam_impl("Pose2", gtsam_pose2),
                 "jaxlie": lambda: jaxlie_impl("SE2"),
+            },
+        ),
+        GroupSpec(
+            "sim3",
+            "Sim3",
+            7,
+            4,
+            sim3_hard,
+            sim3_sample,
+            sim3_mp_exp,
+            sim3_mp_logs,
+            [[0, 1, 2, 4, 5, 6, 8, 9, 10], [3, 7, 11], [12, 13, 14, 15]],  # s R, t, the last row
+            [[0, 1, 2], [3, 4, 5], [6]],  # v, w, sigma
+            {
+                "chasles": lambda: chasles_impl("Sim3", "sim3", scalar=False),
+                "gtsam": lambda: gtsam_impl(
+                    "Similarity3", gtsam_similarity3, [3, 4, 5, 0, 1, 2, 6], chasles_matrix_of_similarity3
+                ),
+            },
+        ),
+        GroupSpec(
+            "se23",
+            "SE23",
+            9,
+            5,
+            se23_hard,
+            se23_sample,
+            se23_mp_exp,
+            se23_mp_logs,
+            [[0, 1, 2, 5, 6, 7, 10, 11, 12], [3, 8, 13], [4, 9, 14], list(range(15, 25))],  # R, p, v, rows
+            [[0, 1, 2], [3, 4, 5], [6, 7, 8]],  # rho, nu, w
+            {
+                "chasles": lambda: chasles_impl("SE23", "se23", scalar=False),
+                "gtsam": lambda: gtsam_impl("NavState", gtsam_navstate, [6, 7, 8, 0, 1, 2, 3, 4, 5]),
             },
         ),
     )
@@ -580,8 +811,6 @@ def main() -> int:
     specs = [GROUPS[k] for k in args.groups]
 
     ours = version("chasles", chasles)
-    if chasles is not None and not all(hasattr(chasles, c) for c in ("SO2", "SE2")):
-        ours += " (without SO2 / SE2: n/a)"
     threads = f", {chasles.get_num_threads()} threads" if hasattr(chasles, "get_num_threads") else ""
     backend = f", {jax.default_backend()}, float64" if jax is not None else ""
     print(

@@ -615,6 +615,40 @@ void register_sim3(const std::string& sn) {
   add("Sim3/act/generic/" + sn, points, [](const auto& p) { return V3(p.first * p.second); });
 }
 
+/// SE_2(3): exp and log at the three kinds of angles, compose and act.
+template <typename S>
+void register_se23(const std::string& sn) {
+  using namespace chasles;
+  using V3 = Eigen::Matrix<S, 3, 1>;
+  using V9 = Eigen::Matrix<S, 9, 1>;
+  std::mt19937_64 rng(51);
+  std::normal_distribution<double> n(0, 1);
+  const auto tangent = [&](const V3& w) {
+    V9 xi;  // entry by entry (GCC 12's -Warray-bounds on comma initializers from 3-vectors)
+    for (int i = 0; i < 6; ++i) xi[i] = S(n(rng));
+    for (int i = 0; i < 3; ++i) xi[6 + i] = w[i];
+    return xi;
+  };
+  for (const std::string kind : {"generic", "tiny", "near_pi"}) {
+    std::vector<V9> xs;
+    for (const auto& w : rotation_vectors<S>(kind, 53)) xs.push_back(tangent(w));
+    add("SE23/exp/" + kind + "/" + sn, xs, [](const V9& xi) { return SE23<S>::exp(xi); });
+    std::vector<SE23<S>> gs;
+    for (const V9& xi : xs) gs.push_back(SE23<S>::exp(xi));
+    add("SE23/log/" + kind + "/" + sn, gs, [](const SE23<S>& g) { return g.log(); });
+  }
+  std::vector<SE23<S>> gs;
+  for (const auto& w : rotation_vectors<S>("generic", 54)) gs.push_back(SE23<S>::exp(tangent(w)));
+  std::vector<std::pair<SE23<S>, SE23<S>>> pairs;
+  std::vector<std::pair<SE23<S>, V3>> points;
+  for (std::size_t i = 0; i < kN; ++i) {
+    pairs.emplace_back(gs[i], gs[(i + 1) & (kN - 1)]);
+    points.emplace_back(gs[i], gs[(i + 5) & (kN - 1)].translation());
+  }
+  add("SE23/compose/generic/" + sn, pairs, [](const auto& p) { return p.first * p.second; });
+  add("SE23/act/generic/" + sn, points, [](const auto& p) { return V3(p.first * p.second); });
+}
+
 int main(int argc, char** argv) {
   register_all<double>("double");
   register_all<float>("float");
@@ -624,6 +658,8 @@ int main(int argc, char** argv) {
   register_planar<float>("float");
   register_sim3<double>("double");
   register_sim3<float>("float");
+  register_se23<double>("double");
+  register_se23<float>("float");
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();
