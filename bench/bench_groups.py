@@ -385,6 +385,14 @@ HARD_ANGLES: list[tuple[str, float]] = [
 ]
 HARD_TRANSLATIONS: list[tuple[str, float]] = [("1e-6", 1e-6), ("1", 1.0), ("1e3", 1e3)]
 TRANSLATION_DIRECTION = np.array([0.6, -0.8])
+HARD_SIGMAS: list[tuple[str, float]] = [
+    ("0", 0.0),
+    ("1e-12", 1e-12),
+    ("1e-8", 1e-8),
+    ("1e-4", 1e-4),
+    ("1", 1.0),
+    ("-5", -5.0),
+]
 
 
 def mp_rot2(theta: Any) -> tuple[Any, Any]:
@@ -605,16 +613,6 @@ def se23_sample(rng: np.random.Generator, k: int) -> np.ndarray:
     return np.concatenate([rho, nu, ball3(rng, k)], axis=1)
 
 
-HARD_SIGMAS: list[tuple[str, float]] = [
-    ("0", 0.0),
-    ("1e-12", 1e-12),
-    ("1e-8", 1e-8),
-    ("1e-4", 1e-4),
-    ("1", 1.0),
-    ("-5", -5.0),
-]
-
-
 # Tangent orders: chasles, gtsam (Pose2::Expmap / Logmap, checked: the
 # translation of Expmap([1, 2, 0.5]) is V(0.5) (1, 2)) and jaxlie (SE2.exp reads
 # the angle from tangent[..., 2]) all order the SE2 tangent (vx, vy, w).
@@ -723,8 +721,9 @@ def accuracy_table(specs: list[GroupSpec], impls: dict[str, dict[str, Impl | Non
     mpmath.mp.dps = MP_DIGITS
     print(f"### Worst error of exp and log (eps = 2^-52, against mpmath at {MP_DIGITS} digits)\n")
     print(
-        "Hard inputs and their worst; then the worst over random inputs (theta uniform in (-pi, pi), "
-        "for SE2 translations of size 1e-3 to 1e3). Each entry relative to max(1, |reference|) of its block "
+        "Hard inputs and their worst; then the worst over random inputs (angles uniform in (-pi, pi), "
+        "translations of size 1e-3 to 1e3, Sim3's sigma uniform in (-3, 3)). Each entry relative to "
+        "max(1, |reference|) of its block "
         "(rotation entries and angles absolute, translations relative to the largest reference entry of "
         "the translation); log of the double matrix nearest the exact exp, either branch accepted at "
         "theta = +-pi; exp(log): the exact exp of the returned tangent against the matrix given. NaN: the "
