@@ -384,12 +384,16 @@ inline AlignResult<SO3<detail::VectorScalarOf<AIterator>>> so3_align(AIterator a
   r.transform = fit.rotation;
   r.singular_values = fit.s;
   if (fit.determined) {
-    // scipy's sensitivity: mean(w) / zeta (kappa I + B B^T)
-    const Scalar s1 = fit.s[0], s2 = fit.s[1], s3 = fit.s[2];
+    // scipy's sensitivity: mean(w) / zeta (kappa I + B B^T), with s and B
+    // divided by s1 first (the products of three singular values overflow for
+    // weights or vectors past the cube root of the largest Scalar)
+    const Scalar c = Scalar(1) / fit.s[0];
+    const Scalar s1(1), s2 = fit.s[1] * c, s3 = fit.s[2] * c;
+    const Matrix3 Bc = B * c;
     const Scalar zeta = (s1 + s2) * (s2 + s3) * (s3 + s1);
     const Scalar kappa = s1 * s2 + s2 * s3 + s3 * s1;
     const Scalar mean_weight = total / Scalar(static_cast<RealOf<Scalar>>(n));
-    r.sensitivity = (mean_weight / zeta) * (kappa * Matrix3::Identity() + B * B.transpose());
+    r.sensitivity = (mean_weight * c / zeta) * (kappa * Matrix3::Identity() + Bc * Bc.transpose());
     r.has_sensitivity = true;
   }
   // pass 2
