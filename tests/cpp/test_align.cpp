@@ -160,13 +160,12 @@ TYPED_TEST(Align, Se3AndSim3EqualEigenUmeyamaOnRandomNoisyPoints) {
     ASSERT_EQ(rigid.status, AlignStatus::ok) << trial;
     ASSERT_EQ(similar.status, AlignStatus::ok) << trial;
     EXPECT_FALSE(rigid.has_sensitivity);
-    // Eigen's own, in the same Scalar, and in double for float (the better reference)
+    // Eigen's own, in double for float (the better reference; and Eigen::umeyama
+    // on float 3 x N matrices trips GCC 12's -Warray-bounds at -O3 in Eigen's code)
     using T = std::conditional_t<std::is_same<S, float>::value, double, S>;
     const Eigen::Matrix<T, 4, 4> rigid_ref = Eigen::umeyama(columns<T>(B), columns<T>(A), false);
     const Eigen::Matrix<T, 4, 4> similar_ref = Eigen::umeyama(columns<T>(B), columns<T>(A), true);
-    const Eigen::Matrix<S, 4, 4> rigid_same = Eigen::umeyama(columns<S>(B), columns<S>(A), false);
     EXPECT_LE(relative_difference(rigid.transform.matrix(), rigid_ref), tol<S>()) << trial;
-    EXPECT_LE(relative_difference(rigid.transform.matrix(), rigid_same), 2 * tol<S>()) << trial;
     EXPECT_LE(relative_difference(similar.transform.matrix(), similar_ref), tol<S>()) << trial;
     EXPECT_NEAR(double(similar.transform.matrix().template topLeftCorner<3, 3>().determinant()),
                 std::pow(double(similar.transform.scale()), 3), 1e3 * tol<S>());
