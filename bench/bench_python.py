@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Python benchmarks of chasles beside the peers a Python user has, in one run.
 
-    python bench/bench_python.py [--repeats 7] [--sizes 100000 1000000] [--splines-only]
+    python bench/bench_python.py [--repeats 7] [--sizes 100000 1000000] [--splines-only] [--align-only]
 
 Needs chasles (pip install .) and numpy; scipy, pin (Pinocchio),
 pytransform3d and modern_robotics are measured when installed and skipped
@@ -332,6 +332,61 @@ def spline_keys_table(rep: int, keys: list[int]) -> None:
     print()
 
 
+def np_umeyama(a: np.ndarray, b: np.ndarray, scale: bool) -> np.ndarray:
+    """Kabsch / Umeyama by numpy's SVD, as a user writes them: g with a ~ g b."""
+    ma, mb = a.mean(axis=0), b.mean(axis=0)
+    U, d, Vt = np.linalg.svd((a - ma).T @ (b - mb))
+    S = np.array([1.0, 1.0, np.sign(np.linalg.det(U @ Vt))])
+    R = (U * S) @ Vt
+    c = (d @ S) / np.sum((b - mb) ** 2) if scale else 1.0
+    g = np.eye(4)
+    g[:3, :3] = c * R
+    g[:3, 3] = ma - c * R @ mb
+    return g
+
+
+def align_table(rep: int, sizes: tuple[int, ...] = (10, 1_000, 100_000)) -> None:
+    """so3_align beside scipy's Rotation.align_vectors (with its sensitivity,
+    which so3_align returns too), se3_align and sim3_align beside Kabsch and
+    Umeyama in numpy: microseconds per call at each N, interleaved rounds, the
+    best round of each kept (bench_groups.interleaved)."""
+    from bench_groups import interleaved
+
+    Rotation = getattr(optional("scipy.spatial.transform"), "Rotation", None)
+    rng = np.random.default_rng(3)
+    print(f"### Alignment of N vectors / points, per call (us, best of {rep} interleaved rounds)\n")
+    print("| op | N | chasles | scipy | numpy | ratio to best peer |")
+    print("| --- | ---: | ---: | ---: | ---: | ---: |")
+    for n in sizes:
+        b = rng.normal(size=(n, 3)) * [3.0, 2.0, 1.0]
+        a = chasles.se3_act(chasles.se3_exp(rng.normal(size=6)), b) + 0.01 * rng.normal(size=(n, 3))
+        rows = {
+            "so3_align / align_vectors": {
+                "chasles": lambda: chasles.so3_align(a, b),
+                "scipy": (lambda: Rotation.align_vectors(a, b, return_sensitivity=True)) if Rotation else None,
+                "numpy": None,
+            },
+            "se3_align / Kabsch": {
+                "chasles": lambda: chasles.se3_align(a, b),
+                "scipy": None,
+                "numpy": lambda: np_umeyama(a, b, False),
+            },
+            "sim3_align / Umeyama": {
+                "chasles": lambda: chasles.sim3_align(a, b),
+                "scipy": None,
+                "numpy": lambda: np_umeyama(a, b, True),
+            },
+        }
+        for op, fns in rows.items():
+            t = interleaved(fns, rep, 0.05)
+            peers = [(v, k) for k, v in t.items() if k != "chasles" and v is not None]
+            best = min(peers) if peers else None
+            ratio = f"{t['chasles'] / best[0]:.3g} ({best[1]})" if best else ""
+            cells = " | ".join(fig(v * 1e6) if v is not None else "" for v in t.values())
+            print(f"| {op} | {n} | {cells} | {ratio} |")
+    print()
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--repeats", type=int, default=7)
@@ -344,10 +399,14 @@ def main() -> int:
         help="the numbers of keys of the spline evaluation table",
     )
     ap.add_argument("--splines-only", action="store_true", help="only the spline evaluation table")
+    ap.add_argument("--align-only", action="store_true", help="only the alignment table")
     args = ap.parse_args()
     rep = args.repeats
     if args.splines_only:
         spline_keys_table(rep, args.spline_keys)
+        return 0
+    if args.align_only:
+        align_table(rep)
         return 0
 
     scipy_rot = optional("scipy.spatial.transform")
@@ -733,6 +792,7 @@ def main() -> int:
     print()
 
     spline_keys_table(rep, args.spline_keys)
+    align_table(rep)
 
     # ---- threads and kinematics ----------------------------------------------
     threads_table(rep)

@@ -41,6 +41,7 @@ void bind_euler(py::module_& m);         // bind_euler.cpp: the private ufuncs o
 void bind_splines(py::module_& m);       // bind_splines.cpp: the cores of SO3/SE3Spline, SO3/SE3BSpline
 void bind_dynamics(py::module_& m);      // bind_dynamics.cpp: class SpatialInertia
 void bind_threads(py::module_& m);       // bind_threads.cpp: set_num_threads, get_num_threads
+void bind_align(py::module_& m);         // bind_align.cpp: the kernels of so3_align, se3_align, sim3_align
 
 constexpr double kDegToRad = 3.14159265358979323846 / 180.0;  // numpy's deg2rad: x * (pi / 180)
 constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;  // numpy's rad2deg: x * (180 / pi)

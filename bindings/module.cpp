@@ -35,5 +35,6 @@ PYBIND11_MODULE(_core, m) {
   cp::bind_euler(m);
   cp::bind_splines(m);
   cp::bind_threads(m);
+  cp::bind_align(m);
   cp::finish_functions(m);  // last: signatures for help() and inspect (signatures.hpp)
 }

@@ -8,6 +8,7 @@
 // - quaternions are Eigen::Quaternion; angles are in radians.
 #pragma once
 
+#include "chasles/align.hpp"
 #include "chasles/bspline.hpp"
 #include "chasles/constants.hpp"
 #include "chasles/distance.hpp"

@@ -132,6 +132,7 @@ struct Thresholds<float> {
   static constexpr float mass_matrix_pivot_tolerance = 4.7683716e-07f;  // 4 eps
   static constexpr float sim3_jacobian_norm = 0.5f;
   static constexpr int sim3_jacobian_degree = 7;  // 0.5^9 / 9! = 5.4e-9 < eps / 8
+  static constexpr float align_tolerance = 3.4526698e-04f;  // eps^(1/2)
 };
 
 template <>
@@ -161,6 +162,7 @@ struct Thresholds<double> {
   static constexpr double mass_matrix_pivot_tolerance = 8.881784197001252e-16;  // 4 eps
   static constexpr double sim3_jacobian_norm = 0.5;
   static constexpr int sim3_jacobian_degree = 13;  // 0.5^15 / 15! = 2.3e-17 < eps / 8
+  static constexpr double align_tolerance = 1.4901161193847656e-08;  // eps^(1/2)
 };
 
 template <>
@@ -192,6 +194,7 @@ struct Thresholds<long double> {
   static constexpr long double mass_matrix_pivot_tolerance = 4.3368086899420177360e-19L;  // 4 eps
   static constexpr long double sim3_jacobian_norm = 0.5L;
   static constexpr int sim3_jacobian_degree = 16;  // 0.5^18 / 18! = 6e-22 < eps / 8
+  static constexpr long double align_tolerance = 3.2927225399135962334e-10L;  // eps^(1/2)
 };
 
 // mean_step_tolerance: the geodesic (Karcher) mean (mean.hpp) stops after
@@ -328,6 +331,26 @@ struct Thresholds<long double> {
 //   So 4 eps is above the rounding of a zero pivot and below every physical
 //   arm in float (the narrow case: 3.5 and 8 eps); a pivot that passes is
 //   known to better than its own size. In double the gap is 1e9 wide.
+//
+// align_tolerance: so3_align, se3_align and sim3_align (align.hpp) report
+//   the rotation not determined (AlignStatus::not_determined) when
+//   s2 + s3 <= tol s1, s1 >= s2 >= |s3| the signed singular values of the
+//   (centred) cross-covariance B = sum_i w_i a_i b_i^T (s3 < 0 where the
+//   best orthogonal fit is a reflection); with a primary vector, when the
+//   amplitude |(S, C)| of the fit about it is <= tol sum_i w_i |a_i| |b_i|.
+//   The rotation maximizes tr(R^T B), and a change dB of B turns it by
+//   about |dB| / (s2 + s3) rad (the smallest of the sums s_j + s_k, the
+//   curvature of tr(R^T B) about the worst axis, which is 0 exactly where
+//   the maximizer is not unique: parallel vectors, collinear points). B
+//   is summed from the rounded data, |dB| about eps s1, so at the tolerance the
+//   rounding alone can turn the rotation by eps / tol = sqrt(eps) rad: it is
+//   known to fewer than half the digits of the type, the rule of
+//   rotation_tolerance. (scipy warns only below 1e-16 s1, about where
+//   s2 + s3 is rounding itself, in double.) Points off a line by d have
+//   s2 of order d^2 (the covariance is quadratic in the data), so the
+//   rotation about the line is reported not determined for d below about
+//   eps^(1/4) of the line's length: tests/cpp/test_align.cpp puts points
+//   20 times either side of that, in float and in double.
 //
 /// The thresholds that apply to a Scalar (autodiff scalars use their real type's).
 template <typename Scalar>

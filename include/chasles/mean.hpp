@@ -47,6 +47,7 @@
 #include <Eigen/LU>
 
 #include "chasles/constants.hpp"
+#include "chasles/detail/weights.hpp"
 #include "chasles/jacobians.hpp"
 #include "chasles/se3.hpp"
 #include "chasles/so3.hpp"
@@ -63,14 +64,6 @@ struct MeanResult {
 };
 
 namespace detail {
-
-/// The weight 1 for every element: an iterator that never moves.
-template <typename Scalar>
-struct UnitWeights {
-  Scalar one{1};
-  const Scalar& operator*() const noexcept { return one; }
-  UnitWeights& operator++() noexcept { return *this; }
-};
 
 template <typename Iterator>
 using GroupOf = std::decay_t<typename std::iterator_traits<Iterator>::value_type>;

@@ -54,6 +54,7 @@ checked and drawn into a PNG.
 """
 
 from chasles import _threads
+from chasles._align import se3_align, sim3_align, so3_align
 from chasles._arrays import (
     so3_as_euler,
     so3_as_quat,
@@ -210,6 +211,7 @@ __all__ = [
     "se3_act_twist",
     "se3_act_wrench",
     "se3_adjoint",
+    "se3_align",
     "se3_compose",
     "se3_distance",
     "se3_exp",
@@ -233,6 +235,7 @@ __all__ = [
     "se23_vee",
     "set_num_threads",
     "sim3_act",
+    "sim3_align",
     "sim3_compose",
     "sim3_exp",
     "sim3_hat",
@@ -252,6 +255,7 @@ __all__ = [
     "so2_vee",
     "so3_act",
     "so3_act_jacobian",
+    "so3_align",
     "so3_angle",
     "so3_as_euler",
     "so3_as_quat",

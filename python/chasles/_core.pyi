@@ -4009,6 +4009,10 @@ class _Chain:
         """
         SE3: the home pose M = g(0).
         """
+def _se3_align(a: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], b: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Any) -> tuple:
+    """
+    The C++ se3_align behind chasles.se3_align, on (N, 3) float64 points a, b and (N,) weights or None: (matrix, rssd, singular_values, status).
+    """
 def _se3_bspline_new(start_time: float, spacing: float, control: numpy.typing.ArrayLike) -> tuple[float, float, numpy.ndarray]:
     """
     The checked arguments of SE3BSpline(start_time, spacing, control): (start_time, spacing, the control elements as a new read-only (N, 4, 4) float64 array of rigid motions), or the SE3BSpline constructor's ValueError / TypeError. A private function of chasles.SE3BSpline (python/chasles/_bspline.py).
@@ -4024,6 +4028,14 @@ def _se3_spline_fit(times: typing.Annotated[numpy.typing.ArrayLike, numpy.float6
 def _set_num_threads(n: typing.SupportsInt | typing.SupportsIndex) -> None:
     """
     The setter behind chasles.set_num_threads (python/chasles/_threads.py, which checks n and names the errors).
+    """
+def _sim3_align(a: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], b: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Any) -> tuple:
+    """
+    The C++ sim3_align behind chasles.sim3_align, on (N, 3) float64 points a, b and (N,) weights or None: (matrix, rssd, singular_values, status).
+    """
+def _so3_align(a: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], b: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Any) -> tuple:
+    """
+    The C++ so3_align behind chasles.so3_align, on (N, 3) float64 vectors a, b and (N,) weights or None: (rotation, rssd, singular_values, sensitivity or None, status).
     """
 def _so3_bspline_new(start_time: float, spacing: float, control: numpy.typing.ArrayLike) -> tuple[float, float, numpy.ndarray]:
     """

@@ -996,6 +996,132 @@ def g_dot():
 # ---- the specification ----------------------------------------------------------------
 
 
+# ---- the alignments (so3_align, se3_align, sim3_align) --------------------------------
+
+# Four points / vectors, none of length 0, not on a line, and their images.
+ALIGN_B = np.array([[1.0, 0.5, 0.25], [2.0, 0.0, 0.5], [0.0, 2.0, 0.0], [0.5, 0.0, 3.0]])
+ALIGN_R = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+ALIGN_A = {"so3_align": ALIGN_B @ ALIGN_R.T, "se3_align": ALIGN_B @ ALIGN_R.T + [1.0, 2.0, 3.0]}
+ALIGN_A["sim3_align"] = 2.0 * ALIGN_B @ ALIGN_R.T + [1.0, 2.0, 3.0]
+# constants.hpp, Thresholds<double>::align_tolerance
+ALIGN_TOLERANCE = 1.4901161193847656e-08
+
+
+def _align_determined(name, a, b, w):
+    """Whether the data determine the rotation (True / False), or None near
+    the threshold (a factor 100 either side of align_tolerance) or where the
+    sums could overflow or lose their digits to underflow (no model)."""
+    for x in (a, b) + ((w,) if w is not None else ()):
+        big = np.abs(x[np.isfinite(x)])
+        if big.size and (big.max() > 1e100 or (big[big > 0].size and big[big > 0].min() < 1e-100)):
+            return None
+    w = np.ones(len(a)) if w is None else w
+    if name != "so3_align":
+        a = a - w @ a / w.sum()
+        b = b - w @ b / w.sum()
+    U, s, Vt = np.linalg.svd((w[:, None] * a).T @ b)
+    s3 = s[2] if np.linalg.det(U @ Vt) >= 0 else -s[2]
+    ratio = (s[1] + s3) / s[0] if s[0] > 0 else 0.0
+    if ratio > 100 * ALIGN_TOLERANCE:
+        return True
+    if ratio < ALIGN_TOLERANCE / 100:
+        return False
+    return None
+
+
+@dataclass
+class AlignRows(Arg):
+    """a or b of so3_align / se3_align / sim3_align (`name`): real numbers of
+    shape (N, 3), N >= 1 (so3_align; also (3,) for one pair) or N >= 3, the
+    same shape as the other's (ALIGN_B: 4 rows), finite; read as float64
+    whatever the dtype and layout. With valid numbers: se3_align and
+    sim3_align refuse points that do not determine the rotation, so3_align
+    warns (its UserWarning let through by the call: _undetermined_allowed)."""
+
+    name: str = "so3_align"
+    first: bool = True
+
+    def good(self):
+        return ALIGN_A[self.name] if self.first else ALIGN_B
+
+    def judge(self, value):
+        a = real_array(value, self.label)
+        if isinstance(a, Refused):
+            return a
+        vectors = self.name == "so3_align"
+        least = 1 if vectors else 3
+        shape = a.shape
+        if vectors and shape == (3,):
+            shape = (1, 3)
+        elif len(shape) != 2 or shape[1] != 3 or shape[0] < least:
+            return Refused(ValueError, (self.label, "expected shape", f"got {shape_text(a.shape)}"))
+        if shape != ALIGN_B.shape:
+            return Refused(ValueError, (f"{self.name}(a, b)", "expected the same shape"))
+        c = finite_or_refused(a, self.label)
+        if isinstance(c, Refused) or vectors:
+            return c
+        x = c.value
+        determined = _align_determined(self.name, *((x, ALIGN_B) if self.first else (ALIGN_A[self.name], x)), None)
+        if determined is None:
+            return None
+        return c if determined else Refused(ValueError, (f"{self.name}(a, b)", "do not determine the rotation"))
+
+
+@dataclass
+class AlignWeights(Arg):
+    """The weights of so3_align / se3_align / sim3_align (`name`): None, or
+    real numbers of shape (4,) (one per row of ALIGN_B), none negative or
+    NaN; so3_align takes at most one inf (the primary vector), se3_align
+    and sim3_align none, and not all 0. With valid weights, se3_align and
+    sim3_align refuse points they leave undetermined (fewer than 3 of
+    weight > 0 off a line)."""
+
+    name: str = "so3_align"
+
+    def good(self):
+        return None
+
+    def judge(self, value):
+        if value is None:
+            return Accepted(None)
+        a = real_array(value, self.label)
+        if isinstance(a, Refused):
+            return a
+        if a.shape != (4,):
+            return Refused(ValueError, (self.label, "expected shape (4,)", f"got {shape_text(a.shape)}"))
+        w = plain(a, np.float64)
+        if not np.all(w >= 0):
+            return Refused(ValueError, (self.label, "weights >= 0"))
+        infinite = int(np.isinf(w).sum())
+        if self.name == "so3_align":
+            if infinite > 1:
+                return Refused(ValueError, (self.label, "at most one infinite weight"))
+            if w[np.isfinite(w)].max(initial=0.0) > 1e100:
+                return None  # the sums may overflow
+            return Accepted(w)
+        if infinite:
+            return Refused(ValueError, (self.label, "finite weights"))
+        if not w.max() > 0:
+            return Refused(ValueError, (self.label, "at least one weight > 0"))
+        determined = _align_determined(self.name, ALIGN_A[self.name], ALIGN_B, w)
+        if determined is None:
+            return None
+        return Accepted(w) if determined else Refused(ValueError, (f"{self.name}(a, b)", "do not determine"))
+
+
+def _undetermined_allowed(call):
+    """`call` with so3_align's UserWarning for vectors that do not determine
+    the rotation (documented, as scipy's) let through, and every other
+    warning still an error."""
+
+    def wrapped(*a):
+        with warnings.catch_warnings():
+            warnings.filterwarnings("ignore", message="so3_align: the rotation", category=UserWarning)
+            return call(*a)
+
+    return wrapped
+
+
 @dataclass
 class Entry:
     """How to call one public callable.
@@ -1735,6 +1861,17 @@ def _build_spec():
                 ]
             ],
             call=getattr(chasles, name),
+        )
+    for name in ("so3_align", "se3_align", "sim3_align"):
+        spec[name] = Entry(
+            [
+                [
+                    AlignRows(f"{name}(a)", name, True),
+                    AlignRows(f"{name}(b)", name, False),
+                    AlignWeights(f"{name}(weights)", name),
+                ]
+            ],
+            call=_undetermined_allowed(getattr(chasles, name)),
         )
     spec["SO3.random"] = _static(SO3, "random", Rng("so3_random(rng)"))
     spec["SE3.random"] = _static(SE3, "random", Rng("se3_random(rng)"))

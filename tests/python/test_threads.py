@@ -45,9 +45,19 @@ ARM_SCREWS = np.array(
 
 def test_the_array_functions_are_all_here():
     prefixes = ("so2_", "se2_", "so3_", "se3_", "sim3_", "se23_")
-    # the samplers and the means take a size, a generator or a reduction axis:
+    # the samplers, the means and the alignments take a size, a generator or a reduction axis:
     # Python functions over the ufuncs / C++, not array functions themselves
-    not_ufuncs = {"so3_random", "se3_random", "so3_gaussian", "se3_gaussian", "so3_mean", "se3_mean"}
+    not_ufuncs = {
+        "so3_random",
+        "se3_random",
+        "so3_gaussian",
+        "se3_gaussian",
+        "so3_mean",
+        "se3_mean",
+        "so3_align",
+        "se3_align",
+        "sim3_align",
+    }
     public = sorted(n for n in chasles.__all__ if n.startswith(prefixes) and n not in not_ufuncs)
     assert ARRAY_FUNCTIONS == public and len(public) == 69
 

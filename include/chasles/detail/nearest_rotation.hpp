@@ -153,8 +153,23 @@ EIGEN_DONT_INLINE Quaternion4<Scalar> clamped_quaternion_power_step(const Eigen:
   return quaternion_power_step(HornMatrix<Scalar>(clamped(M, Scalar(2))));
 }
 
+/// The eigenvector of Horn's N(M) of the largest eigenvalue, and all four
+/// eigenvalues.
+template <typename Scalar>
+struct HornEigen {
+  Eigen::Matrix<Scalar, 4, 1> q;  ///< the unit eigenvector (w, x, y, z) of the largest eigenvalue
+  /// The eigenvalues of N(M), largest first. With M = U S V^T (an SVD) and
+  /// the signed singular values s1 >= s2 >= |s3| (s3 = det(U V^T) times the
+  /// smallest: negative when the nearest orthogonal matrix is a reflection),
+  /// they are s1 + s2 + s3, s1 - s2 - s3, -s1 + s2 - s3, -s1 - s2 + s3
+  /// (Horn, 1987): the largest is tr(R^T M) for the nearest rotation R, and
+  /// the gap to the next, 2 (s2 + s3), is 0 where that rotation is not
+  /// unique. Each within about eps |M| (Jacobi's stopping rule).
+  Eigen::Matrix<Scalar, 4, 1> values;
+};
+
 /// The unit quaternion (w, x, y, z) of the rotation nearest to M in the
-/// Frobenius norm. |R - M|^2 = 3 + |M|^2 - 2 tr(R^T M), so the nearest R
+/// Frobenius norm, and the eigenvalues of N(M) (HornEigen). |R - M|^2 = 3 + |M|^2 - 2 tr(R^T M), so the nearest R
 /// maximizes tr(R(q)^T M) = q^T N q over unit q (Horn, 1987), with
 ///   N = [[ tr M,  a^T               ],
 ///        [ a,     M + M^T - tr(M) I ]],   a = (M21 - M12, M02 - M20, M10 - M01)
@@ -166,15 +181,17 @@ EIGEN_DONT_INLINE Quaternion4<Scalar> clamped_quaternion_power_step(const Eigen:
 /// The nearest rotation to s M is that of M for every s > 0, so M is first
 /// scaled to a largest entry of 1: no product in N or in the sweeps can
 /// overflow or underflow, from entries of 1e-300 to 1e300.
-/// A non-finite M gives the identity (1, 0, 0, 0): a NaN in N would stop the
+/// A non-finite M gives the identity (1, 0, 0, 0) and eigenvalues 0: a NaN in N would stop the
 /// sweeps at once and leave the choice of the largest diagonal entry to
 /// comparisons with NaN, an arbitrary axis.
 template <typename Scalar>
-inline Eigen::Matrix<Scalar, 4, 1> nearest_rotation_quaternion(const Eigen::Matrix<Scalar, 3, 3>& M_in) noexcept {
+inline HornEigen<Scalar> horn_eigen(const Eigen::Matrix<Scalar, 3, 3>& M_in) noexcept {
   using std::abs;
   using std::sqrt;
   constexpr int max_sweeps = 12;
-  if (!all_finite(M_in)) return Eigen::Matrix<Scalar, 4, 1>(Scalar(1), Scalar(0), Scalar(0), Scalar(0));
+  if (!all_finite(M_in))
+    return {Eigen::Matrix<Scalar, 4, 1>(Scalar(1), Scalar(0), Scalar(0), Scalar(0)),
+            Eigen::Matrix<Scalar, 4, 1>::Zero()};
   Scalar m(0);
   for (int j = 0; j < 3; ++j)
     for (int i = 0; i < 3; ++i)
@@ -236,7 +253,22 @@ inline Eigen::Matrix<Scalar, 4, 1> nearest_rotation_quaternion(const Eigen::Matr
   int best = 0;
   for (int i = 1; i < 4; ++i)
     if (A(i, i) > A(best, best)) best = i;
-  return V.col(best);
+  // the eigenvalues of N(M) (N(M / m) m: N is linear in M), sorted by insertion
+  Eigen::Matrix<Scalar, 4, 1> values;
+  for (int i = 0; i < 4; ++i) {
+    const Scalar v = m > Scalar(0) ? Scalar(A(i, i) * m) : A(i, i);
+    int k = i;
+    for (; k > 0 && values[k - 1] < v; --k) values[k] = values[k - 1];
+    values[k] = v;
+  }
+  return {V.col(best), values};
+}
+
+/// The unit quaternion (w, x, y, z) of the rotation nearest to M in the
+/// Frobenius norm (horn_eigen, which says how).
+template <typename Scalar>
+inline Eigen::Matrix<Scalar, 4, 1> nearest_rotation_quaternion(const Eigen::Matrix<Scalar, 3, 3>& M) noexcept {
+  return horn_eigen(M).q;
 }
 
 /// The nearest rotation to R, a rotation up to rounding (defect d <= sqrt(eps),

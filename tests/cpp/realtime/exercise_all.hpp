@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <random>
 #include <type_traits>
 
@@ -127,6 +128,26 @@ S exercise_all() noexcept {
     sum += mr.mean.matrix().sum() + S(mr.iterations) + mg.mean.translation().sum() + S(mg.converged ? 1 : 0);
     sum += chordal_mean(Rs.begin(), Rs.end()).matrix().sum() +
            chordal_mean(gs.begin(), gs.end(), ws.begin()).translation().sum();
+  }
+  {  // alignment: Wahba (weights and none), the primary vector, one pair (acute, obtuse, opposite), points
+    const std::array<V3, 4> b{p, w, V3(S(0), S(1), S(0)), V3(S(-1), S(0.5), S(2))};
+    std::array<V3, 4> a;
+    for (std::size_t i = 0; i < a.size(); ++i) a[i] = g * b[i];
+    const std::array<S, 4> wa{S(1), S(2), S(0.5), S(1)};
+    const std::array<S, 4> primary{S(1), S(std::numeric_limits<RealOf<S>>::infinity()), S(0.5), S(1)};
+    const AlignResult<SO3<S>> r = so3_align(a.begin(), a.end(), b.begin(), wa.begin());
+    const AlignResult<SO3<S>> rp = so3_align(a.begin(), a.end(), b.begin(), primary.begin());
+    sum += r.transform.matrix().sum() + r.rssd + r.sensitivity.sum() + r.singular_values.sum();
+    sum += rp.transform.matrix().sum() + rp.rssd + S(rp.has_sensitivity ? 1 : 0) + S(r ? 1 : 0);
+    sum += so3_align(a.begin(), a.end(), b.begin()).transform.matrix().sum();
+    const V3 minus_p = -p, nearly = V3(-p + V3(S(0), S(1e-3), S(0)));
+    sum += so3_align(&w, &w + 1, &p).transform.matrix().sum() + so3_align(&p, &p + 1, &minus_p).rssd;
+    sum += so3_align(&p, &p + 1, &nearly).transform.matrix().sum();
+    const AlignResult<SE3<S>> rg = se3_align(a.begin(), a.end(), b.begin(), wa.begin());
+    const AlignResult<Sim3<S>> rs = sim3_align(a.begin(), a.end(), b.begin());
+    sum += rg.transform.matrix().sum() + rg.rssd + se3_align(a.begin(), a.end(), b.begin()).rssd;
+    sum += rs.transform.matrix().sum() + rs.rssd + sim3_align(a.begin(), a.end(), b.begin(), wa.begin()).rssd;
+    sum += S(se3_align(a.begin(), a.begin() + 2, b.begin()).status == AlignStatus::too_few ? 1 : 0);
   }
   if constexpr (std::is_floating_point<S>::value) {  // the standard distributions: real scalars only
     std::minstd_rand gen(7);

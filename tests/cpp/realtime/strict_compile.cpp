@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
+#include "chasles/align.hpp"
 #include "chasles/bspline.hpp"
 #include "chasles/chasles.hpp"
 #include "chasles/constants.hpp"
@@ -20,6 +21,7 @@
 #include "chasles/detail/assert.hpp"
 #include "chasles/detail/nearest_rotation.hpp"
 #include "chasles/detail/series.hpp"
+#include "chasles/detail/weights.hpp"
 #include "chasles/distance.hpp"
 #include "chasles/dynamics.hpp"
 #include "chasles/euler.hpp"
