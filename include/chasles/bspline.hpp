@@ -1,5 +1,5 @@
-// chasles: the uniform cumulative cubic B-spline on SO(3) and SE(3), with its
-// body velocity and body acceleration.
+// chasles: the uniform cumulative cubic B-spline on any group (SO(3), SE(3),
+// SO(2), SE(2), Sim(3), ...), with its body velocity and body acceleration.
 #pragma once
 
 #include <cstddef>
@@ -10,7 +10,11 @@
 
 #include "chasles/constants.hpp"
 #include "chasles/detail/assert.hpp"
+#include "chasles/lie_group.hpp"
+#include "chasles/se2.hpp"
 #include "chasles/se3.hpp"
+#include "chasles/sim3.hpp"
+#include "chasles/so2.hpp"
 #include "chasles/so3.hpp"
 #include "chasles/twist.hpp"
 
@@ -43,6 +47,11 @@ namespace chasles {
 // with its own exponential; the bracket is the derivative of Ad_{A_j^-1}),
 // with time derivatives Bt' = (dBt/du) / dt, Bt'' = (d^2Bt/du^2) / dt^2.
 // No difference quotient, no extra exp or log: three log, three exp.
+//
+// The group enters through exp, log, inverse, *, its adjoint and its ad:
+// Ad_{A^-1} x and [a, b] = ad_a b in closed form for SO(3) and SE(3) (below),
+// and as A.inverse().adjoint() x and G::ad(a) b for every other group, which
+// has its B-splines with no line of its own.
 
 /// The cumulative basis of the uniform cubic B-spline at u, and its first
 /// and second derivatives with respect to u: entries j = 0, 1, 2 are
@@ -71,7 +80,7 @@ inline CubicBSplineBasis<Scalar> cubic_bspline_basis(const Scalar& u) noexcept {
 /// A point of a B-spline: the element X, its body velocity (X^-1 X')^vee and
 /// body acceleration (the time derivative of the body velocity), in the
 /// tangent coordinates of the group (w for SO3; (v, w), linear part first,
-/// for SE3), per unit of time.
+/// for SE3; the group's tangent order for the others), per unit of time.
 template <typename Group>
 struct BSplinePoint {
   using Tangent = Eigen::Matrix<typename Group::Scalar, Group::DoF, 1>;
@@ -81,6 +90,18 @@ struct BSplinePoint {
 };
 
 namespace detail {
+
+/// Ad_{A^-1} x for any group.
+template <typename G>
+inline typename G::Tangent adjoint_inverse_times(const G& A, const typename G::Tangent& x) noexcept {
+  return A.inverse().adjoint() * x;
+}
+/// The Lie bracket [a, b] = ad_a b for any group.
+template <typename G>
+inline typename G::Tangent lie_bracket(const G* /*tag*/, const typename G::Tangent& a,
+                                       const typename G::Tangent& b) noexcept {
+  return G::ad(a) * b;
+}
 
 /// Ad_{A^-1} x for a rotation: R^T w.
 template <typename S>
@@ -94,12 +115,14 @@ inline Eigen::Matrix<S, 6, 1> adjoint_inverse_times(const SE3<S>& A, const Eigen
 }
 /// The Lie bracket of so(3): a x b.
 template <typename S>
-inline Eigen::Matrix<S, 3, 1> lie_bracket(const Eigen::Matrix<S, 3, 1>& a, const Eigen::Matrix<S, 3, 1>& b) noexcept {
+inline Eigen::Matrix<S, 3, 1> lie_bracket(const SO3<S>* /*tag*/, const Eigen::Matrix<S, 3, 1>& a,
+                                          const Eigen::Matrix<S, 3, 1>& b) noexcept {
   return a.cross(b);
 }
 /// The Lie bracket of se(3): ad_a b = (w_a x v_b + v_a x w_b, w_a x w_b).
 template <typename S>
-inline Eigen::Matrix<S, 6, 1> lie_bracket(const Eigen::Matrix<S, 6, 1>& a, const Eigen::Matrix<S, 6, 1>& b) noexcept {
+inline Eigen::Matrix<S, 6, 1> lie_bracket(const SE3<S>* /*tag*/, const Eigen::Matrix<S, 6, 1>& a,
+                                          const Eigen::Matrix<S, 6, 1>& b) noexcept {
   return Twist<S>(a).bracket(Twist<S>(b)).vector();
 }
 
@@ -118,7 +141,7 @@ inline RealOf<Scalar> real_value(const Scalar& x) noexcept {
 /// The cubic B-spline segment over the four control elements first[0..3]
 /// at u in [0, 1]: X(u) = X_0 exp(Bt_1 d_1) exp(Bt_2 d_2) exp(Bt_3 d_3),
 /// d_j = log(X_{j-1}^-1 X_j). `first` is any random-access iterator (a
-/// pointer, a std::vector or std::array iterator) to SO3 or SE3 elements.
+/// pointer, a std::vector or std::array iterator) to elements of a group.
 template <typename Iterator>
 inline auto cubic_bspline_segment(Iterator first,
                                   const typename std::iterator_traits<Iterator>::value_type::Scalar& u) noexcept {
@@ -154,7 +177,7 @@ inline auto cubic_bspline_segment_derivatives(
     out.velocity = detail::adjoint_inverse_times(A, out.velocity) + dv;
     // omega_j' = Ad_{A^-1} omega_{j-1}' + Bt_j'' d_j + [omega_j, Bt_j' d_j]
     out.acceleration = detail::adjoint_inverse_times(A, out.acceleration) + (b.second[j] * rate2) * d +
-                       detail::lie_bracket(out.velocity, dv);
+                       detail::lie_bracket(static_cast<const Group*>(nullptr), out.velocity, dv);
   }
   return out;
 }
@@ -252,5 +275,11 @@ template <typename Scalar>
 using SO3BSplineView = CubicBSplineView<SO3<Scalar>>;
 template <typename Scalar>
 using SE3BSplineView = CubicBSplineView<SE3<Scalar>>;
+template <typename Scalar>
+using SO2BSplineView = CubicBSplineView<SO2<Scalar>>;
+template <typename Scalar>
+using SE2BSplineView = CubicBSplineView<SE2<Scalar>>;
+template <typename Scalar>
+using Sim3BSplineView = CubicBSplineView<Sim3<Scalar>>;
 
 }  // namespace chasles

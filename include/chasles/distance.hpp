@@ -1,12 +1,54 @@
-// chasles: distances between rotations and between rigid motions.
+// chasles: distances between the elements of a group: the geodesic
+// distance of rotations (SO(2), SO(3)), and for the groups with Euclidean
+// parts (group_parts.hpp) the distances of the parts, kept apart.
 #pragma once
+
+#include <type_traits>
 
 #include <Eigen/Core>
 
+#include "chasles/group_parts.hpp"
+#include "chasles/lie_group.hpp"
 #include "chasles/se3.hpp"
 #include "chasles/so3.hpp"
 
 namespace chasles {
+
+/// The geodesic (bi-invariant Riemannian) distance between two elements of
+/// a rotation group, d(a, b) = |log(a^-1 b)|, in [0, pi]: on SO(2) the
+/// absolute angle of a^-1 b (SO3 has its own overload below, the same
+/// number from the angle). Symmetric, d(g a, g b) = d(a g, b g) = d(a, b).
+template <typename G, std::enable_if_t<detail::IsRotationGroup<G>::value, int> = 0>
+inline typename G::Scalar distance(const G& a, const G& b) noexcept {
+  using std::abs;
+  const typename G::Tangent x = (a.inverse() * b).log();
+  if constexpr (G::DoF == 1) {
+    return abs(x[0]);  // not sqrt(x^2), which underflows below 1e-154
+  } else {
+    return x.norm();
+  }
+}
+
+/// The distances of the parts of two elements of a group with Euclidean
+/// parts (GroupParts: SE(2), SE(3), Sim(3), SE_2(3)), as the vector
+///   (d(R_a, R_b), |block_1(b) - block_1(a)|, ..., |block_B(b) - block_B(a)|),
+/// the rotations' geodesic distance (the angle of R_a^-1 R_b, in [0, pi])
+/// and the Euclidean distance of each block of the Euclidean parts: on
+/// SE(2) (angle, |t_b - t_a|); on Sim(3) (angle, |t_b - t_a|,
+/// |log(s_b / s_a)|). These groups have no bi-invariant metric, so the
+/// parts are kept apart for the caller to weigh. Each is symmetric and
+/// unchanged by a rigid change of the fixed frame, d(g a, g b) = d(a, b)
+/// for g a rotation and a translation; a change of scale (Sim(3)) scales the
+/// translation distance with it. (SE3 has its own overload below, the
+/// same numbers as a struct.)
+template <typename G, std::enable_if_t<detail::HasParts<G>::value && !detail::IsRotationGroup<G>::value, int> = 0>
+inline Eigen::Matrix<typename G::Scalar, 1 + GroupParts<G>::B, 1> distance(const G& a, const G& b) noexcept {
+  using Parts = GroupParts<G>;
+  Eigen::Matrix<typename G::Scalar, 1 + Parts::B, 1> d;
+  d[0] = distance(Parts::rotation(a), Parts::rotation(b));
+  d.template tail<Parts::B>() = Parts::block_norms(typename Parts::Vector(Parts::vector(b) - Parts::vector(a)));
+  return d;
+}
 
 /// The geodesic (bi-invariant Riemannian) distance between two rotations:
 /// the angle of a^-1 b, in [0, pi],

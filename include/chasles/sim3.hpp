@@ -496,12 +496,15 @@ class Sim3 {
     out(6, 6) = Scalar(1);
     return out;
   }
-  /// The real value of a Scalar (its value for autodiff scalars).
-  static Real real_of(const Scalar& x) noexcept {
-    if constexpr (std::is_floating_point<Scalar>::value) {
+  /// The real value of a Scalar (its value for autodiff scalars, of autodiff
+  /// scalars of autodiff scalars too: the splines differentiate a Jacobian
+  /// once more, spline.hpp).
+  template <typename T>
+  static RealOf<T> real_of(const T& x) noexcept {
+    if constexpr (std::is_floating_point<T>::value) {
       return x;
     } else {
-      return x.value();
+      return real_of(x.value());
     }
   }
 

@@ -1,4 +1,5 @@
-// chasles: interpolating C2 splines through key rotations (SO3) and key poses (SE3).
+// chasles: interpolating C2 splines through the key elements of any group
+// (key rotations of SO3 and SO2, key poses of SE3 and SE2, similarities, ...).
 //
 // Key times t_0 < ... < t_{N-1}, key elements X_i (N >= 2). On segment i,
 // t in [t_i, t_{i+1}], with tau = t - t_i and h_i = t_{i+1} - t_i:
@@ -7,7 +8,8 @@
 //
 // a cubic in the local coordinates r = log(X_i^-1 X(t)), with r(0) = 0 and
 // r(h_i) = D_i = log(X_i^-1 X_{i+1}), so X passes through every key. The body
-// velocity V = (X^-1 X')^vee (w for SO3, the twist (v, w) for SE3) and the body
+// velocity V = (X^-1 X')^vee (w for SO3, the twist (v, w) for SE3, in the
+// order of the group's tangent) and the body
 // acceleration V' are
 //
 //   V = Jr(r) r',     V' = Jr(r) r'' + (d/dt Jr(r)) r',
@@ -28,7 +30,7 @@
 //   RotationSpline uses (its interior equations are the ones above).
 // This is the construction of scipy.spatial.transform.RotationSpline
 // (Kolesnikov, "Smooth attitude interpolation", 2019, eqs. for the angular
-// rate and acceleration), written for any of the two groups. The system is
+// rate and acceleration), written for any group. The system is
 // block-tridiagonal in the w_i with a right-hand side that depends on w
 // through n only: the blocks are factored once (block Thomas algorithm) and
 // the fixed point w <- solve(g - n(w)) is iterated from w_i = chord rates
@@ -48,7 +50,17 @@
 // largest; caller storage lets real-time code fit into buffers reserved once
 // (std::vector::reserve, static arrays) and the Python binding into its own
 // vectors, and nothing here allocates. Fitting costs O(N) per iteration
-// (D x D blocks, D = 3 or 6), evaluation O(log N) (binary search) plus one exp.
+// (D x D blocks, D the group's DoF), evaluation O(log N) (binary search) plus one exp.
+//
+// The group enters through exp, log, inverse, * and its right Jacobian and
+// its inverse, and the term n(r, r') = (d/dt Jr(r)) r' of the acceleration:
+// in closed form for SO(3) and SE(3) (Kolesnikov's coefficients, below), and
+// for every other group from its right Jacobian by forward differentiation:
+// Jr evaluated at the dual number r + e r' (e^2 = 0; Eigen's AutoDiffScalar
+// with one derivative, no allocation) gives Jr(r) + e (d/dt Jr(r)), so that
+// Jr(r + e r') (r' + e r'') = V + e V', exactly (no difference quotient), at
+// about twice the cost of Jr. A new group has its splines with no line of
+// its own.
 // The evaluation's parts are free functions too (spline_segment_index,
 // spline_offset, spline_segment_element, spline_segment_sample), for storage
 // that is not three arrays of these types (the Python binding reads numpy's).
@@ -73,11 +85,16 @@
 #include <Eigen/Core>
 #include <Eigen/LU>
 
+#include <unsupported/Eigen/AutoDiff>
 #include "chasles/constants.hpp"
 #include "chasles/detail/approx.hpp"
 #include "chasles/detail/assert.hpp"
+
 #include "chasles/jacobians.hpp"
+#include "chasles/se2.hpp"
 #include "chasles/se3.hpp"
+#include "chasles/sim3.hpp"
+#include "chasles/so2.hpp"
 #include "chasles/so3.hpp"
 
 namespace chasles {
@@ -131,7 +148,7 @@ template <typename Group>
 struct SplineSample {
   using Tangent = Eigen::Matrix<typename Group::Scalar, Group::DoF, 1>;
   Group element;
-  Tangent velocity;  ///< (X^-1 X')^vee: w (SO3) or the twist (v, w) (SE3)
+  Tangent velocity;  ///< (X^-1 X')^vee: w (SO3), the twist (v, w) (SE3), in the group's tangent
   Tangent acceleration;  ///< d/dt of velocity
 };
 
@@ -273,25 +290,57 @@ inline void spline_rates(const SE3<Scalar>* /*tag*/, const Eigen::Matrix<Scalar,
   acceleration = detail::stack<Scalar>(V3(Rt * p2 - w.cross(v)), w1);
 }
 
-template <typename Scalar>
-inline Eigen::Matrix<Scalar, 3, 3> spline_jr(const SO3<Scalar>* /*tag*/,
-                                             const Eigen::Matrix<Scalar, 3, 1>& d) noexcept {
-  return so3_right_jacobian(d);
+/// The group G over another scalar: SE2<double> -> SE2<T>.
+template <typename G, typename T>
+struct WithScalar;
+template <template <typename> class G, typename S, typename T>
+struct WithScalar<G<S>, T> {
+  using type = G<T>;
+};
+
+/// Body velocity and acceleration of E(t) = exp(r(t)) on any group from r, r', r'':
+///   V = Jr(r) r',  V' = Jr(r) r'' + (d/dt Jr(r)) r',
+/// both at once from Jr at the dual number r + e r' applied to r' + e r''
+/// (see the file comment), for any group (SO3 and SE3 use their closed forms above).
+template <typename Group>
+inline void spline_rates_dual(const Eigen::Matrix<typename Group::Scalar, Group::DoF, 1>& r,
+                              const Eigen::Matrix<typename Group::Scalar, Group::DoF, 1>& d1,
+                              const Eigen::Matrix<typename Group::Scalar, Group::DoF, 1>& d2,
+                              Eigen::Matrix<typename Group::Scalar, Group::DoF, 1>& velocity,
+                              Eigen::Matrix<typename Group::Scalar, Group::DoF, 1>& acceleration) noexcept {
+  using Scalar = typename Group::Scalar;
+  using Dual = Eigen::AutoDiffScalar<Eigen::Matrix<Scalar, 1, 1>>;
+  using DualGroup = typename WithScalar<Group, Dual>::type;
+  using DualTangent = Eigen::Matrix<Dual, Group::DoF, 1>;
+  using Derivative = Eigen::Matrix<Scalar, 1, 1>;
+  DualTangent x, rate;
+  for (int k = 0; k < Group::DoF; ++k) {
+    x[k] = Dual(r[k], Derivative(d1[k]));
+    rate[k] = Dual(d1[k], Derivative(d2[k]));
+  }
+  const DualTangent v = DualGroup::right_jacobian(x) * rate;
+  for (int k = 0; k < Group::DoF; ++k) {
+    velocity[k] = v[k].value();
+    acceleration[k] = v[k].derivatives()[0];
+  }
 }
-template <typename Scalar>
-inline Eigen::Matrix<Scalar, 3, 3> spline_jr_inv(const SO3<Scalar>* /*tag*/,
-                                                 const Eigen::Matrix<Scalar, 3, 1>& d) noexcept {
-  return so3_right_jacobian_inverse(d);
+template <typename Group>
+inline void spline_rates(const Group* /*tag*/, const Eigen::Matrix<typename Group::Scalar, Group::DoF, 1>& r,
+                         const Eigen::Matrix<typename Group::Scalar, Group::DoF, 1>& d1,
+                         const Eigen::Matrix<typename Group::Scalar, Group::DoF, 1>& d2,
+                         Eigen::Matrix<typename Group::Scalar, Group::DoF, 1>& velocity,
+                         Eigen::Matrix<typename Group::Scalar, Group::DoF, 1>& acceleration) noexcept {
+  spline_rates_dual<Group>(r, d1, d2, velocity, acceleration);
 }
-template <typename Scalar>
-inline Eigen::Matrix<Scalar, 6, 6> spline_jr(const SE3<Scalar>* /*tag*/,
-                                             const Eigen::Matrix<Scalar, 6, 1>& d) noexcept {
-  return se3_right_jacobian(d);
+
+/// Jr(d) and Jr(d)^-1 of the group.
+template <typename Group>
+inline typename Group::AdjointMatrix spline_jr(const Group* /*tag*/, const typename Group::Tangent& d) noexcept {
+  return Group::right_jacobian(d);
 }
-template <typename Scalar>
-inline Eigen::Matrix<Scalar, 6, 6> spline_jr_inv(const SE3<Scalar>* /*tag*/,
-                                                 const Eigen::Matrix<Scalar, 6, 1>& d) noexcept {
-  return se3_right_jacobian_inverse(d);
+template <typename Group>
+inline typename Group::AdjointMatrix spline_jr_inv(const Group* /*tag*/, const typename Group::Tangent& d) noexcept {
+  return Group::right_jacobian_inverse(d);
 }
 
 }  // namespace detail
@@ -540,5 +589,11 @@ template <typename Scalar>
 using SO3Spline = Spline<SO3<Scalar>>;
 template <typename Scalar>
 using SE3Spline = Spline<SE3<Scalar>>;
+template <typename Scalar>
+using SO2Spline = Spline<SO2<Scalar>>;
+template <typename Scalar>
+using SE2Spline = Spline<SE2<Scalar>>;
+template <typename Scalar>
+using Sim3Spline = Spline<Sim3<Scalar>>;
 
 }  // namespace chasles

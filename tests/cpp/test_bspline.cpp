@@ -1,4 +1,9 @@
-// bspline.hpp: the uniform cumulative cubic B-spline on SO(3) and SE(3).
+// bspline.hpp: the uniform cumulative cubic B-spline on SO(3) and SE(3),
+// and through the same code on SO(2), SE(2) and Sim(3) (every typed test
+// below runs on the five groups; their oracle exp is the long double Taylor
+// exponential of the hat matrix, their oracle log the group's own log in
+// long double, itself tested against 50-digit references in test_groups and
+// test_sim3).
 //
 // - X(t) against an independent long double evaluation of the explicit
 //   formula X_i prod_j exp(Bt_j log(X_{j-1}^-1 X_j)), written here from the
@@ -30,7 +35,10 @@ namespace {
 
 using chasles::BSplinePoint;
 using chasles::CubicBSplineView;
+using chasles::SE2;
 using chasles::SE3;
+using chasles::Sim3;
+using chasles::SO2;
 using chasles::SO3;
 using ld = long double;
 
@@ -55,6 +63,38 @@ struct GroupOf<SE3<S>> {
   static const char* name() { return "SE3"; }
 };
 
+/// The groups written only over the generic interface: the oracle exp is
+/// exp_taylor of the hat matrix (long double), the oracle log the group's
+/// log in long double.
+template <template <typename> class Group, typename S>
+struct GenericGroupOf {
+  using G = Group<S>;
+  using GL = Group<ld>;
+  static constexpr int dof = G::DoF;
+  static auto matrix(const G& g) { return g.matrix(); }
+  template <typename T>
+  static auto ref_exp(const T& x) {
+    const auto X = GL::hat(typename GL::Tangent(x));
+    return chasles_ref::exp_taylor<decltype(X)::RowsAtCompileTime>(X);
+  }
+  template <typename M>
+  static typename GL::Tangent ref_log(const M& m) {
+    return GL::from_matrix_unchecked(m).log();
+  }
+};
+template <typename S>
+struct GroupOf<SO2<S>> : GenericGroupOf<SO2, S> {
+  static const char* name() { return "SO2"; }
+};
+template <typename S>
+struct GroupOf<SE2<S>> : GenericGroupOf<SE2, S> {
+  static const char* name() { return "SE2"; }
+};
+template <typename S>
+struct GroupOf<Sim3<S>> : GenericGroupOf<Sim3, S> {
+  static const char* name() { return "Sim3"; }
+};
+
 template <typename G>
 class BSpline : public ::testing::Test {};
 struct GroupName {
@@ -64,7 +104,8 @@ struct GroupName {
     return std::string(GroupOf<G>::name()) + (std::is_same<S, float>::value ? "f" : "d");
   }
 };
-using Groups = ::testing::Types<SO3<float>, SO3<double>, SE3<float>, SE3<double>>;
+using Groups = ::testing::Types<SO3<float>, SO3<double>, SE3<float>, SE3<double>, SO2<float>, SO2<double>, SE2<float>,
+                                SE2<double>, Sim3<float>, Sim3<double>>;
 TYPED_TEST_SUITE(BSpline, Groups, GroupName);
 
 template <typename G>
@@ -229,7 +270,13 @@ void check_one_parameter_subgroup(const TangentOf<G>& xi) {
 TYPED_TEST(BSpline, OneParameterSubgroupIsThatMotionAtConstantVelocity) {
   using G = TypeParam;
   using S = typename G::Scalar;
-  if constexpr (G::DoF == 3) {
+  if constexpr (G::DoF == 1) {
+    check_one_parameter_subgroup<G>(TangentOf<G>(S(1.7)));
+  } else if constexpr (G::DoF == 7) {
+    TangentOf<G> x;
+    x << S(0.4), S(-1), S(0.3), S(0.8), S(-1.1), S(0.5), S(0.6);  // with a steady scaling
+    check_one_parameter_subgroup<G>(x);
+  } else if constexpr (G::DoF == 3) {
     check_one_parameter_subgroup<G>(TangentOf<G>(S(0.8), S(-1.1), S(0.5)));
   } else {
     // A screw motion of pitch 0.37 about an axis off the origin, and a pure translation.
@@ -392,10 +439,10 @@ void check_against_autodiff(unsigned seed) {
         derivative(i, j) = M(i, j).derivatives()[0];
       }
     Eigen::Matrix<double, G::DoF, 1> v;
-    if constexpr (G::DoF == 3)
+    if constexpr (std::is_same<G, SO3<double>>::value)
       v = SO3<double>::vee(value.transpose() * derivative);
     else
-      v = SE3<double>::vee(value.inverse() * derivative);
+      v = G::vee(value.inverse() * derivative);
     Eigen::Matrix<double, G::DoF, 1> a, v_ad;
     for (int k = 0; k < G::DoF; ++k) {
       a[k] = pa.velocity[k].derivatives()[0];
@@ -420,6 +467,14 @@ TEST(BSplineAutodiff, SO3RatesAreTheDerivativesInTime) {
 TEST(BSplineAutodiff, SE3RatesAreTheDerivativesInTime) {
   check_against_autodiff<SE3<double>>(31);
   check_against_autodiff<SE3<double>>(37);
+}
+
+TEST(BSplineAutodiff, SO2SE2AndSim3RatesAreTheDerivativesInTime) {
+  check_against_autodiff<SO2<double>>(41);
+  check_against_autodiff<SE2<double>>(43);
+  check_against_autodiff<SE2<double>>(47);
+  check_against_autodiff<Sim3<double>>(53);
+  check_against_autodiff<Sim3<double>>(59);
 }
 
 }  // namespace

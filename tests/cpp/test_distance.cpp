@@ -1,19 +1,34 @@
 // SO3::angle and the distances of distance.hpp against the long double
 // reference (support/reference.hpp: Mercator series near 0, Horn's
 // eigenvector elsewhere), near 0, near pi and at pi, and their invariances.
+//
+// The distances written once over the groups (DistanceOfEveryGroup, over
+// SO2, SE2, SO3, SE3, Sim3 and both scalars): each part against a long
+// double reference computed from the group's own accessors (the angle of
+// R_a^-1 R_b from its quaternion or its (cos, sin), the Euclidean distance
+// of the translations, |log(s_b / s_a)|), symmetric, zero at equality,
+// bi-invariant for the rotation groups and invariant under a rigid change
+// of the fixed frame for the others (a change of scale scales Sim(3)'s
+// translation distance and nothing else).
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
 #include <chasles/distance.hpp>
+#include <chasles/se2.hpp>
 #include <chasles/se3.hpp>
+#include <chasles/sim3.hpp>
+#include <chasles/so2.hpp>
 #include <chasles/so3.hpp>
 
+#include "support/all_groups.hpp"
 #include "support/reference.hpp"
 #include "support/scalar_types.hpp"
 
@@ -175,6 +190,119 @@ TEST(DistanceAutodiff, AngleHasTheRightDerivativeAndAFiniteOneAtTheIdentity) {
   const AD a0 = SO3<AD>::exp(V3(zero * n[0], zero * n[1], zero * n[2])).angle();
   EXPECT_EQ(a0.value(), 0.0);
   EXPECT_TRUE(std::isfinite(a0.derivatives()[0]));
+}
+
+// ---- every group ------------------------------------------------------------
+
+template <typename G>
+class DistanceOfEveryGroup : public ::testing::Test {};
+TYPED_TEST_SUITE(DistanceOfEveryGroup, chasles_test::AllGroups, chasles_test::AllGroupsName);
+
+/// The angle of R_a^-1 R_b in long double: |atan2| of the complex quotient (SO2), 2 atan2(|q_v|, |q_w|) (SO3).
+template <typename S>
+ld reference_angle(const chasles::SO2<S>& a, const chasles::SO2<S>& b) {
+  const ld ca = a.complex()[0], sa = a.complex()[1], cb = b.complex()[0], sb = b.complex()[1];
+  return std::fabs(std::atan2(ca * sb - sa * cb, ca * cb + sa * sb));
+}
+template <typename S>
+ld reference_angle(const SO3<S>& a, const SO3<S>& b) {
+  const Eigen::Matrix<ld, 3, 3> M = a.matrix().template cast<ld>().transpose() * b.matrix().template cast<ld>();
+  const Eigen::Quaternion<ld> q(M);
+  return 2 * std::atan2(q.vec().norm(), std::fabs(q.w()));
+}
+
+/// The reference distances, part by part, from the group's accessors.
+template <typename G>
+std::vector<ld> reference_distance(const G& a, const G& b) {
+  using S = typename G::Scalar;
+  if constexpr (std::is_same<G, chasles::SO2<S>>::value || std::is_same<G, SO3<S>>::value) {
+    return {reference_angle(a, b)};
+  } else {
+    std::vector<ld> d{reference_angle(a.rotation(), b.rotation()),
+                      (b.translation().template cast<ld>() - a.translation().template cast<ld>()).norm()};
+    if constexpr (std::is_same<G, chasles::Sim3<S>>::value)
+      d.push_back(std::fabs(std::log(ld(b.scale())) - std::log(ld(a.scale()))));
+    return d;
+  }
+}
+
+/// The library's distance as a vector, whatever its type.
+template <typename S>
+std::vector<ld> as_vector(const S& d) {
+  return {ld(d)};
+}
+template <typename S>
+std::vector<ld> as_vector(const chasles::SE3Distance<S>& d) {
+  return {ld(d.angle), ld(d.translation)};
+}
+template <typename S, int N>
+std::vector<ld> as_vector(const Eigen::Matrix<S, N, 1>& d) {
+  std::vector<ld> out;
+  for (int i = 0; i < N; ++i) out.push_back(ld(d[i]));
+  return out;
+}
+
+template <typename G>
+std::vector<ld> library_distance(const G& a, const G& b) {
+  return as_vector(chasles::distance(a, b));
+}
+
+TYPED_TEST(DistanceOfEveryGroup, EachPartMatchesTheLongDoubleReference) {
+  using G = TypeParam;
+  using S = typename G::Scalar;
+  const ld eps = std::numeric_limits<S>::epsilon();
+  std::mt19937_64 gen(41);
+  for (int trial = 0; trial < 200; ++trial) {
+    const double spread = trial % 3 == 0 ? 1e-3 : (trial % 3 == 1 ? 0.5 : 1.5);
+    const G a = G::exp(chasles_test::normal_tangent<G>(gen, 1.5));
+    const G b = a * G::exp(chasles_test::normal_tangent<G>(gen, spread));
+    const std::vector<ld> d = library_distance(a, b), ref = reference_distance(a, b);
+    ASSERT_EQ(d.size(), ref.size());
+    for (std::size_t k = 0; k < d.size(); ++k)
+      EXPECT_NEAR(double(d[k]), double(ref[k]), double(32 * eps * std::max(ld(1), ref[k]))) << trial << " part " << k;
+    const std::vector<ld> back = library_distance(b, a);  // symmetric, to rounding
+    for (std::size_t k = 0; k < d.size(); ++k)
+      EXPECT_NEAR(double(back[k]), double(d[k]), double(8 * eps * std::max(ld(1), d[k]))) << trial << " part " << k;
+    for (const ld x : library_distance(a, a)) EXPECT_LE(x, 8 * eps);
+  }
+}
+
+TYPED_TEST(DistanceOfEveryGroup, IsInvariantUnderAChangeOfTheFixedFrame) {
+  using G = TypeParam;
+  using S = typename G::Scalar;
+  constexpr bool rotation_group = std::is_same<G, chasles::SO2<S>>::value || std::is_same<G, SO3<S>>::value;
+  const ld eps = std::numeric_limits<S>::epsilon();
+  std::mt19937_64 gen(42);
+  for (int trial = 0; trial < 100; ++trial) {
+    const G a = G::exp(chasles_test::normal_tangent<G>(gen, 1.0)),
+            b = G::exp(chasles_test::normal_tangent<G>(gen, 1.0));
+    typename G::Tangent x = chasles_test::normal_tangent<G>(gen, 1.0);
+    if constexpr (std::is_same<G, chasles::Sim3<S>>::value) x[6] = S(0);  // a rigid g
+    const G g = G::exp(x);
+    const std::vector<ld> d = library_distance(a, b), left = library_distance(G(g * a), G(g * b));
+    const ld scale = 1 + std::max(ld(g.matrix().template cast<ld>().cwiseAbs().maxCoeff()),
+                                  ld(a.matrix().template cast<ld>().cwiseAbs().maxCoeff()));
+    for (std::size_t k = 0; k < d.size(); ++k)
+      EXPECT_NEAR(double(left[k]), double(d[k]), double(64 * eps * scale)) << k;
+    if constexpr (rotation_group) {  // bi-invariant
+      EXPECT_NEAR(double(library_distance(G(a * g), G(b * g))[0]), double(d[0]), double(64 * eps));
+    }
+    if constexpr (std::is_same<G, chasles::Sim3<S>>::value) {
+      // A change of scale c: the angle and |log(s_b / s_a)| are kept, the translation distance scales by c.
+      const S c = S(2.5);
+      const G scaling(SO3<S>(), Eigen::Matrix<S, 3, 1>::Zero(), c);
+      const std::vector<ld> scaled = library_distance(G(scaling * a), G(scaling * b));
+      EXPECT_NEAR(double(scaled[0]), double(d[0]), double(64 * eps));
+      EXPECT_NEAR(double(scaled[1]), double(ld(c) * d[1]), double(64 * eps * (1 + d[1])));
+      EXPECT_NEAR(double(scaled[2]), double(d[2]), double(64 * eps));
+    }
+  }
+}
+
+TEST(DistanceOfSO2, TinyAnglesAreNotLost) {
+  // |theta| rather than sqrt(theta^2), which underflows to 0 below 1e-154 in double.
+  const chasles::SO2<double> a = chasles::SO2<double>::exp(1e-200), b = chasles::SO2<double>::exp(-2e-200);
+  EXPECT_NEAR(chasles::distance(a, b), 3e-200, 1e-215);
 }
 
 }  // namespace

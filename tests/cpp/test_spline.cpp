@@ -6,6 +6,14 @@
 // SO3 spline; the Jacobian coefficients agree on both sides of their series
 // cutoff and with long double; autodiff through the evaluation gives the
 // velocity; bad inputs are reported.
+//
+// Every group through the same code: SO2, SE2 and Sim3 splines pass through
+// their keys with the rates of central differences, C2 at the keys (the
+// acceleration's term (d/dt Jr) r' by forward differentiation of Jr); two
+// keys give the geodesic and keys on a one-parameter subgroup that motion;
+// that term equals the closed forms of SO3 and SE3 on both sides of their
+// series cutoff; the SO2 spline is the natural cubic spline of the
+// unwrapped angles (a long double tridiagonal solve).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -26,7 +34,10 @@
 namespace {
 
 using chasles::fit_spline;
+using chasles::SE2;
 using chasles::SE3;
+using chasles::Sim3;
+using chasles::SO2;
 using chasles::SO3;
 using chasles::Spline;
 using chasles::SplineEnds;
@@ -98,15 +109,22 @@ std::vector<SE3<double>> random_walk(std::mt19937_64& gen, int n) {
   }
   return out;
 }
-template <typename S>
-std::vector<SO3<S>> cast_all(const std::vector<SO3<double>>& in) {
-  std::vector<SO3<S>> out;
-  for (const auto& x : in) out.push_back(x.template cast<S>());
+/// The other groups: a start exp(N(0, 1) per coordinate), steps exp(N(0, 0.35^2) per coordinate).
+template <typename Group>
+std::vector<Group> random_walk(std::mt19937_64& gen, int n) {
+  std::normal_distribution<double> start(0, 1.0), step(0, 0.35);
+  const auto tangent = [&](std::normal_distribution<double>& d) {
+    typename Group::Tangent x;
+    for (int k = 0; k < Group::DoF; ++k) x[k] = d(gen);
+    return x;
+  };
+  std::vector<Group> out{Group::exp(tangent(start))};
+  for (int i = 1; i < n; ++i) out.push_back(out.back() * Group::exp(tangent(step)));
   return out;
 }
-template <typename S>
-std::vector<SE3<S>> cast_all(const std::vector<SE3<double>>& in) {
-  std::vector<SE3<S>> out;
+template <typename S, template <typename> class G>
+std::vector<G<S>> cast_all(const std::vector<G<double>>& in) {
+  std::vector<G<S>> out;
   for (const auto& x : in) out.push_back(x.template cast<S>());
   return out;
 }
@@ -176,6 +194,9 @@ void check_keys_and_differences() {
 
 TYPED_TEST(SplineTest, SO3ThroughKeysDifferencesC2) { check_keys_and_differences<TypeParam, SO3>(); }
 TYPED_TEST(SplineTest, SE3ThroughKeysDifferencesC2) { check_keys_and_differences<TypeParam, SE3>(); }
+TYPED_TEST(SplineTest, SO2ThroughKeysDifferencesC2) { check_keys_and_differences<TypeParam, SO2>(); }
+TYPED_TEST(SplineTest, SE2ThroughKeysDifferencesC2) { check_keys_and_differences<TypeParam, SE2>(); }
+TYPED_TEST(SplineTest, Sim3ThroughKeysDifferencesC2) { check_keys_and_differences<TypeParam, Sim3>(); }
 
 TYPED_TEST(SplineTest, ChordEndsHaveTheFirstAndLastSegmentsRates) {
   using S = TypeParam;
@@ -220,6 +241,9 @@ void check_geodesic() {
 TYPED_TEST(SplineTest, TwoKeysGiveTheGeodesic) {
   check_geodesic<TypeParam, SO3>();
   check_geodesic<TypeParam, SE3>();
+  check_geodesic<TypeParam, SO2>();
+  check_geodesic<TypeParam, SE2>();
+  check_geodesic<TypeParam, Sim3>();
 }
 
 template <typename S, template <typename> class G>
@@ -254,6 +278,115 @@ void check_screw() {
 TYPED_TEST(SplineTest, KeysOnAScrewMotionGiveThatScrewMotion) {
   check_screw<TypeParam, SO3>();
   check_screw<TypeParam, SE3>();
+  check_screw<TypeParam, SO2>();
+  check_screw<TypeParam, SE2>();
+  check_screw<TypeParam, Sim3>();
+}
+
+// The term of the acceleration by forward differentiation of Jr equals the
+// closed forms of SO3 and SE3 (Kolesnikov's coefficients), on both sides of
+// their series cutoff (|r| below and above 2).
+template <template <typename> class G>
+void check_dual_rates_against_closed_forms() {
+  using Group = G<double>;
+  using T = Eigen::Matrix<double, Group::DoF, 1>;
+  std::mt19937_64 gen(17);
+  std::normal_distribution<double> normal(0, 1);
+  for (const double size : {1e-6, 0.3, 1.5, 2.5, 3.1}) {
+    for (int trial = 0; trial < 20; ++trial) {
+      T r, r1, r2;
+      for (int k = 0; k < Group::DoF; ++k) {
+        r[k] = normal(gen);
+        r1[k] = normal(gen);
+        r2[k] = normal(gen);
+      }
+      r *= size / r.template tail<3>().norm();  // the rotation angle |w| = size
+      T v, a, v_dual, a_dual;
+      chasles::detail::spline_rates(static_cast<const Group*>(nullptr), r, r1, r2, v, a);
+      chasles::detail::spline_rates_dual<Group>(r, r1, r2, v_dual, a_dual);
+      const double scale = 1 + r.norm() * (1 + r1.norm()) * (1 + r1.norm() + r2.norm());
+      EXPECT_LT((v - v_dual).norm(), 64 * std::numeric_limits<double>::epsilon() * scale) << size;
+      EXPECT_LT((a - a_dual).norm(), 64 * std::numeric_limits<double>::epsilon() * scale) << size;
+    }
+  }
+}
+TEST(SplineDualRates, EqualTheClosedFormsOfSO3AndSE3) {
+  check_dual_rates_against_closed_forms<SO3>();
+  check_dual_rates_against_closed_forms<SE3>();
+}
+
+// SO(2) is commutative (Jr = 1): its spline is the classical cubic spline of
+// the unwrapped angles theta_0 + sum_j log(X_j^-1 X_{j+1}), natural or with
+// the chord slopes at the ends; solved here in long double as a tridiagonal
+// system in the slopes m_i (2 h_{k-1}^-1 m_{k-1} + 4 (h_{k-1}^-1 + h_k^-1) m_k
+// + 2 h_k^-1 m_{k+1} = 6 (D_{k-1} / h_{k-1}^2 + D_k / h_k^2)).
+TEST(SplineSO2, IsTheCubicSplineOfTheUnwrappedAngles) {
+  using LD = long double;
+  std::mt19937_64 gen(23);
+  const int n = 9;
+  const std::vector<double> times = random_times<double>(gen, n);
+  const std::vector<SO2<double>> keys = random_walk<SO2<double>>(gen, n);
+  for (SplineEnds ends : {SplineEnds::natural, SplineEnds::chord}) {
+    const Fitted<SO2<double>> f(times, keys, ends);
+    ASSERT_EQ(f.fit.status, SplineStatus::ok);
+    std::vector<LD> h(n - 1), D(n - 1), theta(n);
+    theta[0] = keys[0].angle();
+    for (int i = 0; i + 1 < n; ++i) {
+      h[i] = LD(times[i + 1]) - LD(times[i]);
+      D[i] = (keys[i].inverse() * keys[i + 1]).angle();
+      theta[i + 1] = theta[i] + D[i];
+    }
+    // Rows a_i m_{i-1} + b_i m_i + c_i m_{i+1} = d_i, solved by the Thomas algorithm.
+    std::vector<LD> a(n, 0), b(n, 0), c(n, 0), d(n, 0), m(n);
+    for (int i = 0; i < n; ++i) {
+      const bool first = i == 0, last = i == n - 1;
+      if ((first || last) && ends == SplineEnds::chord) {
+        b[i] = 1;
+        d[i] = first ? D[0] / h[0] : D[n - 2] / h[n - 2];
+        continue;
+      }
+      if (!first) {
+        a[i] = 2 / h[i - 1];
+        b[i] += 4 / h[i - 1];
+        d[i] += 6 * D[i - 1] / (h[i - 1] * h[i - 1]);
+      }
+      if (!last) {
+        c[i] = 2 / h[i];
+        b[i] += 4 / h[i];
+        d[i] += 6 * D[i] / (h[i] * h[i]);
+      }
+    }
+    for (int i = 1; i < n; ++i) {
+      const LD w = a[i] / b[i - 1];
+      b[i] -= w * c[i - 1];
+      d[i] -= w * d[i - 1];
+    }
+    m[n - 1] = d[n - 1] / b[n - 1];
+    for (int i = n - 2; i >= 0; --i) m[i] = (d[i] - c[i] * m[i + 1]) / b[i];
+    // The Hermite cubic of each segment, its value and its first two derivatives.
+    std::uniform_real_distribution<double> u(times.front(), times.back());
+    for (int k = 0; k < 50; ++k) {
+      const double t = u(gen);
+      int i = 0;
+      while (i + 2 < n && times[i + 1] <= t) ++i;
+      const LD s = (LD(t) - LD(times[i])) / h[i], hh = h[i];
+      const LD h00 = 2 * s * s * s - 3 * s * s + 1, h10 = s * s * s - 2 * s * s + s, h01 = -2 * s * s * s + 3 * s * s,
+               h11 = s * s * s - s * s;
+      const LD value = h00 * theta[i] + h10 * hh * m[i] + h01 * theta[i + 1] + h11 * hh * m[i + 1];
+      const LD slope = ((6 * s * s - 6 * s) * theta[i] + (3 * s * s - 4 * s + 1) * hh * m[i] +
+                        (-6 * s * s + 6 * s) * theta[i + 1] + (3 * s * s - 2 * s) * hh * m[i + 1]) /
+                       hh;
+      const LD curvature = ((12 * s - 6) * theta[i] + (6 * s - 4) * hh * m[i] + (-12 * s + 6) * theta[i + 1] +
+                            (6 * s - 2) * hh * m[i + 1]) /
+                           (hh * hh);
+      const SplineSample<SO2<double>> x = f.spline()(t);
+      const LD err = std::remainder(LD(x.element.angle()) - value, 2 * std::acos(LD(-1)));
+      const double eps = std::numeric_limits<double>::epsilon();
+      EXPECT_LT(std::fabs(double(err)), 64 * eps * (1 + std::fabs(double(value)))) << t;
+      EXPECT_NEAR(x.velocity[0], double(slope), 256 * eps * (1 + std::fabs(double(slope)))) << t;
+      EXPECT_NEAR(x.acceleration[0], double(curvature), 1024 * eps * (1 + std::fabs(double(curvature)))) << t;
+    }
+  }
 }
 
 TYPED_TEST(SplineTest, SE3OfPureRotationsIsTheSO3Spline) {

@@ -54,6 +54,66 @@ typename G::Scalar exercise_group(const typename G::Tangent& x, const typename G
   return sum;
 }
 
+/// What is written once over the groups (mean.hpp, distance.hpp,
+/// random.hpp, spline.hpp, bspline.hpp) for the group G and the elements
+/// exp(x), exp(y); returns a checksum.
+template <typename G>
+typename G::Scalar exercise_families(const typename G::Tangent& x, const typename G::Tangent& y) noexcept {
+  using namespace chasles;
+  using S = typename G::Scalar;
+  using T = typename G::Tangent;
+  using M = typename G::AdjointMatrix;
+  const G g = G::exp(x), h = G::exp(y), e = G::identity();
+  const std::array<G, 3> X{g, h, G::exp(T(x * S(0.2)))};
+  const std::array<S, 3> ws{S(1), S(2), S(0.5)};
+  const MeanResult<G> m = geodesic_mean(X.begin(), X.end(), ws.begin());
+  const MeanResult<G> m1 = geodesic_mean(X.begin(), X.end(), 1);
+  S sum = m.mean.matrix().sum() + S(m.iterations) + S(m.converged ? 1 : 0) + m1.mean.matrix().sum();
+  sum += chordal_mean(X.begin(), X.end()).matrix().sum() + chordal_mean(X.begin(), X.end(), ws.begin()).matrix().sum();
+  sum += S(mean_weights_valid(X.begin(), X.end(), ws.begin()) ? 1 : 0);
+  const auto d = distance(g, h);  // a Scalar (rotation groups) or the parts' vector
+  if constexpr (std::is_same<std::decay_t<decltype(d)>, S>::value) {
+    sum += d;
+  } else {
+    sum += d.sum();
+  }
+  sum += gaussian_from_normals(g, M(M::Identity()), y).matrix().sum();
+  using Parts = GroupParts<G>;
+  using Rotation = typename Parts::Rotation;
+  const typename Parts::Vector low = Parts::Vector::Constant(S(-1)), high = Parts::Vector::Constant(S(2));
+  sum += element_from_uniforms<G>(Eigen::Matrix<S, UniformRotation<Rotation>::U, 1>::Constant(S(0.3)),
+                                  Parts::Vector::Constant(S(0.6)), low, high)
+             .matrix()
+             .sum();
+  if constexpr (std::is_floating_point<S>::value) {  // the standard distributions: real scalars only
+    std::minstd_rand gen(11);
+    sum += random_uniform<Rotation>(gen).matrix().sum() + random_gaussian(gen, g, M(M::Identity())).matrix().sum();
+    if constexpr (Parts::K > 0) sum += random_pose<G>(gen, low, high).matrix().sum();
+  }
+  // Splines over caller storage.
+  const std::array<S, 3> ts{S(0), S(0.5), S(1.25)};
+  std::array<SplineSegment<G>, 2> segments;
+  std::array<SplineWork<G>, 3> work;
+  const SplineFit natural = fit_spline(3, ts.data(), X.data(), segments.data(), work.data());
+  const SplineFit chord = fit_spline(3, ts.data(), X.data(), segments.data(), work.data(), SplineEnds::chord);
+  sum += S(natural.iterations + chord.iterations);
+  const Spline<G> spline(3, ts.data(), X.data(), segments.data());
+  const SplineSample<G> at = spline(S(0.7));
+  sum += at.element.matrix().sum() + at.velocity.sum() + at.acceleration.sum() + spline.element(S(2)).matrix().sum();
+  T rate, acceleration;
+  spline_body_rates<G>(x, T(y * S(0.5)), T(x * S(-1)), rate, acceleration);
+  sum += rate.sum() + acceleration.sum();
+  // B-splines.
+  const std::array<G, 5> control{g, h, e, g.inverse(), h};
+  const CubicBSplineView<G> bspline(control.data(), 5, S(1), S(0.5));
+  for (const S& t : {S(1.2), S(0), S(9)}) {
+    const BSplinePoint<G> p = bspline.evaluate(t);
+    sum += bspline(t).matrix().sum() + p.value.matrix().sum() + p.velocity.sum() + p.acceleration.sum();
+  }
+  sum += cubic_bspline_segment(control.begin(), S(0.4)).matrix().sum();
+  return sum;
+}
+
 /// Every public operation of every class for one Scalar; returns a checksum
 /// so that nothing is optimized away.
 template <typename S>
@@ -179,6 +239,7 @@ S exercise_all() noexcept {
   using V2 = Eigen::Matrix<S, 2, 1>;
   using T1 = Eigen::Matrix<S, 1, 1>;
   sum += exercise_group<SO2<S>>(T1(S(0.7)), T1(S(-3.1))) + exercise_group<SE2<S>>(p, w);
+  sum += exercise_families<SO2<S>>(T1(S(0.7)), T1(S(-3.1))) + exercise_families<SE2<S>>(p, w);
   const SO2<S> r2 = SO2<S>::exp(S(0.4));
   const SE2<S> g2 = SE2<S>::exp(w);
   sum += r2.angle() + r2.complex().sum() + r2.act(V2(p.template head<2>())).sum() + (r2 * V2(S(1), S(2))).sum();
@@ -198,7 +259,7 @@ S exercise_all() noexcept {
     y7[i] = w[i], y7[3 + i] = S(0.1) * p[i];
   }
   x7[6] = S(0.3), y7[6] = S(-0.2);
-  sum += exercise_group<Sim3<S>>(x7, y7);
+  sum += exercise_group<Sim3<S>>(x7, y7) + exercise_families<Sim3<S>>(x7, y7);
   const Sim3<S> s3 = Sim3<S>::exp(x7), s3h(R, p, S(2));
   sum += s3.act(p).sum() + (s3 * p).sum() + s3.rotation().matrix().sum() + s3.translation().sum() + s3.scale();
   sum += s3h.matrix().sum() + Sim3<S>::transform_defect(s3.matrix()) + Sim3<S>::matrix_scale(s3.matrix());
