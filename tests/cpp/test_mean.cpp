@@ -416,23 +416,28 @@ Eigen::Matrix<LD, 3, 3> rotation_mean_reference(const std::vector<SO3<S>>& R, co
   const Eigen::Matrix<LD, 4, 1> top = es.eigenvectors().col(3);
   return Eigen::Quaternion<LD>(top[3], top[0], top[1], top[2]).normalized().toRotationMatrix();
 }
-/// The matrix of the per-part mean of elements with a rotation, a translation and (Sim3) a scale.
+/// The matrix of the per-part mean of elements with a rotation, a translation and (Sim3) a scale or
+/// (SE23) a velocity.
 template <typename G, typename S>
 auto part_mean_reference(const std::vector<G>& X, const std::vector<S>& w) {
   using Rot = std::decay_t<decltype(X[0].rotation())>;
   constexpr int r = std::decay_t<decltype(std::declval<Rot>().matrix())>::RowsAtCompileTime;
+  constexpr int n = std::decay_t<decltype(X[0].matrix())>::RowsAtCompileTime;
+  constexpr bool kSE23 = std::is_same<G, chasles::SE23<S>>::value;
   std::vector<Rot> R;
-  Eigen::Matrix<LD, r, 1> t = Eigen::Matrix<LD, r, 1>::Zero();
+  Eigen::Matrix<LD, r, 1> t = Eigen::Matrix<LD, r, 1>::Zero(), v = t;
   LD log_scale = 0, total = 0;
   for (std::size_t i = 0; i < X.size(); ++i) {
     R.push_back(X[i].rotation());
     t += LD(w[i]) * X[i].translation().template cast<LD>();
     if constexpr (std::is_same<G, Sim3<S>>::value) log_scale += LD(w[i]) * std::log(LD(X[i].scale()));
+    if constexpr (kSE23) v += LD(w[i]) * X[i].velocity().template cast<LD>();
     total += LD(w[i]);
   }
-  Eigen::Matrix<LD, r + 1, r + 1> M = Eigen::Matrix<LD, r + 1, r + 1>::Identity();
+  Eigen::Matrix<LD, n, n> M = Eigen::Matrix<LD, n, n>::Identity();
   M.template topLeftCorner<r, r>() = std::exp(log_scale / total) * rotation_mean_reference(R, w);
-  M.template topRightCorner<r, 1>() = t / total;
+  M.template block<r, 1>(0, r) = t / total;
+  if constexpr (kSE23) M.template block<r, 1>(0, r + 1) = v / total;
   return M;
 }
 

@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 
 #include <chasles/se2.hpp>
+#include <chasles/se23.hpp>
 #include <chasles/se3.hpp>
 #include <chasles/sim3.hpp>
 #include <chasles/so2.hpp>
@@ -42,10 +43,15 @@ template <typename S>
 struct GroupLabel<chasles::Sim3<S>> {
   static constexpr const char* name = "Sim3";
 };
+template <typename S>
+struct GroupLabel<chasles::SE23<S>> {
+  static constexpr const char* name = "SE23";
+};
 
 using AllGroups = ::testing::Types<chasles::SO2<float>, chasles::SO2<double>, chasles::SE2<float>, chasles::SE2<double>,
                                    chasles::SO3<float>, chasles::SO3<double>, chasles::SE3<float>, chasles::SE3<double>,
-                                   chasles::Sim3<float>, chasles::Sim3<double>>;
+                                   chasles::Sim3<float>, chasles::Sim3<double>, chasles::SE23<float>,
+                                   chasles::SE23<double>>;
 
 /// GoogleTest's names for AllGroups: "SO2f", "Sim3d", ...
 struct AllGroupsName {
