@@ -16,6 +16,7 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <benchmark/benchmark.h>
@@ -494,6 +495,42 @@ void register_statistics(const std::string& sn) {
   add("SO3/mean_geodesic/cloud50/" + sn, Rclouds, [](const auto& v) { return geodesic_mean(v.begin(), v.end()); });
   add("SE3/mean_chordal/cloud50/" + sn, gclouds, [](const auto& v) { return chordal_mean(v.begin(), v.end()); });
   add("SE3/mean_geodesic/cloud50/" + sn, gclouds, [](const auto& v) { return geodesic_mean(v.begin(), v.end()); });
+
+  // Alignment of 50 points (a 3 x 2 x 1 box moved by a random similarity,
+  // noise 0.01), beside Eigen::umeyama on the same points as 3 x 50 matrices.
+  using Points = Eigen::Matrix<S, 3, 50>;
+  struct PointSet {
+    std::vector<V3> a, b;
+    Points A, B;
+  };
+  std::vector<PointSet> sets;
+  std::uniform_real_distribution<double> box(-1, 1);
+  for (int c = 0; c < 8; ++c) {
+    PointSet p;
+    const Sim3<S> g(centre.rotation() * SO3<S>::exp(V3(ws[std::size_t(c)])), xs[std::size_t(c)].template head<3>(),
+                    S(1.5));
+    for (int i = 0; i < 50; ++i) {
+      const V3 q = Eigen::Vector3d(3 * box(gen), 2 * box(gen), box(gen)).cast<S>();
+      p.b.push_back(q);
+      p.a.push_back(g * q + Eigen::Vector3d(0.01 * normal(gen), 0.01 * normal(gen), 0.01 * normal(gen)).cast<S>());
+      p.A.col(i) = p.a.back();
+      p.B.col(i) = q;
+    }
+    sets.push_back(std::move(p));
+  }
+  for (int c = 8; c < int(kN); ++c) sets.push_back(sets[std::size_t(c % 8)]);
+  add("SO3/align/vectors50/" + sn, sets,
+      [](const PointSet& p) { return so3_align(p.a.begin(), p.a.end(), p.b.begin()); });
+  add("SE3/align/points50/" + sn, sets,
+      [](const PointSet& p) { return se3_align(p.a.begin(), p.a.end(), p.b.begin()); });
+  add("Sim3/align/points50/" + sn, sets,
+      [](const PointSet& p) { return sim3_align(p.a.begin(), p.a.end(), p.b.begin()); });
+  if constexpr (std::is_same<S, double>::value) {  // (float: GCC 12 -O3 warns inside Eigen's Umeyama.h)
+    add("Eigen/umeyama_rigid/points50/" + sn, sets,
+        [](const PointSet& p) { return Eigen::Matrix<S, 4, 4>(Eigen::umeyama(p.B, p.A, false)); });
+    add("Eigen/umeyama/points50/" + sn, sets,
+        [](const PointSet& p) { return Eigen::Matrix<S, 4, 4>(Eigen::umeyama(p.B, p.A, true)); });
+  }
 }
 
 }  // namespace

@@ -244,9 +244,10 @@ inline AlignResult<Group> point_align(AIterator a_first, AIterator a_last, BIter
   using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
   using Matrix3 = Eigen::Matrix<Scalar, 3, 3>;
   constexpr bool with_scale = std::is_same<Group, Sim3<Scalar>>::value;
-  // pass 1: the weighted means
+  // pass 1: the weighted means (a coordinate that is not finite makes its
+  // sum inf or NaN, 0 * inf included: the sums are checked, not each point)
   long n = 0;
-  bool weights_valid = true, finite = true;
+  bool weights_valid = true;
   Scalar total(0);
   Vector3 sa = Vector3::Zero(), sb = Vector3::Zero();
   {
@@ -259,7 +260,6 @@ inline AlignResult<Group> point_align(AIterator a_first, AIterator a_last, BIter
         weights_valid = false;
         continue;
       }
-      if (!all_finite(ai) || !all_finite(bi)) finite = false;
       sa += wi * ai;
       sb += wi * bi;
       total += wi;
@@ -267,8 +267,7 @@ inline AlignResult<Group> point_align(AIterator a_first, AIterator a_last, BIter
   }
   if (n < 3) return align_refused<Group>(AlignStatus::too_few);
   if (!weights_valid || !(total > Scalar(0))) return align_refused<Group>(AlignStatus::weights_not_valid);
-  if (!finite || !is_finite(total) || !all_finite(sa) || !all_finite(sb))
-    return align_refused<Group>(AlignStatus::not_finite);
+  if (!is_finite(total) || !all_finite(sa) || !all_finite(sb)) return align_refused<Group>(AlignStatus::not_finite);
   const Vector3 ma = sa / total, mb = sb / total;
   // pass 2: the cross-covariance of the centred points (two passes: no
   // cancellation for points far from the origin) and the spread of the b's
@@ -318,9 +317,12 @@ inline AlignResult<SO3<detail::VectorScalarOf<AIterator>>> so3_align(AIterator a
   using Group = SO3<Scalar>;
   using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
   using Matrix3 = Eigen::Matrix<Scalar, 3, 3>;
-  // pass 1: B = sum_i w_i a_i b_i^T over the finite weights, and the primary vector
+  // pass 1: B = sum_i w_i a_i b_i^T over the finite weights, and the primary
+  // vector (a coordinate that is not finite makes a column or a row of B inf
+  // or NaN, 0 * inf included: B is checked, not each vector; the primary
+  // vectors, left out of B, on their own)
   long n = 0, infinite = 0;
-  bool weights_valid = true, finite = true;
+  bool weights_valid = true;
   Matrix3 B = Matrix3::Zero();
   Scalar total(0);
   AIterator a_primary = a_first;
@@ -329,9 +331,7 @@ inline AlignResult<SO3<detail::VectorScalarOf<AIterator>>> so3_align(AIterator a
     BIterator b = b_first;
     WeightIterator w = w_first;
     for (AIterator a = a_first; a != a_last; ++a, ++b, ++w, ++n) {
-      const Vector3 ai = *a, bi = *b;
       const Scalar wi = *w;
-      if (!detail::all_finite(ai) || !detail::all_finite(bi)) finite = false;
       if (!(wi >= Scalar(0))) {  // negative or NaN
         weights_valid = false;
       } else if (!detail::is_finite(wi)) {  // +inf: the primary vector
@@ -339,6 +339,7 @@ inline AlignResult<SO3<detail::VectorScalarOf<AIterator>>> so3_align(AIterator a
         a_primary = a;
         b_primary = b;
       } else {
+        const Vector3 ai = *a, bi = *b;
         B += (wi * ai) * bi.transpose();
         total += wi;
       }
@@ -346,11 +347,13 @@ inline AlignResult<SO3<detail::VectorScalarOf<AIterator>>> so3_align(AIterator a
   }
   if (n == 0) return detail::align_refused<Group>(AlignStatus::too_few);
   if (!weights_valid || infinite > 1) return detail::align_refused<Group>(AlignStatus::weights_not_valid);
-  if (!finite) return detail::align_refused<Group>(AlignStatus::not_finite);
 
   if (n == 1 || infinite == 1) {
     // the primary vector aligned exactly, the others fitted about it
-    const Vector3 u = detail::unit_vector(Vector3(*a_primary)), v = detail::unit_vector(Vector3(*b_primary));
+    const Vector3 ap = *a_primary, bp = *b_primary;
+    if (!detail::all_finite(ap) || !detail::all_finite(bp))
+      return detail::align_refused<Group>(AlignStatus::not_finite);
+    const Vector3 u = detail::unit_vector(ap), v = detail::unit_vector(bp);
     if (!(u.squaredNorm() > Scalar(0)) || !(v.squaredNorm() > Scalar(0)))
       return detail::align_refused<Group>(AlignStatus::zero_primary);
     const Group R1 = detail::shortest_rotation(u, v);

@@ -524,6 +524,18 @@ TYPED_TEST(Align, RefusedInputsAreReported) {
     EXPECT_EQ(status_se3(B, Ab, ones), AlignStatus::not_finite) << bad;
     EXPECT_EQ(status_so3(Ab, B, ones), AlignStatus::not_finite) << bad;
     EXPECT_EQ(status_so3(B, Ab, ones), AlignStatus::not_finite) << bad;
+    // with a weight 0 (0 * inf is NaN), and in the primary vector (left out of the sums)
+    std::vector<S> zero_there = ones;
+    zero_there[4] = S(0);
+    EXPECT_EQ(status_se3(Ab, B, zero_there), AlignStatus::not_finite) << bad;
+    EXPECT_EQ(status_so3(B, Ab, zero_there), AlignStatus::not_finite) << bad;
+    std::vector<S> primary_there = ones;
+    primary_there[4] = inf;
+    EXPECT_EQ(status_so3(Ab, B, primary_there), AlignStatus::not_finite) << bad;
+    EXPECT_EQ(status_so3(B, Ab, primary_there), AlignStatus::not_finite) << bad;
+    const std::vector<V3<S>> single = {Ab[4]}, single_b = {B[4]};
+    EXPECT_EQ(status_so3(single, single_b, ones), AlignStatus::not_finite) << bad;
+    EXPECT_EQ(status_so3(single_b, single, ones), AlignStatus::not_finite) << bad;
   }
   // sums that overflow
   const S big = std::numeric_limits<S>::max() / S(4);

@@ -228,3 +228,36 @@ def pickles_and_chains(i):
 def test_pickles_and_kinematics_leave_memory_flat():
     g = growth(pickles_and_chains, 50_000)
     assert g.flat(), g
+
+
+ALIGN_B = np.random.default_rng(3).normal(size=(20, 3))
+ALIGN_A = ALIGN_B @ chasles.so3_exp([0.3, -0.2, 1.0]).T + 0.01
+ALIGN_W = np.linspace(0.5, 2.0, 20)
+ALIGN_INF = np.where(np.arange(20) == 4, np.inf, ALIGN_W)
+ALIGN_LINE = np.outer(np.arange(20.0), [1.0, 2.0, 3.0])
+
+
+def align_calls(i):
+    """so3_align (plain, weighted, a primary vector, one warned), se3_align and
+    sim3_align, and their refusals (the C++ status read back, the message built)."""
+    k = i % 8
+    if k == 0:
+        chasles.so3_align(ALIGN_A, ALIGN_B, ALIGN_W)
+    elif k == 1:
+        chasles.so3_align(ALIGN_A, ALIGN_B, ALIGN_INF)
+    elif k == 2:
+        chasles.se3_align(ALIGN_A, ALIGN_B)
+    elif k == 3:
+        chasles.sim3_align(ALIGN_A, ALIGN_B, ALIGN_W)
+    elif k == 4:
+        with pytest.warns(UserWarning):
+            chasles.so3_align(ALIGN_LINE, ALIGN_LINE)
+    else:
+        bad = {5: (ALIGN_LINE, ALIGN_LINE, None), 6: (ALIGN_A, ALIGN_B, -ALIGN_W), 7: (ALIGN_A, ALIGN_B * np.nan, None)}
+        with pytest.raises(ValueError):
+            chasles.se3_align(*bad[k])
+
+
+def test_alignments_leave_memory_flat():
+    g = growth(align_calls, 40_000)
+    assert g.flat(), g
