@@ -55,6 +55,26 @@ WHEEL_DIR=${WHEEL_DIR:-$ROOT/build/wheel}
 WHEEL_BUILD_DIR=${WHEEL_BUILD_DIR:-$ROOT/build/wheel-cmake}
 JOBS=${JOBS:-$(nproc)}
 
+# timed NAME COMMAND...: runs COMMAND and prints its wall time and its CPU
+# time (user + sys of the processes it waited for, read from /proc: this
+# shell's cutime + cstime), so that a CI log shows where the minutes go.
+CLK_TCK=$(getconf CLK_TCK)
+cpu_ticks() { awk '{ print $16 + $17 }' "/proc/$$/stat"; }
+# (A failure stops the script under set -e before the line is printed.)
+timed() {
+  local name=$1 t0=$SECONDS c0
+  shift
+  c0=$(cpu_ticks)
+  "$@"
+  echo "[time] $name: $((SECONDS - t0)) s wall, $((($(cpu_ticks) - c0) / CLK_TCK)) s CPU"
+}
+FUZZ_PID=""
+on_exit() {
+  if [ -n "$FUZZ_PID" ]; then kill "$FUZZ_PID" 2>/dev/null || true; fi
+  echo "[time] total: $SECONDS s wall, $(($(cpu_ticks) / CLK_TCK)) s CPU"
+}
+trap on_exit EXIT
+
 # apt_install PACKAGE...: installs those not installed yet.
 apt_install() {
   local need=() pkg SUDO=""
@@ -113,31 +133,36 @@ stage_cpp() {
   apt_cpp
   apt_install clang libclang-rt-14-dev
   echo "== C++ with g++ -O3: configure, build, ctest"
-  configure_cpp
-  cmake --build "$BUILD_DIR" -j "$JOBS"
-  ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"
+  timed "g++ configure" configure_cpp
+  timed "g++ build" cmake --build "$BUILD_DIR" -j "$JOBS"
+  timed "g++ ctest" ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"
   echo "== C++ with clang under AddressSanitizer + UndefinedBehaviorSanitizer: configure, build, ctest"
-  configure_sanitize
-  cmake --build "$SANITIZE_DIR" -j "$JOBS"
-  ctest --test-dir "$SANITIZE_DIR" --output-on-failure -j "$JOBS"
+  timed "sanitizer configure" configure_sanitize
+  timed "sanitizer build" cmake --build "$SANITIZE_DIR" -j "$JOBS"
+  timed "sanitizer ctest" ctest --test-dir "$SANITIZE_DIR" --output-on-failure -j "$JOBS"
 }
 
 FUZZ_LOG="$SANITIZE_DIR/fuzz-run.log"
-FUZZ_PID=""
 start_fuzzing() {
   bash "$ROOT/tests/fuzz/run.sh" "$SANITIZE_DIR" 20 > "$FUZZ_LOG" 2>&1 &
   FUZZ_PID=$!
-  trap 'kill "$FUZZ_PID" 2>/dev/null || true' EXIT
 }
 finish_fuzzing() {
   echo "== C++ fuzzing: what it ran (tests/fuzz/run.sh, started above)"
   local status=0
   wait "$FUZZ_PID" || status=$?
+  FUZZ_PID=""
   cat "$FUZZ_LOG"
   if [ "$status" -ne 0 ]; then
     echo "error: fuzzing failed (exit $status); see above" >&2
     exit "$status"
   fi
+}
+
+run_pytest() {
+  (cd "$VENV" && OPENBLAS_NUM_THREADS=1 CHASLES_REQUIRE_URDF_DUMP=1 \
+    CHASLES_URDF_DUMP="$BUILD_DIR/tests/cpp/chasles_urdf_dump" \
+    "$VENV/bin/python" -m pytest "$ROOT/tests/python" -p no:cacheprovider)
 }
 
 stage_python() {
@@ -146,16 +171,16 @@ stage_python() {
   echo "   Eigen hidden, installed into a fresh virtual environment with no compiler reachable,"
   echo "   pytest from outside the source tree"
   rm -rf "$VENV" "$WHEEL_DIR" "$WHEEL_BUILD_DIR"
-  python3 -m venv "$VENV"
+  timed "venv" python3 -m venv "$VENV"
   # A venv gets the pip its Python bundles (Debian 12: pip 23.0, which has no
   # -C, the short form of --config-settings used below, added in pip 23.1).
-  "$VENV/bin/python" -m pip install --quiet --upgrade pip
+  timed "pip upgrade" "$VENV/bin/python" -m pip install --quiet --upgrade pip
   # The system's Eigen (installed above for the C++ tests) is hidden from the
   # wheel's CMake: CMAKE_IGNORE_PATH makes find_package skip an Eigen3Config.cmake
   # in those directories, and only there, so CMakeLists.txt falls back on the
   # cmeel-eigen build requirement as it does on a machine with no Eigen. The
   # CMake tree is kept (build-dir) so that its cache shows which Eigen was used.
-  "$VENV/bin/python" -m pip wheel --quiet --no-deps -w "$WHEEL_DIR" -C "build-dir=$WHEEL_BUILD_DIR" \
+  timed "wheel" "$VENV/bin/python" -m pip wheel --quiet --no-deps -w "$WHEEL_DIR" -C "build-dir=$WHEEL_BUILD_DIR" \
     -C "cmake.define.CMAKE_IGNORE_PATH=/usr/share/eigen3/cmake;/usr/lib/cmake/eigen3;/usr/include/eigen3" "$ROOT"
   EIGEN_DIR=$(sed -n 's/^Eigen3_DIR:PATH=//p' "$WHEEL_BUILD_DIR/CMakeCache.txt")
   echo "   the wheel was built with Eigen3_DIR=$EIGEN_DIR"
@@ -164,7 +189,8 @@ stage_python() {
     *) echo "error: the wheel's Eigen is not cmeel-eigen's (the system's was not hidden?)" >&2; exit 1 ;;
   esac
   WHEEL=$(ls "$WHEEL_DIR"/chasles-*.whl)
-  CC=/bin/false CXX=/bin/false "$VENV/bin/python" -m pip install --quiet --only-binary=chasles "$WHEEL[test]"
+  CC=/bin/false CXX=/bin/false timed "wheel install" "$VENV/bin/python" -m pip install --quiet --only-binary=chasles \
+    "$WHEEL[test]"
   # CHASLES_URDF_DUMP: the C++ URDF loader's JSON dump (tests/cpp/urdf_dump.cpp,
   # built by the cpp stage, or here alone), which tests/python/test_urdf_cpp.py
   # compares with Chain.from_urdf on the arms of example-robot-data (a Python
@@ -181,10 +207,8 @@ stage_python() {
   # In `all`, the fuzzing (the fuzz stage) runs meanwhile, on the core
   # pytest leaves idle; its outcome is read after pytest.
   if [ "$STAGE" = all ]; then start_fuzzing; fi
-  (cd "$VENV" && OPENBLAS_NUM_THREADS=1 CHASLES_REQUIRE_URDF_DUMP=1 \
-    CHASLES_URDF_DUMP="$BUILD_DIR/tests/cpp/chasles_urdf_dump" \
-    "$VENV/bin/python" -m pytest "$ROOT/tests/python" -p no:cacheprovider)
-  if [ "$STAGE" = all ]; then finish_fuzzing; fi
+  timed "pytest" run_pytest
+  if [ "$STAGE" = all ]; then timed "fuzzing (after pytest)" finish_fuzzing; fi
 }
 
 case "$STAGE" in
