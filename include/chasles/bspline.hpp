@@ -12,6 +12,7 @@
 #include "chasles/detail/assert.hpp"
 #include "chasles/lie_group.hpp"
 #include "chasles/se2.hpp"
+#include "chasles/se23.hpp"
 #include "chasles/se3.hpp"
 #include "chasles/sim3.hpp"
 #include "chasles/so2.hpp"
@@ -281,5 +282,7 @@ template <typename Scalar>
 using SE2BSplineView = CubicBSplineView<SE2<Scalar>>;
 template <typename Scalar>
 using Sim3BSplineView = CubicBSplineView<Sim3<Scalar>>;
+template <typename Scalar>
+using SE23BSplineView = CubicBSplineView<SE23<Scalar>>;
 
 }  // namespace chasles

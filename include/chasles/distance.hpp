@@ -35,7 +35,7 @@ inline typename G::Scalar distance(const G& a, const G& b) noexcept {
 /// the rotations' geodesic distance (the angle of R_a^-1 R_b, in [0, pi])
 /// and the Euclidean distance of each block of the Euclidean parts: on
 /// SE(2) (angle, |t_b - t_a|); on Sim(3) (angle, |t_b - t_a|,
-/// |log(s_b / s_a)|). These groups have no bi-invariant metric, so the
+/// |log(s_b / s_a)|); on SE_2(3) (angle, |p_b - p_a|, |v_b - v_a|). These groups have no bi-invariant metric, so the
 /// parts are kept apart for the caller to weigh. Each is symmetric and
 /// unchanged by a rigid change of the fixed frame, d(g a, g b) = d(a, b)
 /// for g a rotation and a translation; a change of scale (Sim(3)) scales the

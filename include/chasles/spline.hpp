@@ -1,5 +1,6 @@
 // chasles: interpolating C2 splines through the key elements of any group
-// (key rotations of SO3 and SO2, key poses of SE3 and SE2, similarities, ...).
+// (key rotations of SO3 and SO2, key poses of SE3 and SE2, similarities,
+// extended poses, ...).
 //
 // Key times t_0 < ... < t_{N-1}, key elements X_i (N >= 2). On segment i,
 // t in [t_i, t_{i+1}], with tau = t - t_i and h_i = t_{i+1} - t_i:
@@ -92,6 +93,7 @@
 
 #include "chasles/jacobians.hpp"
 #include "chasles/se2.hpp"
+#include "chasles/se23.hpp"
 #include "chasles/se3.hpp"
 #include "chasles/sim3.hpp"
 #include "chasles/so2.hpp"
@@ -595,5 +597,7 @@ template <typename Scalar>
 using SE2Spline = Spline<SE2<Scalar>>;
 template <typename Scalar>
 using Sim3Spline = Spline<Sim3<Scalar>>;
+template <typename Scalar>
+using SE23Spline = Spline<SE23<Scalar>>;
 
 }  // namespace chasles

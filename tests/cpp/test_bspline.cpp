@@ -38,6 +38,7 @@ using chasles::CubicBSplineView;
 using chasles::SE2;
 using chasles::SE3;
 using chasles::Sim3;
+using chasles::SE23;
 using chasles::SO2;
 using chasles::SO3;
 using ld = long double;
@@ -94,6 +95,10 @@ template <typename S>
 struct GroupOf<Sim3<S>> : GenericGroupOf<Sim3, S> {
   static const char* name() { return "Sim3"; }
 };
+template <typename S>
+struct GroupOf<SE23<S>> : GenericGroupOf<SE23, S> {
+  static const char* name() { return "SE23"; }
+};
 
 template <typename G>
 class BSpline : public ::testing::Test {};
@@ -105,7 +110,7 @@ struct GroupName {
   }
 };
 using Groups = ::testing::Types<SO3<float>, SO3<double>, SE3<float>, SE3<double>, SO2<float>, SO2<double>, SE2<float>,
-                                SE2<double>, Sim3<float>, Sim3<double>>;
+                                SE2<double>, Sim3<float>, Sim3<double>, SE23<float>, SE23<double>>;
 TYPED_TEST_SUITE(BSpline, Groups, GroupName);
 
 template <typename G>
@@ -278,6 +283,10 @@ TYPED_TEST(BSpline, OneParameterSubgroupIsThatMotionAtConstantVelocity) {
     check_one_parameter_subgroup<G>(x);
   } else if constexpr (G::DoF == 3) {
     check_one_parameter_subgroup<G>(TangentOf<G>(S(0.8), S(-1.1), S(0.5)));
+  } else if constexpr (G::DoF == 9) {
+    TangentOf<G> x;  // (rho, nu, w): position and velocity parts beside the rotation
+    x << S(0.4), S(-1), S(0.3), S(1.5), S(0.2), S(-0.7), S(0.8), S(-1.1), S(0.5);
+    check_one_parameter_subgroup<G>(x);
   } else {
     // A screw motion of pitch 0.37 about an axis off the origin, and a pure translation.
     check_one_parameter_subgroup<G>(
@@ -469,12 +478,13 @@ TEST(BSplineAutodiff, SE3RatesAreTheDerivativesInTime) {
   check_against_autodiff<SE3<double>>(37);
 }
 
-TEST(BSplineAutodiff, SO2SE2AndSim3RatesAreTheDerivativesInTime) {
+TEST(BSplineAutodiff, SO2SE2Sim3AndSE23RatesAreTheDerivativesInTime) {
   check_against_autodiff<SO2<double>>(41);
   check_against_autodiff<SE2<double>>(43);
   check_against_autodiff<SE2<double>>(47);
   check_against_autodiff<Sim3<double>>(53);
   check_against_autodiff<Sim3<double>>(59);
+  check_against_autodiff<SE23<double>>(61);
 }
 
 }  // namespace

@@ -222,6 +222,8 @@ std::vector<ld> reference_distance(const G& a, const G& b) {
                       (b.translation().template cast<ld>() - a.translation().template cast<ld>()).norm()};
     if constexpr (std::is_same<G, chasles::Sim3<S>>::value)
       d.push_back(std::fabs(std::log(ld(b.scale())) - std::log(ld(a.scale()))));
+    if constexpr (std::is_same<G, chasles::SE23<S>>::value)
+      d.push_back((b.velocity().template cast<ld>() - a.velocity().template cast<ld>()).norm());
     return d;
   }
 }

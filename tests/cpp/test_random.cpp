@@ -288,6 +288,8 @@ TYPED_TEST(RandomOfEveryGroup, RotationsAreHaarAndEuclideanPartsUniformInTheirBo
     Eigen::Matrix<double, K, 1> v;
     if constexpr (std::is_same<G, chasles::Sim3<S>>::value) {
       v << g.translation().template cast<double>(), std::log(double(g.scale()));
+    } else if constexpr (std::is_same<G, chasles::SE23<S>>::value) {
+      v << g.translation().template cast<double>(), g.velocity().template cast<double>();
     } else if constexpr (K > 0) {
       v = g.translation().template cast<double>();
     }

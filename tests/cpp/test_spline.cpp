@@ -7,7 +7,7 @@
 // cutoff and with long double; autodiff through the evaluation gives the
 // velocity; bad inputs are reported.
 //
-// Every group through the same code: SO2, SE2 and Sim3 splines pass through
+// Every group through the same code: SO2, SE2, Sim3 and SE23 splines pass through
 // their keys with the rates of central differences, C2 at the keys (the
 // acceleration's term (d/dt Jr) r' by forward differentiation of Jr); two
 // keys give the geodesic and keys on a one-parameter subgroup that motion;
@@ -37,6 +37,7 @@ using chasles::fit_spline;
 using chasles::SE2;
 using chasles::SE3;
 using chasles::Sim3;
+using chasles::SE23;
 using chasles::SO2;
 using chasles::SO3;
 using chasles::Spline;
@@ -197,6 +198,7 @@ TYPED_TEST(SplineTest, SE3ThroughKeysDifferencesC2) { check_keys_and_differences
 TYPED_TEST(SplineTest, SO2ThroughKeysDifferencesC2) { check_keys_and_differences<TypeParam, SO2>(); }
 TYPED_TEST(SplineTest, SE2ThroughKeysDifferencesC2) { check_keys_and_differences<TypeParam, SE2>(); }
 TYPED_TEST(SplineTest, Sim3ThroughKeysDifferencesC2) { check_keys_and_differences<TypeParam, Sim3>(); }
+TYPED_TEST(SplineTest, SE23ThroughKeysDifferencesC2) { check_keys_and_differences<TypeParam, SE23>(); }
 
 TYPED_TEST(SplineTest, ChordEndsHaveTheFirstAndLastSegmentsRates) {
   using S = TypeParam;
@@ -244,6 +246,7 @@ TYPED_TEST(SplineTest, TwoKeysGiveTheGeodesic) {
   check_geodesic<TypeParam, SO2>();
   check_geodesic<TypeParam, SE2>();
   check_geodesic<TypeParam, Sim3>();
+  check_geodesic<TypeParam, SE23>();
 }
 
 template <typename S, template <typename> class G>
@@ -281,6 +284,7 @@ TYPED_TEST(SplineTest, KeysOnAScrewMotionGiveThatScrewMotion) {
   check_screw<TypeParam, SO2>();
   check_screw<TypeParam, SE2>();
   check_screw<TypeParam, Sim3>();
+  check_screw<TypeParam, SE23>();
 }
 
 // The term of the acceleration by forward differentiation of Jr equals the

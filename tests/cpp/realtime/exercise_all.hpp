@@ -272,7 +272,7 @@ S exercise_all() noexcept {
     x9[i] = p[i], x9[3 + i] = S(0.5) * w[i], x9[6 + i] = w[i];
     y9[i] = w[i], y9[3 + i] = S(-2) * p[i], y9[6 + i] = S(0.1) * p[i];
   }
-  sum += exercise_group<SE23<S>>(x9, y9);
+  sum += exercise_group<SE23<S>>(x9, y9) + exercise_families<SE23<S>>(x9, y9);
   const SE23<S> x23 = SE23<S>::exp(x9), x23h(R, p, w);
   sum += x23.act(p).sum() + (x23 * p).sum() + x23.rotation().matrix().sum() + x23.translation().sum();
   sum += x23.velocity().sum() + x23h.matrix().sum() + SE23<S>::transform_defect(x23.matrix());
