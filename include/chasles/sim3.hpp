@@ -10,6 +10,7 @@
 
 #include "chasles/constants.hpp"
 #include "chasles/detail/approx.hpp"
+#include "chasles/detail/rodrigues.hpp"
 #include "chasles/detail/series.hpp"
 #include "chasles/detail/so3_log.hpp"
 #include "chasles/lie_group.hpp"
@@ -48,19 +49,63 @@ struct Sim3Coefficients {
   Scalar e;  ///< e^sigma
 };
 
+/// The functions of sigma alone in A, B and C: phi(sigma), e^sigma,
+/// sigma^2 phi'(sigma) and sigma^2 phi''(sigma) / 2 (see sim3_coefficients).
+template <typename Scalar>
+struct ScaleFunctions {
+  Scalar a;   ///< phi(sigma) = (e^sigma - 1) / sigma
+  Scalar e;   ///< e^sigma
+  Scalar nb;  ///< sigma^2 phi'(sigma)    = sigma e^sigma - (e^sigma - 1)
+  Scalar nc;  ///< sigma^2 phi''(sigma)/2 = phi(sigma) - e^sigma + sigma e^sigma / 2
+};
+
+/// ScaleFunctions from sigma and em1 = e^sigma - 1 (exp: expm1(sigma);
+/// log: s - 1 of the stored scale s, exact for s in [1/2, 2] and to an ulp
+/// beyond, so that log needs no exponential), or below sigma^2 =
+/// taylor_theta2 their series to sigma^5 (no 0/0 at sigma = 0).
+template <typename Scalar, typename Em1>
+inline ScaleFunctions<Scalar> scale_functions(const Scalar& s, const Em1& em1_of_sigma) noexcept {
+  const Scalar one(1);
+  ScaleFunctions<Scalar> f;
+  if (s * s < Scalar(ThresholdsOf<Scalar>::taylor_theta2)) {
+    // phi(sigma) = sum_m sigma^m / (m + 1)!, and sigma^2 I_1, sigma^2 I_2 / 2 (I_k below).
+    f.a = one + s * (one / Scalar(2) +
+                     s * (one / Scalar(6) + s * (one / Scalar(24) + s * (one / Scalar(120) + s / Scalar(720)))));
+    f.e = one + s * f.a;
+    const Scalar s2 = s * s;
+    f.nb = s2 * (one / Scalar(2) +
+                 s * (one / Scalar(3) +
+                      s * (one / Scalar(8) + s * (one / Scalar(30) + s * (one / Scalar(144) + s / Scalar(840))))));
+    f.nc = s2 * (one / Scalar(6) +
+                 s * (one / Scalar(8) +
+                      s * (one / Scalar(20) + s * (one / Scalar(72) + s * (one / Scalar(336) + s / Scalar(1920))))));
+    return f;
+  }
+  const Scalar em1 = em1_of_sigma();
+  f.e = em1 + one;
+  f.a = em1 / s;
+  f.nb = s * f.e - em1;
+  f.nc = f.a - f.e + Scalar(0.5) * s * f.e;
+  return f;
+}
+
 /// A, B, C (and e^sigma) from sigma and t = theta^2, to a few ulps of what
-/// reaches W v (B times theta, C times theta^2) over the whole plane.
+/// reaches W v (B times theta, C times theta^2) over the whole plane, given
+/// the functions of sigma (scale_functions) and of theta (the rotation's
+/// exp_coefficients, which exp shares with the rotation and log reads
+/// from the quaternion).
 ///
 /// Method. Expanding Im and Re of (e^z - 1) conj(z) / |z|^2, with
 /// a = sin(theta)/theta, b = (1 - cos(theta))/theta^2,
-/// c = (theta - sin(theta))/theta^3, q3 = (1/2 - b)/theta^2 (series.hpp), the
-/// 1/theta and 1/theta^2 cancel exactly and leave
-///   B = [sigma^2 phi'(sigma)    + theta^2 e^sigma (b - sigma c) ] / (sigma^2 + theta^2),
-///   C = [sigma^2 phi''(sigma)/2 + theta^2 e^sigma (c - sigma q3)] / (sigma^2 + theta^2),
+/// c = (theta - sin(theta))/theta^3 (series.hpp), the 1/theta and
+/// 1/theta^2 cancel exactly and leave
+///   B = [sigma^2 phi'(sigma)    + theta^2 e^sigma (b - sigma c)          ] / (sigma^2 + theta^2),
+///   C = [sigma^2 phi''(sigma)/2 + e^sigma (theta^2 c - sigma (1/2 - b))] / (sigma^2 + theta^2),
 /// weighted means of a function of sigma alone (the limit theta -> 0:
 /// phi'(sigma) = integral u e^(sigma u) du, phi''/2) and of theta
 /// (the limit sigma -> 0: SE(3)'s b and c), with the weights sigma^2 and
-/// theta^2. So the two-variable singularity is reduced to one-variable
+/// theta^2 (theta^2 (c - sigma (1/2 - b) / theta^2) written without the
+/// division). So the two-variable singularity is reduced to one-variable
 /// functions, each computed without 0/0:
 ///   sigma^2 phi'(sigma)    = sigma e^sigma - expm1(sigma),
 ///   sigma^2 phi''(sigma)/2 = phi(sigma) - e^sigma + sigma e^sigma / 2,
@@ -81,23 +126,16 @@ struct Sim3Coefficients {
 ///   B = sum_j (-theta^2)^j I_(2j+1)(sigma) / (2j+1)!,
 ///   C = sum_j (-theta^2)^j I_(2j+2)(sigma) / (2j+2)!.
 template <typename Scalar>
-inline Sim3Coefficients<Scalar> sim3_coefficients(const Scalar& sigma, const Scalar& theta2) noexcept {
-  const Scalar cut(ThresholdsOf<Scalar>::taylor_theta2);
+inline Sim3Coefficients<Scalar> sim3_coefficients(const Scalar& sigma, const Scalar& theta2,
+                                                  const ScaleFunctions<Scalar>& f,
+                                                  const ExpCoefficients<Scalar>& q) noexcept {
   const Scalar& s = sigma;
   const Scalar& t = theta2;
-  const Scalar s2 = s * s;
   const Scalar one(1);
   Sim3Coefficients<Scalar> k;
-  // phi(sigma) = sum_m sigma^m / (m + 1)!, to sigma^5.
-  // (Returns a Scalar, not an expression: an autodiff expression would
-  // refer to the lambda's temporaries after it returns.)
-  auto phi_series = [&]() -> Scalar {
-    return one + s * (one / Scalar(2) +
-                      s * (one / Scalar(6) + s * (one / Scalar(24) + s * (one / Scalar(120) + s / Scalar(720)))));
-  };
-  if (s2 + t < cut) {
-    k.a = phi_series();
-    k.e = one + s * k.a;
+  k.a = f.a;
+  k.e = f.e;
+  if (s * s + t < Scalar(ThresholdsOf<Scalar>::taylor_theta2)) {
     // B: j = 0, 1, 2 with m <= 5 - 2j.
     const Scalar b0 = one / Scalar(2) +
                       s * (one / Scalar(3) +
@@ -114,29 +152,18 @@ inline Sim3Coefficients<Scalar> sim3_coefficients(const Scalar& sigma, const Sca
     k.c = c0 - t * (c1 - t * c2);
     return k;
   }
-  Scalar nb, nc;  // sigma^2 phi'(sigma), sigma^2 phi''(sigma) / 2
-  if (s2 < cut) {
-    k.a = phi_series();
-    k.e = one + s * k.a;
-    nb = s2 * (one / Scalar(2) +
-               s * (one / Scalar(3) +
-                    s * (one / Scalar(8) + s * (one / Scalar(30) + s * (one / Scalar(144) + s / Scalar(840))))));
-    nc = s2 * (one / Scalar(6) +
-               s * (one / Scalar(8) +
-                    s * (one / Scalar(20) + s * (one / Scalar(72) + s * (one / Scalar(336) + s / Scalar(1920))))));
-  } else {
-    const Scalar em1 = expm1_of(s);
-    k.e = em1 + one;
-    k.a = em1 / s;
-    nb = s * k.e - em1;
-    nc = k.a - k.e + Scalar(0.5) * s * k.e;
-  }
-  const QCoefficients<Scalar> q = q_coefficients(t);  // b, c, q3 of theta (series below the cutoff)
-  const Scalar inv = one / (s2 + t);
-  const Scalar te = t * k.e;
-  k.b = (nb + te * (q.b - s * q.c)) * inv;
-  k.c = (nc + te * (q.c - s * q.q3)) * inv;
+  const Scalar inv = one / (s * s + t);
+  k.b = (f.nb + t * f.e * (q.b - s * q.c)) * inv;
+  k.c = (f.nc + f.e * (t * q.c - s * (Scalar(0.5) - q.b))) * inv;
   return k;
+}
+
+/// The same from sigma and theta^2 alone (expm1 and the rotation's
+/// coefficients computed here): for the Jacobians.
+template <typename Scalar>
+inline Sim3Coefficients<Scalar> sim3_coefficients(const Scalar& sigma, const Scalar& theta2) noexcept {
+  return sim3_coefficients(sigma, theta2, scale_functions(sigma, [&]() -> Scalar { return expm1_of(sigma); }),
+                           exp_coefficients(theta2));
 }
 
 /// a0 I + a1 [w] + a2 [w]^2, the diagonal as a0 - a2 (w_j^2 + w_k^2).
@@ -257,9 +284,18 @@ class Sim3 {
   /// no cold path for |w|^2 past huge_theta2: there the translation is NaN.)
   static Sim3 exp(const Tangent& xi) noexcept {
     const Vector3 v = xi.template head<3>(), w = xi.template segment<3>(3);
-    const auto k = detail::sim3_coefficients<Scalar>(xi[6], Scalar(w.squaredNorm()));
+    const Scalar& sigma = xi[6];
+    const Scalar t = w.squaredNorm();
+    // A, B and C of theta computed once, for the rotation (Rodrigues, as
+    // SO3::exp below huge_theta2; past it SO3::exp's cold path) and for W.
+    const auto q = detail::exp_coefficients(t);
+    const auto k = detail::sim3_coefficients(
+        sigma, t, detail::scale_functions(sigma, [&]() -> Scalar { return detail::expm1_of(sigma); }), q);
+    const Rotation R = t < Scalar(ThresholdsOf<Scalar>::huge_theta2)
+                           ? Rotation::from_matrix_unchecked(detail::rodrigues(w, q.a, q.b))
+                           : Rotation::exp(w);
     const Vector3 wv = w.cross(v);
-    return Sim3(Rotation::exp(w), Vector3(k.a * v + k.b * wv + k.c * w.cross(wv)), k.e);
+    return Sim3(R, Vector3(k.a * v + k.b * wv + k.c * w.cross(wv)), k.e);
   }
 
   /// The xi = (v, w, sigma) with exp(hat(xi)) = g, rotation angle in [0, pi]:
@@ -271,7 +307,10 @@ class Sim3 {
     using std::log;
     const auto r = detail::so3_log(R_.matrix());
     const Scalar sigma = log(s_);
-    const auto k = detail::sim3_coefficients<Scalar>(sigma, r.theta2);
+    // e^sigma - 1 as s - 1 (detail::scale_functions): no exponential.
+    const auto k = detail::sim3_coefficients(sigma, r.theta2,
+                                             detail::scale_functions(sigma, [&]() -> Scalar { return s_ - Scalar(1); }),
+                                             detail::exp_coefficients(r.theta2));
     const auto ki = detail::sim3_inverse_coefficients<Scalar>(k, r.theta2);
     const Vector3& w = r.omega;
     const Vector3 wt = w.cross(t_);
