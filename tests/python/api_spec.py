@@ -1824,6 +1824,10 @@ def _build_spec():
         "so3_angle": [("R",) + R3],
         "so3_distance": [("a",) + R3, ("b",) + R3],
         "se3_distance": [("a",) + G4, ("b",) + G4],
+        "so2_distance": [("a",) + R2, ("b",) + R2],
+        "se2_distance": [("a",) + G3, ("b",) + G3],
+        "sim3_distance": [("a",) + S4, ("b",) + S4],
+        "se23_distance": [("a",) + X5, ("b",) + X5],
     }
     for name, ops in arrays.items():
         spec[name] = _array_function(name, ops)
@@ -1851,7 +1855,30 @@ def _build_spec():
             ],
             call=getattr(chasles, name),
         )
-    for name, k in (("so3_mean", 3), ("se3_mean", 4)):
+    # the samplers and means of SO2, SE2, Sim3 and SE23 (one generic function each, _random.py / _mean.py)
+    for prefix, k, dof in (("so2", 2, 1), ("se2", 3, 3), ("sim3", 4, 7), ("se23", 5, 9)):
+        spec[f"{prefix}_random"] = Entry(
+            [[Size(f"{prefix}_random(n)"), Rng(f"{prefix}_random(rng)")]], call=getattr(chasles, f"{prefix}_random")
+        )
+        spec[f"{prefix}_gaussian"] = Entry(
+            [
+                [
+                    Anything("mean", np.eye(k)),
+                    Anything("cov", 0.01 * np.eye(dof)),
+                    Size(f"{prefix}_gaussian(n)"),
+                    Rng(f"{prefix}_gaussian(rng)"),
+                ]
+            ],
+            call=getattr(chasles, f"{prefix}_gaussian"),
+        )
+    for name, k in (
+        ("so3_mean", 3),
+        ("se3_mean", 4),
+        ("so2_mean", 2),
+        ("se2_mean", 3),
+        ("sim3_mean", 4),
+        ("se23_mean", 5),
+    ):
         spec[name] = Entry(
             [
                 [
