@@ -177,7 +177,7 @@ from chasles._random import (
     so3_gaussian,
     so3_random,
 )
-from chasles._spline import SE3Spline, SO3Spline
+from chasles._spline import SE2Spline, SE3Spline, SE23Spline, Sim3Spline, SO2Spline, SO3Spline
 from chasles._threads import set_num_threads
 
 __all__ = [
@@ -187,12 +187,16 @@ __all__ = [
     "SO2",
     "SO3",
     "Chain",
+    "SE2Spline",
     "SE3BSpline",
     "SE3Spline",
+    "SE23Spline",
+    "SO2Spline",
     "SO3BSpline",
     "SO3Spline",
     "Screw",
     "Sim3",
+    "Sim3Spline",
     "SpatialInertia",
     "Twist",
     "Wrench",

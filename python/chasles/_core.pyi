@@ -4009,13 +4009,29 @@ class _Chain:
         """
         SE3: the home pose M = g(0).
         """
+def _se23_bspline_new(start_time: float, spacing: float, control: numpy.typing.ArrayLike) -> tuple[float, float, numpy.ndarray]:
+    """
+    The checked arguments of SE23BSpline(start_time, spacing, control): (start_time, spacing, the control elements as a new read-only (N, 5, 5) float64 array of keys), or the SE23BSpline constructor's ValueError / TypeError. A private function of chasles.SE23BSpline (python/chasles/_bspline.py).
+    """
 def _se23_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], geodesic: bool, max_iterations: typing.SupportsInt | typing.SupportsIndex) -> tuple:
     """
     The C++ mean behind chasles.se23_mean, on checked (N, 5, 5) float64 elements and (N,) weights: (mean, iterations, converged).
     """
+def _se23_spline_fit(times: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], keys: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], natural: bool) -> numpy.ndarray:
+    """
+    The coefficients (n, 27) of the spline through checked (n,) float64 times and (n, 5, 5) keys (row i: c1, c2, c3 of segment i; the last row zero).
+    """
+def _se2_bspline_new(start_time: float, spacing: float, control: numpy.typing.ArrayLike) -> tuple[float, float, numpy.ndarray]:
+    """
+    The checked arguments of SE2BSpline(start_time, spacing, control): (start_time, spacing, the control elements as a new read-only (N, 3, 3) float64 array of keys), or the SE2BSpline constructor's ValueError / TypeError. A private function of chasles.SE2BSpline (python/chasles/_bspline.py).
+    """
 def _se2_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], geodesic: bool, max_iterations: typing.SupportsInt | typing.SupportsIndex) -> tuple:
     """
     The C++ mean behind chasles.se2_mean, on checked (N, 3, 3) float64 elements and (N,) weights: (mean, iterations, converged).
+    """
+def _se2_spline_fit(times: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], keys: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], natural: bool) -> numpy.ndarray:
+    """
+    The coefficients (n, 9) of the spline through checked (n,) float64 times and (n, 3, 3) keys (row i: c1, c2, c3 of segment i; the last row zero).
     """
 def _se3_align(a: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], b: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Any) -> tuple:
     """
@@ -4023,7 +4039,7 @@ def _se3_align(a: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], b: ty
     """
 def _se3_bspline_new(start_time: float, spacing: float, control: numpy.typing.ArrayLike) -> tuple[float, float, numpy.ndarray]:
     """
-    The checked arguments of SE3BSpline(start_time, spacing, control): (start_time, spacing, the control elements as a new read-only (N, 4, 4) float64 array of rigid motions), or the SE3BSpline constructor's ValueError / TypeError. A private function of chasles.SE3BSpline (python/chasles/_bspline.py).
+    The checked arguments of SE3BSpline(start_time, spacing, control): (start_time, spacing, the control elements as a new read-only (N, 4, 4) float64 array of poses), or the SE3BSpline constructor's ValueError / TypeError. A private function of chasles.SE3BSpline (python/chasles/_bspline.py).
     """
 def _se3_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], geodesic: bool, max_iterations: typing.SupportsInt | typing.SupportsIndex) -> tuple:
     """
@@ -4041,13 +4057,29 @@ def _sim3_align(a: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], b: t
     """
     The C++ sim3_align behind chasles.sim3_align, on (N, 3) float64 points a, b and (N,) weights or None: (matrix, rssd, singular_values, status).
     """
+def _sim3_bspline_new(start_time: float, spacing: float, control: numpy.typing.ArrayLike) -> tuple[float, float, numpy.ndarray]:
+    """
+    The checked arguments of Sim3BSpline(start_time, spacing, control): (start_time, spacing, the control elements as a new read-only (N, 4, 4) float64 array of keys), or the Sim3BSpline constructor's ValueError / TypeError. A private function of chasles.Sim3BSpline (python/chasles/_bspline.py).
+    """
 def _sim3_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], geodesic: bool, max_iterations: typing.SupportsInt | typing.SupportsIndex) -> tuple:
     """
     The C++ mean behind chasles.sim3_mean, on checked (N, 4, 4) float64 elements and (N,) weights: (mean, iterations, converged).
     """
+def _sim3_spline_fit(times: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], keys: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], natural: bool) -> numpy.ndarray:
+    """
+    The coefficients (n, 21) of the spline through checked (n,) float64 times and (n, 4, 4) keys (row i: c1, c2, c3 of segment i; the last row zero).
+    """
+def _so2_bspline_new(start_time: float, spacing: float, control: numpy.typing.ArrayLike) -> tuple[float, float, numpy.ndarray]:
+    """
+    The checked arguments of SO2BSpline(start_time, spacing, control): (start_time, spacing, the control elements as a new read-only (N, 2, 2) float64 array of keys), or the SO2BSpline constructor's ValueError / TypeError. A private function of chasles.SO2BSpline (python/chasles/_bspline.py).
+    """
 def _so2_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], geodesic: bool, max_iterations: typing.SupportsInt | typing.SupportsIndex) -> tuple:
     """
     The C++ mean behind chasles.so2_mean, on checked (N, 2, 2) float64 elements and (N,) weights: (mean, iterations, converged).
+    """
+def _so2_spline_fit(times: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], keys: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], natural: bool) -> numpy.ndarray:
+    """
+    The coefficients (n, 3) of the spline through checked (n,) float64 times and (n, 2, 2) keys (row i: c1, c2, c3 of segment i; the last row zero).
     """
 def _so3_align(a: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], b: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Any) -> tuple:
     """
@@ -4716,14 +4748,30 @@ _inverse_dynamics: numpy.ufunc
 _inverse_kinematics: numpy.ufunc
 _mass_matrix: numpy.ufunc
 _max_threads: int = 1024
+_se23_bspline: numpy.ufunc
+_se23_bspline_rates: numpy.ufunc
 _se23_from_uniforms: numpy.ufunc
+_se23_spline: numpy.ufunc
+_se23_spline_rates: numpy.ufunc
+_se2_bspline: numpy.ufunc
+_se2_bspline_rates: numpy.ufunc
 _se2_from_uniforms: numpy.ufunc
+_se2_spline: numpy.ufunc
+_se2_spline_rates: numpy.ufunc
 _se3_bspline: numpy.ufunc
 _se3_bspline_rates: numpy.ufunc
 _se3_spline: numpy.ufunc
 _se3_spline_rates: numpy.ufunc
+_sim3_bspline: numpy.ufunc
+_sim3_bspline_rates: numpy.ufunc
 _sim3_from_uniforms: numpy.ufunc
+_sim3_spline: numpy.ufunc
+_sim3_spline_rates: numpy.ufunc
+_so2_bspline: numpy.ufunc
+_so2_bspline_rates: numpy.ufunc
 _so2_from_uniforms: numpy.ufunc
+_so2_spline: numpy.ufunc
+_so2_spline_rates: numpy.ufunc
 _so3_as_euler: numpy.ufunc
 _so3_as_euler_lock: numpy.ufunc
 _so3_as_quat_wxyz: numpy.ufunc

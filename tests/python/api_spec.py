@@ -1924,10 +1924,14 @@ def _build_spec():
     for cls, what, k, keys in (
         (chasles.SO3Spline, "rotations", 3, lambda: np.stack([np.eye(3), rotation()])),
         (chasles.SE3Spline, "poses", 4, lambda: np.stack([np.eye(4), pose()])),
+        (chasles.SO2Spline, "keys", 2, lambda: np.stack([np.eye(2), GOOD[chasles.SO2]().as_matrix()])),
+        (chasles.SE2Spline, "keys", 3, lambda: np.stack([np.eye(3), GOOD[chasles.SE2]().as_matrix()])),
+        (chasles.Sim3Spline, "keys", 4, lambda: np.stack([np.eye(4), GOOD[chasles.Sim3]().as_matrix()])),
+        (chasles.SE23Spline, "keys", 5, lambda: np.stack([np.eye(5), GOOD[chasles.SE23]().as_matrix()])),
     ):
         name = cls.__name__
         spec[f"{name}.__init__"] = Entry(
-            [[KeyTimes(f"{name}(times)"), SplineKeys(f"{name}({what})", (2, k, k), keys)]],
+            [[KeyTimes(f"{name}(times)"), SplineKeys(f"{name}({what})", (2, k, k), keys, cls)]],
             call=lambda t, x, c=cls: c(t, x)(0.7),
             passes_arguments=False,
         )
@@ -1968,10 +1972,13 @@ class KeyTimes(Arg):
 
 @dataclass
 class SplineKeys(Arg):
-    """Two key rotations / poses: an array-like (or sequence of objects) of shape (2, k, k)."""
+    """Two keys of a spline of class `spline`: an array-like (or sequence of
+    objects) of shape (2, k, k), each accepted by the group's from_matrix
+    (its defect at most sqrt(eps))."""
 
     shape: tuple = (2, 3, 3)
     valid: Callable[[], Any] | None = None
+    spline: Any = None
 
     def good(self):
         return self.valid()
@@ -1985,9 +1992,10 @@ class SplineKeys(Arg):
         c = finite_or_refused(a, self.label)
         if isinstance(c, Refused):
             return c
-        k = self.shape[1]
+        group = getattr(chasles, self.spline.__name__[: -len("Spline")])
+        check = getattr(group, "rotation_defect", None) or group.transform_defect
         for m in c.value:
-            defect = chasles.SO3.rotation_defect(m[:3, :3]) if k == 3 else chasles.SE3.transform_defect(m)
+            defect = check(m)
             if not defect <= 1.4901161193847656e-08:
                 return Refused(ValueError, (self.label, "not a"))
         return c

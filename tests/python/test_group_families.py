@@ -451,3 +451,79 @@ def test_gaussian_accepts_objects_and_a_singular_cov(group):
     X = getattr(chasles, f"{group}_gaussian")(m, C, 200, rng=26)
     e = getattr(chasles, f"{group}_log")(np.linalg.solve(np.asarray(m), X)).reshape(200, DOF[group])
     assert np.all(np.abs(e[:, 1:]) < 1e-12) and 0.1 < e[:, 0].std() < 0.3
+
+
+# ---- splines ------------------------------------------------------------------
+
+
+def spline_of(group):
+    return getattr(chasles, {"so2": "SO2", "se2": "SE2", "sim3": "Sim3", "se23": "SE23"}[group] + "Spline")
+
+
+def spline_keys(group, n, seed):
+    """n keys a random walk apart (steps of 0.4 per coordinate), by scipy's expm."""
+    rng = np.random.default_rng(seed)
+    X = [expm(group, rng.uniform(-1, 1, DOF[group]))]
+    for _ in range(n - 1):
+        X.append(X[-1] @ expm(group, 0.4 * rng.standard_normal(DOF[group])))
+    return np.stack(X)
+
+
+@pytest.mark.parametrize("group", GROUPS)
+@pytest.mark.parametrize("ends", ["natural", "chord"])
+def test_spline_passes_through_the_keys_and_its_rates_are_the_derivatives(group, ends):
+    times = np.array([0.0, 0.7, 1.5, 2.0, 3.2])
+    keys = spline_keys(group, 5, 27)
+    s = spline_of(group)(times, keys, ends=ends)
+    np.testing.assert_allclose(s(times), keys, rtol=0, atol=1e-12)
+    np.testing.assert_array_equal(s.keys, keys)
+    t = np.array([0.2, 0.69, 1.1, 1.9, 2.6, 3.0])
+    h = 1e-5
+    X = s(t)
+    # the body velocity (X^-1 dX/dt)^vee by central differences of the matrices, in the issue's layout
+    dX = (s(t + h) - s(t - h)) / (2 * h)
+    V = np.stack([vee(group, np.linalg.solve(Xi, dXi)) for Xi, dXi in zip(X, dX)])
+    v = s.body_velocity(t)
+    assert v.shape == ((6,) if group == "so2" else (6, DOF[group]))
+    np.testing.assert_allclose(v.reshape(6, -1), V, rtol=0, atol=1e-7 * (1 + np.abs(V).max()))
+    a = s.body_acceleration(t)
+    A = (s.body_velocity(t + h) - s.body_velocity(t - h)) / (2 * h)
+    np.testing.assert_allclose(a, A, rtol=0, atol=1e-6 * (1 + np.abs(A).max()))
+    if ends == "natural":
+        np.testing.assert_allclose(s.body_acceleration(times[[0, -1]]), 0.0, atol=1e-9)
+
+
+def test_so2_spline_is_the_natural_cubic_spline_of_the_angles():
+    """SO(2) is abelian: its spline is scipy's natural cubic spline of the unwrapped angles."""
+    interpolate = pytest.importorskip("scipy.interpolate")
+    times = np.array([0.0, 1.0, 1.5, 3.0, 4.0, 6.0])
+    angles = np.array([0.0, 1.0, 2.5, 3.5, 5.0, 4.0])  # past pi: the key steps are below pi
+    s = chasles.SO2Spline(times, chasles.so2_exp(angles))
+    reference = interpolate.CubicSpline(times, angles, bc_type="natural")
+    t = np.linspace(-0.5, 6.5, 57)
+    R = s(t)
+    np.testing.assert_allclose(R[:, 0, 0], np.cos(reference(t)), rtol=0, atol=1e-12)
+    np.testing.assert_allclose(R[:, 1, 0], np.sin(reference(t)), rtol=0, atol=1e-12)
+    np.testing.assert_allclose(s.body_velocity(t), reference(t, 1), rtol=0, atol=1e-11)
+    np.testing.assert_allclose(s.body_acceleration(t), reference(t, 2), rtol=0, atol=1e-10)
+
+
+@pytest.mark.parametrize("group", GROUPS)
+def test_two_keys_give_the_geodesic(group):
+    a, b = spline_keys(group, 2, 28)
+    s = spline_of(group)([1.0, 3.0], np.stack([a, b]))
+    x = logm(group, np.linalg.solve(a, b))
+    for t in (1.0, 1.5, 2.2, 3.0):
+        np.testing.assert_allclose(s(t), a @ expm(group, (t - 1.0) / 2.0 * x), rtol=0, atol=1e-12)
+    np.testing.assert_allclose(np.reshape(s.body_velocity(2.0), -1), x / 2.0, rtol=0, atol=1e-12)
+
+
+@pytest.mark.parametrize("group", GROUPS)
+def test_spline_refuses_keys_that_are_not_elements(group):
+    keys = spline_keys(group, 3, 29)
+    keys[1, 0, 0] += 0.5
+    cls = spline_of(group)
+    with pytest.raises(ValueError, match=rf"^{cls.__name__}\(keys\): key 1 is not a .*from_matrix_projected"):
+        cls([0.0, 1.0, 2.0], keys)
+    with pytest.raises(ValueError, match=rf"^{cls.__name__}\(keys\): expected shape \(3, {N[group]}, {N[group]}\)"):
+        cls([0.0, 1.0, 2.0], keys[:2])
