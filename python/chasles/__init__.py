@@ -63,7 +63,7 @@ from chasles._arrays import (
     so3_from_quat,
     so3_from_rpy,
 )
-from chasles._bspline import SE3BSpline, SO3BSpline
+from chasles._bspline import SE2BSpline, SE3BSpline, SE23BSpline, Sim3BSpline, SO2BSpline, SO3BSpline
 from chasles._chain import Chain
 from chasles._core import (
     SE2,
@@ -187,15 +187,19 @@ __all__ = [
     "SO2",
     "SO3",
     "Chain",
+    "SE2BSpline",
     "SE2Spline",
     "SE3BSpline",
     "SE3Spline",
+    "SE23BSpline",
     "SE23Spline",
+    "SO2BSpline",
     "SO2Spline",
     "SO3BSpline",
     "SO3Spline",
     "Screw",
     "Sim3",
+    "Sim3BSpline",
     "Sim3Spline",
     "SpatialInertia",
     "Twist",

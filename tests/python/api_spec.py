@@ -850,7 +850,7 @@ class Rng(Arg):
 
 @dataclass
 class Control(Arg):
-    """The control elements of SO3BSpline / SE3BSpline (`group` SO3 or SE3):
+    """The control elements of a B-spline (`group` SO3, SE3, SO2, SE2, Sim3 or SE23):
     a list or tuple of initialized objects of the group (TypeError for
     anything else in it), or an array-like of shape (N, k, k) whose
     matrices each pass the group's checked ``from_matrix`` (with float32's
@@ -862,8 +862,15 @@ class Control(Arg):
         return spline_control(self.group)
 
     def judge(self, value):
-        k = 3 if self.group is chasles.SO3 else 4
-        splines = (chasles.SO3BSpline, chasles.SE3BSpline)
+        k = np.asarray(self.group.identity()).shape[0]
+        splines = (
+            chasles.SO3BSpline,
+            chasles.SE3BSpline,
+            chasles.SO2BSpline,
+            chasles.SE2BSpline,
+            chasles.Sim3BSpline,
+            chasles.SE23BSpline,
+        )
         if isinstance(value, (list, tuple)) and value and isinstance(value[0], BOUND + splines):
             for x in value:  # in order: the first one refused is named
                 if not isinstance(x, self.group):
@@ -930,7 +937,12 @@ def spline_control(group):
     k = np.arange(5.0)[:, None]
     if group is chasles.SO3:
         return chasles.so3_exp(np.hstack([0.1 * k, -0.05 * k, 0.2 + 0 * k]))
-    return chasles.se3_exp(np.hstack([0.3 * k, 0 * k, -k, 0.1 * k, -0.05 * k, 0.2 + 0 * k]))
+    if group is chasles.SE3:
+        return chasles.se3_exp(np.hstack([0.3 * k, 0 * k, -k, 0.1 * k, -0.05 * k, 0.2 + 0 * k]))
+    # SO2, SE2, Sim3, SE23: steps of 0.1 k along a fixed tangent
+    dof = {chasles.SO2: 1, chasles.SE2: 3, chasles.Sim3: 7, chasles.SE23: 9}[group]
+    x = 0.1 * k * np.linspace(-1.0, 1.0, dof) + 0.05
+    return getattr(chasles, f"{group.__name__.lower()}_exp")(x[:, 0] if dof == 1 else x)
 
 
 # ---- valid values ---------------------------------------------------------------------
@@ -963,6 +975,10 @@ GOOD = {  # a fresh valid object of each class
     chasles.Chain: lambda: chasles.Chain(CHAIN_SCREWS, CHAIN_HOME),
     chasles.SO3BSpline: lambda: chasles.SO3BSpline(0.0, 0.5, spline_control(chasles.SO3)),
     chasles.SE3BSpline: lambda: chasles.SE3BSpline(0.0, 0.5, spline_control(chasles.SE3)),
+    chasles.SO2BSpline: lambda: chasles.SO2BSpline(0.0, 0.5, spline_control(chasles.SO2)),
+    chasles.SE2BSpline: lambda: chasles.SE2BSpline(0.0, 0.5, spline_control(chasles.SE2)),
+    chasles.Sim3BSpline: lambda: chasles.Sim3BSpline(0.0, 0.5, spline_control(chasles.Sim3)),
+    chasles.SE23BSpline: lambda: chasles.SE23BSpline(0.0, 0.5, spline_control(chasles.SE23)),
     chasles.SpatialInertia: lambda: chasles.SpatialInertia(
         2.0, [0.1, 0.2, 0.3], [[0.1, 0.01, 0.0], [0.01, 0.2, 0.0], [0.0, 0.0, 0.25]]
     ),
@@ -1669,7 +1685,14 @@ def _build_spec():
     spec.update(_protocols(Chain, [6 * n + 12 for n in range(1, 33)]))
 
     # B-splines (start time 0, spacing 0.5, five control elements: times in [0, 1])
-    for cls, group in ((chasles.SO3BSpline, SO3), (chasles.SE3BSpline, SE3)):
+    for cls, group in (
+        (chasles.SO3BSpline, SO3),
+        (chasles.SE3BSpline, SE3),
+        (chasles.SO2BSpline, chasles.SO2),
+        (chasles.SE2BSpline, chasles.SE2),
+        (chasles.Sim3BSpline, chasles.Sim3),
+        (chasles.SE23BSpline, chasles.SE23),
+    ):
         n = cls.__name__
         me = SplineSelf("self", (cls,))
         spec[f"{n}.__init__"] = Entry(

@@ -527,3 +527,65 @@ def test_spline_refuses_keys_that_are_not_elements(group):
         cls([0.0, 1.0, 2.0], keys)
     with pytest.raises(ValueError, match=rf"^{cls.__name__}\(keys\): expected shape \(3, {N[group]}, {N[group]}\)"):
         cls([0.0, 1.0, 2.0], keys[:2])
+
+
+# ---- the B-spline kernels (bound for every group; the Python classes are SO3's and SE3's so far) ----
+
+
+@pytest.mark.parametrize("group", GROUPS)
+def test_bspline_kernels_follow_the_cumulative_formula(group):
+    """_<g>_bspline_new checks the control elements; _<g>_bspline(_rates) is
+    X_i exp(B1 d_1) exp(B2 d_2) exp(B3 d_3), d_j = log(X_{i+j-1}^-1 X_{i+j}),
+    here by scipy's expm / logm, and its rates the central differences."""
+    core = chasles._core
+    control = spline_keys(group, 6, 30)
+    t0, dt, checked = getattr(core, f"_{group}_bspline_new")(0.5, 0.25, control)
+    assert (t0, dt) == (0.5, 0.25) and not checked.flags.writeable
+    np.testing.assert_allclose(checked, control, rtol=0, atol=1e-15)  # the stored form (SO2: cos, sin)
+    evaluate = getattr(core, f"_{group}_bspline")
+    rates = getattr(core, f"_{group}_bspline_rates")
+    for t in (0.5, 0.61, 0.8, 1.2, 1.25):
+        i = min(int((t - t0) // dt), len(control) - 4)
+        u = (t - t0) / dt - i
+        B = [(5 + 3 * u - 3 * u**2 + u**3) / 6, (1 + 3 * u + 3 * u**2 - 2 * u**3) / 6, u**3 / 6]
+        X = control[i].copy()
+        for j in range(1, 4):
+            X = X @ expm(group, B[j - 1] * logm(group, np.linalg.solve(control[i + j - 1], control[i + j])))
+        np.testing.assert_allclose(evaluate(t0, dt, checked, t), X, rtol=0, atol=1e-12)
+        if 0.5 < t < 1.25:
+            h = 1e-6
+            element, velocity, acceleration = rates(t0, dt, checked, t)
+            dX = (evaluate(t0, dt, checked, t + h) - evaluate(t0, dt, checked, t - h)) / (2 * h)
+            np.testing.assert_allclose(velocity, vee(group, np.linalg.solve(element, dX)), rtol=0, atol=1e-6)
+            dV = (rates(t0, dt, checked, t + h)[1] - rates(t0, dt, checked, t - h)[1]) / (2 * h)
+            np.testing.assert_allclose(acceleration, dV, rtol=0, atol=1e-4)
+    bad = control.copy()
+    bad[2, 0, 0] += 0.5
+    cls = {"so2": "SO2", "se2": "SE2", "sim3": "Sim3", "se23": "SE23"}[group]
+    with pytest.raises(ValueError, match=rf"^{cls}BSpline\(control\): element 2 is not a "):
+        getattr(core, f"_{group}_bspline_new")(0.5, 0.25, bad)
+    with pytest.raises(ValueError, match=rf"^{cls}BSpline\(control\): a cubic B-spline needs N >= 4"):
+        getattr(core, f"_{group}_bspline_new")(0.5, 0.25, control[:3])
+
+
+@pytest.mark.parametrize("group", GROUPS)
+def test_bspline_classes_evaluate_the_kernels(group):
+    core = chasles._core
+    name = {"so2": "SO2", "se2": "SE2", "sim3": "Sim3", "se23": "SE23"}[group]
+    cls = getattr(chasles, f"{name}BSpline")
+    control = spline_keys(group, 6, 31)
+    s = cls(0.5, 0.25, control)
+    assert (s.start_time, s.spacing, s.end_time) == (0.5, 0.25, 1.25)
+    np.testing.assert_array_equal(s.control, getattr(core, f"_{group}_bspline_new")(0.5, 0.25, control)[2])
+    t = np.array([[0.5, 0.7], [1.0, 1.25]])
+    np.testing.assert_array_equal(s(t), getattr(core, f"_{group}_bspline")(0.5, 0.25, s.control, t))
+    _, v, a = getattr(core, f"_{group}_bspline_rates")(0.5, 0.25, s.control, t)
+    if group == "so2":  # SO2's rates are floats
+        v, a = v[..., 0], a[..., 0]
+    np.testing.assert_array_equal(s.body_velocity(t), v)
+    np.testing.assert_array_equal(s.body_acceleration(t), a)
+    assert s.body_velocity(t).shape == t.shape + (() if group == "so2" else (DOF[group],))
+    with pytest.raises(ValueError, match=rf"^{name}BSpline\(t\): expected times in \[start_time, end_time\]"):
+        s(1.3)
+    with pytest.raises(TypeError, match=rf"^{name}BSpline\(control\): element 0 is a "):
+        cls(0.0, 1.0, [chasles.SO3()] * 4)

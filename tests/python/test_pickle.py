@@ -57,6 +57,10 @@ NOT_PICKLED_IN_0_1_0 = {
     "SE2Spline",
     "Sim3Spline",
     "SE23Spline",
+    "SO2BSpline",
+    "SE2BSpline",
+    "Sim3BSpline",
+    "SE23BSpline",
 }
 
 
@@ -157,6 +161,14 @@ EXAMPLES = {
     },
     "SO3BSpline": {"spline": lambda: chasles.SO3BSpline(0.0, 0.5, _key_rotations())},
     "SE3BSpline": {"spline": lambda: chasles.SE3BSpline(-1.0, 0.25, _key_poses())},
+    "SO2BSpline": {"spline": lambda: chasles.SO2BSpline(0.0, 0.5, chasles.so2_exp([0.1, -0.2, 0.4, 1.0 / 3.0]))},
+    "SE2BSpline": {"spline": lambda: chasles.SE2BSpline(0.0, 0.5, chasles.se2_exp(np.arange(12.0).reshape(4, 3) / 7))},
+    "Sim3BSpline": {
+        "spline": lambda: chasles.Sim3BSpline(1.0, 2.0, chasles.sim3_exp(np.arange(28.0).reshape(4, 7) / 30))
+    },
+    "SE23BSpline": {
+        "spline": lambda: chasles.SE23BSpline(1.0, 2.0, chasles.se23_exp(np.arange(36.0).reshape(4, 9) / 40))
+    },
 }
 
 # States made invalid in the ways the constructors check, beyond the NaN of
