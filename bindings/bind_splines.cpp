@@ -28,6 +28,11 @@
 // with D = 3, DoF = 3 for SO(3) and D = 4, DoF = 6 for SE(3); the rates are the
 // body velocity and the body acceleration.
 #include <chasles/bspline.hpp>
+#include <chasles/group_parts.hpp>
+#include <chasles/se2.hpp>
+#include <chasles/se23.hpp>
+#include <chasles/sim3.hpp>
+#include <chasles/so2.hpp>
 #include <chasles/spline.hpp>
 
 #include <array>
@@ -53,10 +58,42 @@ using ufunc::upto;
 
 using CArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-/// The size D of the group's matrices (3 or 4), the matrices, the tangents
-/// and what a rates gufunc returns: element, body velocity, body acceleration.
+/// What the splines of a group say about it: its class, the prefix of its
+/// private functions and the word for its keys.
 template <typename Group>
-constexpr int Dim = Group::DoF == 3 ? 3 : 4;
+struct Named;
+template <>
+struct Named<chasles::SO2d> {
+  static constexpr const char *cls = "SO2", *prefix = "so2", *kind = "rotation", *keys = "keys";
+};
+template <>
+struct Named<chasles::SE2d> {
+  static constexpr const char *cls = "SE2", *prefix = "se2", *kind = "rigid motion [[R, t], [0, 0, 1]]", *keys = "keys";
+};
+template <>
+struct Named<SO3d> {
+  static constexpr const char *cls = "SO3", *prefix = "so3", *kind = "rotation", *keys = "rotations";
+};
+template <>
+struct Named<SE3d> {
+  static constexpr const char *cls = "SE3", *prefix = "se3", *kind = "rigid motion [[R, p], [0, 0, 0, 1]]",
+                              *keys = "poses";
+};
+template <>
+struct Named<chasles::Sim3d> {
+  static constexpr const char *cls = "Sim3", *prefix = "sim3", *kind = "similarity [[s R, t], [0, 0, 0, 1]]",
+                              *keys = "keys";
+};
+template <>
+struct Named<chasles::SE23d> {
+  static constexpr const char *cls = "SE23", *prefix = "se23",
+                              *kind = "extended pose [[R, p, v], [0, 1, 0], [0, 0, 1]]", *keys = "keys";
+};
+
+/// The size D of the group's matrices, the matrices, the tangents and what
+/// a rates gufunc returns: element, body velocity, body acceleration.
+template <typename Group>
+constexpr int Dim = chasles::detail::matrix_size<Group>;
 template <typename Group>
 using Matrix = Eigen::Matrix<double, Dim<Group>, Dim<Group>>;
 template <typename Group>
@@ -66,10 +103,21 @@ using Sample = std::tuple<Matrix<Group>, Tangent<Group>, Tangent<Group>>;
 
 constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
 
-/// "SO3" or "SE3" followed by `suffix`: "SO3Spline", "SE3BSpline(control)".
+/// "SO3" (the group's class) followed by `suffix`: "SO3Spline", "SE3BSpline(control)".
 template <typename Group>
 std::string named(const std::string& suffix) {
-  return (Dim<Group> == 3 ? "SO3" : "SE3") + suffix;
+  return Named<Group>::cls + suffix;
+}
+
+/// The defect the group's from_matrix checks (the rotation defect of a
+/// rotation group, the transform defect of the others).
+template <typename Group>
+double defect_of(const Matrix<Group>& m) noexcept {
+  if constexpr (chasles::detail::IsRotationGroup<Group>::value) {
+    return Group::rotation_defect(m);
+  } else {
+    return Group::transform_defect(m);
+  }
 }
 
 /// The results of a rates gufunc whose operands make no spline: NaN rates.
@@ -109,10 +157,10 @@ Sample<Group> nan_sample(const Matrix<Group>& element) {
 template <typename Group>
 py::array fit(const CArray& times, const CArray& keys, bool natural) {
   constexpr int D = Dim<Group>, DoF = Group::DoF;
-  const std::string name = named<Group>(D == 3 ? "Spline(rotations)" : "Spline(poses)");
+  const std::string name = named<Group>(std::string("Spline(") + Named<Group>::keys + ")");
   if (times.ndim() != 1 || keys.ndim() != 3 || times.shape(0) < 2 || keys.shape(0) != times.shape(0) ||
       keys.shape(1) != D || keys.shape(2) != D || times.shape(0) > INT_MAX) {
-    raise_value_error("_" + std::string(D == 3 ? "so3" : "se3") + "_spline_fit: expected times of shape (n,) and " +
+    raise_value_error("_" + std::string(Named<Group>::prefix) + "_spline_fit: expected times of shape (n,) and " +
                       "keys of shape (n, " + std::to_string(D) + ", " + std::to_string(D) +
                       "), 2 <= n <= " + std::to_string(INT_MAX) + ", got times " +
                       shape_string(times.shape(), static_cast<int>(times.ndim())) + " and keys " +
@@ -123,16 +171,14 @@ py::array fit(const CArray& times, const CArray& keys, bool natural) {
   const double tolerance = chasles::Thresholds<double>::rotation_tolerance;
   std::vector<Group> key;
   for (py::ssize_t i = 0; i < n; ++i) {
-    const Eigen::Map<const Eigen::Matrix<double, D, D, Eigen::RowMajor>> M(d + i * D * D);
-    double defect = SO3d::rotation_defect(M.template topLeftCorner<3, 3>());
-    if constexpr (D == 4) defect = SE3d::transform_defect(Eigen::Matrix4d(M));
+    const Matrix<Group> M = Eigen::Map<const Eigen::Matrix<double, D, D, Eigen::RowMajor>>(d + i * D * D);
+    const double defect = defect_of<Group>(M);
     if (!(defect <= tolerance)) {
-      raise_value_error(name + ": key " + std::to_string(i) + " is not a " +
-                        (D == 3 ? "rotation" : "rigid motion [[R, p], [0, 0, 0, 1]]") +
+      raise_value_error(name + ": key " + std::to_string(i) + " is not a " + Named<Group>::kind +
                         ": defect = " + short_float(defect) + " > " + short_float(tolerance) +
                         " (project it first: " + named<Group>(".from_matrix_projected)"));
     }
-    key.push_back(Group::from_matrix_unchecked(Eigen::Matrix<double, D, D>(M)));
+    key.push_back(Group::from_matrix_unchecked(M));
   }
   std::vector<chasles::SplineSegment<Group>> segments(static_cast<std::size_t>(n - 1));
   std::vector<chasles::SplineWork<Group>> work(static_cast<std::size_t>(n));
@@ -182,7 +228,7 @@ struct SplineView {
     return {row.template segment<DoF>(0), row.template segment<DoF>(DoF), row.template segment<DoF>(2 * DoF)};
   }
   /// The element at t: X_i exp(r(t - t_i)); an SE3 as itself (ufunc.hpp
-  /// stores it in place), an SO3 as its matrix.
+  /// stores it in place), the others as their matrix.
   auto element(double t) const noexcept {
     const auto at = [&] {
       double tau;
@@ -190,7 +236,7 @@ struct SplineView {
       return chasles::spline_segment_element(key_of(keys[i]), cubic(i), tau);
     };
     const Group g = valid() ? at() : key_of(Matrix<Group>::Constant(not_a_number));
-    if constexpr (Dim<Group> == 4)
+    if constexpr (std::is_same_v<Group, SE3d>)
       return g;
     else
       return g.matrix();
@@ -307,11 +353,9 @@ py::array control_array(py::handle h) {
                                     : chasles::Thresholds<double>::rotation_tolerance;
     std::optional<Group> g = Group::from_matrix(A, tolerance);
     if (!g) {
-      double defect = SO3d::rotation_defect(A.template topLeftCorner<3, 3>());
-      if constexpr (n == 4) defect = SE3d::transform_defect(A);
-      raise_value_error(what + ": element " + std::to_string(i) + " is not " +
-                        (n == 3 ? "a rotation" : "a rigid motion") + " (defect " + short_float(defect) +
-                        "); project it first (" + named<Group>(".from_matrix_projected)"));
+      const double defect = defect_of<Group>(A);
+      raise_value_error(what + ": element " + std::to_string(i) + " is not a " + Named<Group>::kind + " (defect " +
+                        short_float(defect) + "); project it first (" + named<Group>(".from_matrix_projected)"));
     }
     element = (single ? Group::from_matrix_projected(A) : *g).matrix();
   }
@@ -326,12 +370,12 @@ void bind_one(py::module_& m) {
   constexpr int D = Dim<Group>, DoF = Group::DoF;
   constexpr auto n = upto<ufunc::unbounded>;  // the number of keys, or of control elements
   const std::string d = std::to_string(D), k = std::to_string(3 * DoF), cls = named<Group>("Spline");
-  const std::string bcls = named<Group>("BSpline"), lower = D == 3 ? "so3" : "se3";
+  const std::string bcls = named<Group>("BSpline"), lower = Named<Group>::prefix;
   static const std::string spline = "_" + lower + "_spline", bspline = "_" + lower + "_bspline";
 
   m.def((spline + "_fit").c_str(), &fit<Group>, py::arg("times"), py::arg("keys"), py::arg("natural"),
         ("The coefficients (n, " + k + ") of the spline through checked (n,) float64 times and (n, " + d + ", " + d +
-         ") " + (D == 3 ? "rotations" : "poses") + " (row i: c1, c2, c3 of segment i; the last row zero).")
+         ") " + Named<Group>::keys + " (row i: c1, c2, c3 of segment i; the last row zero).")
             .c_str());
   def_gufuncs<Group, Core<n>, Core<n, D, D>, Core<n, 3 * DoF>>(
       m, spline.c_str(), "times, keys, coefficients, t",
@@ -355,7 +399,7 @@ void bind_one(py::module_& m) {
         py::arg("start_time"), py::arg("spacing"), py::arg("control"),
         ("The checked arguments of " + bcls +
          "(start_time, spacing, control): (start_time, spacing, the control elements as a new read-only (N, " + d +
-         ", " + d + ") float64 array of " + (D == 3 ? "rotations" : "rigid motions") + "), or the " + bcls +
+         ", " + d + ") float64 array of " + Named<Group>::keys + "), or the " + bcls +
          " constructor's ValueError / TypeError. A private function of chasles." + bcls +
          " (python/chasles/_bspline.py).")
             .c_str());
@@ -374,6 +418,10 @@ void bind_one(py::module_& m) {
 void bind_splines(py::module_& m) {
   bind_one<SO3d>(m);
   bind_one<SE3d>(m);
+  bind_one<chasles::SO2d>(m);
+  bind_one<chasles::SE2d>(m);
+  bind_one<chasles::Sim3d>(m);
+  bind_one<chasles::SE23d>(m);
 }
 
 }  // namespace chasles_py

@@ -11,7 +11,11 @@
 #include <chasles/distance.hpp>
 #include <chasles/mean.hpp>
 #include <chasles/random.hpp>
+#include <chasles/se2.hpp>
+#include <chasles/se23.hpp>
 #include <chasles/se3.hpp>
+#include <chasles/sim3.hpp>
+#include <chasles/so2.hpp>
 #include <chasles/so3.hpp>
 
 #include "bindings.hpp"
@@ -28,6 +32,121 @@ using ufunc::def_ufunc;
 using ufunc::ScalarOf;
 using SO3d = chasles::SO3<double>;
 using SE3d = chasles::SE3<double>;
+
+/// The group G<double> over the scalar T: G<T>.
+template <typename G, typename T>
+struct RebindOf;
+template <template <typename> class C, typename S, typename T>
+struct RebindOf<C<S>, T> {
+  using type = C<T>;
+};
+template <typename G, typename T>
+using Rebind = typename RebindOf<G, T>::type;
+
+/// What the statistics of a group say about it: the prefix of its
+/// functions, the word for its elements, its class, and (for the groups
+/// whose distance is bound by def_distance) the distance's docstring.
+template <typename G>
+struct Stat;
+template <>
+struct Stat<chasles::SO2d> {
+  static constexpr const char *prefix = "so2", *kind = "rotation", *cls = "SO2", *matrices = "rotation matrices",
+                              *returns = "the distances, radians, in [0, pi]";
+  static constexpr const char* distance_doc = R"(Geodesic distances of plane rotations: |angle of a^-1 b|, in [0, pi].
+
+d(a, b) = |log(a^T b)|, the bi-invariant (angular) distance: symmetric and
+unchanged by d(g a, g b) and d(a g, b g); the absolute difference of the
+angles, wrapped to [0, pi].)";
+};
+template <>
+struct Stat<chasles::SE2d> {
+  static constexpr const char *prefix = "se2", *kind = "rigid motion", *cls = "SE2",
+                              *matrices = "homogeneous matrices [[R, t], [0, 1]]",
+                              *returns = "[angle (radians), translation distance]";
+  static constexpr const char* distance_doc =
+      R"(Distances of plane rigid motions: (rotation angle, translation distance).
+
+[angle, translation] with angle = |log(R_a^T R_b)| in [0, pi] (so2_distance
+of the rotations) and translation = |t_b - t_a|, the Euclidean distance of
+the two frames' origins. SE(2) has no bi-invariant metric, so the two are
+returned apart, for the caller to weigh; both are unchanged by a change of
+the fixed frame, d(g a, g b).)";
+};
+template <>
+struct Stat<SO3d> {
+  static constexpr const char *prefix = "so3", *kind = "rotation", *cls = "SO3";
+};
+template <>
+struct Stat<SE3d> {
+  static constexpr const char *prefix = "se3", *kind = "rigid motion", *cls = "SE3";
+};
+template <>
+struct Stat<chasles::Sim3d> {
+  static constexpr const char *prefix = "sim3", *kind = "similarity", *cls = "Sim3",
+                              *matrices = "similarity matrices [[s R, t], [0, 1]]",
+                              *returns = "[angle (radians), translation distance, |log(s_b / s_a)|]";
+  static constexpr const char* distance_doc =
+      R"(Distances of similarities: (rotation angle, translation distance, log-scale distance).
+
+[angle, translation, scale] with angle = |log(R_a^T R_b)| in [0, pi]
+(so3_distance of the rotations), translation = |t_b - t_a| and
+scale = |log(s_b / s_a)| = |sigma_b - sigma_a|. Sim(3) has no bi-invariant
+metric, so the three are returned apart, for the caller to weigh; all are
+unchanged by a rigid change of the fixed frame, and a change of scale
+scales the translation distance with it.)";
+};
+template <>
+struct Stat<chasles::SE23d> {
+  static constexpr const char *prefix = "se23", *kind = "extended pose", *cls = "SE23",
+                              *matrices = "extended poses [[R, p, v], [0, 1, 0], [0, 0, 1]]",
+                              *returns = "[angle (radians), |p_b - p_a|, |v_b - v_a|]";
+  static constexpr const char* distance_doc =
+      R"(Distances of extended poses: (rotation angle, position distance, velocity distance).
+
+[angle, position, velocity] with angle = |log(R_a^T R_b)| in [0, pi]
+(so3_distance of the rotations), position = |p_b - p_a| and
+velocity = |v_b - v_a|. SE_2(3) has no bi-invariant metric, so the three
+are returned apart, for the caller to weigh; all are unchanged by a
+rotation and a translation of the fixed frame.)";
+};
+
+/// The defect the group's from_matrix checks: the rotation defect of a
+/// rotation group, the transform defect (rotation block and fixed rows) of
+/// the others.
+template <typename Group, typename M>
+double defect_of(const M& m) noexcept {
+  if constexpr (chasles::detail::IsRotationGroup<Group>::value) {
+    return Group::rotation_defect(m);
+  } else {
+    return Group::transform_defect(m);
+  }
+}
+
+/// The distance of the parts of two elements of a group (distance.hpp):
+/// d(a, b) = |log(a^-1 b)| on a rotation group, a scalar; on the others
+/// the vector (angle, the norm of each Euclidean block). One template for
+/// SO2, SE2, Sim3 and SE23 (SO3 and SE3 are bound above, with their own
+/// overloads' words).
+template <typename Group>
+void def_distance(py::module_& m) {
+  using S = Stat<Group>;
+  constexpr int N = chasles::detail::matrix_size<Group>;
+  constexpr bool rotation = chasles::detail::IsRotationGroup<Group>::value;
+  constexpr int B = chasles::GroupParts<Group>::B;
+  using Out = std::conditional_t<rotation, Core<>, Core<1 + B>>;
+  static const std::string name = std::string(S::prefix) + "_distance";
+  const std::string n = std::to_string(N);
+  static const std::string doc = std::string(S::distance_doc) + "\n\nArgs:\n    a: array_like of shape (..., " + n +
+                                 ", " + n + "): " + S::matrices + ".\n    b: array_like of shape (..., " + n + ", " +
+                                 n + "): " + S::matrices + ".\n\nReturns:\n    numpy.ndarray of shape (..." +
+                                 (rotation ? std::string("") : ", " + std::to_string(1 + B)) + "): " + S::returns +
+                                 ", the batch shape being the broadcast of a's and b's.";
+  def_ufunc<Out(Core<N, N>, Core<N, N>)>(
+      m, name.c_str(), "a, b", array_doc(doc.c_str()), [](const auto& a, const auto& b) {
+        using G = Rebind<Group, ScalarOf<decltype(a)>>;
+        return chasles::distance(G::from_matrix_unchecked(a), G::from_matrix_unchecked(b));
+      });
+}
 
 void bind_distances(py::module_& m) {
   def_ufunc<Core<>(Core<3, 3>)>(m, "so3_angle", "R",
@@ -111,6 +230,42 @@ Returns:
       });
 }
 
+/// The private map behind the samplers of python/chasles/_random.py for
+/// G: element_from_uniforms (random.hpp), the uniform rotation of U
+/// uniforms u and the Euclidean part low + (high - low) v of K more; for a
+/// rotation group (K = 0) u alone. `_so2_from_uniforms` (1)->(2,2),
+/// `_se2_from_uniforms` (1),(2),(2),(2)->(3,3), `_sim3_from_uniforms`
+/// (3),(4),(4),(4)->(4,4) (v: translation then log-scale),
+/// `_se23_from_uniforms` (3),(6),(6),(6)->(5,5) (v: position then velocity).
+template <typename Group>
+void def_from_uniforms(py::module_& m) {
+  using S = Stat<Group>;
+  using Parts = chasles::GroupParts<Group>;
+  constexpr int N = chasles::detail::matrix_size<Group>, K = Parts::K;
+  constexpr int U = chasles::UniformRotation<typename Parts::Rotation>::U;
+  static const std::string name = std::string("_") + S::prefix + "_from_uniforms";
+  static const std::string doc =
+      std::string("The map behind chasles.") + S::prefix + "_random: a uniform (Haar) rotation of " +
+      std::to_string(U) + " uniforms u in [0, 1)" +
+      (K > 0 ? ", and the Euclidean part low + (high - low) v (element_from_uniforms)" : "") + ".";
+  if constexpr (K == 0) {
+    def_ufunc<Core<N, N>(Core<U>)>(m, name.c_str(), "u", array_doc(doc.c_str()), [](const auto& u) {
+      using T = ScalarOf<decltype(u)>;
+      using G = Rebind<Group, T>;
+      return chasles::UniformRotation<G>::map(Eigen::Matrix<T, U, 1>(u)).matrix();
+    });
+  } else {
+    def_ufunc<Core<N, N>(Core<U>, Core<K>, Core<K>, Core<K>)>(
+        m, name.c_str(), "u, v, low, high", array_doc(doc.c_str()),
+        [](const auto& u, const auto& v, const auto& low, const auto& high) {
+          using T = ScalarOf<decltype(u)>;
+          using G = Rebind<Group, T>;
+          using V = Eigen::Matrix<T, K, 1>;
+          return chasles::element_from_uniforms<G>(Eigen::Matrix<T, U, 1>(u), V(v), V(low), V(high)).matrix();
+        });
+  }
+}
+
 std::string shape_of(const py::array& a) {
   return shape_string(reinterpret_cast<const Py_intptr_t*>(a.shape()), static_cast<int>(a.ndim()));
 }
@@ -119,19 +274,22 @@ std::string shape_of(const py::array& a) {
 /// weights, checked by the Python caller (python/chasles/_mean.py) and again
 /// here for what this function reads: the shapes (the elements' N and the
 /// weights' must agree, or the loops would read past the weights), the
-/// rotations and the weights (finite, >= 0, not all 0, as the C++ mean
-/// reports them): (matrix, iterations, converged). A reduction over the
-/// batch axis, so not a gufunc: the elements are copied into a vector, then
-/// the C++ mean runs without the GIL.
-template <typename Group, int D>
+/// elements (as the group's from_matrix checks one) and the weights (finite,
+/// >= 0, not all 0, as the C++ mean reports them): (matrix, iterations,
+/// converged). A reduction over the batch axis, so not a gufunc: the
+/// elements are copied into a vector, then the C++ mean runs without the
+/// GIL. One template for every group.
+template <typename Group>
 py::tuple mean_of(const py::array_t<double, py::array::c_style | py::array::forcecast>& elements,
                   const py::array_t<double, py::array::c_style | py::array::forcecast>& weights, bool geodesic,
                   int max_iterations) {
-  const char* const name = D == 3 ? "_so3_mean" : "_se3_mean";
+  constexpr int D = chasles::detail::matrix_size<Group>;
+  using S = Stat<Group>;
+  const std::string name = std::string("_") + S::prefix + "_mean";
   if (elements.ndim() != 3 || elements.shape(1) != D || elements.shape(2) != D || elements.shape(0) < 1 ||
       weights.ndim() != 1 || weights.shape(0) != elements.shape(0)) {
     const std::string d = std::to_string(D);
-    throw py::value_error(std::string(name) + "(matrices, weights): expected shapes (N, " + d + ", " + d +
+    throw py::value_error(name + "(matrices, weights): expected shapes (N, " + d + ", " + d +
                           ") with N >= 1 and (N,), got " + shape_of(elements) + " and " + shape_of(weights));
   }
   const py::ssize_t n = elements.shape(0);
@@ -140,20 +298,20 @@ py::tuple mean_of(const py::array_t<double, py::array::c_style | py::array::forc
   const double* d = elements.data();
   const double tolerance = chasles::Thresholds<double>::rotation_tolerance;
   for (py::ssize_t i = 0; i < n; ++i) {
-    const Eigen::Map<const Eigen::Matrix<double, D, D, Eigen::RowMajor>> M(d + i * D * D);
-    // The mean of matrices that are not rotations is not defined (and its
-    // iteration need not converge): refused, as SO3.from_matrix refuses them.
-    const double defect = SO3d::rotation_defect(M.template topLeftCorner<3, 3>());
+    const Eigen::Matrix<double, D, D> M = Eigen::Map<const Eigen::Matrix<double, D, D, Eigen::RowMajor>>(d + i * D * D);
+    // The mean of matrices that are not elements of the group is not
+    // defined (and its iteration need not converge): refused, as the
+    // group's from_matrix refuses them.
+    const double defect = defect_of<Group>(M);
     if (!(defect <= tolerance)) {
       char text[320];
       std::snprintf(text, sizeof text,
-                    "%s(matrices): element %zd is not a rotation%s: defect max(|R^T R - I|, |det R - 1|) = %.3g > "
-                    "%.3g (project it first: SO3.from_matrix_projected)",
-                    D == 3 ? "so3_mean" : "se3_mean", static_cast<Py_ssize_t>(i), D == 3 ? "" : " block", defect,
-                    tolerance);
+                    "%s_mean(matrices): element %zd is not a %s: defect %.3g > %.3g (project it first: "
+                    "%s.from_matrix_projected)",
+                    S::prefix, static_cast<Py_ssize_t>(i), S::kind, defect, tolerance, S::cls);
       throw py::value_error(text);
     }
-    X.push_back(Group::from_matrix_unchecked(Eigen::Matrix<double, D, D>(M)));
+    X.push_back(Group::from_matrix_unchecked(M));
   }
   const double* w = weights.data();
   chasles::MeanResult<Group> r{Group(), 0, true, true};
@@ -168,26 +326,44 @@ py::tuple mean_of(const py::array_t<double, py::array::c_style | py::array::forc
         r.weights_valid = chasles::mean_weights_valid(X.begin(), X.end(), w);
     }
   }
-  if (!r.weights_valid) throw py::value_error(std::string(name) + "(weights): expected finite weights >= 0, not all 0");
+  if (!r.weights_valid) throw py::value_error(name + "(weights): expected finite weights >= 0, not all 0");
   return py::make_tuple(mat_out<D, D>(Eigen::Matrix<double, D, D>(r.mean.matrix())), r.iterations, r.converged);
 }
 
+template <typename Group>
+void def_mean(py::module_& m) {
+  using S = Stat<Group>;
+  constexpr int D = chasles::detail::matrix_size<Group>;
+  const std::string d = std::to_string(D);
+  static const std::string name = std::string("_") + S::prefix + "_mean";
+  static const std::string doc = std::string("The C++ mean behind chasles.") + S::prefix + "_mean, on checked (N, " +
+                                 d + ", " + d + ") float64 elements and (N,) weights: (mean, iterations, converged).";
+  m.def(name.c_str(), &mean_of<Group>, py::arg("matrices"), py::arg("weights"), py::arg("geodesic"),
+        py::arg("max_iterations"), doc.c_str());
+}
+
 void bind_means(py::module_& m) {
-  m.def("_so3_mean", &mean_of<SO3d, 3>, py::arg("matrices"), py::arg("weights"), py::arg("geodesic"),
-        py::arg("max_iterations"),
-        "The C++ mean behind chasles.so3_mean, on checked (N, 3, 3) float64 rotations and (N,) weights: "
-        "(mean, iterations, converged).");
-  m.def("_se3_mean", &mean_of<SE3d, 4>, py::arg("matrices"), py::arg("weights"), py::arg("geodesic"),
-        py::arg("max_iterations"),
-        "The C++ mean behind chasles.se3_mean, on checked (N, 4, 4) float64 poses and (N,) weights: "
-        "(mean, iterations, converged).");
+  def_mean<chasles::SO2d>(m);
+  def_mean<chasles::SE2d>(m);
+  def_mean<SO3d>(m);
+  def_mean<SE3d>(m);
+  def_mean<chasles::Sim3d>(m);
+  def_mean<chasles::SE23d>(m);
 }
 
 }  // namespace
 
 void bind_statistics(py::module_& m) {
   bind_distances(m);
+  def_distance<chasles::SO2d>(m);
+  def_distance<chasles::SE2d>(m);
+  def_distance<chasles::Sim3d>(m);
+  def_distance<chasles::SE23d>(m);
   bind_sampling(m);
+  def_from_uniforms<chasles::SO2d>(m);
+  def_from_uniforms<chasles::SE2d>(m);
+  def_from_uniforms<chasles::Sim3d>(m);
+  def_from_uniforms<chasles::SE23d>(m);
   bind_means(m);
 }
 

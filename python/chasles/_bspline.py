@@ -1,4 +1,5 @@
-"""The uniform cumulative cubic B-splines on SO(3) and SE(3).
+"""The uniform cumulative cubic B-splines on SO(3) and SE(3), and on SO(2),
+SE(2), Sim(3) and SE_2(3) (classes made by ``_make_bspline``).
 
 The checks of the control elements and the evaluation are C++
 (include/chasles/bspline.hpp, through bindings/bind_splines.cpp): these
@@ -23,8 +24,38 @@ from numpy.typing import ArrayLike
 from chasles import _core
 from chasles._value import Value
 
+# What the docstrings say of each group: the matrix size, the tangent size,
+# the matrices, the body velocity and one element (SO2's rates are floats).
+_GROUPS = {
+    "SO3": (3, 3, "rotation matrices", "the angular velocity w in the body frame", "a rotation"),
+    "SE3": (4, 6, "rigid motions [[R, p], [0, 0, 0, 1]]", "the body twist (v, w), linear part first", "a rigid motion"),
+    "SO2": (2, 1, "rotation matrices", "the angular rate", "a rotation"),
+    "SE2": (
+        3,
+        3,
+        "rigid motions [[R, t], [0, 0, 1]]",
+        "the body twist (vx, vy, w), linear part first",
+        "a rigid motion",
+    ),
+    "Sim3": (4, 7, "similarities [[s R, t], [0, 0, 0, 1]]", "the body velocity (v, w, sigma)", "a similarity"),
+    "SE23": (
+        5,
+        9,
+        "extended poses [[R, p, v], [0, 1, 0], [0, 0, 1]]",
+        "the body velocity (rho, nu, w)",
+        "an extended pose",
+    ),
+}
+
+
+def _rate_shape(group: str) -> str:
+    dof = _GROUPS[group][1]
+    return "t.shape" if dof == 1 else f"t.shape + ({dof},)"
+
 
 def _class_doc(group: str, name: str) -> str:
+    if group not in ("SO3", "SE3"):
+        return _generic_class_doc(group, name)
     so3 = group == "SO3"
     m, k = ("3, 3", "3") if so3 else ("4, 4", "6")
     rates = (
@@ -72,23 +103,48 @@ Example:
 """
 
 
+def _generic_class_doc(group: str, name: str) -> str:
+    """The class docstring of the B-spline on a group other than SO3 and SE3:
+    SO3's text, with the group's rates and an example of its own."""
+    n, dof, _, velocity, _ = _GROUPS[group]
+    text = _class_doc("SO3", "SO3BSpline")
+    text = text.replace("on SO(3)", f"on {group}", 1)
+    text = text.replace(
+        "they are angular velocities w (rad per unit of time).",
+        f"they are {velocity}, in the order of {group}'s tangent" + (" (floats)." if dof == 1 else "."),
+    )
+    head = text[: text.index("Example:")]
+    squeeze = "[:, 0]" if dof == 1 else ""
+    return (
+        head
+        + f"""Example:
+    >>> import chasles
+    >>> control = chasles.{group.lower()}_exp(np.outer(0.1 * np.arange(6), np.ones({dof})){squeeze})
+    >>> spline = chasles.{name}(0.0, 0.5, control)
+    >>> spline.end_time
+    1.5
+    >>> spline([0.0, 0.7]).shape
+    (2, {n}, {n})
+"""
+    )
+
+
 def _init_doc(group: str) -> str:
-    so3 = group == "SO3"
-    k = "3" if so3 else "4"
+    k, _, matrices, _, _ = _GROUPS[group]
     return f"""A spline from its start time, knot spacing and control elements.
 
 Args:
     start_time: t0, finite.
     spacing: dt > 0, finite, the time between knots.
     control: N >= 4 control elements: a sequence of {group}, or an array-like of
-        shape (N, {k}, {k}) of {"rotation matrices" if so3 else "rigid motions [[R, p], [0, 0, 0, 1]]"} (checked as
+        shape (N, {k}, {k}) of {matrices} (checked as
         {group}.from_matrix does; a float32 array with float32's tolerance,
         3.5e-4, then projected to the nearest rotation). The spline keeps
         its own float64 copy.
 
 Raises:
     ValueError: fewer than 4 control elements, a wrong shape, a matrix
-        that is not {"a rotation" if so3 else "a rigid motion"}, a start time that is not finite or a spacing that
+        that is not {_GROUPS[group][4]}, a start time that is not finite or a spacing that
         is not finite and > 0.
     TypeError: a sequence holding something other than {group}; __init__
         called again on a spline (splines are immutable).
@@ -121,7 +177,7 @@ class _BSpline(Value):
                 f"make a new {self._name})"
             )
         if isinstance(control, (list, tuple)) and control and isinstance(control[0], _BSpline):
-            group = self._name[:3]
+            group = self._name[: -len("BSpline")]
             raise TypeError(
                 f"{self._name}(control): element 0 is a {type(control[0]).__name__}, expected an {group} "
                 f"(a sequence of them, or an array of matrices)"
@@ -206,7 +262,9 @@ def _evaluation(group: str, order: int, name: str, doc: str) -> Any:
             r = ufunc(start, step, control, times)
         except Exception as e:
             _reraise(e, what)
-        return r[order] if order else r
+        if not order:
+            return r
+        return r[order][..., 0] if _GROUPS[group][1] == 1 else r[order]
 
     method.__name__ = name
     method.__qualname__ = name
@@ -216,10 +274,9 @@ def _evaluation(group: str, order: int, name: str, doc: str) -> Any:
 
 def _methods(group: str) -> tuple[Any, Any, Any]:
     """__call__, body_velocity and body_acceleration of the B-spline on `group`."""
-    so3 = group == "SO3"
-    core, k = ("3, 3", "3") if so3 else ("4, 4", "6")
-    what = "the rotation matrices" if so3 else "the homogeneous matrices"
-    velocity = "the angular velocity w in the body frame" if so3 else "the body twist (v, w), linear part first"
+    n, _, matrices, velocity, _ = _GROUPS[group]
+    core, k = f"{n}, {n}", _rate_shape(group)
+    what = {"SO3": "the rotation matrices", "SE3": "the homogeneous matrices"}.get(group, f"the {matrices}")
     return (
         _evaluation(
             group,
@@ -248,7 +305,7 @@ Args:
     {_TIMES}
 
 Returns:
-    numpy.ndarray: shape t.shape + ({k},), {velocity}.
+    numpy.ndarray: shape {k}, {velocity}.
 
 {_RAISES}
 """,
@@ -265,7 +322,7 @@ Args:
     {_TIMES}
 
 Returns:
-    numpy.ndarray: shape t.shape + ({k},), per unit of time squared.
+    numpy.ndarray: shape {k}, per unit of time squared.
 
 {_RAISES}
 """,
@@ -275,7 +332,7 @@ Returns:
 
 def _properties(group: str) -> tuple[property, property, property, property, Any]:
     """start_time, spacing, end_time, control and __repr__ of the B-spline on `group`."""
-    k = 3 if group == "SO3" else 4
+    k = _GROUPS[group][0]
 
     def start_time(self: _BSpline) -> float:
         """float: t0, the start of the first segment."""
@@ -330,4 +387,25 @@ class SE3BSpline(_BSpline):
     start_time, spacing, end_time, control, __repr__ = _properties("SE3")
 
 
-_CLASSES.update(SO3=SO3BSpline, SE3=SE3BSpline)
+def _make_bspline(group: str) -> type:
+    """The B-spline class of `group` (SO2, SE2, Sim3, SE23), with SO3BSpline's members."""
+    name = f"{group}BSpline"
+
+    def __init__(self: _BSpline, start_time: float, spacing: float, control: ArrayLike) -> None:
+        self._init(start_time, spacing, control)
+
+    __init__.__doc__ = _init_doc(group)
+    __init__.__qualname__ = f"{name}.__init__"
+    members: dict[str, Any] = {"__doc__": _class_doc(group, name), "__module__": __name__, "__qualname__": name}
+    members.update(_name=name, _new=f"_{group.lower()}_bspline_new", __init__=__init__)
+    members.update(zip(("__call__", "body_velocity", "body_acceleration"), _methods(group)))
+    members.update(zip(("start_time", "spacing", "end_time", "control", "__repr__"), _properties(group)))
+    return type(name, (_BSpline,), members)
+
+
+SO2BSpline = _make_bspline("SO2")
+SE2BSpline = _make_bspline("SE2")
+Sim3BSpline = _make_bspline("Sim3")
+SE23BSpline = _make_bspline("SE23")
+
+_CLASSES.update(SO3=SO3BSpline, SE3=SE3BSpline, SO2=SO2BSpline, SE2=SE2BSpline, Sim3=Sim3BSpline, SE23=SE23BSpline)

@@ -8,7 +8,7 @@ import numpy
 import numpy.dtypes
 import numpy.typing
 import typing
-__all__: list[str] = ['Chain', 'SE2', 'SE23', 'SE3', 'SO2', 'SO3', 'Screw', 'Sim3', 'SpatialInertia', 'Twist', 'Wrench', 'act_jacobians', 'between', 'between_jacobians', 'compose_jacobians', 'get_num_threads', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'lminus_jacobians', 'log_jacobian', 'lplus', 'lplus_jacobians', 'rminus', 'rminus_jacobians', 'rplus', 'rplus_jacobians', 'se23_act', 'se23_compose', 'se23_exp', 'se23_hat', 'se23_interpolate', 'se23_inverse', 'se23_log', 'se23_normalize', 'se23_vee', 'se2_act', 'se2_compose', 'se2_exp', 'se2_hat', 'se2_interpolate', 'se2_inverse', 'se2_log', 'se2_normalize', 'se2_vee', 'se3_act', 'se3_act_jacobian', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_distance', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_normalize', 'se3_vee', 'sim3_act', 'sim3_compose', 'sim3_exp', 'sim3_hat', 'sim3_interpolate', 'sim3_inverse', 'sim3_log', 'sim3_normalize', 'sim3_vee', 'so2_act', 'so2_compose', 'so2_exp', 'so2_hat', 'so2_interpolate', 'so2_inverse', 'so2_log', 'so2_normalize', 'so2_vee', 'so3_act', 'so3_act_jacobian', 'so3_angle', 'so3_compose', 'so3_distance', 'so3_exp', 'so3_from_uniforms', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_normalize', 'so3_vee']
+__all__: list[str] = ['Chain', 'SE2', 'SE23', 'SE3', 'SO2', 'SO3', 'Screw', 'Sim3', 'SpatialInertia', 'Twist', 'Wrench', 'act_jacobians', 'between', 'between_jacobians', 'compose_jacobians', 'get_num_threads', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'lminus_jacobians', 'log_jacobian', 'lplus', 'lplus_jacobians', 'rminus', 'rminus_jacobians', 'rplus', 'rplus_jacobians', 'se23_act', 'se23_compose', 'se23_distance', 'se23_exp', 'se23_hat', 'se23_interpolate', 'se23_inverse', 'se23_log', 'se23_normalize', 'se23_vee', 'se2_act', 'se2_compose', 'se2_distance', 'se2_exp', 'se2_hat', 'se2_interpolate', 'se2_inverse', 'se2_log', 'se2_normalize', 'se2_vee', 'se3_act', 'se3_act_jacobian', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_distance', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_normalize', 'se3_vee', 'sim3_act', 'sim3_compose', 'sim3_distance', 'sim3_exp', 'sim3_hat', 'sim3_interpolate', 'sim3_inverse', 'sim3_log', 'sim3_normalize', 'sim3_vee', 'so2_act', 'so2_compose', 'so2_distance', 'so2_exp', 'so2_hat', 'so2_interpolate', 'so2_inverse', 'so2_log', 'so2_normalize', 'so2_vee', 'so3_act', 'so3_act_jacobian', 'so3_angle', 'so3_compose', 'so3_distance', 'so3_exp', 'so3_from_uniforms', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_normalize', 'so3_vee']
 
 _Name = typing.TypeVar("_Name", bound=str)
 _Signature = typing.TypeVar("_Signature", bound=str)
@@ -4009,17 +4009,41 @@ class _Chain:
         """
         SE3: the home pose M = g(0).
         """
+def _se23_bspline_new(start_time: float, spacing: float, control: numpy.typing.ArrayLike) -> tuple[float, float, numpy.ndarray]:
+    """
+    The checked arguments of SE23BSpline(start_time, spacing, control): (start_time, spacing, the control elements as a new read-only (N, 5, 5) float64 array of keys), or the SE23BSpline constructor's ValueError / TypeError. A private function of chasles.SE23BSpline (python/chasles/_bspline.py).
+    """
+def _se23_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], geodesic: bool, max_iterations: typing.SupportsInt | typing.SupportsIndex) -> tuple:
+    """
+    The C++ mean behind chasles.se23_mean, on checked (N, 5, 5) float64 elements and (N,) weights: (mean, iterations, converged).
+    """
+def _se23_spline_fit(times: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], keys: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], natural: bool) -> numpy.ndarray:
+    """
+    The coefficients (n, 27) of the spline through checked (n,) float64 times and (n, 5, 5) keys (row i: c1, c2, c3 of segment i; the last row zero).
+    """
+def _se2_bspline_new(start_time: float, spacing: float, control: numpy.typing.ArrayLike) -> tuple[float, float, numpy.ndarray]:
+    """
+    The checked arguments of SE2BSpline(start_time, spacing, control): (start_time, spacing, the control elements as a new read-only (N, 3, 3) float64 array of keys), or the SE2BSpline constructor's ValueError / TypeError. A private function of chasles.SE2BSpline (python/chasles/_bspline.py).
+    """
+def _se2_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], geodesic: bool, max_iterations: typing.SupportsInt | typing.SupportsIndex) -> tuple:
+    """
+    The C++ mean behind chasles.se2_mean, on checked (N, 3, 3) float64 elements and (N,) weights: (mean, iterations, converged).
+    """
+def _se2_spline_fit(times: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], keys: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], natural: bool) -> numpy.ndarray:
+    """
+    The coefficients (n, 9) of the spline through checked (n,) float64 times and (n, 3, 3) keys (row i: c1, c2, c3 of segment i; the last row zero).
+    """
 def _se3_align(a: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], b: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Any) -> tuple:
     """
     The C++ se3_align behind chasles.se3_align, on (N, 3) float64 points a, b and (N,) weights or None: (matrix, rssd, singular_values, status).
     """
 def _se3_bspline_new(start_time: float, spacing: float, control: numpy.typing.ArrayLike) -> tuple[float, float, numpy.ndarray]:
     """
-    The checked arguments of SE3BSpline(start_time, spacing, control): (start_time, spacing, the control elements as a new read-only (N, 4, 4) float64 array of rigid motions), or the SE3BSpline constructor's ValueError / TypeError. A private function of chasles.SE3BSpline (python/chasles/_bspline.py).
+    The checked arguments of SE3BSpline(start_time, spacing, control): (start_time, spacing, the control elements as a new read-only (N, 4, 4) float64 array of poses), or the SE3BSpline constructor's ValueError / TypeError. A private function of chasles.SE3BSpline (python/chasles/_bspline.py).
     """
 def _se3_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], geodesic: bool, max_iterations: typing.SupportsInt | typing.SupportsIndex) -> tuple:
     """
-    The C++ mean behind chasles.se3_mean, on checked (N, 4, 4) float64 poses and (N,) weights: (mean, iterations, converged).
+    The C++ mean behind chasles.se3_mean, on checked (N, 4, 4) float64 elements and (N,) weights: (mean, iterations, converged).
     """
 def _se3_spline_fit(times: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], keys: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], natural: bool) -> numpy.ndarray:
     """
@@ -4033,6 +4057,30 @@ def _sim3_align(a: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], b: t
     """
     The C++ sim3_align behind chasles.sim3_align, on (N, 3) float64 points a, b and (N,) weights or None: (matrix, rssd, singular_values, status).
     """
+def _sim3_bspline_new(start_time: float, spacing: float, control: numpy.typing.ArrayLike) -> tuple[float, float, numpy.ndarray]:
+    """
+    The checked arguments of Sim3BSpline(start_time, spacing, control): (start_time, spacing, the control elements as a new read-only (N, 4, 4) float64 array of keys), or the Sim3BSpline constructor's ValueError / TypeError. A private function of chasles.Sim3BSpline (python/chasles/_bspline.py).
+    """
+def _sim3_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], geodesic: bool, max_iterations: typing.SupportsInt | typing.SupportsIndex) -> tuple:
+    """
+    The C++ mean behind chasles.sim3_mean, on checked (N, 4, 4) float64 elements and (N,) weights: (mean, iterations, converged).
+    """
+def _sim3_spline_fit(times: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], keys: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], natural: bool) -> numpy.ndarray:
+    """
+    The coefficients (n, 21) of the spline through checked (n,) float64 times and (n, 4, 4) keys (row i: c1, c2, c3 of segment i; the last row zero).
+    """
+def _so2_bspline_new(start_time: float, spacing: float, control: numpy.typing.ArrayLike) -> tuple[float, float, numpy.ndarray]:
+    """
+    The checked arguments of SO2BSpline(start_time, spacing, control): (start_time, spacing, the control elements as a new read-only (N, 2, 2) float64 array of keys), or the SO2BSpline constructor's ValueError / TypeError. A private function of chasles.SO2BSpline (python/chasles/_bspline.py).
+    """
+def _so2_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], geodesic: bool, max_iterations: typing.SupportsInt | typing.SupportsIndex) -> tuple:
+    """
+    The C++ mean behind chasles.so2_mean, on checked (N, 2, 2) float64 elements and (N,) weights: (mean, iterations, converged).
+    """
+def _so2_spline_fit(times: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], keys: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], natural: bool) -> numpy.ndarray:
+    """
+    The coefficients (n, 3) of the spline through checked (n,) float64 times and (n, 2, 2) keys (row i: c1, c2, c3 of segment i; the last row zero).
+    """
 def _so3_align(a: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], b: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Any) -> tuple:
     """
     The C++ so3_align behind chasles.so3_align, on (N, 3) float64 vectors a, b and (N,) weights or None: (rotation, rssd, singular_values, sensitivity or None, status).
@@ -4043,7 +4091,7 @@ def _so3_bspline_new(start_time: float, spacing: float, control: numpy.typing.Ar
     """
 def _so3_mean(matrices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], weights: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], geodesic: bool, max_iterations: typing.SupportsInt | typing.SupportsIndex) -> tuple:
     """
-    The C++ mean behind chasles.so3_mean, on checked (N, 3, 3) float64 rotations and (N,) weights: (mean, iterations, converged).
+    The C++ mean behind chasles.so3_mean, on checked (N, 3, 3) float64 elements and (N,) weights: (mean, iterations, converged).
     """
 def _so3_spline_fit(times: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], keys: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], natural: bool) -> numpy.ndarray:
     """
@@ -4700,10 +4748,30 @@ _inverse_dynamics: numpy.ufunc
 _inverse_kinematics: numpy.ufunc
 _mass_matrix: numpy.ufunc
 _max_threads: int = 1024
+_se23_bspline: numpy.ufunc
+_se23_bspline_rates: numpy.ufunc
+_se23_from_uniforms: numpy.ufunc
+_se23_spline: numpy.ufunc
+_se23_spline_rates: numpy.ufunc
+_se2_bspline: numpy.ufunc
+_se2_bspline_rates: numpy.ufunc
+_se2_from_uniforms: numpy.ufunc
+_se2_spline: numpy.ufunc
+_se2_spline_rates: numpy.ufunc
 _se3_bspline: numpy.ufunc
 _se3_bspline_rates: numpy.ufunc
 _se3_spline: numpy.ufunc
 _se3_spline_rates: numpy.ufunc
+_sim3_bspline: numpy.ufunc
+_sim3_bspline_rates: numpy.ufunc
+_sim3_from_uniforms: numpy.ufunc
+_sim3_spline: numpy.ufunc
+_sim3_spline_rates: numpy.ufunc
+_so2_bspline: numpy.ufunc
+_so2_bspline_rates: numpy.ufunc
+_so2_from_uniforms: numpy.ufunc
+_so2_spline: numpy.ufunc
+_so2_spline_rates: numpy.ufunc
 _so3_as_euler: numpy.ufunc
 _so3_as_euler_lock: numpy.ufunc
 _so3_as_quat_wxyz: numpy.ufunc
@@ -4722,6 +4790,8 @@ _so3_spline_rates: numpy.ufunc
 se23_act: _GUFunc_Nin2_Nout1[typing.Literal["se23_act"], typing.Literal["(5,5),(3)->(3)"]]
 # se23_compose(a, b): (5,5),(5,5)->(5,5)
 se23_compose: _GUFunc_Nin2_Nout1[typing.Literal["se23_compose"], typing.Literal["(5,5),(5,5)->(5,5)"]]
+# se23_distance(a, b): (5,5),(5,5)->(3)
+se23_distance: _GUFunc_Nin2_Nout1[typing.Literal["se23_distance"], typing.Literal["(5,5),(5,5)->(3)"]]
 # se23_exp(xi): (9)->(5,5)
 se23_exp: _GUFunc_Nin1_Nout1[typing.Literal["se23_exp"], typing.Literal["(9)->(5,5)"]]
 # se23_hat(xi): (9)->(5,5)
@@ -4740,6 +4810,8 @@ se23_vee: _GUFunc_Nin1_Nout1[typing.Literal["se23_vee"], typing.Literal["(5,5)->
 se2_act: _GUFunc_Nin2_Nout1[typing.Literal["se2_act"], typing.Literal["(3,3),(2)->(2)"]]
 # se2_compose(a, b): (3,3),(3,3)->(3,3)
 se2_compose: _GUFunc_Nin2_Nout1[typing.Literal["se2_compose"], typing.Literal["(3,3),(3,3)->(3,3)"]]
+# se2_distance(a, b): (3,3),(3,3)->(2)
+se2_distance: _GUFunc_Nin2_Nout1[typing.Literal["se2_distance"], typing.Literal["(3,3),(3,3)->(2)"]]
 # se2_exp(xi): (3)->(3,3)
 se2_exp: _GUFunc_Nin1_Nout1[typing.Literal["se2_exp"], typing.Literal["(3)->(3,3)"]]
 # se2_hat(xi): (3)->(3,3)
@@ -4786,6 +4858,8 @@ se3_vee: _GUFunc_Nin1_Nout1[typing.Literal["se3_vee"], typing.Literal["(4,4)->(6
 sim3_act: _GUFunc_Nin2_Nout1[typing.Literal["sim3_act"], typing.Literal["(4,4),(3)->(3)"]]
 # sim3_compose(a, b): (4,4),(4,4)->(4,4)
 sim3_compose: _GUFunc_Nin2_Nout1[typing.Literal["sim3_compose"], typing.Literal["(4,4),(4,4)->(4,4)"]]
+# sim3_distance(a, b): (4,4),(4,4)->(3)
+sim3_distance: _GUFunc_Nin2_Nout1[typing.Literal["sim3_distance"], typing.Literal["(4,4),(4,4)->(3)"]]
 # sim3_exp(xi): (7)->(4,4)
 sim3_exp: _GUFunc_Nin1_Nout1[typing.Literal["sim3_exp"], typing.Literal["(7)->(4,4)"]]
 # sim3_hat(xi): (7)->(4,4)
@@ -4804,6 +4878,8 @@ sim3_vee: _GUFunc_Nin1_Nout1[typing.Literal["sim3_vee"], typing.Literal["(4,4)->
 so2_act: _GUFunc_Nin2_Nout1[typing.Literal["so2_act"], typing.Literal["(2,2),(2)->(2)"]]
 # so2_compose(a, b): (2,2),(2,2)->(2,2)
 so2_compose: _GUFunc_Nin2_Nout1[typing.Literal["so2_compose"], typing.Literal["(2,2),(2,2)->(2,2)"]]
+# so2_distance(a, b): (2,2),(2,2)->()
+so2_distance: _GUFunc_Nin2_Nout1[typing.Literal["so2_distance"], typing.Literal["(2,2),(2,2)->()"]]
 # so2_exp(theta): ()->(2,2)
 so2_exp: _GUFunc_Nin1_Nout1[typing.Literal["so2_exp"], typing.Literal["()->(2,2)"]]
 # so2_hat(theta): ()->(2,2)

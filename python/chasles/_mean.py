@@ -4,7 +4,9 @@ A mean reduces over the batch axis, so it is not a generalized ufunc (whose
 loops broadcast over that axis): these Python functions check the arguments
 and call the C++ mean (chasles/mean.hpp) once over the whole (N, 3, 3) or
 (N, 4, 4) array, without the GIL; the C++ side refuses an element that is
-not a rotation (bindings/bind_statistics.cpp).
+not one of the group (bindings/bind_statistics.cpp). The means of SO2, SE2,
+Sim3 and SE23 are one function, ``_make_mean``, made for each row of the
+group table (``_groups.py``).
 """
 
 from __future__ import annotations
@@ -16,17 +18,17 @@ from typing import Any, NamedTuple, Optional
 import numpy as np
 from numpy.typing import ArrayLike
 
-from chasles import _core
+from chasles import _core, _groups
 from chasles._random import _asarray
 
 METHODS = ("geodesic", "chordal")
 
 
 class MeanInfo(NamedTuple):
-    """What ``so3_mean`` / ``se3_mean`` return with ``return_info=True``."""
+    """What the means (``so3_mean``, ``se3_mean``, ``so2_mean``, ...) return with ``return_info=True``."""
 
     mean: np.ndarray
-    """The mean, shape (3, 3) or (4, 4)."""
+    """The mean, of the shape of one element: (3, 3) for SO3, (4, 4) for SE3, ..."""
     converged: bool
     """The geodesic iteration converged (always True for ``method="chordal"``)."""
     iterations: int
@@ -67,7 +69,7 @@ def _mean(
     X = _asarray(matrices, f"{name}(matrices)")
     if X.ndim != 3 or X.shape[1:] != (core, core) or X.shape[0] == 0:
         hint = ""
-        if core == 3 and X.ndim == 2 and X.shape[1] == 4:
+        if name == "so3_mean" and X.ndim == 2 and X.shape[1] == 4:
             hint = "; quaternions (x, y, z, w) are rotations by chasles.so3_from_quat(quat)"
         raise ValueError(f"{name}(matrices): expected shape (N, {core}, {core}) with N >= 1, got {X.shape}{hint}")
     X = np.ascontiguousarray(X, dtype=np.float64)
@@ -184,3 +186,61 @@ def se3_mean(
         True
     """
     return _mean("se3_mean", 4, matrices, weights, method, max_iterations, return_info, _core._se3_mean)
+
+
+_MEAN_DOC = """The weighted mean of {kinds}.
+
+    ``method="geodesic"`` (default): the Karcher mean (exponential
+    barycenter) M with sum_i w_i log(M^-1 g_i) = 0 in the tangent
+    {tangent}, by Newton's method from the chordal mean (at most
+    ``max_iterations`` steps; a RuntimeWarning if it did not converge). It
+    is invariant on both sides, mean(a g_i b) = a mean(g_i) b.
+    ``method="chordal"``: {chordal}.
+
+    A reduction over the batch axis, not a gufunc: one C++ call
+    (chasles/mean.hpp) over the array, without the GIL.
+
+    Args:
+        matrices: array_like of shape (N, {n}, {n}), N >= 1: {matrix} (a
+            ValueError names the first that {cls}.from_matrix would refuse).
+        weights: array_like of shape (N,), finite, >= 0, not all 0; None
+            for equal weights. Their scale does not matter.
+        method: "geodesic" or "chordal".
+        max_iterations: the bound on the Newton steps (geodesic), 1 to 1000.
+        return_info: return a ``MeanInfo`` (mean, converged, iterations)
+            instead of the mean alone, and no RuntimeWarning.
+
+    Returns:
+        numpy.ndarray of shape ({n}, {n}): the mean {kind}, float64; with
+        return_info=True a ``MeanInfo`` named tuple.
+
+    Example:
+{example}
+    """
+
+
+def _make_mean(group: _groups.Group):
+    """The mean function of one group of the table: ``_mean`` over
+    ``_core._<prefix>_mean``."""
+    name = f"{group.prefix}_mean"
+    reduce = getattr(_core, f"_{name}")
+
+    def mean(
+        matrices: ArrayLike,
+        weights: Optional[ArrayLike] = None,
+        method: str = "geodesic",
+        *,
+        max_iterations: int = 20,
+        return_info: bool = False,
+    ) -> Any:
+        return _mean(name, group.n, matrices, weights, method, max_iterations, return_info, reduce)
+
+    mean.__name__ = mean.__qualname__ = name
+    mean.__doc__ = _MEAN_DOC.format(**group._asdict())
+    return mean
+
+
+so2_mean = _make_mean(_groups.SO2)
+se2_mean = _make_mean(_groups.SE2)
+sim3_mean = _make_mean(_groups.SIM3)
+se23_mean = _make_mean(_groups.SE23)

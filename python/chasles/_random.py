@@ -1,4 +1,4 @@
-"""Random rotations and rigid motions.
+"""Random rotations and rigid motions, and the elements of the other groups.
 
 numpy's Generator is the only source of randomness: these functions draw
 uniforms or standard normals with it and map them with the C++ kernels
@@ -8,10 +8,17 @@ their own and a seed gives the same samples on every platform numpy
 supports. ``rng`` is taken as scipy takes it: None (a fresh
 ``numpy.random.default_rng()``), an int seed, a SeedSequence, a BitGenerator
 or a Generator (used, and advanced, as is).
+
+The samplers of SO2, SE2, Sim3 and SE23 are written once, over the group
+table (``_groups.py``): ``_make_random`` (the uniform rotation of
+``_core._<g>_from_uniforms`` and a box on the Euclidean part, whose
+coordinates each group names) and ``_make_gaussian`` (mean exp(L z) by the
+group's ``_exp`` and ``_compose``).
 """
 
 from __future__ import annotations
 
+import inspect
 import numbers
 from collections.abc import Sequence
 from typing import Any, Union
@@ -19,7 +26,7 @@ from typing import Any, Union
 import numpy as np
 from numpy.typing import ArrayLike
 
-from chasles import _core
+from chasles import _core, _groups
 
 Size = Union[None, int, Sequence[int]]
 
@@ -100,7 +107,7 @@ def _group_element(a: ArrayLike, group: Any, what: str) -> np.ndarray:
     ``SO3.from_matrix`` / ``SE3.from_matrix`` check one (their tolerance,
     sqrt(eps) on the rotation defect max(|R^T R - I|, |det R - 1|) and on the
     bottom row); the refusal is theirs, naming ``what``."""
-    n = 3 if group is _core.SO3 else 4
+    n = np.asarray(group.identity()).shape[0]
     m = _matrix(a, (n, n), what)
     try:
         group.from_matrix(m)
@@ -190,10 +197,10 @@ def se3_random(n: Size = None, rng: Any = None, *, low: ArrayLike = -1.0, high: 
     return _pose(R, p)
 
 
-def _box(a: ArrayLike, what: str) -> np.ndarray:
+def _box(a: ArrayLike, what: str, k: int = 3) -> np.ndarray:
     b = _asarray(a, what)
-    if b.shape not in ((), (3,)):
-        raise ValueError(f"{what}: expected shape () or (3,), got {b.shape}")
+    if b.shape not in ((), (k,)):
+        raise ValueError(f"{what}: expected shape () or ({k},), got {b.shape}")
     b = b.astype(np.float64)
     if not np.all(np.isfinite(b)):
         raise ValueError(f"{what}: expected finite numbers, got {b!r}")
@@ -270,3 +277,193 @@ def se3_gaussian(mean: ArrayLike, cov: ArrayLike, n: Size = None, rng: Any = Non
     shape = _batch(n, "se3_gaussian")
     z = _generator(rng, "se3_gaussian").standard_normal(shape + (6,))
     return _core.se3_compose(g0, _core.se3_exp(z @ L.T))
+
+
+def _bounds(name: str, pairs: Sequence[tuple], values: dict) -> tuple:
+    """low and high of the Euclidean part, from the keyword pairs
+    (low name, high name, size, transform) of a sampler: each bound of
+    shape () or (size,), low <= high, then transformed (the scale's
+    bounds to their logarithms)."""
+    lows, highs = [], []
+    for low_name, high_name, k, transform in pairs:
+        lo = np.broadcast_to(_box(values[low_name], f"{name}({low_name})", k), (k,))
+        hi = np.broadcast_to(_box(values[high_name], f"{name}({high_name})", k), (k,))
+        if np.any(hi < lo):
+            raise ValueError(f"{name}: expected {low_name} <= {high_name}, got {low_name}={lo!r}, {high_name}={hi!r}")
+        lows.append(transform(lo, f"{name}({low_name})"))
+        highs.append(transform(hi, f"{name}({high_name})"))
+    return np.concatenate(lows), np.concatenate(highs)
+
+
+def _same(b: np.ndarray, what: str) -> np.ndarray:
+    return b
+
+
+def _log_positive(b: np.ndarray, what: str) -> np.ndarray:
+    if np.any(b <= 0):
+        raise ValueError(f"{what}: expected a scale > 0, got {b!r}")
+    return np.log(b)
+
+
+# For each group with a Euclidean part, its keyword bounds (low, high, size,
+# transform) in the order of the C++ GroupParts vector, their defaults and
+# the docstring's sentences.
+_BOXES = {
+    "se2": (
+        (("low", "high", 2, _same),),
+        {"low": -1.0, "high": 1.0},
+        """        low: array_like of shape () or (2,): the translation box's lower corner.
+        high: array_like of shape () or (2,): its upper corner.""",
+        "the translation uniform in [low, high] componentwise",
+    ),
+    "sim3": (
+        (("low", "high", 3, _same), ("scale_low", "scale_high", 1, _log_positive)),
+        {"low": -1.0, "high": 1.0, "scale_low": 0.5, "scale_high": 2.0},
+        """        low: array_like of shape () or (3,): the translation box's lower corner.
+        high: array_like of shape () or (3,): its upper corner.
+        scale_low: the smallest scale, > 0 (a float, or an array of shape (1,)).
+        scale_high: the largest scale, >= scale_low.""",
+        "the translation uniform in [low, high] componentwise and the scale\n"
+        "    log-uniform in [scale_low, scale_high] (sigma = log s uniform in\n"
+        "    [log scale_low, log scale_high]; scale_low = scale_high fixes it)",
+    ),
+    "se23": (
+        (("low", "high", 3, _same), ("velocity_low", "velocity_high", 3, _same)),
+        {"low": -1.0, "high": 1.0, "velocity_low": -1.0, "velocity_high": 1.0},
+        """        low: array_like of shape () or (3,): the position box's lower corner.
+        high: array_like of shape () or (3,): its upper corner.
+        velocity_low: array_like of shape () or (3,): the velocity box's lower corner.
+        velocity_high: array_like of shape () or (3,): its upper corner.""",
+        "the position uniform in [low, high] and the velocity uniform in\n"
+        "    [velocity_low, velocity_high] componentwise",
+    ),
+}
+
+_UNIFORMS = {"so2": 1, "se2": 1, "sim3": 3, "se23": 3}
+
+_RANDOM_DOC = """Random {kinds}: a uniform (Haar) rotation{box_title}.
+
+    numpy's Generator draws {u} per element for the rotation
+    first{then}, and ``_core._{prefix}_from_uniforms`` (the C++
+    ``element_from_uniforms``) maps them: {what}.
+
+    Args:
+        n: None for one element, an int or a tuple for a batch.
+        rng: None (a fresh ``numpy.random.default_rng()``), an int seed, a
+            SeedSequence, a BitGenerator or a numpy Generator (advanced).
+{box_args}
+    Returns:
+        numpy.ndarray of shape ({n}, {n}), (n, {n}, {n}) or n + ({n}, {n}):
+        {matrix}, float64.
+
+    Example:
+        >>> import chasles
+        >>> chasles.{prefix}_random(4, rng=0).shape
+        (4, {n}, {n})
+    """
+
+
+def _make_random(group: _groups.Group):
+    """The uniform sampler of one group of the table."""
+    name = f"{group.prefix}_random"
+    u_size = _UNIFORMS[group.prefix]
+    mapping = getattr(_core, f"_{group.prefix}_from_uniforms")
+    box = _BOXES.get(group.prefix)
+
+    if box is None:
+
+        def sample(n: Size = None, rng: Any = None) -> np.ndarray:
+            shape = _batch(n, name)
+            return mapping(_generator(rng, name).random(shape + (u_size,)))
+
+        fields = {"box_title": "", "then": "", "box_args": ""}
+        fields["what"] = "the angle pi (2u - 1), uniform in [-pi, pi)"
+    else:
+        pairs, defaults, args, what = box
+        k = sum(p[2] for p in pairs)
+
+        def sample(n: Size = None, rng: Any = None, **bounds: ArrayLike) -> np.ndarray:
+            unknown = set(bounds) - set(defaults)
+            if unknown:
+                raise TypeError(f"{name}() got an unexpected keyword argument {sorted(unknown)[0]!r}")
+            shape = _batch(n, name)
+            lo, hi = _bounds(name, pairs, {**defaults, **bounds})
+            gen = _generator(rng, name)
+            u = gen.random(shape + (u_size,))
+            v = gen.random(shape + (k,))
+            return mapping(u, v, lo, hi)
+
+        params = [
+            inspect.Parameter("n", inspect.Parameter.POSITIONAL_OR_KEYWORD, default=None, annotation="Size"),
+            inspect.Parameter("rng", inspect.Parameter.POSITIONAL_OR_KEYWORD, default=None, annotation="Any"),
+        ] + [
+            inspect.Parameter(key, inspect.Parameter.KEYWORD_ONLY, default=value, annotation="ArrayLike")
+            for key, value in defaults.items()
+        ]
+        sample.__signature__ = inspect.Signature(params, return_annotation="np.ndarray")
+        fields = {
+            "box_title": " and a Euclidean part uniform in a box",
+            "then": f", then {k} for the Euclidean part",
+            "box_args": args + "\n",
+            "what": "a uniform rotation, " + what,
+        }
+    sample.__name__ = sample.__qualname__ = name
+    fields["u"] = "one uniform" if u_size == 1 else f"{u_size} uniforms"
+    sample.__doc__ = _RANDOM_DOC.format(**group._asdict(), **fields)
+    return sample
+
+
+_GAUSSIAN_DOC = """Gaussian random {kinds} about a mean, with a tangent covariance.
+
+    g = mean exp(L z) with z standard normal in the tangent order
+    {tangent} and L L^T = cov (L the Cholesky factor, or V sqrt(lambda)
+    for a singular cov): the right (local) perturbation of the Jacobians'
+    convention, so that log(mean^-1 g) has the covariance ``cov``. The
+    group's exp and compose array functions map the draws.
+
+    Args:
+        mean: array_like of shape ({n}, {n}) or a {cls}: the mean, checked as
+            ``{cls}.from_matrix`` checks one.
+        cov: array_like of shape ({dof}, {dof}): the tangent covariance,
+            symmetric positive semidefinite.
+        n: None for one element, an int or a tuple for a batch.
+        rng: None, an int seed or a numpy Generator ({dof} normals per sample).
+
+    Returns:
+        numpy.ndarray of shape ({n}, {n}), (n, {n}, {n}) or n + ({n}, {n}):
+        {matrix}.
+
+    Example:
+        >>> import chasles
+        >>> chasles.{prefix}_gaussian(np.eye({n}), 0.01 * np.eye({dof}), 5, rng=0).shape
+        (5, {n}, {n})
+    """
+
+
+def _make_gaussian(group: _groups.Group):
+    """The Gaussian sampler of one group of the table."""
+    name = f"{group.prefix}_gaussian"
+    cls = getattr(_core, group.cls)
+    exp = getattr(_core, f"{group.prefix}_exp")
+    compose = getattr(_core, f"{group.prefix}_compose")
+
+    def gaussian(mean: ArrayLike, cov: ArrayLike, n: Size = None, rng: Any = None) -> np.ndarray:
+        g0 = _group_element(mean, cls, f"{name}(mean)")
+        L = _covariance_factor(cov, group.dof, name)
+        shape = _batch(n, name)
+        x = _generator(rng, name).standard_normal(shape + (group.dof,)) @ L.T
+        return compose(g0, exp(x[..., 0] if group.dof == 1 else x))
+
+    gaussian.__name__ = gaussian.__qualname__ = name
+    gaussian.__doc__ = _GAUSSIAN_DOC.format(**group._asdict())
+    return gaussian
+
+
+so2_random = _make_random(_groups.SO2)
+se2_random = _make_random(_groups.SE2)
+sim3_random = _make_random(_groups.SIM3)
+se23_random = _make_random(_groups.SE23)
+so2_gaussian = _make_gaussian(_groups.SO2)
+se2_gaussian = _make_gaussian(_groups.SE2)
+sim3_gaussian = _make_gaussian(_groups.SIM3)
+se23_gaussian = _make_gaussian(_groups.SE23)

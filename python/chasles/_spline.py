@@ -23,7 +23,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike
 
-from chasles import _core
+from chasles import _core, _groups
 from chasles._random import _asarray
 from chasles._value import Value
 
@@ -340,3 +340,92 @@ class SE3Spline(_Spline):
             (..., 6) body accelerations (linear, angular), float64.
         """
         return self._evaluate(t, 2)
+
+
+class _GroupSpline(_Spline):
+    """The interpolating spline of a group of the table (_groups.py): one
+    class per row, made by ``_make_spline``; the keys are given as
+    ``keys``. SO2's rates are floats (shape (...)), as its tangent."""
+
+    _dof = 0
+
+    def __init__(self, times: ArrayLike, keys: ArrayLike, *, ends: str = "natural") -> None:
+        self._fit(times, keys, ends)
+
+    @property
+    def keys(self) -> np.ndarray:
+        """The keys, shape (N, n, n) (a copy)."""
+        return self._keys.copy()
+
+    def _evaluate(self, t: ArrayLike, order: int) -> Any:
+        out = super()._evaluate(t, order)
+        return out[..., 0] if order > 0 and self._dof == 1 else out
+
+    def __call__(self, t: ArrayLike) -> np.ndarray:
+        """The elements at the times t (a float or an array of any shape (...)): (..., n, n) matrices, float64."""
+        return self._evaluate(t, 0)
+
+    def body_velocity(self, t: ArrayLike) -> np.ndarray:
+        """The body velocity (X^-1 dX/dt)^vee = Jr(r) r' at the times t, in the tangent's order, float64."""
+        return self._evaluate(t, 1)
+
+    def body_acceleration(self, t: ArrayLike) -> np.ndarray:
+        """The derivative of the body velocity, Jr(r) r'' + (d/dt Jr(r)) r', at the times t, float64."""
+        return self._evaluate(t, 2)
+
+
+_SPLINE_DOC = """Interpolating C2 spline through key {kinds}.
+
+    Args:
+        times: (N,) strictly increasing finite key times, N >= 2, steps
+            between 1e-100 and 1e100.
+        keys: (N, {n}, {n}) {matrix}, or a sequence of N ``{cls}``.
+        ends: ``"natural"`` (zero body acceleration at both ends, the
+            default) or ``"chord"``.
+{math}
+    Calling the spline at t (a float or an array of any shape) gives the
+    matrices (..., {n}, {n}); ``body_velocity(t)`` the body velocity
+    (X^-1 dX/dt)^vee in the tangent {tangent}, shape {rate};
+    ``body_acceleration(t)`` its derivative, of the same shape.
+
+    Example:
+        >>> import chasles
+        >>> keys = chasles.{prefix}_exp(np.linspace(0.0, 0.3, 3 * {dof}).reshape(3, {dof}){squeeze})
+        >>> spline = chasles.{cls}Spline([0.0, 1.0, 2.0], keys)
+        >>> bool(np.allclose(spline(1.0), keys[1]))
+        True
+    """
+
+
+def _make_spline(group: _groups.Group) -> type:
+    """The spline class of one group of the table, over the private
+    ``_<prefix>_spline_fit``, ``_<prefix>_spline`` and ``_<prefix>_spline_rates``."""
+    name = f"{group.cls}Spline"
+    doc = _SPLINE_DOC.format(
+        **group._asdict(),
+        math=_MATH,
+        rate="(...)" if group.dof == 1 else f"(..., {group.dof})",
+        squeeze="[:, 0]" if group.dof == 1 else "",
+    )
+    attributes = {
+        "__doc__": doc,
+        "__module__": __name__,
+        "__qualname__": name,
+        "_name": name,
+        "_what": "keys",
+        "_matrix": group.n,
+        "_dof": group.dof,
+        "_fit_function": f"_{group.prefix}_spline_fit",
+        "_element_ufunc": f"_{group.prefix}_spline",
+        "_rates_ufunc": f"_{group.prefix}_spline_rates",
+    }
+    # the members of the API in the class's own dict, as SO3Spline's (api_spec lists them by class)
+    for member in ("__init__", "keys", "__call__", "body_velocity", "body_acceleration"):
+        attributes[member] = _GroupSpline.__dict__[member]
+    return type(name, (_GroupSpline,), attributes)
+
+
+SO2Spline = _make_spline(_groups.SO2)
+SE2Spline = _make_spline(_groups.SE2)
+Sim3Spline = _make_spline(_groups.SIM3)
+SE23Spline = _make_spline(_groups.SE23)

@@ -36,9 +36,9 @@ namespace {
 using chasles::BSplinePoint;
 using chasles::CubicBSplineView;
 using chasles::SE2;
+using chasles::SE23;
 using chasles::SE3;
 using chasles::Sim3;
-using chasles::SE23;
 using chasles::SO2;
 using chasles::SO3;
 using ld = long double;

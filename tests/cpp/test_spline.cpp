@@ -35,9 +35,9 @@ namespace {
 
 using chasles::fit_spline;
 using chasles::SE2;
+using chasles::SE23;
 using chasles::SE3;
 using chasles::Sim3;
-using chasles::SE23;
 using chasles::SO2;
 using chasles::SO3;
 using chasles::Spline;

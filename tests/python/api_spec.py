@@ -850,7 +850,7 @@ class Rng(Arg):
 
 @dataclass
 class Control(Arg):
-    """The control elements of SO3BSpline / SE3BSpline (`group` SO3 or SE3):
+    """The control elements of a B-spline (`group` SO3, SE3, SO2, SE2, Sim3 or SE23):
     a list or tuple of initialized objects of the group (TypeError for
     anything else in it), or an array-like of shape (N, k, k) whose
     matrices each pass the group's checked ``from_matrix`` (with float32's
@@ -862,8 +862,15 @@ class Control(Arg):
         return spline_control(self.group)
 
     def judge(self, value):
-        k = 3 if self.group is chasles.SO3 else 4
-        splines = (chasles.SO3BSpline, chasles.SE3BSpline)
+        k = np.asarray(self.group.identity()).shape[0]
+        splines = (
+            chasles.SO3BSpline,
+            chasles.SE3BSpline,
+            chasles.SO2BSpline,
+            chasles.SE2BSpline,
+            chasles.Sim3BSpline,
+            chasles.SE23BSpline,
+        )
         if isinstance(value, (list, tuple)) and value and isinstance(value[0], BOUND + splines):
             for x in value:  # in order: the first one refused is named
                 if not isinstance(x, self.group):
@@ -930,7 +937,12 @@ def spline_control(group):
     k = np.arange(5.0)[:, None]
     if group is chasles.SO3:
         return chasles.so3_exp(np.hstack([0.1 * k, -0.05 * k, 0.2 + 0 * k]))
-    return chasles.se3_exp(np.hstack([0.3 * k, 0 * k, -k, 0.1 * k, -0.05 * k, 0.2 + 0 * k]))
+    if group is chasles.SE3:
+        return chasles.se3_exp(np.hstack([0.3 * k, 0 * k, -k, 0.1 * k, -0.05 * k, 0.2 + 0 * k]))
+    # SO2, SE2, Sim3, SE23: steps of 0.1 k along a fixed tangent
+    dof = {chasles.SO2: 1, chasles.SE2: 3, chasles.Sim3: 7, chasles.SE23: 9}[group]
+    x = 0.1 * k * np.linspace(-1.0, 1.0, dof) + 0.05
+    return getattr(chasles, f"{group.__name__.lower()}_exp")(x[:, 0] if dof == 1 else x)
 
 
 # ---- valid values ---------------------------------------------------------------------
@@ -963,6 +975,10 @@ GOOD = {  # a fresh valid object of each class
     chasles.Chain: lambda: chasles.Chain(CHAIN_SCREWS, CHAIN_HOME),
     chasles.SO3BSpline: lambda: chasles.SO3BSpline(0.0, 0.5, spline_control(chasles.SO3)),
     chasles.SE3BSpline: lambda: chasles.SE3BSpline(0.0, 0.5, spline_control(chasles.SE3)),
+    chasles.SO2BSpline: lambda: chasles.SO2BSpline(0.0, 0.5, spline_control(chasles.SO2)),
+    chasles.SE2BSpline: lambda: chasles.SE2BSpline(0.0, 0.5, spline_control(chasles.SE2)),
+    chasles.Sim3BSpline: lambda: chasles.Sim3BSpline(0.0, 0.5, spline_control(chasles.Sim3)),
+    chasles.SE23BSpline: lambda: chasles.SE23BSpline(0.0, 0.5, spline_control(chasles.SE23)),
     chasles.SpatialInertia: lambda: chasles.SpatialInertia(
         2.0, [0.1, 0.2, 0.3], [[0.1, 0.01, 0.0], [0.01, 0.2, 0.0], [0.0, 0.0, 0.25]]
     ),
@@ -1669,7 +1685,14 @@ def _build_spec():
     spec.update(_protocols(Chain, [6 * n + 12 for n in range(1, 33)]))
 
     # B-splines (start time 0, spacing 0.5, five control elements: times in [0, 1])
-    for cls, group in ((chasles.SO3BSpline, SO3), (chasles.SE3BSpline, SE3)):
+    for cls, group in (
+        (chasles.SO3BSpline, SO3),
+        (chasles.SE3BSpline, SE3),
+        (chasles.SO2BSpline, chasles.SO2),
+        (chasles.SE2BSpline, chasles.SE2),
+        (chasles.Sim3BSpline, chasles.Sim3),
+        (chasles.SE23BSpline, chasles.SE23),
+    ):
         n = cls.__name__
         me = SplineSelf("self", (cls,))
         spec[f"{n}.__init__"] = Entry(
@@ -1824,6 +1847,10 @@ def _build_spec():
         "so3_angle": [("R",) + R3],
         "so3_distance": [("a",) + R3, ("b",) + R3],
         "se3_distance": [("a",) + G4, ("b",) + G4],
+        "so2_distance": [("a",) + R2, ("b",) + R2],
+        "se2_distance": [("a",) + G3, ("b",) + G3],
+        "sim3_distance": [("a",) + S4, ("b",) + S4],
+        "se23_distance": [("a",) + X5, ("b",) + X5],
     }
     for name, ops in arrays.items():
         spec[name] = _array_function(name, ops)
@@ -1851,7 +1878,30 @@ def _build_spec():
             ],
             call=getattr(chasles, name),
         )
-    for name, k in (("so3_mean", 3), ("se3_mean", 4)):
+    # the samplers and means of SO2, SE2, Sim3 and SE23 (one generic function each, _random.py / _mean.py)
+    for prefix, k, dof in (("so2", 2, 1), ("se2", 3, 3), ("sim3", 4, 7), ("se23", 5, 9)):
+        spec[f"{prefix}_random"] = Entry(
+            [[Size(f"{prefix}_random(n)"), Rng(f"{prefix}_random(rng)")]], call=getattr(chasles, f"{prefix}_random")
+        )
+        spec[f"{prefix}_gaussian"] = Entry(
+            [
+                [
+                    Anything("mean", np.eye(k)),
+                    Anything("cov", 0.01 * np.eye(dof)),
+                    Size(f"{prefix}_gaussian(n)"),
+                    Rng(f"{prefix}_gaussian(rng)"),
+                ]
+            ],
+            call=getattr(chasles, f"{prefix}_gaussian"),
+        )
+    for name, k in (
+        ("so3_mean", 3),
+        ("se3_mean", 4),
+        ("so2_mean", 2),
+        ("se2_mean", 3),
+        ("sim3_mean", 4),
+        ("se23_mean", 5),
+    ):
         spec[name] = Entry(
             [
                 [
@@ -1897,10 +1947,14 @@ def _build_spec():
     for cls, what, k, keys in (
         (chasles.SO3Spline, "rotations", 3, lambda: np.stack([np.eye(3), rotation()])),
         (chasles.SE3Spline, "poses", 4, lambda: np.stack([np.eye(4), pose()])),
+        (chasles.SO2Spline, "keys", 2, lambda: np.stack([np.eye(2), GOOD[chasles.SO2]().as_matrix()])),
+        (chasles.SE2Spline, "keys", 3, lambda: np.stack([np.eye(3), GOOD[chasles.SE2]().as_matrix()])),
+        (chasles.Sim3Spline, "keys", 4, lambda: np.stack([np.eye(4), GOOD[chasles.Sim3]().as_matrix()])),
+        (chasles.SE23Spline, "keys", 5, lambda: np.stack([np.eye(5), GOOD[chasles.SE23]().as_matrix()])),
     ):
         name = cls.__name__
         spec[f"{name}.__init__"] = Entry(
-            [[KeyTimes(f"{name}(times)"), SplineKeys(f"{name}({what})", (2, k, k), keys)]],
+            [[KeyTimes(f"{name}(times)"), SplineKeys(f"{name}({what})", (2, k, k), keys, cls)]],
             call=lambda t, x, c=cls: c(t, x)(0.7),
             passes_arguments=False,
         )
@@ -1941,10 +1995,13 @@ class KeyTimes(Arg):
 
 @dataclass
 class SplineKeys(Arg):
-    """Two key rotations / poses: an array-like (or sequence of objects) of shape (2, k, k)."""
+    """Two keys of a spline of class `spline`: an array-like (or sequence of
+    objects) of shape (2, k, k), each accepted by the group's from_matrix
+    (its defect at most sqrt(eps))."""
 
     shape: tuple = (2, 3, 3)
     valid: Callable[[], Any] | None = None
+    spline: Any = None
 
     def good(self):
         return self.valid()
@@ -1958,9 +2015,10 @@ class SplineKeys(Arg):
         c = finite_or_refused(a, self.label)
         if isinstance(c, Refused):
             return c
-        k = self.shape[1]
+        group = getattr(chasles, self.spline.__name__[: -len("Spline")])
+        check = getattr(group, "rotation_defect", None) or group.transform_defect
         for m in c.value:
-            defect = chasles.SO3.rotation_defect(m[:3, :3]) if k == 3 else chasles.SE3.transform_defect(m)
+            defect = check(m)
             if not defect <= 1.4901161193847656e-08:
                 return Refused(ValueError, (self.label, "not a"))
         return c

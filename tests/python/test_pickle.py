@@ -46,7 +46,22 @@ LEGACY = os.path.join(HERE, "data", "pickles")
 PROTOCOLS = list(range(pickle.HIGHEST_PROTOCOL + 1))
 
 # Classes that did not pickle in chasles 0.1.0 (or did not exist): no legacy pickles of them.
-NOT_PICKLED_IN_0_1_0 = {"SO3BSpline", "SE3BSpline", "SO2", "SE2", "Sim3", "SE23"}
+NOT_PICKLED_IN_0_1_0 = {
+    "SO3BSpline",
+    "SE3BSpline",
+    "SO2",
+    "SE2",
+    "Sim3",
+    "SE23",
+    "SO2Spline",
+    "SE2Spline",
+    "Sim3Spline",
+    "SE23Spline",
+    "SO2BSpline",
+    "SE2BSpline",
+    "Sim3BSpline",
+    "SE23BSpline",
+}
 
 
 def public_classes():
@@ -128,8 +143,32 @@ EXAMPLES = {
         "chord": lambda: chasles.SO3Spline([0.0, 1.0, 3.0, 3.5], _key_rotations(), ends="chord"),
     },
     "SE3Spline": {"natural": lambda: chasles.SE3Spline([0.0, 1.0, 2.0, 4.0], _key_poses())},
+    "SO2Spline": {"natural": lambda: chasles.SO2Spline([0.0, 1.0, 3.0], chasles.so2_exp([0.1, -0.4, 1.0 / 3.0]))},
+    "SE2Spline": {
+        "chord": lambda: chasles.SE2Spline(
+            [0.0, 1.0, 3.0], chasles.se2_exp([[0.1, 0.2, 0.3], [1.0, -0.5, 1.0 / 3.0], [2.0, 0.0, -0.2]]), ends="chord"
+        )
+    },
+    "Sim3Spline": {
+        "natural": lambda: chasles.Sim3Spline(
+            [0.0, 0.5, 2.0], chasles.sim3_exp(np.linspace(-0.3, 0.4, 21).reshape(3, 7) / 3.0)
+        )
+    },
+    "SE23Spline": {
+        "natural": lambda: chasles.SE23Spline(
+            [0.0, 0.5, 2.0], chasles.se23_exp(np.linspace(-0.3, 0.4, 27).reshape(3, 9) / 3.0)
+        )
+    },
     "SO3BSpline": {"spline": lambda: chasles.SO3BSpline(0.0, 0.5, _key_rotations())},
     "SE3BSpline": {"spline": lambda: chasles.SE3BSpline(-1.0, 0.25, _key_poses())},
+    "SO2BSpline": {"spline": lambda: chasles.SO2BSpline(0.0, 0.5, chasles.so2_exp([0.1, -0.2, 0.4, 1.0 / 3.0]))},
+    "SE2BSpline": {"spline": lambda: chasles.SE2BSpline(0.0, 0.5, chasles.se2_exp(np.arange(12.0).reshape(4, 3) / 7))},
+    "Sim3BSpline": {
+        "spline": lambda: chasles.Sim3BSpline(1.0, 2.0, chasles.sim3_exp(np.arange(28.0).reshape(4, 7) / 30))
+    },
+    "SE23BSpline": {
+        "spline": lambda: chasles.SE23BSpline(1.0, 2.0, chasles.se23_exp(np.arange(36.0).reshape(4, 9) / 40))
+    },
 }
 
 # States made invalid in the ways the constructors check, beyond the NaN of
@@ -214,6 +253,10 @@ TAMPERED = {
     ],
     "SO3Spline": [("times that do not increase", _spline_times)],
     "SE3Spline": [("times that do not increase", _spline_times)],
+    "SO2Spline": [("times that do not increase", _spline_times)],
+    "SE2Spline": [("times that do not increase", _spline_times)],
+    "Sim3Spline": [("times that do not increase", _spline_times)],
+    "SE23Spline": [("times that do not increase", _spline_times)],
 }
 
 

@@ -48,18 +48,13 @@ def test_the_array_functions_are_all_here():
     # the samplers, the means and the alignments take a size, a generator or a reduction axis:
     # Python functions over the ufuncs / C++, not array functions themselves
     not_ufuncs = {
-        "so3_random",
-        "se3_random",
-        "so3_gaussian",
-        "se3_gaussian",
-        "so3_mean",
-        "se3_mean",
+        *(f"{g}_{f}" for g in ("so2", "se2", "so3", "se3", "sim3", "se23") for f in ("random", "gaussian", "mean")),
         "so3_align",
         "se3_align",
         "sim3_align",
     }
     public = sorted(n for n in chasles.__all__ if n.startswith(prefixes) and n not in not_ufuncs)
-    assert ARRAY_FUNCTIONS == public and len(public) == 69
+    assert ARRAY_FUNCTIONS == public and len(public) == 73
 
 
 def operand(arg: A.Operand, shape, rng, dtype):
@@ -100,7 +95,14 @@ def calls(n, rng):
     # The B-splines' evaluation at n times (one C++ loop without the GIL).
     times = rng.uniform(0.0, 1.0, size=n)
     times.flags.writeable = False
-    for cls in (chasles.SO3BSpline, chasles.SE3BSpline):
+    for cls in (
+        chasles.SO3BSpline,
+        chasles.SE3BSpline,
+        chasles.SO2BSpline,
+        chasles.SE2BSpline,
+        chasles.Sim3BSpline,
+        chasles.SE23BSpline,
+    ):
         spline = A.GOOD[cls]()
         for method in ("__call__", "body_velocity", "body_acceleration"):
             out.append((f"{cls.__name__}.{method}", getattr(cls, method), [spline, times]))

@@ -48,10 +48,10 @@ struct GroupLabel<chasles::SE23<S>> {
   static constexpr const char* name = "SE23";
 };
 
-using AllGroups = ::testing::Types<chasles::SO2<float>, chasles::SO2<double>, chasles::SE2<float>, chasles::SE2<double>,
-                                   chasles::SO3<float>, chasles::SO3<double>, chasles::SE3<float>, chasles::SE3<double>,
-                                   chasles::Sim3<float>, chasles::Sim3<double>, chasles::SE23<float>,
-                                   chasles::SE23<double>>;
+using AllGroups =
+    ::testing::Types<chasles::SO2<float>, chasles::SO2<double>, chasles::SE2<float>, chasles::SE2<double>,
+                     chasles::SO3<float>, chasles::SO3<double>, chasles::SE3<float>, chasles::SE3<double>,
+                     chasles::Sim3<float>, chasles::Sim3<double>, chasles::SE23<float>, chasles::SE23<double>>;
 
 /// GoogleTest's names for AllGroups: "SO2f", "Sim3d", ...
 struct AllGroupsName {
