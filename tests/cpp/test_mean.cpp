@@ -296,13 +296,14 @@ class MeanOfEveryGroup : public ::testing::Test {
   }
   /// The largest difference of the matrices of a and b, in long double, relative to max(1, their size).
   static LD distance(const G& a, const G& b) {
-    const auto A = a.matrix().template cast<LD>();
-    const auto B = b.matrix().template cast<LD>();
+    // Evaluated: matrix() returns a temporary for SO2, SE2 and SE23.
+    const auto A = a.matrix().template cast<LD>().eval();
+    const auto B = b.matrix().template cast<LD>().eval();
     return (A - B).cwiseAbs().maxCoeff() / std::max(LD(1), std::max(A.cwiseAbs().maxCoeff(), B.cwiseAbs().maxCoeff()));
   }
   static LD distance(const G& a, const GL& b) {
-    const auto A = a.matrix().template cast<LD>();
-    const auto B = b.matrix();
+    const auto A = a.matrix().template cast<LD>().eval();
+    const auto B = b.matrix().eval();
     return (A - B).cwiseAbs().maxCoeff() / std::max(LD(1), std::max(A.cwiseAbs().maxCoeff(), B.cwiseAbs().maxCoeff()));
   }
   static LD eps() { return LD(std::numeric_limits<S>::epsilon()); }
@@ -448,7 +449,7 @@ TYPED_TEST(MeanOfEveryGroup, ChordalMeanIsThePerPartMean) {
   const auto X = F::cloud(300, 0.5, 14, F::centre());
   const auto w = F::weights(300, 15);
   const G c = chasles::chordal_mean(X.begin(), X.end(), w.begin());
-  const auto M = c.matrix().template cast<LD>();
+  const auto M = c.matrix().template cast<LD>().eval();  // matrix() may be a temporary
   if constexpr (std::is_same<G, SO2<S>>::value || std::is_same<G, SO3<S>>::value) {
     EXPECT_LE((M - rotation_mean_reference(X, w)).cwiseAbs().maxCoeff(), 32 * F::eps());
   } else {
