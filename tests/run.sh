@@ -29,10 +29,12 @@
 #
 #   bash tests/run.sh [all|cpp|fuzz|python]   # from the repository root
 #
-# On 2 cores `all` took 34 minutes: the g++ build 7, the sanitizer build 16
-# (its 25 suites about 18 CPU minutes), the wheel 6, its install and pytest
-# 6. Building the wheel needs about 1.7 GB of memory. CONTRIBUTING.md has a
-# faster loop for a single change.
+# On 2 cores `all` took 44 minutes. In CPU minutes (the [time] lines): the
+# g++ build 18 (each of the three real-time exercise files about 5 at -O3),
+# its ctest 3, the sanitizer build 44 (the largest: test_dynamics,
+# test_bspline, bench_ops, test_spline), its ctest 13; then the wheel and
+# pytest. Building the wheel needs about 1.7 GB of memory. CONTRIBUTING.md
+# has a faster loop for a single change.
 #
 # BUILD_DIR (default build/tests), VENV (default build/venv), WHEEL_DIR
 # (default build/wheel), WHEEL_BUILD_DIR (default build/wheel-cmake, the
