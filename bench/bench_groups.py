@@ -243,12 +243,12 @@ def gtsam_impl(
     if gtsam is None or not hasattr(gtsam, cls_name):
         return None
     G = getattr(gtsam, cls_name)
-    perm = np.arange(len(order)) if order is None else np.asarray(order)
-    back = np.argsort(perm)
+    perm = None if order is None else np.asarray(order)
+    back = slice(None) if perm is None else np.argsort(perm)
     to_matrix = matrix or (lambda g: g.matrix())
 
     def ours(x: np.ndarray) -> np.ndarray:  # chasles' tangent -> gtsam's
-        return np.array(np.asarray(x, dtype=float)[..., perm] if order is not None else x, dtype=float)
+        return np.array(np.asarray(x, dtype=float)[..., perm] if perm is not None else x, dtype=float)
 
     def calls(x1: np.ndarray, x2: np.ndarray) -> dict[str, Thunk]:
         v1 = ours(x1)  # Expmap takes a vector, even of one entry (Rot2)
