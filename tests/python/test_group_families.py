@@ -493,6 +493,19 @@ def test_spline_passes_through_the_keys_and_its_rates_are_the_derivatives(group,
         np.testing.assert_allclose(s.body_acceleration(times[[0, -1]]), 0.0, atol=1e-9)
 
 
+@pytest.mark.parametrize("group", GROUPS)
+def test_chord_ends_have_the_rates_of_the_first_and_last_chords(group):
+    """ends="chord": the body velocity at the first and the last key is that segment's chord rate,
+    log(X_0^-1 X_1) / (t_1 - t_0) and log(X_n-2^-1 X_n-1) / (t_n-1 - t_n-2) (scipy's logm)."""
+    times = np.array([0.0, 0.7, 1.5, 2.0, 3.2])
+    keys = spline_keys(group, 5, 31)
+    s = spline_of(group)(times, keys, ends="chord")
+    first = logm(group, np.linalg.solve(keys[0], keys[1])) / (times[1] - times[0])
+    last = logm(group, np.linalg.solve(keys[-2], keys[-1])) / (times[-1] - times[-2])
+    np.testing.assert_allclose(np.reshape(s.body_velocity(times[0]), -1), first, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(np.reshape(s.body_velocity(times[-1]), -1), last, rtol=0, atol=1e-12)
+
+
 def test_so2_spline_is_the_natural_cubic_spline_of_the_angles():
     """SO(2) is abelian: its spline is scipy's natural cubic spline of the unwrapped angles."""
     interpolate = pytest.importorskip("scipy.interpolate")
