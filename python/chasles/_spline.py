@@ -161,12 +161,15 @@ class _Spline(Value):
         return int(self._t.shape[0])
 
     def __call__(self, t: ArrayLike) -> np.ndarray:
+        """The elements at the times t (a float or an array of any shape (...)): (..., n, n) matrices, float64."""
         return self._evaluate(t, 0)
 
     def body_velocity(self, t: ArrayLike) -> np.ndarray:
+        """The body velocity (X^-1 dX/dt)^vee = Jr(r) r' at the times t, in the tangent's order, float64."""
         return self._evaluate(t, 1)
 
     def body_acceleration(self, t: ArrayLike) -> np.ndarray:
+        """The derivative of the body velocity, Jr(r) r'' + (d/dt Jr(r)) r', at the times t, float64."""
         return self._evaluate(t, 2)
 
     def __repr__(self) -> str:
@@ -361,18 +364,6 @@ class _GroupSpline(_Spline):
         out = super()._evaluate(t, order)
         return out[..., 0] if order > 0 and self._dof == 1 else out
 
-    def __call__(self, t: ArrayLike) -> np.ndarray:
-        """The elements at the times t (a float or an array of any shape (...)): (..., n, n) matrices, float64."""
-        return self._evaluate(t, 0)
-
-    def body_velocity(self, t: ArrayLike) -> np.ndarray:
-        """The body velocity (X^-1 dX/dt)^vee = Jr(r) r' at the times t, in the tangent's order, float64."""
-        return self._evaluate(t, 1)
-
-    def body_acceleration(self, t: ArrayLike) -> np.ndarray:
-        """The derivative of the body velocity, Jr(r) r'' + (d/dt Jr(r)) r', at the times t, float64."""
-        return self._evaluate(t, 2)
-
 
 _SPLINE_DOC = """Interpolating C2 spline through key {kinds}.
 
@@ -421,7 +412,7 @@ def _make_spline(group: _groups.Group) -> type:
     }
     # the members of the API in the class's own dict, as SO3Spline's (api_spec lists them by class)
     for member in ("__init__", "keys", "__call__", "body_velocity", "body_acceleration"):
-        attributes[member] = _GroupSpline.__dict__[member]
+        attributes[member] = getattr(_GroupSpline, member)  # its own or _Spline's
     return type(name, (_GroupSpline,), attributes)
 
 

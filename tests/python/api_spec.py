@@ -86,6 +86,16 @@ class Gives:
     value: Any
 
 
+# The cubic B-spline classes, one per group (test_threads evaluates each).
+BSPLINES = (
+    chasles.SO3BSpline,
+    chasles.SE3BSpline,
+    chasles.SO2BSpline,
+    chasles.SE2BSpline,
+    chasles.Sim3BSpline,
+    chasles.SE23BSpline,
+)
+
 BOUND = (
     chasles.SO3,
     chasles.SE3,
@@ -863,15 +873,7 @@ class Control(Arg):
 
     def judge(self, value):
         k = np.asarray(self.group.identity()).shape[0]
-        splines = (
-            chasles.SO3BSpline,
-            chasles.SE3BSpline,
-            chasles.SO2BSpline,
-            chasles.SE2BSpline,
-            chasles.Sim3BSpline,
-            chasles.SE23BSpline,
-        )
-        if isinstance(value, (list, tuple)) and value and isinstance(value[0], BOUND + splines):
+        if isinstance(value, (list, tuple)) and value and isinstance(value[0], BOUND + BSPLINES):
             for x in value:  # in order: the first one refused is named
                 if not isinstance(x, self.group):
                     return Refused(TypeError, (self.label, "element"))

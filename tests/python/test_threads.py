@@ -95,14 +95,7 @@ def calls(n, rng):
     # The B-splines' evaluation at n times (one C++ loop without the GIL).
     times = rng.uniform(0.0, 1.0, size=n)
     times.flags.writeable = False
-    for cls in (
-        chasles.SO3BSpline,
-        chasles.SE3BSpline,
-        chasles.SO2BSpline,
-        chasles.SE2BSpline,
-        chasles.Sim3BSpline,
-        chasles.SE23BSpline,
-    ):
+    for cls in A.BSPLINES:
         spline = A.GOOD[cls]()
         for method in ("__call__", "body_velocity", "body_acceleration"):
             out.append((f"{cls.__name__}.{method}", getattr(cls, method), [spline, times]))
