@@ -61,9 +61,9 @@
 #include <type_traits>
 
 #include <Eigen/Core>
-#include <Eigen/LU>
 
 #include "chasles/constants.hpp"
+#include "chasles/detail/small_solve.hpp"
 #include "chasles/detail/weights.hpp"
 #include "chasles/group_parts.hpp"
 #include "chasles/lie_group.hpp"
@@ -294,7 +294,7 @@ inline MeanResult<detail::GroupOf<Iterator>> geodesic_mean(
       r2 += ui * e.squaredNorm();
       total += ui;  // at least about 1
     }
-    Tangent delta = A.partialPivLu().solve(g);
+    Tangent delta = detail::solve_partial_pivot<Scalar, n, 1>(A, g);
     if (!detail::all_finite(delta)) delta = g / total;  // singular system: the gradient step
     M = M * Group::exp(delta);
     const Scalar tol = Scalar(ThresholdsOf<Scalar>::mean_step_tolerance) * (Scalar(1) + sqrt(r2 / total));

@@ -84,12 +84,12 @@
 #include <type_traits>
 
 #include <Eigen/Core>
-#include <Eigen/LU>
 
 #include <unsupported/Eigen/AutoDiff>
 #include "chasles/constants.hpp"
 #include "chasles/detail/approx.hpp"
 #include "chasles/detail/assert.hpp"
+#include "chasles/detail/small_solve.hpp"
 
 #include "chasles/jacobians.hpp"
 #include "chasles/se2.hpp"
@@ -428,7 +428,7 @@ inline SplineFit fit_spline(int n, const typename Group::Scalar* times, const Gr
     }
     // Block Thomas elimination: B'_i = B_i - lower_i U_{i-1}, U_i = B'_i^-1 C_i.
     if (!first) B -= wk.lower * work[i - 1].upper;
-    wk.diag_inv = B.inverse();
+    wk.diag_inv = detail::inverse_partial_pivot(B);
     wk.upper = wk.diag_inv * C;
   }
   // n_i(w) = (d/dt Jr) r' at the end of segment i-1, r' = Jr(D_{i-1})^-1 w_i.

@@ -21,6 +21,7 @@
 #include "chasles/detail/assert.hpp"
 #include "chasles/detail/nearest_rotation.hpp"
 #include "chasles/detail/series.hpp"
+#include "chasles/detail/small_solve.hpp"
 #include "chasles/detail/weights.hpp"
 #include "chasles/distance.hpp"
 #include "chasles/dynamics.hpp"
