@@ -3,16 +3,14 @@
 # it needs (apt-get for Eigen, GoogleTest, Google Benchmark, urdfdom for the
 # C++ URDF loader, clang; pip for the Python side), then, by stage:
 #   cpp        two C++ builds. With g++ at -O3 (build/tests): the real-time
-#              exercise (every operation, three scalars) and each header
-#              alone under the strict flags, the allocation test, the
-#              examples, the mistakes that must not compile, find_package
-#              from an installed prefix. With clang at -O0 under
-#              AddressSanitizer and UndefinedBehaviorSanitizer
-#              (build/sanitize): every suite of tests/cpp, the exercise
-#              again with assertions on, the benchmarks (each run once, a
-#              smoke run, but the latency tool, built only: bench/report.py
-#              builds the timed ones), and the fuzz targets on their seed
-#              corpus;
+#              exercise in double (every operation) and each header alone
+#              under the strict flags, the allocation test, the examples,
+#              the mistakes that must not compile, find_package from an
+#              installed prefix. With clang at -O0 under AddressSanitizer
+#              and UndefinedBehaviorSanitizer (build/sanitize): every suite
+#              of tests/cpp, the exercise again in float, double and
+#              autodiff with assertions on, and the fuzz targets on their
+#              seed corpus;
 #   fuzz       20 s of fuzzing per target (tests/fuzz/run.sh), on the cpp
 #              stage's build;
 #   python     builds the Python wheel (pip wheel .: scikit-build-core,
@@ -24,16 +22,19 @@
 #              wheel needs no compiler), and runs pytest on it from outside
 #              the source tree (with the C++ URDF loader's cross-check, whose
 #              program it builds when the cpp stage has not);
-#   all        (the default, what CI runs) cpp, then python with the fuzzing
-#              beside pytest.
+#   all        (the default, what CI runs) the three, in two lanes that
+#              share the machine: the g++ build first, then the python
+#              stage in the background (its output is printed when it ends)
+#              while the g++ tests, the sanitizer build, its tests and the
+#              fuzzing run in the foreground. Neither lane keeps both cores
+#              busy alone (one compile at a time at the ends of a build,
+#              pytest on one core), so together they finish sooner.
 #
 #   bash tests/run.sh [all|cpp|fuzz|python]   # from the repository root
 #
-# On 2 cores `all` took 44 minutes. In CPU minutes (the [time] lines): the
-# g++ build 18 (each of the three real-time exercise files about 5 at -O3),
-# its ctest 3, the sanitizer build 44 (the largest: test_dynamics,
-# test_bspline, bench_ops, test_spline), its ctest 13; then the wheel and
-# pytest. Building the wheel needs about 1.7 GB of memory. CONTRIBUTING.md
+# On 2 cores `all` took 27 minutes on a quiet machine (CI, on a shared one,
+# took 57 before these lanes and cuts). Its CPU minutes are in the [time]
+# lines. Building the wheel needs about 1.7 GB of memory. CONTRIBUTING.md
 # has a faster loop for a single change.
 #
 # BUILD_DIR (default build/tests), VENV (default build/venv), WHEEL_DIR
@@ -61,7 +62,8 @@ JOBS=${JOBS:-$(nproc)}
 # time (user + sys of the processes it waited for, read from /proc: this
 # shell's cutime + cstime), so that a CI log shows where the minutes go.
 CLK_TCK=$(getconf CLK_TCK)
-cpu_ticks() { awk '{ print $16 + $17 }' "/proc/$$/stat"; }
+# ($BASHPID: the python lane of `all` is a subshell, whose $$ is the parent's.)
+cpu_ticks() { awk '{ print $16 + $17 }' "/proc/$BASHPID/stat"; }
 # (A failure stops the script under set -e before the line is printed.)
 timed() {
   local name=$1 t0=$SECONDS c0
@@ -70,9 +72,9 @@ timed() {
   "$@"
   echo "[time] $name: $((SECONDS - t0)) s wall, $((($(cpu_ticks) - c0) / CLK_TCK)) s CPU"
 }
-FUZZ_PID=""
+PY_PID=""  # the python stage's process group, while `all` runs it in the background
 on_exit() {
-  if [ -n "$FUZZ_PID" ]; then kill "$FUZZ_PID" 2>/dev/null || true; fi
+  if [ -n "$PY_PID" ]; then kill -- "-$PY_PID" 2>/dev/null || true; fi
   echo "[time] total: $SECONDS s wall, $(($(cpu_ticks) / CLK_TCK)) s CPU"
 }
 trap on_exit EXIT
@@ -98,67 +100,71 @@ apt_cpp() {
 }
 
 # The g++ build: what needs the optimizer of the compiler that builds the
-# wheel, and no test suite: the real-time exercise compiled at -O3 -DNDEBUG
-# under the strict flags (the optimizer's warnings) and run by
+# wheel, and no test suite: the real-time exercise in double compiled at -O3
+# -DNDEBUG under the strict flags (the optimizer's warnings) and run by
 # chasles_strict_compile and the allocation test (the counting operator new,
 # malloc and realloc), each header alone under g++'s strict flags, the
 # examples, the compile-fail snippets, the install test, and the C++ URDF
 # loader's dump for the Python cross-check. The suites run once, in the
 # sanitizer build below: the Python suite runs the same headers compiled by
-# g++ -O3, over the same hard inputs.
+# g++ -O3, over the same hard inputs. (The exercise's float and autodiff
+# files are the sanitizer build's: g++ spends 100 to 170 CPU-s on each,
+# in template instantiation, at any -O.)
 configure_cpp() {
   cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DCHASLES_BUILD_TESTS=ON -DCHASLES_BUILD_BENCH=OFF \
-    -DCHASLES_BUILD_EXAMPLES=ON -DCHASLES_TEST_SUITES=none
+    -DCHASLES_BUILD_EXAMPLES=ON -DCHASLES_TEST_SUITES=none -DCHASLES_EXERCISE_SCALARS=double
 }
 
 # The clang build under AddressSanitizer and UndefinedBehaviorSanitizer
-# (-O0 -g1: test_group_laws takes 44 s of CPU there against 70 s with g++
-# at -O3; gcc took 7 CPU minutes to build the memory suites at -O0, 11 at
-# -O1 and 28 at -O2 -g): every suite (the URDF loader over urdfdom's heap,
-# where LeakSanitizer found its shared_ptr cycles; arms of a run-time joint
-# count, splines over caller storage, means over iterators, Eigen maps of
-# any stride, non-finite and huge inputs, and the typed suites of
-# fixed-size math), the real-time exercise with assertions on (Eigen's
-# no-malloc check is an assertion: it runs here), each header alone under
-# clang's strict flags, each benchmark once (at -O0: a run that it works,
-# not a timing; the latency tool is built, not run: bench/CMakeLists.txt),
-# and the libFuzzer targets of tests/fuzz on their seed
-# corpus (their fuzzing is the fuzz stage; tests/fuzz/README.md builds them
-# optimized for long runs).
+# (-O0: test_group_laws takes 44 s of CPU there against 70 s with g++ at
+# -O3; gcc took 7 CPU minutes to build the memory suites at -O0, 11 at -O1
+# and 28 at -O2 -g; -g0: line tables cost a quarter more CPU, 58 s against
+# 42 for test_bspline, so a sanitizer's report here names the functions,
+# and a rebuild with -g1 gives the lines): every suite (the URDF loader
+# over urdfdom's heap, where LeakSanitizer found its shared_ptr cycles;
+# arms of a run-time joint count, splines over caller storage, means over
+# iterators, Eigen maps of any stride, non-finite and huge inputs, and the
+# typed suites of fixed-size math), the real-time exercise in float, double
+# and autodiff with assertions on (Eigen's no-malloc check is an assertion:
+# it runs here), every header under clang's strict flags
+# (chasles_strict_compile), and the libFuzzer targets of tests/fuzz on their
+# seed corpus (their fuzzing is the fuzz stage; tests/fuzz/README.md builds
+# them optimized for long runs). The benchmarks are not built here:
+# bench/report.py builds and runs them (a smoke run at -O0 cost 2 CPU
+# minutes of build for what a timing run shows at once).
 configure_sanitize() {
-  CXX=clang++ cmake -S "$ROOT" -B "$SANITIZE_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O0 -g1" \
-    -DCHASLES_BUILD_TESTS=ON -DCHASLES_SANITIZE=ON -DCHASLES_BUILD_BENCH=ON -DCHASLES_BENCH_NATIVE=OFF \
-    -DCHASLES_BENCH_OPTIMIZE=OFF -DCHASLES_BUILD_FUZZ=ON
+  CXX=clang++ cmake -S "$ROOT" -B "$SANITIZE_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O0 -g0" \
+    -DCHASLES_BUILD_TESTS=ON -DCHASLES_SANITIZE=ON -DCHASLES_BUILD_BENCH=OFF -DCHASLES_BUILD_FUZZ=ON
 }
 
-stage_cpp() {
-  apt_cpp
-  apt_install clang libclang-rt-14-dev
-  echo "== C++ with g++ -O3: configure, build, ctest"
+gxx_build() {
+  echo "== C++ with g++ -O3: configure, build"
   timed "g++ configure" configure_cpp
   timed "g++ build" cmake --build "$BUILD_DIR" -j "$JOBS"
+}
+gxx_tests() {
+  echo "== C++ with g++ -O3: ctest"
   timed "g++ ctest" ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"
+}
+sanitizer_build_and_tests() {
   echo "== C++ with clang under AddressSanitizer + UndefinedBehaviorSanitizer: configure, build, ctest"
   timed "sanitizer configure" configure_sanitize
   timed "sanitizer build" cmake --build "$SANITIZE_DIR" -j "$JOBS"
   timed "sanitizer ctest" ctest --test-dir "$SANITIZE_DIR" --output-on-failure -j "$JOBS"
 }
-
-FUZZ_LOG="$SANITIZE_DIR/fuzz-run.log"
-start_fuzzing() {
-  bash "$ROOT/tests/fuzz/run.sh" "$SANITIZE_DIR" 20 > "$FUZZ_LOG" 2>&1 &
-  FUZZ_PID=$!
+apt_all() {
+  apt_cpp
+  apt_install clang libclang-rt-14-dev
 }
-finish_fuzzing() {
-  echo "== C++ fuzzing: what it ran (tests/fuzz/run.sh, started above)"
-  local status=0
-  wait "$FUZZ_PID" || status=$?
-  FUZZ_PID=""
-  cat "$FUZZ_LOG"
-  if [ "$status" -ne 0 ]; then
-    echo "error: fuzzing failed (exit $status); see above" >&2
-    exit "$status"
-  fi
+stage_cpp() {
+  apt_all
+  gxx_build
+  gxx_tests
+  sanitizer_build_and_tests
+}
+stage_fuzz() {
+  echo "== C++ fuzzing: 20 s per target (tests/fuzz/run.sh), on the cpp stage's build"
+  bash "$ROOT/tests/fuzz/run.sh" "$SANITIZE_DIR" 20
 }
 
 run_pytest() {
@@ -206,22 +212,37 @@ stage_python() {
   # One BLAS thread: the tests' small scipy/numpy products gain nothing from
   # more, and OpenBLAS threads spinning on a loaded 2-core machine made the
   # suite several times slower (116 s against 17 s for the same tests).
-  # In `all`, the fuzzing (the fuzz stage) runs meanwhile, on the core
-  # pytest leaves idle; its outcome is read after pytest.
-  if [ "$STAGE" = all ]; then start_fuzzing; fi
   timed "pytest" run_pytest
-  if [ "$STAGE" = all ]; then timed "fuzzing (after pytest)" finish_fuzzing; fi
+}
+
+# `all`: the g++ build (the URDF dump that pytest needs is in it), then the
+# python stage in the background, in a process group of its own (set -m) so
+# that a failure of the foreground can stop all of it, with its output kept
+# in a file and printed when it ends.
+stage_all() {
+  apt_all
+  gxx_build
+  local log="$ROOT/build/python-stage.log" status=0
+  echo "== the python stage runs in the background from here on; its output follows the fuzzing"
+  set -m
+  (stage_python) > "$log" 2>&1 < /dev/null &
+  PY_PID=$!
+  set +m
+  gxx_tests
+  sanitizer_build_and_tests
+  timed "fuzzing" stage_fuzz
+  wait "$PY_PID" || status=$?
+  PY_PID=""
+  cat "$log"
+  if [ "$status" -ne 0 ]; then
+    echo "error: the python stage failed (exit $status); its output is above" >&2
+    exit "$status"
+  fi
 }
 
 case "$STAGE" in
   cpp) stage_cpp ;;
-  fuzz)
-    echo "== C++ fuzzing: 20 s per target (tests/fuzz/run.sh), on the cpp stage's build"
-    bash "$ROOT/tests/fuzz/run.sh" "$SANITIZE_DIR" 20
-    ;;
+  fuzz) stage_fuzz ;;
   python) stage_python ;;
-  all)
-    stage_cpp
-    stage_python
-    ;;
+  all) stage_all ;;
 esac

@@ -544,6 +544,10 @@ S exercise_all() noexcept {
 /// The autodiff scalar of the exercise.
 using AutoDiff = Eigen::AutoDiffScalar<Eigen::Matrix<double, 6, 1>>;
 
+/// The value of an exercise's checksum, as a double.
+inline double real_value(double x) noexcept { return x; }
+inline double real_value(const AutoDiff& x) noexcept { return x.value(); }
+
 // Instantiated once, in exercise_float.cpp, exercise_double.cpp and
 // exercise_autodiff.cpp: the files that include this one
 // do not compile the exercise again.
