@@ -76,6 +76,7 @@
 #include "chasles/constants.hpp"
 #include "chasles/detail/approx.hpp"
 #include "chasles/detail/nearest_rotation.hpp"
+#include "chasles/detail/series.hpp"
 #include "chasles/detail/weights.hpp"
 #include "chasles/se3.hpp"
 #include "chasles/sim3.hpp"
@@ -311,7 +312,6 @@ template <typename AIterator, typename BIterator, typename WeightIterator>
 inline AlignResult<SO3<detail::VectorScalarOf<AIterator>>> so3_align(AIterator a_first, AIterator a_last,
                                                                      BIterator b_first,
                                                                      WeightIterator w_first) noexcept {
-  using std::atan2;
   using std::sqrt;
   using Scalar = detail::VectorScalarOf<AIterator>;
   using Group = SO3<Scalar>;
@@ -373,7 +373,7 @@ inline AlignResult<SO3<detail::VectorScalarOf<AIterator>>> so3_align(AIterator a
       }
       if (!detail::is_finite(S) || !detail::is_finite(C) || !detail::is_finite(scale))
         return detail::align_refused<Group>(AlignStatus::not_finite);
-      r.transform = Group::exp(Vector3(u * Scalar(atan2(S, C)))) * R1;
+      r.transform = Group::exp(Vector3(u * Scalar(detail::arctan2<Scalar>(S, C)))) * R1;
       if (!(sqrt(S * S + C * C) > Scalar(ThresholdsOf<Scalar>::align_tolerance) * scale))
         r.status = AlignStatus::not_determined;
     }

@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 
 #include "chasles/constants.hpp"
+#include "chasles/detail/series.hpp"
 #include "chasles/so3.hpp"
 
 namespace chasles {
@@ -118,7 +119,6 @@ inline void rotate_rows(Eigen::Matrix<Scalar, 3, 3>& M, const Scalar& t) noexcep
 /// of norm at most eps (constants.hpp, euler_lock2).
 template <int I, int J, bool Proper, bool ZeroFirst, typename Scalar>
 inline EulerAngles<Scalar> intrinsic_euler(const Eigen::Matrix<Scalar, 3, 3>& R) noexcept {
-  using std::atan2;
   using std::sqrt;
   constexpr int K = 3 - I - J;
   const Scalar s((J - I + 3) % 3 == 1 ? 1 : -1);
@@ -143,7 +143,7 @@ inline EulerAngles<Scalar> intrinsic_euler(const Eigen::Matrix<Scalar, 3, 3>& R)
   Scalar direct(0), c(1), sn(0), h(0);
   if (!out.gimbal_lock) {
     h = sqrt(h2);
-    direct = atan2(b, a);
+    direct = detail::arctan2<Scalar>(b, a);
     c = a / h;  // (cos, sin) of the angle read directly: no sin/cos call
     sn = b / h;
   } else if (h2 > Scalar(0)) {
@@ -153,18 +153,18 @@ inline EulerAngles<Scalar> intrinsic_euler(const Eigen::Matrix<Scalar, 3, 3>& R)
   Scalar other;
   if constexpr (Proper) {
     if constexpr (ZeroFirst) {  // row J of R_I(t1)^T R = (., c3, -s s3)
-      other = atan2(-s * c * R(J, K) - sn * R(K, K), c * R(J, J) + s * sn * R(K, J));
+      other = detail::arctan2<Scalar>(-s * c * R(J, K) - sn * R(K, K), c * R(J, J) + s * sn * R(K, J));
     } else {  // column J of R R_I(t3)^T = (., c1, s s1)
-      other = atan2(s * c * R(K, J) - sn * R(K, K), c * R(J, J) - s * sn * R(J, K));
+      other = detail::arctan2<Scalar>(s * c * R(K, J) - sn * R(K, K), c * R(J, J) - s * sn * R(J, K));
     }
-    out.angles[1] = atan2(h, R(I, I));
+    out.angles[1] = detail::arctan2<Scalar>(h, R(I, I));
   } else {
     if constexpr (ZeroFirst) {  // row J of R_I(t1)^T R = row J of R_K(t3) = (s s3, c3, .)
-      other = atan2(s * c * R(J, I) + sn * R(K, I), c * R(J, J) + s * sn * R(K, J));
+      other = detail::arctan2<Scalar>(s * c * R(J, I) + sn * R(K, I), c * R(J, J) + s * sn * R(K, J));
     } else {  // column J of R R_K(t3)^T = column J of R_I(t1) = (., c1, s s1)
-      other = atan2(s * c * R(K, J) + sn * R(K, I), c * R(J, J) + s * sn * R(J, I));
+      other = detail::arctan2<Scalar>(s * c * R(K, J) + sn * R(K, I), c * R(J, J) + s * sn * R(J, I));
     }
-    out.angles[1] = atan2(s * R(I, K), h);
+    out.angles[1] = detail::arctan2<Scalar>(s * R(I, K), h);
   }
   out.angles[0] = ZeroFirst ? direct : other;
   out.angles[2] = ZeroFirst ? other : direct;

@@ -93,8 +93,7 @@ inline PlanarLog<Scalar> planar_log(const Scalar& c, const Scalar& s) noexcept {
     const Scalar rest = Scalar(3.14159265358979323846) - uw * g2 * inv;
     return {uv < Scalar(0) ? Scalar(-rest) : rest, Scalar(0.5) * rest * uw * bq * inv};
   } else {
-    using std::atan2;
-    const Scalar half = atan2(uv, uw);  // in [-pi/2, pi/2]
+    const Scalar half = detail::arctan2<Scalar>(uv, uw);  // in [-pi/2, pi/2]
     const Scalar t = Scalar(4) * half * half;
     if (t < Scalar(ThresholdsOf<Scalar>::taylor_theta2))  // e's series: no 0/0 at 0
       return {Scalar(2) * half, Scalar(1) - t / Scalar(12) * (Scalar(1) + t / Scalar(60))};
@@ -156,10 +155,7 @@ class SO2 {
   /// over the whole range, and for (c, s) off the unit circle by d too (atan2
   /// reads only the direction). (SE2::log takes the angle with its e from
   /// detail::planar_log instead: no libm call, a few ulps.)
-  Scalar angle() const noexcept {
-    using std::atan2;
-    return atan2(cs_[1], cs_[0]);
-  }
+  Scalar angle() const noexcept { return detail::arctan2<Scalar>(cs_[1], cs_[0]); }
   Tangent log() const noexcept { return Tangent(angle()); }
 
   // ---- Jacobians of exp: all the identity (the group is commutative) ------

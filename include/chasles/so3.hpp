@@ -123,12 +123,12 @@ class SO3 {
   /// at the identity, without a sqrt of 0 (autodiff derivatives stay finite).
   Scalar angle() const noexcept {
     using std::abs;
-    using std::atan2;
     using std::sqrt;
     detail::Quaternion4<Scalar> u = detail::quaternion_power_step(detail::HornMatrix<Scalar>(R_));
     if (!u.finite()) u = detail::clamped_quaternion_power_step(R_);  // cold: far from SO(3)
     const Scalar uv2 = u.x * u.x + u.y * u.y + u.z * u.z;
-    if (!(uv2 < Scalar(ThresholdsOf<Scalar>::tiny_norm2))) return Scalar(2) * atan2(sqrt(uv2), abs(u.w));
+    if (!(uv2 < Scalar(ThresholdsOf<Scalar>::tiny_norm2)))
+      return Scalar(2) * detail::arctan2<Scalar>(sqrt(uv2), abs(u.w));
     // Cold: |u_v|^2 may have underflowed (theta below about 1e-18 in float,
     // 1e-150 in double): |u_v| = m |u_v / m| with m its largest component.
     Scalar m = abs(u.x);
@@ -136,7 +136,7 @@ class SO3 {
     if (abs(u.z) > m) m = abs(u.z);
     if (!(m > Scalar(0))) return Scalar(0);  // the identity: no sqrt of 0
     const Scalar x = u.x / m, y = u.y / m, z = u.z / m;
-    return Scalar(2) * atan2(m * sqrt(x * x + y * y + z * z), abs(u.w));
+    return Scalar(2) * detail::arctan2<Scalar>(m * sqrt(x * x + y * y + z * z), abs(u.w));
   }
 
   // ---- Jacobians of exp (Sola app. B; B, C, D in detail/series.hpp) -------

@@ -19,12 +19,14 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <gtest/gtest.h>
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
+#include <chasles/detail/series.hpp>
 #include <chasles/se3.hpp>
 #include <chasles/so3.hpp>
 
@@ -324,3 +326,37 @@ TEST(Autodiff, SE3Log) {
 }
 
 }  // namespace
+
+// detail::arctan2 (SO3::angle, SO2, the Euler angles, so3_align): the
+// derivatives of atan2(y, x), -y/r^2 along x and x/r^2 along y, in every
+// quadrant and on the branch cut's sides, in the scalar's own fixed-size
+// derivative type (Eigen's atan2 of AutoDiffScalars returns a dynamic-size
+// one: a heap allocation), and for a nested autodiff scalar (the splines'
+// dual numbers over autodiff), against the closed form and std::atan2.
+TEST(Autodiff, Arctan2DerivativesInEveryQuadrant) {
+  using AD2 = Eigen::AutoDiffScalar<Eigen::Vector2d>;
+  static_assert(std::is_same<decltype(chasles::detail::arctan2<AD2>(AD2(), AD2())), AD2>::value,
+                "arctan2 keeps the derivative type");
+  for (const double angle : {0.3, 1.9, 3.0, -0.4, -2.5, 3.14159, -3.14159}) {
+    for (const double r : {1e-3, 1.0, 7.5}) {
+      const double x0 = r * std::cos(angle), y0 = r * std::sin(angle);
+      const AD2 x(x0, 2, 0), y(y0, 2, 1);  // d/dx, d/dy
+      const AD2 a = chasles::detail::arctan2<AD2>(y, x);
+      EXPECT_EQ(a.value(), std::atan2(y0, x0));
+      const double r2 = x0 * x0 + y0 * y0;
+      EXPECT_NEAR(a.derivatives()[0], -y0 / r2, 1e-15 / r2);
+      EXPECT_NEAR(a.derivatives()[1], x0 / r2, 1e-15 / r2);
+      // Nested: the value and the first derivative along t of atan2(y0 + t, x0).
+      using Inner = Eigen::AutoDiffScalar<Eigen::Matrix<double, 1, 1>>;
+      using Nested = Eigen::AutoDiffScalar<Eigen::Matrix<Inner, 1, 1>>;
+      const Inner yi(y0, 1, 0);
+      const Nested yn(yi, Eigen::Matrix<Inner, 1, 1>(Inner(1.0))),
+          xn(Inner(x0), Eigen::Matrix<Inner, 1, 1>(Inner(0.0)));
+      const Nested an = chasles::detail::arctan2<Nested>(yn, xn);
+      EXPECT_EQ(an.value().value(), std::atan2(y0, x0));
+      EXPECT_NEAR(an.derivatives()[0].value(), x0 / r2, 1e-15 / r2);
+      // d/dy of d/dt: d(x / (x^2 + y^2))/dy = -2 x y / r^4
+      EXPECT_NEAR(an.derivatives()[0].derivatives()[0], -2 * x0 * y0 / (r2 * r2), 1e-14 / (r2 * r2));
+    }
+  }
+}

@@ -198,6 +198,27 @@ inline ExpCoefficients<Scalar> exp_coefficients(const Scalar& theta2) noexcept {
   return k;
 }
 
+/// atan2(y, x): std::atan2 for the real types. For an autodiff scalar (a
+/// value and derivatives: Eigen's AutoDiffScalar, nested or not), the
+/// atan2 of the values and the derivatives (y' x - y x') / (x^2 + y^2), in
+/// the scalar's own derivative type: Eigen's atan2 of two AutoDiffScalars
+/// returns a dynamic-size derivative vector, a heap allocation on every
+/// call (tests/cpp/realtime/test_no_allocation.cpp found it in
+/// SO3::angle). Call it as arctan2<Scalar>(y, x): the arguments may be
+/// expressions of autodiff scalars.
+template <typename Scalar>
+inline Scalar arctan2(const Scalar& y, const Scalar& x) noexcept {
+  if constexpr (std::is_floating_point<Scalar>::value) {
+    return std::atan2(y, x);
+  } else {
+    using Value = std::decay_t<decltype(y.value())>;
+    const Value& yv = y.value();
+    const Value& xv = x.value();
+    const Value r2 = xv * xv + yv * yv;
+    return Scalar(arctan2<Value>(yv, xv), (y.derivatives() * xv - x.derivatives() * yv) / r2);
+  }
+}
+
 /// atan(x): std::atan for the real types; atan2(x, 1) for scalar types
 /// whose library has atan2 but no atan (Eigen's AutoDiffScalar).
 template <typename Scalar>
@@ -205,8 +226,7 @@ inline Scalar arctan(const Scalar& x) noexcept {
   if constexpr (std::is_floating_point<Scalar>::value) {
     return std::atan(x);
   } else {
-    using std::atan2;
-    return atan2(x, Scalar(1));
+    return arctan2<Scalar>(x, Scalar(1));
   }
 }
 
