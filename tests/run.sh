@@ -62,20 +62,27 @@ JOBS=${JOBS:-$(nproc)}
 # time (user + sys of the processes it waited for, read from /proc: this
 # shell's cutime + cstime), so that a CI log shows where the minutes go.
 CLK_TCK=$(getconf CLK_TCK)
-# ($BASHPID: the python lane of `all` is a subshell, whose $$ is the parent's.)
-cpu_ticks() { awk '{ print $16 + $17 }' "/proc/$BASHPID/stat"; }
+# cpu_ticks PID: the CPU ticks of the processes PID waited for. (The PID of
+# the shell that calls, $BASHPID read before a $(...): the python stage of
+# `all` is a subshell, whose $$ is the parent's, and a $(...) is another.)
+cpu_ticks() { awk '{ print $16 + $17 }' "/proc/$1/stat"; }
 # (A failure stops the script under set -e before the line is printed.)
 timed() {
-  local name=$1 t0=$SECONDS c0
+  local name=$1 t0=$SECONDS me=$BASHPID c0
   shift
-  c0=$(cpu_ticks)
+  c0=$(cpu_ticks "$me")
   "$@"
-  echo "[time] $name: $((SECONDS - t0)) s wall, $((($(cpu_ticks) - c0) / CLK_TCK)) s CPU"
+  echo "[time] $name: $((SECONDS - t0)) s wall, $((($(cpu_ticks "$me") - c0) / CLK_TCK)) s CPU"
 }
-PY_PID=""  # the python stage's process group, while `all` runs it in the background
+# The process groups of the python stage and of the fuzzing while `all` runs
+# them in the background: a failure in the foreground stops them.
+PY_PID=""
+FUZZ_PID=""
 on_exit() {
   if [ -n "$PY_PID" ]; then kill -- "-$PY_PID" 2>/dev/null || true; fi
-  echo "[time] total: $SECONDS s wall, $(($(cpu_ticks) / CLK_TCK)) s CPU"
+  if [ -n "$FUZZ_PID" ]; then kill -- "-$FUZZ_PID" 2>/dev/null || true; fi
+  local me=$BASHPID
+  echo "[time] total: $SECONDS s wall, $(($(cpu_ticks "$me") / CLK_TCK)) s CPU"
 }
 trap on_exit EXIT
 
@@ -146,10 +153,13 @@ gxx_tests() {
   echo "== C++ with g++ -O3: ctest"
   timed "g++ ctest" ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"
 }
-sanitizer_build_and_tests() {
-  echo "== C++ with clang under AddressSanitizer + UndefinedBehaviorSanitizer: configure, build, ctest"
+sanitizer_build() {
+  echo "== C++ with clang under AddressSanitizer + UndefinedBehaviorSanitizer: configure, build"
   timed "sanitizer configure" configure_sanitize
   timed "sanitizer build" cmake --build "$SANITIZE_DIR" -j "$JOBS"
+}
+sanitizer_tests() {
+  echo "== C++ with clang under AddressSanitizer + UndefinedBehaviorSanitizer: ctest"
   timed "sanitizer ctest" ctest --test-dir "$SANITIZE_DIR" --output-on-failure -j "$JOBS"
 }
 apt_all() {
@@ -160,7 +170,8 @@ stage_cpp() {
   apt_all
   gxx_build
   gxx_tests
-  sanitizer_build_and_tests
+  sanitizer_build
+  sanitizer_tests
 }
 stage_fuzz() {
   echo "== C++ fuzzing: 20 s per target (tests/fuzz/run.sh), on the cpp stage's build"
@@ -223,14 +234,28 @@ stage_all() {
   apt_all
   gxx_build
   local log="$ROOT/build/python-stage.log" status=0
-  echo "== the python stage runs in the background from here on; its output follows the fuzzing"
+  echo "== the python stage runs in the background from here on; its output follows the fuzzing's"
   set -m
   (stage_python) > "$log" 2>&1 < /dev/null &
   PY_PID=$!
   set +m
   gxx_tests
-  sanitizer_build_and_tests
-  timed "fuzzing" stage_fuzz
+  sanitizer_build
+  # The fuzzing (one process) beside the sanitizer's ctest, its output kept
+  # and printed after; then the python stage's.
+  local fuzz_log="$SANITIZE_DIR/fuzz-run.log" fuzz_status=0
+  set -m
+  (stage_fuzz) > "$fuzz_log" 2>&1 < /dev/null &
+  FUZZ_PID=$!
+  set +m
+  sanitizer_tests
+  wait "$FUZZ_PID" || fuzz_status=$?
+  FUZZ_PID=""
+  cat "$fuzz_log"
+  if [ "$fuzz_status" -ne 0 ]; then
+    echo "error: the fuzzing failed (exit $fuzz_status); its output is above" >&2
+    exit "$fuzz_status"
+  fi
   wait "$PY_PID" || status=$?
   PY_PID=""
   cat "$log"
