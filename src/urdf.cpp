@@ -793,6 +793,17 @@ struct Part {
 
 bool finite(const Matrix4& T) { return T.allFinite(); }
 
+/// m (|d|^2 1 - d d^T) = -m [d]^2 entry by entry, as python/chasles/_urdf.py
+/// writes it: the diagonal as sums of two squares, m (d_y^2 + d_z^2), ...,
+/// never |d|^2 - d_z^2, which cancels where one component dominates (a link
+/// 13 m up the z axis lost 5e-14 of a 0.2 kg m^2 moment that way).
+Matrix3 parallel_axis(double m, const Vector3& d) {
+  const double x = d.x(), y = d.y(), z = d.z();
+  Matrix3 P;
+  P << y * y + z * z, -x * y, -x * z, -x * y, x * x + z * z, -y * z, -x * z, -y * z, x * x + y * y;
+  return m * P;
+}
+
 /// One body from several, all in one frame: the total mass, the
 /// mass-weighted center, each inertia moved there by the parallel-axis
 /// theorem, I + m (|d|^2 1 - d d^T).
@@ -806,10 +817,7 @@ Part merge(const std::vector<Part>& parts) {
   }
   for (const Part& p : parts) out.com += p.mass * p.com;
   out.com /= out.mass;
-  for (const Part& p : parts) {
-    const Vector3 d = p.com - out.com;
-    out.inertia += p.inertia + p.mass * (d.dot(d) * Matrix3::Identity() - d * d.transpose());
-  }
+  for (const Part& p : parts) out.inertia += p.inertia + parallel_axis(p.mass, p.com - out.com);
   return out;
 }
 
