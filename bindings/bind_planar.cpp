@@ -16,15 +16,13 @@
 namespace chasles_py {
 
 template <>
-struct Lie<chasles::SO2d> {
+struct Lie<chasles::SO2d> : GroupNames<chasles::SO2d> {
   static constexpr int N = 2, D = 1, P = 2;
   using Tangent = Eigen::Matrix<double, 1, 1>;
   using Jacobian = Eigen::Matrix<double, 1, 1>;
-  static constexpr const char* name = "SO2";
   static constexpr const char* tangent = "theta";
   static constexpr const char* act_ufunc = "so2_act";
   static constexpr const char* act_hint = "an SO2 composes only with an SO2";
-  static constexpr const char* kind = "rotation";
   static constexpr const char* inverse = "R^-1 = R^T";
   static constexpr const char* matrix = "The rotation matrix R = [[c, -s], [s, c]]";
   static constexpr const char* example = "0.5";
@@ -148,15 +146,13 @@ Returns:
 };
 
 template <>
-struct Lie<chasles::SE2d> {
+struct Lie<chasles::SE2d> : GroupNames<chasles::SE2d> {
   static constexpr int N = 3, D = 3, P = 2;
   using Tangent = Eigen::Vector3d;
   using Jacobian = Eigen::Matrix3d;
-  static constexpr const char* name = "SE2";
   static constexpr const char* tangent = "xi";
   static constexpr const char* act_ufunc = "se2_act";
   static constexpr const char* act_hint = "an SE2 composes only with an SE2";
-  static constexpr const char* kind = "motion";
   static constexpr const char* inverse = "g^-1 = [[R^T, -R^T t], [0, 1]]";
   static constexpr const char* matrix = "The homogeneous matrix g = [[R, t], [0, 1]] (3x3)";
   static constexpr const char* example = "[0.1, 0.2, 0.3]";
@@ -310,7 +306,7 @@ template <typename G, int N>
   }
   msg += "; tol = " + short_float(tol) + ". ";
   if (det < 0) msg += "A negative determinant is a reflection, not a rotation. ";
-  msg += std::string("Use ") + Lie<G>::name + ".from_matrix_projected(matrix) for the nearest rotation" +
+  msg += std::string("Use ") + Lie<G>::cls + ".from_matrix_projected(matrix) for the nearest rotation" +
          (tol_argument ? ", or pass a larger tol." : ".");
   raise_value_error(msg);
 }

@@ -15,15 +15,13 @@
 namespace chasles_py {
 
 template <>
-struct Lie<chasles::SE23d> {
+struct Lie<chasles::SE23d> : GroupNames<chasles::SE23d> {
   static constexpr int N = 5, D = 9, P = 3;
   using Tangent = Eigen::Matrix<double, 9, 1>;
   using Jacobian = Eigen::Matrix<double, 9, 9>;
-  static constexpr const char* name = "SE23";
   static constexpr const char* tangent = "xi";
   static constexpr const char* act_ufunc = "se23_act";
   static constexpr const char* act_hint = "an SE23 composes only with an SE23";
-  static constexpr const char* kind = "extended pose";
   static constexpr const char* inverse = "(R^T, -R^T p, -R^T v)";
   static constexpr const char* matrix = "The matrix X = [[R, p, v], [0, 1, 0], [0, 0, 1]] (5x5)";
   static constexpr const char* example = "[0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9]";

@@ -15,15 +15,13 @@
 namespace chasles_py {
 
 template <>
-struct Lie<chasles::Sim3d> {
+struct Lie<chasles::Sim3d> : GroupNames<chasles::Sim3d> {
   static constexpr int N = 4, D = 7, P = 3;
   using Tangent = Eigen::Matrix<double, 7, 1>;
   using Jacobian = Eigen::Matrix<double, 7, 7>;
-  static constexpr const char* name = "Sim3";
   static constexpr const char* tangent = "xi";
   static constexpr const char* act_ufunc = "sim3_act";
   static constexpr const char* act_hint = "a Sim3 composes only with a Sim3";
-  static constexpr const char* kind = "similarity";
   static constexpr const char* inverse = "(R^T, -R^T t / s, 1 / s)";
   static constexpr const char* matrix = "The matrix g = [[s R, t], [0, 1]] (4x4)";
   static constexpr const char* example = "[0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7]";

@@ -58,38 +58,6 @@ using ufunc::upto;
 
 using CArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-/// What the splines of a group say about it: its class, the prefix of its
-/// private functions and the word for its keys.
-template <typename Group>
-struct Named;
-template <>
-struct Named<chasles::SO2d> {
-  static constexpr const char *cls = "SO2", *prefix = "so2", *kind = "rotation", *keys = "keys";
-};
-template <>
-struct Named<chasles::SE2d> {
-  static constexpr const char *cls = "SE2", *prefix = "se2", *kind = "rigid motion [[R, t], [0, 0, 1]]", *keys = "keys";
-};
-template <>
-struct Named<SO3d> {
-  static constexpr const char *cls = "SO3", *prefix = "so3", *kind = "rotation", *keys = "rotations";
-};
-template <>
-struct Named<SE3d> {
-  static constexpr const char *cls = "SE3", *prefix = "se3", *kind = "rigid motion [[R, p], [0, 0, 0, 1]]",
-                              *keys = "poses";
-};
-template <>
-struct Named<chasles::Sim3d> {
-  static constexpr const char *cls = "Sim3", *prefix = "sim3", *kind = "similarity [[s R, t], [0, 0, 0, 1]]",
-                              *keys = "keys";
-};
-template <>
-struct Named<chasles::SE23d> {
-  static constexpr const char *cls = "SE23", *prefix = "se23",
-                              *kind = "extended pose [[R, p, v], [0, 1, 0], [0, 0, 1]]", *keys = "keys";
-};
-
 /// The size D of the group's matrices, the matrices, the tangents and what
 /// a rates gufunc returns: element, body velocity, body acceleration.
 template <typename Group>
@@ -106,7 +74,7 @@ constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
 /// "SO3" (the group's class) followed by `suffix`: "SO3Spline", "SE3BSpline(control)".
 template <typename Group>
 std::string named(const std::string& suffix) {
-  return Named<Group>::cls + suffix;
+  return GroupNames<Group>::cls + suffix;
 }
 
 /// The defect the group's from_matrix checks (the rotation defect of a
@@ -157,10 +125,10 @@ Sample<Group> nan_sample(const Matrix<Group>& element) {
 template <typename Group>
 py::array fit(const CArray& times, const CArray& keys, bool natural) {
   constexpr int D = Dim<Group>, DoF = Group::DoF;
-  const std::string name = named<Group>(std::string("Spline(") + Named<Group>::keys + ")");
+  const std::string name = named<Group>(std::string("Spline(") + GroupNames<Group>::keys + ")");
   if (times.ndim() != 1 || keys.ndim() != 3 || times.shape(0) < 2 || keys.shape(0) != times.shape(0) ||
       keys.shape(1) != D || keys.shape(2) != D || times.shape(0) > INT_MAX) {
-    raise_value_error("_" + std::string(Named<Group>::prefix) + "_spline_fit: expected times of shape (n,) and " +
+    raise_value_error("_" + std::string(GroupNames<Group>::prefix) + "_spline_fit: expected times of shape (n,) and " +
                       "keys of shape (n, " + std::to_string(D) + ", " + std::to_string(D) +
                       "), 2 <= n <= " + std::to_string(INT_MAX) + ", got times " +
                       shape_string(times.shape(), static_cast<int>(times.ndim())) + " and keys " +
@@ -174,7 +142,7 @@ py::array fit(const CArray& times, const CArray& keys, bool natural) {
     const Matrix<Group> M = Eigen::Map<const Eigen::Matrix<double, D, D, Eigen::RowMajor>>(d + i * D * D);
     const double defect = defect_of<Group>(M);
     if (!(defect <= tolerance)) {
-      raise_value_error(name + ": key " + std::to_string(i) + " is not a " + Named<Group>::kind +
+      raise_value_error(name + ": key " + std::to_string(i) + " is not a " + element_words<Group>() +
                         ": defect = " + short_float(defect) + " > " + short_float(tolerance) +
                         " (project it first: " + named<Group>(".from_matrix_projected)"));
     }
@@ -354,7 +322,7 @@ py::array control_array(py::handle h) {
     std::optional<Group> g = Group::from_matrix(A, tolerance);
     if (!g) {
       const double defect = defect_of<Group>(A);
-      raise_value_error(what + ": element " + std::to_string(i) + " is not a " + Named<Group>::kind + " (defect " +
+      raise_value_error(what + ": element " + std::to_string(i) + " is not a " + element_words<Group>() + " (defect " +
                         short_float(defect) + "); project it first (" + named<Group>(".from_matrix_projected)"));
     }
     element = (single ? Group::from_matrix_projected(A) : *g).matrix();
@@ -370,12 +338,12 @@ void bind_one(py::module_& m) {
   constexpr int D = Dim<Group>, DoF = Group::DoF;
   constexpr auto n = upto<ufunc::unbounded>;  // the number of keys, or of control elements
   const std::string d = std::to_string(D), k = std::to_string(3 * DoF), cls = named<Group>("Spline");
-  const std::string bcls = named<Group>("BSpline"), lower = Named<Group>::prefix;
+  const std::string bcls = named<Group>("BSpline"), lower = GroupNames<Group>::prefix;
   static const std::string spline = "_" + lower + "_spline", bspline = "_" + lower + "_bspline";
 
   m.def((spline + "_fit").c_str(), &fit<Group>, py::arg("times"), py::arg("keys"), py::arg("natural"),
         ("The coefficients (n, " + k + ") of the spline through checked (n,) float64 times and (n, " + d + ", " + d +
-         ") " + Named<Group>::keys + " (row i: c1, c2, c3 of segment i; the last row zero).")
+         ") " + GroupNames<Group>::keys + " (row i: c1, c2, c3 of segment i; the last row zero).")
             .c_str());
   def_gufuncs<Group, Core<n>, Core<n, D, D>, Core<n, 3 * DoF>>(
       m, spline.c_str(), "times, keys, coefficients, t",
@@ -399,7 +367,7 @@ void bind_one(py::module_& m) {
         py::arg("start_time"), py::arg("spacing"), py::arg("control"),
         ("The checked arguments of " + bcls +
          "(start_time, spacing, control): (start_time, spacing, the control elements as a new read-only (N, " + d +
-         ", " + d + ") float64 array of " + Named<Group>::keys + "), or the " + bcls +
+         ", " + d + ") float64 array of " + GroupNames<Group>::keys + "), or the " + bcls +
          " constructor's ValueError / TypeError. A private function of chasles." + bcls +
          " (python/chasles/_bspline.py).")
             .c_str());

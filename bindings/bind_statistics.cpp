@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <chasles/distance.hpp>
+#include <chasles/lie_group.hpp>
 #include <chasles/mean.hpp>
 #include <chasles/random.hpp>
 #include <chasles/se2.hpp>
@@ -35,23 +36,15 @@ using SE3d = chasles::SE3<double>;
 
 /// The group G<double> over the scalar T: G<T>.
 template <typename G, typename T>
-struct RebindOf;
-template <template <typename> class C, typename S, typename T>
-struct RebindOf<C<S>, T> {
-  using type = C<T>;
-};
-template <typename G, typename T>
-using Rebind = typename RebindOf<G, T>::type;
+using Rebind = typename chasles::detail::WithScalar<G, T>::type;
 
-/// What the statistics of a group say about it: the prefix of its
-/// functions, the word for its elements, its class, and (for the groups
-/// whose distance is bound by def_distance) the distance's docstring.
+/// The distance's docstring and what it returns, for the groups whose
+/// distance def_distance binds (the names: GroupNames, bindings.hpp).
 template <typename G>
-struct Stat;
+struct DistanceDoc;
 template <>
-struct Stat<chasles::SO2d> {
-  static constexpr const char *prefix = "so2", *kind = "rotation", *cls = "SO2", *matrices = "rotation matrices",
-                              *returns = "the distances, radians, in [0, pi]";
+struct DistanceDoc<chasles::SO2d> {
+  static constexpr const char* returns = "the distances, radians, in [0, pi]";
   static constexpr const char* distance_doc = R"(Geodesic distances of plane rotations: |angle of a^-1 b|, in [0, pi].
 
 d(a, b) = |log(a^T b)|, the bi-invariant (angular) distance: symmetric and
@@ -59,10 +52,8 @@ unchanged by d(g a, g b) and d(a g, b g); the absolute difference of the
 angles, wrapped to [0, pi].)";
 };
 template <>
-struct Stat<chasles::SE2d> {
-  static constexpr const char *prefix = "se2", *kind = "rigid motion", *cls = "SE2",
-                              *matrices = "homogeneous matrices [[R, t], [0, 1]]",
-                              *returns = "[angle (radians), translation distance]";
+struct DistanceDoc<chasles::SE2d> {
+  static constexpr const char* returns = "[angle (radians), translation distance]";
   static constexpr const char* distance_doc =
       R"(Distances of plane rigid motions: (rotation angle, translation distance).
 
@@ -73,18 +64,8 @@ returned apart, for the caller to weigh; both are unchanged by a change of
 the fixed frame, d(g a, g b).)";
 };
 template <>
-struct Stat<SO3d> {
-  static constexpr const char *prefix = "so3", *kind = "rotation", *cls = "SO3";
-};
-template <>
-struct Stat<SE3d> {
-  static constexpr const char *prefix = "se3", *kind = "rigid motion", *cls = "SE3";
-};
-template <>
-struct Stat<chasles::Sim3d> {
-  static constexpr const char *prefix = "sim3", *kind = "similarity", *cls = "Sim3",
-                              *matrices = "similarity matrices [[s R, t], [0, 1]]",
-                              *returns = "[angle (radians), translation distance, |log(s_b / s_a)|]";
+struct DistanceDoc<chasles::Sim3d> {
+  static constexpr const char* returns = "[angle (radians), translation distance, |log(s_b / s_a)|]";
   static constexpr const char* distance_doc =
       R"(Distances of similarities: (rotation angle, translation distance, log-scale distance).
 
@@ -96,10 +77,8 @@ unchanged by a rigid change of the fixed frame, and a change of scale
 scales the translation distance with it.)";
 };
 template <>
-struct Stat<chasles::SE23d> {
-  static constexpr const char *prefix = "se23", *kind = "extended pose", *cls = "SE23",
-                              *matrices = "extended poses [[R, p, v], [0, 1, 0], [0, 0, 1]]",
-                              *returns = "[angle (radians), |p_b - p_a|, |v_b - v_a|]";
+struct DistanceDoc<chasles::SE23d> {
+  static constexpr const char* returns = "[angle (radians), |p_b - p_a|, |v_b - v_a|]";
   static constexpr const char* distance_doc =
       R"(Distances of extended poses: (rotation angle, position distance, velocity distance).
 
@@ -129,18 +108,19 @@ double defect_of(const M& m) noexcept {
 /// overloads' words).
 template <typename Group>
 void def_distance(py::module_& m) {
-  using S = Stat<Group>;
+  using S = GroupNames<Group>;
   constexpr int N = chasles::detail::matrix_size<Group>;
   constexpr bool rotation = chasles::detail::IsRotationGroup<Group>::value;
   constexpr int B = chasles::GroupParts<Group>::B;
   using Out = std::conditional_t<rotation, Core<>, Core<1 + B>>;
   static const std::string name = std::string(S::prefix) + "_distance";
   const std::string n = std::to_string(N);
-  static const std::string doc = std::string(S::distance_doc) + "\n\nArgs:\n    a: array_like of shape (..., " + n +
-                                 ", " + n + "): " + S::matrices + ".\n    b: array_like of shape (..., " + n + ", " +
-                                 n + "): " + S::matrices + ".\n\nReturns:\n    numpy.ndarray of shape (..." +
-                                 (rotation ? std::string("") : ", " + std::to_string(1 + B)) + "): " + S::returns +
-                                 ", the batch shape being the broadcast of a's and b's.";
+  static const std::string doc =
+      std::string(DistanceDoc<Group>::distance_doc) + "\n\nArgs:\n    a: array_like of shape (..., " + n + ", " + n +
+      "): " + matrices_words<Group>() + ".\n    b: array_like of shape (..., " + n + ", " + n +
+      "): " + matrices_words<Group>() + ".\n\nReturns:\n    numpy.ndarray of shape (..." +
+      (rotation ? std::string("") : ", " + std::to_string(1 + B)) + "): " + DistanceDoc<Group>::returns +
+      ", the batch shape being the broadcast of a's and b's.";
   def_ufunc<Out(Core<N, N>, Core<N, N>)>(
       m, name.c_str(), "a, b", array_doc(doc.c_str()), [](const auto& a, const auto& b) {
         using G = Rebind<Group, ScalarOf<decltype(a)>>;
@@ -239,7 +219,7 @@ Returns:
 /// `_se23_from_uniforms` (3),(6),(6),(6)->(5,5) (v: position then velocity).
 template <typename Group>
 void def_from_uniforms(py::module_& m) {
-  using S = Stat<Group>;
+  using S = GroupNames<Group>;
   using Parts = chasles::GroupParts<Group>;
   constexpr int N = chasles::detail::matrix_size<Group>, K = Parts::K;
   constexpr int U = chasles::UniformRotation<typename Parts::Rotation>::U;
@@ -284,7 +264,7 @@ py::tuple mean_of(const py::array_t<double, py::array::c_style | py::array::forc
                   const py::array_t<double, py::array::c_style | py::array::forcecast>& weights, bool geodesic,
                   int max_iterations) {
   constexpr int D = chasles::detail::matrix_size<Group>;
-  using S = Stat<Group>;
+  using S = GroupNames<Group>;
   const std::string name = std::string("_") + S::prefix + "_mean";
   if (elements.ndim() != 3 || elements.shape(1) != D || elements.shape(2) != D || elements.shape(0) < 1 ||
       weights.ndim() != 1 || weights.shape(0) != elements.shape(0)) {
@@ -332,7 +312,7 @@ py::tuple mean_of(const py::array_t<double, py::array::c_style | py::array::forc
 
 template <typename Group>
 void def_mean(py::module_& m) {
-  using S = Stat<Group>;
+  using S = GroupNames<Group>;
   constexpr int D = chasles::detail::matrix_size<Group>;
   const std::string d = std::to_string(D);
   static const std::string name = std::string("_") + S::prefix + "_mean";

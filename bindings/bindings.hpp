@@ -6,6 +6,8 @@
 // the order of the bind_* calls does not matter and no file reopens a class.
 #pragma once
 
+#include <string>
+
 #include <pybind11/pybind11.h>
 
 #include <chasles/euler.hpp>
@@ -42,6 +44,53 @@ void bind_splines(py::module_& m);       // bind_splines.cpp: the cores of SO3/S
 void bind_dynamics(py::module_& m);      // bind_dynamics.cpp: class SpatialInertia
 void bind_threads(py::module_& m);       // bind_threads.cpp: set_num_threads, get_num_threads
 void bind_align(py::module_& m);         // bind_align.cpp: the kernels of so3_align, se3_align, sim3_align
+
+/// What the bindings call each group, written once (the classes' docstrings,
+/// the array functions' names, the error messages): its Python class, the
+/// prefix of its array functions, the word for one element, the form of its
+/// matrix (none for the rotation groups) and the word for a spline's keys.
+template <typename G>
+struct GroupNames;
+template <>
+struct GroupNames<chasles::SO2d> {
+  static constexpr const char *cls = "SO2", *prefix = "so2", *kind = "rotation", *form = "", *keys = "keys";
+};
+template <>
+struct GroupNames<chasles::SE2d> {
+  static constexpr const char *cls = "SE2", *prefix = "se2", *kind = "rigid motion", *form = "[[R, t], [0, 0, 1]]",
+                              *keys = "keys";
+};
+template <>
+struct GroupNames<chasles::SO3d> {
+  static constexpr const char *cls = "SO3", *prefix = "so3", *kind = "rotation", *form = "", *keys = "rotations";
+};
+template <>
+struct GroupNames<chasles::SE3d> {
+  static constexpr const char *cls = "SE3", *prefix = "se3", *kind = "rigid motion", *form = "[[R, p], [0, 0, 0, 1]]",
+                              *keys = "poses";
+};
+template <>
+struct GroupNames<chasles::Sim3d> {
+  static constexpr const char *cls = "Sim3", *prefix = "sim3", *kind = "similarity", *form = "[[s R, t], [0, 0, 0, 1]]",
+                              *keys = "keys";
+};
+template <>
+struct GroupNames<chasles::SE23d> {
+  static constexpr const char *cls = "SE23", *prefix = "se23", *kind = "extended pose",
+                              *form = "[[R, p, v], [0, 1, 0], [0, 0, 1]]", *keys = "keys";
+};
+/// "rotation", "rigid motion [[R, t], [0, 0, 1]]", ...: one element, in a message.
+template <typename G>
+std::string element_words() {
+  using N = GroupNames<G>;
+  return *N::form ? std::string(N::kind) + " " + N::form : std::string(N::kind);
+}
+/// "rotation matrices", "rigid motion matrices [[R, t], [0, 0, 1]]", ...: a docstring's arguments.
+template <typename G>
+std::string matrices_words() {
+  using N = GroupNames<G>;
+  return std::string(N::kind) + " matrices" + (*N::form ? std::string(" ") + N::form : std::string());
+}
 
 constexpr double kDegToRad = 3.14159265358979323846 / 180.0;  // numpy's deg2rad: x * (pi / 180)
 constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;  // numpy's rad2deg: x * (180 / pi)

@@ -31,15 +31,13 @@ template <typename G>
 struct Lie;
 
 template <>
-struct Lie<chasles::SO3d> {
+struct Lie<chasles::SO3d> : GroupNames<chasles::SO3d> {
   static constexpr int N = 3, D = 3, P = 3;  // the matrix size, the tangent dimension, the point size
   using Tangent = Eigen::Matrix<double, D, 1>;
   using Jacobian = Eigen::Matrix<double, D, D>;
-  static constexpr const char* name = "SO3";
   static constexpr const char* tangent = "w";
   static constexpr const char* act_ufunc = "so3_act";
   static constexpr const char* act_hint = "an SO3 composes only with an SO3";
-  static constexpr const char* kind = "rotation";
   static constexpr const char* inverse = "R^-1 = R^T";
   static constexpr const char* matrix = "The rotation matrix R";
   static constexpr const char* example = "[0.3, 0.2, 0.1]";
@@ -202,16 +200,14 @@ Raises:
 };
 
 template <>
-struct Lie<chasles::SE3d> {
+struct Lie<chasles::SE3d> : GroupNames<chasles::SE3d> {
   static constexpr int N = 4, D = 6, P = 3;
   using Tangent = Eigen::Matrix<double, D, 1>;
   using Jacobian = Eigen::Matrix<double, D, D>;
-  static constexpr const char* name = "SE3";
   static constexpr const char* tangent = "xi";
   static constexpr const char* act_ufunc = "se3_act";
   static constexpr const char* act_hint =
       "an SE3 composes with an SE3 by @; it acts on a Twist or a Wrench by g.act(x)";
-  static constexpr const char* kind = "motion";
   static constexpr const char* inverse = "g^-1 = [[R^T, -R^T p], [0, 1]]";
   static constexpr const char* matrix = "The homogeneous matrix g = [[R, p], [0, 1]]";
   static constexpr const char* example = "[0.1, 0.2, 0.3, 0.4, 0.5, 0.6]";
@@ -467,7 +463,7 @@ auto tangent_out(const Eigen::Matrix<double, D, 1>& x) {
 template <typename G>
 std::string group_text(std::string text) {
   using L = Lie<G>;
-  const std::pair<const char*, std::string> fields[] = {{"{G}", L::name},
+  const std::pair<const char*, std::string> fields[] = {{"{G}", L::cls},
                                                         {"{kind}", L::kind},
                                                         {"{inverse}", L::inverse},
                                                         {"{matrix}", L::matrix},
@@ -611,7 +607,7 @@ Removes the drift that accumulates over many compositions.
 Returns:
     {G}: the projected {kind}.
 )doc"));
-  static const std::string interpolate_what = std::string(L::name) + ".interpolate(t)";
+  static const std::string interpolate_what = std::string(L::cls) + ".interpolate(t)";
   cls.def_static(
       "interpolate",
       [](Obj<G> a, Obj<G> b, RealLike t) {
@@ -634,7 +630,7 @@ Example:
     >>> {G}.interpolate(a, b, 0.5).is_approx(a @ {G}.exp(0.5 * np.array({example})))
     True
 )doc"));
-  static const std::string pow_what = std::string(L::name) + " ** t";
+  static const std::string pow_what = std::string(L::cls) + " ** t";
   cls.def(
       "__pow__",
       [](Obj<G> g, RealLike t) {
@@ -656,7 +652,7 @@ Example:
     >>> ((g ** 0.5) @ (g ** 0.5)).is_approx(g) and (g ** -1).is_approx(g.inverse())
     True
 )doc"));
-  static const std::string tol_what = std::string(L::name) + ".is_approx(tol)";
+  static const std::string tol_what = std::string(L::cls) + ".is_approx(tol)";
   cls.def(
       "is_approx",
       [](Obj<G> a, Obj<G> b, RealLike tol) { return a->is_approx(*b, to_tolerance(tol.obj, tol_what.c_str())); },
@@ -680,7 +676,7 @@ Returns:
     char buf[2048];
     std::snprintf(buf, sizeof buf, L::jacobian_doc, titles[k]);
     docs[k] = buf;
-    const std::string what = std::string(L::name) + "." + names[k] + "(" + L::tangent + ")";
+    const std::string what = std::string(L::cls) + "." + names[k] + "(" + L::tangent + ")";
     const auto J = L::jacobians[k];
     cls.def_static(
         names[k],

@@ -43,6 +43,15 @@ struct IsLieGroup<G, std::void_t<typename G::Tangent, typename G::AdjointMatrix,
 template <typename G>
 using EnableIfLieGroup = std::enable_if_t<IsLieGroup<G>::value, int>;
 
+/// The group G over another scalar: SE2<double> -> SE2<T> (the splines'
+/// dual numbers, the Python bindings' float32 kernels).
+template <typename G, typename T>
+struct WithScalar;
+template <template <typename> class G, typename S, typename T>
+struct WithScalar<G<S>, T> {
+  using type = G<T>;
+};
+
 }  // namespace detail
 
 /// Geodesic interpolation: a exp(t log(a^-1 b)); t = 0 gives a, t = 1 gives b

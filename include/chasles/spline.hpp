@@ -92,6 +92,7 @@
 #include "chasles/detail/small_solve.hpp"
 
 #include "chasles/jacobians.hpp"
+#include "chasles/lie_group.hpp"
 #include "chasles/se2.hpp"
 #include "chasles/se23.hpp"
 #include "chasles/se3.hpp"
@@ -291,14 +292,6 @@ inline void spline_rates(const SE3<Scalar>* /*tag*/, const Eigen::Matrix<Scalar,
   velocity = detail::stack<Scalar>(v, w);
   acceleration = detail::stack<Scalar>(V3(Rt * p2 - w.cross(v)), w1);
 }
-
-/// The group G over another scalar: SE2<double> -> SE2<T>.
-template <typename G, typename T>
-struct WithScalar;
-template <template <typename> class G, typename S, typename T>
-struct WithScalar<G<S>, T> {
-  using type = G<T>;
-};
 
 /// Body velocity and acceleration of E(t) = exp(r(t)) on any group from r, r', r'':
 ///   V = Jr(r) r',  V' = Jr(r) r'' + (d/dt Jr(r)) r',

@@ -1020,7 +1020,7 @@ class SE3:
             t: the fraction, finite.
         
         Returns:
-            SE3: the interpolated motion.
+            SE3: the interpolated rigid motion.
         
         Example:
             >>> a, b = SE3(), SE3.exp([0.1, 0.2, 0.3, 0.4, 0.5, 0.6])
@@ -1209,14 +1209,14 @@ class SE3:
             other: SE3.
         
         Returns:
-            SE3: the composed motion.
+            SE3: the composed rigid motion.
         """
     @typing.overload
     def __matmul__(self, points: numpy.typing.ArrayLike) -> typing.Any:
         """
         Action on points: q_a = R q_b + p.
         
-        The array function se3_act with this motion: numpy's rules for dtypes and
+        The array function se3_act with this rigid motion: numpy's rules for dtypes and
         broadcasting.
         
         Args:
@@ -1238,7 +1238,7 @@ class SE3:
     def __pow__(self, t: float) -> SE3:
         """
         The power exp(t log g): t = 0 gives the identity, t = 1
-        this motion, t = -1 its inverse, t = 0.5 the motion half way along its
+        this rigid motion, t = -1 its inverse, t = 0.5 the rigid motion half way along its
         geodesic from the identity (the one whose square it is, for angles below pi),
         as scipy's ``Rotation.__pow__``.
         
@@ -1292,7 +1292,7 @@ class SE3:
         """
         Action on points: q_a = R q_b + p (the same as ``g @ points``).
         
-        The array function se3_act with this motion: numpy's rules for dtypes and
+        The array function se3_act with this rigid motion: numpy's rules for dtypes and
         broadcasting.
         
         Args:
@@ -1362,7 +1362,7 @@ class SE3:
         """
     def inverse(self) -> SE3:
         """
-        The inverse motion g^-1 = [[R^T, -R^T p], [0, 1]].
+        The inverse rigid motion g^-1 = [[R^T, -R^T p], [0, 1]].
         
         Returns:
             SE3: the inverse.
@@ -1374,7 +1374,7 @@ class SE3:
         """
     def is_approx(self, other: SE3, tol: float = 1e-09) -> bool:
         """
-        Whether two motions are equal within tol: rotation matrices within tol (absolute), translations within
+        Whether two rigid motions are equal within tol: rotation matrices within tol (absolute), translations within
         tol * max(1, |p|_max) (relative beyond unit scale).
         
         ``==`` is the exact comparison (every stored number equal).
@@ -1402,12 +1402,12 @@ class SE3:
         """
     def normalized(self) -> SE3:
         """
-        The same motion with the nearest rotation.
+        The same rigid motion with the nearest rotation.
         
         Removes the drift that accumulates over many compositions.
         
         Returns:
-            SE3: the projected motion.
+            SE3: the projected rigid motion.
         """
     def to_scipy(self) -> typing.Any:
         """
@@ -1934,7 +1934,7 @@ class SE2:
             t: the fraction, finite.
         
         Returns:
-            SE2: the interpolated motion.
+            SE2: the interpolated rigid motion.
         
         Example:
             >>> a, b = SE2(), SE2.exp([0.1, 0.2, 0.3])
@@ -2086,14 +2086,14 @@ class SE2:
             other: SE2.
         
         Returns:
-            SE2: the composed motion.
+            SE2: the composed rigid motion.
         """
     @typing.overload
     def __matmul__(self, points: numpy.typing.ArrayLike) -> typing.Any:
         """
         Action on points of the plane: q_a = R q_b + t.
         
-        The array function se2_act with this motion: numpy's rules for dtypes and
+        The array function se2_act with this rigid motion: numpy's rules for dtypes and
         broadcasting.
         
         Args:
@@ -2115,7 +2115,7 @@ class SE2:
     def __pow__(self, t: float) -> SE2:
         """
         The power exp(t log g): t = 0 gives the identity, t = 1
-        this motion, t = -1 its inverse, t = 0.5 the motion half way along its
+        this rigid motion, t = -1 its inverse, t = 0.5 the rigid motion half way along its
         geodesic from the identity (the one whose square it is, for angles below pi),
         as scipy's ``Rotation.__pow__``.
         
@@ -2146,7 +2146,7 @@ class SE2:
         """
         Action on points of the plane: q_a = R q_b + t (the same as ``g @ points``).
         
-        The array function se2_act with this motion: numpy's rules for dtypes and
+        The array function se2_act with this rigid motion: numpy's rules for dtypes and
         broadcasting.
         
         Args:
@@ -2176,7 +2176,7 @@ class SE2:
         """
     def inverse(self) -> SE2:
         """
-        The inverse motion g^-1 = [[R^T, -R^T t], [0, 1]].
+        The inverse rigid motion g^-1 = [[R^T, -R^T t], [0, 1]].
         
         Returns:
             SE2: the inverse.
@@ -2188,7 +2188,7 @@ class SE2:
         """
     def is_approx(self, other: SE2, tol: float = 1e-09) -> bool:
         """
-        Whether two motions are equal within tol: rotations within tol (absolute), translations within
+        Whether two rigid motions are equal within tol: rotations within tol (absolute), translations within
         tol * max(1, |t|_max).
         
         ``==`` is the exact comparison (every stored number equal).
@@ -2216,12 +2216,12 @@ class SE2:
         """
     def normalized(self) -> SE2:
         """
-        The same motion with the nearest rotation.
+        The same rigid motion with the nearest rotation.
         
         Removes the drift that accumulates over many compositions.
         
         Returns:
-            SE2: the projected motion.
+            SE2: the projected rigid motion.
         """
     @property
     def rotation(self) -> SO2:
