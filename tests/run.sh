@@ -232,39 +232,44 @@ stage_python() {
 # python stage in the background, in a process group of its own (set -m) so
 # that a failure of the foreground can stop all of it, with its output kept
 # in a file and printed when it ends.
+# in_background LOG FUNCTION: runs FUNCTION in the background, in a process
+# group of its own (set -m: on_exit stops all of it), its output into LOG;
+# its process group is then BG_PID.
+in_background() {
+  set -m
+  ("$2") > "$1" 2>&1 < /dev/null &
+  BG_PID=$!
+  set +m
+}
+# finish_background NAME PID LOG: waits for it, prints its output, and stops
+# the script with its status if it failed.
+finish_background() {
+  local status=0
+  wait "$2" || status=$?
+  cat "$3"
+  if [ "$status" -ne 0 ]; then
+    echo "error: $1 failed (exit $status); its output is above" >&2
+    exit "$status"
+  fi
+}
 stage_all() {
   apt_all
   gxx_build
-  local log="$ROOT/build/python-stage.log" status=0
+  local log="$ROOT/build/python-stage.log" fuzz_log="$SANITIZE_DIR/fuzz-run.log"
   echo "== the python stage runs in the background from here on; its output follows the fuzzing's"
-  set -m
-  (stage_python) > "$log" 2>&1 < /dev/null &
-  PY_PID=$!
-  set +m
+  in_background "$log" stage_python
+  PY_PID=$BG_PID
   gxx_tests
   sanitizer_build
-  # The fuzzing (one process) beside the sanitizer's ctest, its output kept
-  # and printed after; then the python stage's.
-  local fuzz_log="$SANITIZE_DIR/fuzz-run.log" fuzz_status=0
-  set -m
-  (stage_fuzz) > "$fuzz_log" 2>&1 < /dev/null &
-  FUZZ_PID=$!
-  set +m
+  # The fuzzing (one process) beside the sanitizer's ctest, its output
+  # printed after; then the python stage's.
+  in_background "$fuzz_log" stage_fuzz
+  FUZZ_PID=$BG_PID
   sanitizer_tests
-  wait "$FUZZ_PID" || fuzz_status=$?
+  finish_background "the fuzzing" "$FUZZ_PID" "$fuzz_log"
   FUZZ_PID=""
-  cat "$fuzz_log"
-  if [ "$fuzz_status" -ne 0 ]; then
-    echo "error: the fuzzing failed (exit $fuzz_status); its output is above" >&2
-    exit "$fuzz_status"
-  fi
-  wait "$PY_PID" || status=$?
+  finish_background "the python stage" "$PY_PID" "$log"
   PY_PID=""
-  cat "$log"
-  if [ "$status" -ne 0 ]; then
-    echo "error: the python stage failed (exit $status); its output is above" >&2
-    exit "$status"
-  fi
 }
 
 case "$STAGE" in
