@@ -9,6 +9,8 @@
 // - every Jacobian (of exp and its inverse, of log, inverse, compose, rplus,
 //   rminus, lplus, lminus, between) against central finite differences of
 //   its defining identity on the long double group (step 1e-6);
+// - the Jacobians of exp also against the top-right block of the
+//   exponential of [[ad_xi, I], [0, 0]] in long double, to rounding;
 // - the group laws on the long double matrices, and ad against the
 //   commutator of the hat matrices;
 // - autodiff: the derivative of exp at 0 is the hat generators, exactly.
@@ -321,6 +323,35 @@ TYPED_TEST(Sim3Test, JacobiansOfExpAgainstDifferences) {
   const auto Z = TypeParam::Tangent::Zero().eval();
   EXPECT_TRUE((TypeParam::left_jacobian(Z).array() == Eigen::Matrix<S, D, D>::Identity().array()).all());
   EXPECT_TRUE((TypeParam::right_jacobian_inverse(Z).array() == Eigen::Matrix<S, D, D>::Identity().array()).all());
+}
+
+// J_l(xi) = phi(ad_xi) is the top-right block of the exponential of the
+// 14x14 [[ad_xi, I], [0, 0]] (the integral of exp(u ad_xi) over [0, 1]),
+// summed in long double from the same input: an oracle for the value to
+// rounding, where the differences above check only the convention. Within
+// kExp eps of the largest entry over the whole grid, |v| = 100 and
+// |sigma| = 5 included (the coupling blocks are computed for v scaled to
+// unit size, sim3.hpp).
+TYPED_TEST(Sim3Test, JacobianOfExpIsTheBlockExponential) {
+  using S = typename TestFixture::S;
+  using TL = typename TestFixture::TL;
+  constexpr int D = TestFixture::D;
+  Worst wl("J_l vs the block exponential"), wr("J_r vs the block exponential");
+  auto phi_ad = [](const TL& x) {
+    Eigen::Matrix<LD, 2 * D, 2 * D> B = Eigen::Matrix<LD, 2 * D, 2 * D>::Zero();
+    B.template topLeftCorner<D, D>() = Sim3<LD>::ad(x);
+    B.template topRightCorner<D, D>().setIdentity();
+    return Eigen::Matrix<LD, D, D>(expm<2 * D>(B).template topRightCorner<D, D>());
+  };
+  for (const auto& x : this->xs) {
+    const TL xl = x.template cast<LD>();
+    const auto JL = TypeParam::left_jacobian(x), JR = TypeParam::right_jacobian(x);
+    const Eigen::Matrix<LD, D, D> L = phi_ad(xl), R = phi_ad(TL(-xl));
+    EXPECT_TRUE(near<S>(JL, L, kExp)) << str(x);
+    EXPECT_TRUE(near<S>(JR, R, kExp)) << str(x);
+    wl.see(TestFixture::err_eps(JL, L), str(x));
+    wr.see(TestFixture::err_eps(JR, R), str(x));
+  }
 }
 
 TYPED_TEST(Sim3Test, JacobiansOfTheOperationsAgainstDifferences) {
