@@ -27,7 +27,9 @@
 
 #include <chasles/chasles.hpp>
 
+#include "support/exp_taylor.hpp"
 #include "support/group_traits.hpp"
+#include "support/jacobian_checks.hpp"
 
 namespace {
 
@@ -136,26 +138,6 @@ struct Samples<SE23<S>> {
   }
 };
 
-/// exp(X) of a square long double matrix: Taylor series of X / 2^s (|X / 2^s|
-/// <= 1/2, 30 terms: far below long double's rounding), squared s times.
-template <int N>
-Eigen::Matrix<LD, N, N> expm(const Eigen::Matrix<LD, N, N>& X) {
-  int s = 0;
-  LD norm = X.cwiseAbs().rowwise().sum().maxCoeff();
-  while (norm > LD(0.5)) {
-    norm /= 2;
-    ++s;
-  }
-  const Eigen::Matrix<LD, N, N> A = X / std::ldexp(LD(1), s);
-  Eigen::Matrix<LD, N, N> E = Eigen::Matrix<LD, N, N>::Identity(), term = E;
-  for (int k = 1; k < 30; ++k) {
-    term = term * A / LD(k);
-    E += term;
-  }
-  for (int i = 0; i < s; ++i) E = E * E;
-  return E;
-}
-
 template <typename G>
 class Groups : public ::testing::Test {
  public:
@@ -166,24 +148,6 @@ class Groups : public ::testing::Test {
   using TL = typename GL::Tangent;
   static constexpr int D = G::DoF;
   std::vector<Tangent> xs = P::tangents();
-
-  static GL ld(const G& g) { return g.template cast<LD>(); }
-  /// Central differences, on the long double group, of the map d -> f(d) (a
-  /// tangent of the result), d along each tangent axis.
-  template <typename F>
-  static Eigen::Matrix<LD, Eigen::Dynamic, Eigen::Dynamic> fd(int rows, F f) {
-    const LD h = 1e-6L;
-    Eigen::Matrix<LD, Eigen::Dynamic, Eigen::Dynamic> J(rows, D);
-    for (int i = 0; i < D; ++i) {
-      TL d = TL::Zero();
-      d[i] = h;
-      J.col(i) = (f(d) - f(TL(-d))) / (2 * h);
-    }
-    return J;
-  }
-  /// Tolerance of a Jacobian against differences: 1e-9 absolute in double
-  /// (the differences' own error is about 1e-12), 1e3 eps in float.
-  static LD fd_k() { return std::is_same<S, float>::value ? LD(1e3) : LD(1e-9) / eps<S>(); }
 };
 
 struct Name {
@@ -202,7 +166,8 @@ TYPED_TEST(Groups, ExpIsTheMatrixExponentialOfHat) {
   using S = typename TestFixture::S;
   for (const auto& x : this->xs) {
     const auto X = to_ld(TypeParam::hat(x));
-    EXPECT_TRUE(near<S>(TypeParam::exp(x).matrix(), expm(X), kExp, TestFixture::P::scale(x))) << x.transpose();
+    EXPECT_TRUE(near<S>(TypeParam::exp(x).matrix(), chasles_ref::exp_taylor(X), kExp, TestFixture::P::scale(x)))
+        << x.transpose();
   }
 }
 
@@ -239,7 +204,8 @@ TYPED_TEST(Groups, GroupLawsOnTheMatrices) {
     // Ad: a exp(y) a^-1 = exp(Ad_a y), on the matrices.
     const auto& y = xs[(11 * i + 2) % xs.size()];
     if (TestFixture::P::scale(y) < 10) {
-      const auto lhs = (to_ld(a.matrix()) * expm(to_ld(TypeParam::hat(y))) * to_ld(a.matrix()).inverse()).eval();
+      const auto lhs =
+          (to_ld(a.matrix()) * chasles_ref::exp_taylor(to_ld(TypeParam::hat(y))) * to_ld(a.matrix()).inverse()).eval();
       EXPECT_TRUE(
           near<S>(TypeParam::exp(typename TypeParam::Tangent(a.adjoint() * y)).matrix(), lhs, 4 * kExp, scale * scale));
     }
@@ -265,10 +231,10 @@ TYPED_TEST(Groups, JacobiansOfExpAgainstDifferences) {
     if (TestFixture::P::angle(x) > 3 || TestFixture::P::scale(x) > 10) continue;  // J^-1 grows near 2 pi
     const TL xl = x.template cast<LD>();
     const GL g = GL::exp(xl);
-    const auto Jr = TestFixture::fd(D, [&](const TL& d) { return TL(rminus(GL::exp(TL(xl + d)), g)); });
-    const auto Jl = TestFixture::fd(D, [&](const TL& d) { return TL(lminus(GL::exp(TL(xl + d)), g)); });
-    EXPECT_TRUE(near<S>(TypeParam::right_jacobian(x), Jr, TestFixture::fd_k())) << x.transpose();
-    EXPECT_TRUE(near<S>(TypeParam::left_jacobian(x), Jl, TestFixture::fd_k())) << x.transpose();
+    const auto Jr = central_differences<D>(D, [&](const TL& d) { return TL(rminus(GL::exp(TL(xl + d)), g)); });
+    const auto Jl = central_differences<D>(D, [&](const TL& d) { return TL(lminus(GL::exp(TL(xl + d)), g)); });
+    EXPECT_TRUE(near<S>(TypeParam::right_jacobian(x), Jr, fd_tolerance<S>())) << x.transpose();
+    EXPECT_TRUE(near<S>(TypeParam::left_jacobian(x), Jl, fd_tolerance<S>())) << x.transpose();
     const auto I = Eigen::Matrix<LD, D, D>::Identity();
     EXPECT_TRUE(near<S>(to_ld(TypeParam::right_jacobian(x)) * to_ld(TypeParam::right_jacobian_inverse(x)), I, kExp));
     EXPECT_TRUE(near<S>(to_ld(TypeParam::left_jacobian(x)) * to_ld(TypeParam::left_jacobian_inverse(x)), I, kExp));
@@ -276,9 +242,6 @@ TYPED_TEST(Groups, JacobiansOfExpAgainstDifferences) {
 }
 
 TYPED_TEST(Groups, JacobiansOfTheOperationsAgainstDifferences) {
-  using S = typename TestFixture::S;
-  using GL = typename TestFixture::GL;
-  using TL = typename TestFixture::TL;
   constexpr int D = TestFixture::D;
   const auto& xs = this->xs;
   for (std::size_t i = 0; i < xs.size(); ++i) {
@@ -286,54 +249,8 @@ TYPED_TEST(Groups, JacobiansOfTheOperationsAgainstDifferences) {
     if (TestFixture::P::angle(x) > 2.5 || TestFixture::P::angle(y) > 2.5 || TestFixture::P::scale(x) > 10 ||
         TestFixture::P::scale(y) > 10)
       continue;
-    const TypeParam a = TypeParam::exp(x), b = TypeParam::exp(y);
-    const GL al = TestFixture::ld(a), bl = TestFixture::ld(b);
-    const TL yl = y.template cast<LD>();
-    const auto k = TestFixture::fd_k();
     const std::string at = "at x = " + std::to_string(double(x[D - 1])) + ", y = " + std::to_string(double(y[D - 1]));
-    auto same = [&](const auto& J, const auto& ref, const char* what) {
-      EXPECT_TRUE(near<S>(J, ref, k)) << what << " " << at;
-    };
-    same(log_jacobian(a), TestFixture::fd(D, [&](const TL& d) { return TL(rplus(al, d).log() - al.log()); }), "log");
-    same(inverse_jacobian(a),
-         TestFixture::fd(D, [&](const TL& d) { return TL(rminus(rplus(al, d).inverse(), al.inverse())); }), "inverse");
-    const auto cj = compose_jacobians(a, b);
-    same(cj.lhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(rplus(al, d) * bl, al * bl)); }), "compose a");
-    same(cj.rhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(al * rplus(bl, d), al * bl)); }), "compose b");
-    const auto rp = rplus_jacobians(a, y);
-    same(rp.lhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(rplus(rplus(al, d), yl), rplus(al, yl))); }),
-         "rplus g");
-    same(rp.rhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(rplus(al, TL(yl + d)), rplus(al, yl))); }),
-         "rplus xi");
-    const auto rm = rminus_jacobians(a, b);
-    same(rm.lhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(rplus(al, d), bl) - rminus(al, bl)); }),
-         "rminus g");
-    same(rm.rhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(al, rplus(bl, d)) - rminus(al, bl)); }),
-         "rminus h");
-    const auto lp = lplus_jacobians(y, a);
-    same(lp.lhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(lplus(TL(yl + d), al), lplus(yl, al))); }),
-         "lplus xi");
-    same(lp.rhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(lplus(yl, rplus(al, d)), lplus(yl, al))); }),
-         "lplus g");
-    const auto lm = lminus_jacobians(a, b);
-    same(lm.lhs, TestFixture::fd(D, [&](const TL& d) { return TL(lminus(rplus(al, d), bl) - lminus(al, bl)); }),
-         "lminus g");
-    same(lm.rhs, TestFixture::fd(D, [&](const TL& d) { return TL(lminus(al, rplus(bl, d)) - lminus(al, bl)); }),
-         "lminus h");
-    const auto bj = between_jacobians(a, b);
-    same(bj.lhs,
-         TestFixture::fd(D, [&](const TL& d) { return TL(rminus(between(rplus(al, d), bl), between(al, bl))); }),
-         "between a");
-    same(bj.rhs,
-         TestFixture::fd(D, [&](const TL& d) { return TL(rminus(between(al, rplus(bl, d)), between(al, bl))); }),
-         "between b");
-    constexpr int kP = TestFixture::P::kPoint;
-    const Eigen::Matrix<LD, kP, 1> p = Eigen::Matrix<LD, kP, 1>::LinSpaced(0.3L, -1.7L);
-    const auto aj = act_jacobians(a, Eigen::Matrix<S, kP, 1>(p.template cast<S>()));
-    same(aj.group, TestFixture::fd(kP, [&](const TL& d) { return Eigen::Matrix<LD, kP, 1>(rplus(al, d).act(p)); }),
-         "act g");
-    same(aj.point, to_ld(a.matrix().template topLeftCorner<kP, kP>()), "act p");
-    EXPECT_TRUE(near<S>(interpolate_jacobian_t(a, b, S(0.3)), rminus(b, a), 0)) << at;
+    expect_operation_jacobians<TypeParam, TestFixture::P::kPoint>(TypeParam::exp(x), TypeParam::exp(y), y, at);
   }
 }
 

@@ -36,7 +36,9 @@
 
 #include <chasles/chasles.hpp>
 
+#include "support/exp_taylor.hpp"
 #include "support/group_traits.hpp"
+#include "support/jacobian_checks.hpp"
 
 namespace {
 
@@ -45,26 +47,6 @@ using chasles::Sim3;
 
 constexpr LD kOp = 8;
 constexpr LD kExp = 16;
-
-/// exp(X) of a square long double matrix: Taylor series of X / 2^s (|X / 2^s|
-/// <= 1/2, 30 terms: far below long double's rounding), squared s times.
-template <int N>
-Eigen::Matrix<LD, N, N> expm(const Eigen::Matrix<LD, N, N>& X) {
-  int s = 0;
-  LD norm = X.cwiseAbs().rowwise().sum().maxCoeff();
-  while (norm > LD(0.5)) {
-    norm /= 2;
-    ++s;
-  }
-  const Eigen::Matrix<LD, N, N> A = X / std::ldexp(LD(1), s);
-  Eigen::Matrix<LD, N, N> E = Eigen::Matrix<LD, N, N>::Identity(), term = E;
-  for (int k = 1; k < 30; ++k) {
-    term = term * A / LD(k);
-    E += term;
-  }
-  for (int i = 0; i < s; ++i) E = E * E;
-  return E;
-}
 
 /// The largest S whose square (rounded in S) is below cut, and the next one.
 template <typename S>
@@ -169,20 +151,7 @@ class Sim3Test : public ::testing::Test {
   static LD t_scale(const Tangent& x) {
     return std::max(LD(1), phi(static_cast<LD>(x[6])) * max_abs(x.template head<3>()));
   }
-  static GL ld(const G& g) { return g.template cast<LD>(); }
 
-  template <typename F>
-  static Eigen::Matrix<LD, Eigen::Dynamic, Eigen::Dynamic> fd(int rows, F f) {
-    const LD h = 1e-6L;
-    Eigen::Matrix<LD, Eigen::Dynamic, Eigen::Dynamic> J(rows, D);
-    for (int i = 0; i < D; ++i) {
-      TL d = TL::Zero();
-      d[i] = h;
-      J.col(i) = (f(d) - f(TL(-d))) / (2 * h);
-    }
-    return J;
-  }
-  static LD fd_k() { return std::is_same<S, float>::value ? LD(1e3) : LD(1e-9) / eps<S>(); }
   /// max |a - b| / (eps * max(1, |a|, |b|, extra)).
   template <typename A, typename B>
   static LD err_eps(const A& a, const B& b, LD extra = 1) {
@@ -205,7 +174,7 @@ TYPED_TEST(Sim3Test, ExpIsTheMatrixExponentialOfHat) {
   using S = typename TestFixture::S;
   Worst block("exp s R"), trans("exp t");
   for (const auto& x : this->xs) {
-    const Eigen::Matrix<LD, 4, 4> E = expm<4>(to_ld(TypeParam::hat(x)));
+    const Eigen::Matrix<LD, 4, 4> E = chasles_ref::exp_taylor<4>(to_ld(TypeParam::hat(x)));
     const Eigen::Matrix<S, 4, 4> M = TypeParam::exp(x).matrix();
     const LD sb = std::max(LD(1), std::exp(static_cast<LD>(x[6])));
     const LD st = TestFixture::t_scale(x);
@@ -275,7 +244,7 @@ TYPED_TEST(Sim3Test, GroupLawsOnTheMatrices) {
     // Ad: a exp(y) a^-1 = exp(Ad_a y), on the matrices (y of moderate size).
     const auto& y = xs[(11 * i + 2) % xs.size()];
     if (TestFixture::size(y) < 10 && max_abs(A) < 200) {
-      const M4 lhs = A * expm<4>(to_ld(TypeParam::hat(y))) * A.inverse();
+      const M4 lhs = A * chasles_ref::exp_taylor<4>(to_ld(TypeParam::hat(y))) * A.inverse();
       const typename TypeParam::Tangent ady = a.adjoint() * y;
       EXPECT_TRUE(near<S>(TypeParam::exp(ady).matrix(), lhs, 4 * kExp, max_abs(lhs) * max_abs(A) * inv_scale))
           << str(x) << " " << str(y);
@@ -302,13 +271,13 @@ TYPED_TEST(Sim3Test, JacobiansOfExpAgainstDifferences) {
   for (const auto& x : this->xs) {
     const TL xl = x.template cast<LD>();
     const GL g = GL::exp(xl);
-    const auto Jr = TestFixture::fd(D, [&](const TL& d) { return TL(rminus(GL::exp(TL(xl + d)), g)); });
-    const auto Jl = TestFixture::fd(D, [&](const TL& d) { return TL(lminus(GL::exp(TL(xl + d)), g)); });
+    const auto Jr = central_differences<D>(D, [&](const TL& d) { return TL(rminus(GL::exp(TL(xl + d)), g)); });
+    const auto Jl = central_differences<D>(D, [&](const TL& d) { return TL(lminus(GL::exp(TL(xl + d)), g)); });
     const auto JR = TypeParam::right_jacobian(x), JL = TypeParam::left_jacobian(x);
-    EXPECT_TRUE(near<S>(JR, Jr, TestFixture::fd_k())) << str(x);
-    EXPECT_TRUE(near<S>(JL, Jl, TestFixture::fd_k())) << str(x);
-    wr.see(TestFixture::err_eps(JR, Jr) / TestFixture::fd_k(), str(x));
-    wl.see(TestFixture::err_eps(JL, Jl) / TestFixture::fd_k(), str(x));
+    EXPECT_TRUE(near<S>(JR, Jr, fd_tolerance<S>())) << str(x);
+    EXPECT_TRUE(near<S>(JL, Jl, fd_tolerance<S>())) << str(x);
+    wr.see(TestFixture::err_eps(JR, Jr) / fd_tolerance<S>(), str(x));
+    wl.see(TestFixture::err_eps(JL, Jl) / fd_tolerance<S>(), str(x));
     const auto I = Eigen::Matrix<LD, D, D>::Identity();
     const auto JRi = TypeParam::right_jacobian_inverse(x), JLi = TypeParam::left_jacobian_inverse(x);
     const LD sr = max_abs(JR) * max_abs(JRi), sl = max_abs(JL) * max_abs(JLi);
@@ -341,7 +310,7 @@ TYPED_TEST(Sim3Test, JacobianOfExpIsTheBlockExponential) {
     Eigen::Matrix<LD, 2 * D, 2 * D> B = Eigen::Matrix<LD, 2 * D, 2 * D>::Zero();
     B.template topLeftCorner<D, D>() = Sim3<LD>::ad(x);
     B.template topRightCorner<D, D>().setIdentity();
-    return Eigen::Matrix<LD, D, D>(expm<2 * D>(B).template topRightCorner<D, D>());
+    return Eigen::Matrix<LD, D, D>(chasles_ref::exp_taylor<2 * D>(B).template topRightCorner<D, D>());
   };
   for (const auto& x : this->xs) {
     const TL xl = x.template cast<LD>();
@@ -355,56 +324,12 @@ TYPED_TEST(Sim3Test, JacobianOfExpIsTheBlockExponential) {
 }
 
 TYPED_TEST(Sim3Test, JacobiansOfTheOperationsAgainstDifferences) {
-  using S = typename TestFixture::S;
-  using GL = typename TestFixture::GL;
-  using TL = typename TestFixture::TL;
-  constexpr int D = TestFixture::D;
   const auto& xs = this->xs;
   for (std::size_t i = 0; i < xs.size(); i += 3) {
     const auto &x = xs[i], &y = xs[(5 * i + 1) % xs.size()];
     if (TestFixture::angle(x) > 2.5 || TestFixture::angle(y) > 2.5) continue;  // log's branch cut at pi
-    const TypeParam a = TypeParam::exp(x), b = TypeParam::exp(y);
-    const GL al = TestFixture::ld(a), bl = TestFixture::ld(b);
-    const TL yl = y.template cast<LD>();
-    const auto k = TestFixture::fd_k();
-    const std::string at = "at x = " + str(x) + ", y = " + str(y);
-    auto same = [&](const auto& J, const auto& ref, const char* what) {
-      EXPECT_TRUE(near<S>(J, ref, k)) << what << " " << at;
-    };
-    same(log_jacobian(a), TestFixture::fd(D, [&](const TL& d) { return TL(rplus(al, d).log() - al.log()); }), "log");
-    same(inverse_jacobian(a),
-         TestFixture::fd(D, [&](const TL& d) { return TL(rminus(rplus(al, d).inverse(), al.inverse())); }), "inverse");
-    const auto cj = compose_jacobians(a, b);
-    same(cj.lhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(rplus(al, d) * bl, al * bl)); }), "compose a");
-    same(cj.rhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(al * rplus(bl, d), al * bl)); }), "compose b");
-    const auto rp = rplus_jacobians(a, y);
-    same(rp.lhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(rplus(rplus(al, d), yl), rplus(al, yl))); }),
-         "rplus g");
-    same(rp.rhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(rplus(al, TL(yl + d)), rplus(al, yl))); }),
-         "rplus xi");
-    const auto rm = rminus_jacobians(a, b);
-    same(rm.lhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(rplus(al, d), bl) - rminus(al, bl)); }),
-         "rminus g");
-    same(rm.rhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(al, rplus(bl, d)) - rminus(al, bl)); }),
-         "rminus h");
-    const auto lp = lplus_jacobians(y, a);
-    same(lp.lhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(lplus(TL(yl + d), al), lplus(yl, al))); }),
-         "lplus xi");
-    same(lp.rhs, TestFixture::fd(D, [&](const TL& d) { return TL(rminus(lplus(yl, rplus(al, d)), lplus(yl, al))); }),
-         "lplus g");
-    const auto lm = lminus_jacobians(a, b);
-    same(lm.lhs, TestFixture::fd(D, [&](const TL& d) { return TL(lminus(rplus(al, d), bl) - lminus(al, bl)); }),
-         "lminus g");
-    same(lm.rhs, TestFixture::fd(D, [&](const TL& d) { return TL(lminus(al, rplus(bl, d)) - lminus(al, bl)); }),
-         "lminus h");
-    const auto bj = between_jacobians(a, b);
-    same(bj.lhs,
-         TestFixture::fd(D, [&](const TL& d) { return TL(rminus(between(rplus(al, d), bl), between(al, bl))); }),
-         "between a");
-    same(bj.rhs,
-         TestFixture::fd(D, [&](const TL& d) { return TL(rminus(between(al, rplus(bl, d)), between(al, bl))); }),
-         "between b");
-    EXPECT_TRUE(near<S>(interpolate_jacobian_t(a, b, S(0.3)), rminus(b, a), 0)) << at;
+    expect_operation_jacobians<TypeParam, 3>(TypeParam::exp(x), TypeParam::exp(y), y,
+                                             "at x = " + str(x) + ", y = " + str(y));
   }
 }
 

@@ -39,6 +39,8 @@
 #include <Eigen/LU>
 #include <unsupported/Eigen/MatrixFunctions>
 
+#include "support/exp_taylor.hpp"
+
 namespace chasles_ref {
 
 using ld = long double;
@@ -88,24 +90,6 @@ inline M4 exp6(const V6& xi) {
   for (int i = 0; i < 3; ++i) g(i, 3) = std::ldexp(g(i, 3), k);
   g.row(3) << 0, 0, 0, 1;
   return g;
-}
-
-/// Independent check of the Pade exponential: sum_{k<=40} (A/2^s)^k / k!,
-/// squared s times, with |A/2^s|_1 <= 1/2.
-template <int N>
-Eigen::Matrix<ld, N, N> exp_taylor(const Eigen::Matrix<ld, N, N>& A) {
-  using MN = Eigen::Matrix<ld, N, N>;
-  const ld norm1 = A.cwiseAbs().colwise().sum().maxCoeff();
-  int s = 0;
-  while (std::ldexp(norm1, -s) > 0.5L) ++s;
-  const MN B = A * std::ldexp(1.0L, -s);
-  MN sum = MN::Identity(), term = MN::Identity();
-  for (int k = 1; k <= 40; ++k) {
-    term = (term * B) / ld(k);
-    sum += term;
-  }
-  for (int i = 0; i < s; ++i) sum = (sum * sum).eval();
-  return sum;
 }
 
 /// |x| for a 3-vector without under/overflow of the squares.
