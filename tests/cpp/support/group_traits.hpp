@@ -38,9 +38,15 @@ Eigen::Matrix<LD, Derived::RowsAtCompileTime, Derived::ColsAtCompileTime> to_ld(
   return a.template cast<LD>();
 }
 
+// The helpers below read every coefficient: each evaluates an expression
+// argument once (eval() is a reference for a plain matrix), since a
+// coefficient of an unevaluated product expression computes the whole
+// product again.
+
 /// max |a_ij| (0 for an empty object), in long double.
 template <typename Derived>
-LD max_abs(const Eigen::MatrixBase<Derived>& a) {
+LD max_abs(const Eigen::MatrixBase<Derived>& expr) {
+  const auto& a = expr.eval();
   LD m = 0;
   for (Eigen::Index j = 0; j < a.cols(); ++j)
     for (Eigen::Index i = 0; i < a.rows(); ++i) m = std::max(m, std::fabs(static_cast<LD>(a(i, j))));
@@ -49,7 +55,9 @@ LD max_abs(const Eigen::MatrixBase<Derived>& a) {
 
 /// max |a_ij - b_ij| in long double; NaN if either holds a NaN.
 template <typename DA, typename DB>
-LD max_abs_diff(const Eigen::MatrixBase<DA>& a, const Eigen::MatrixBase<DB>& b) {
+LD max_abs_diff(const Eigen::MatrixBase<DA>& a_expr, const Eigen::MatrixBase<DB>& b_expr) {
+  const auto& a = a_expr.eval();
+  const auto& b = b_expr.eval();
   LD m = 0;
   for (Eigen::Index j = 0; j < a.cols(); ++j)
     for (Eigen::Index i = 0; i < a.rows(); ++i) {
@@ -66,8 +74,10 @@ LD max_abs_diff(const Eigen::MatrixBase<DA>& a, const Eigen::MatrixBase<DB>& b) 
 /// of order eps * 100 although the result is of order 1). On failure the
 /// message gives the error in units of eps * scale, and both operands.
 template <typename S, typename DA, typename DB>
-::testing::AssertionResult near(const Eigen::MatrixBase<DA>& a, const Eigen::MatrixBase<DB>& b, LD k,
+::testing::AssertionResult near(const Eigen::MatrixBase<DA>& a_expr, const Eigen::MatrixBase<DB>& b_expr, LD k,
                                 LD extra_scale = 1) {
+  const auto& a = a_expr.eval();
+  const auto& b = b_expr.eval();
   const LD scale = std::max({LD(1), max_abs(a), max_abs(b), extra_scale});
   const LD err = max_abs_diff(a, b);
   if (err <= k * eps<S>() * scale) return ::testing::AssertionSuccess();
