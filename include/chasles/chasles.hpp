@@ -14,6 +14,7 @@
 #include "chasles/distance.hpp"
 #include "chasles/dynamics.hpp"
 #include "chasles/euler.hpp"
+#include "chasles/gaussian.hpp"
 #include "chasles/inverse_kinematics.hpp"
 #include "chasles/io.hpp"
 #include "chasles/jacobians.hpp"

@@ -133,6 +133,7 @@ struct Thresholds<float> {
   static constexpr float sim3_jacobian_norm = 0.5f;
   static constexpr int sim3_jacobian_degree = 7;  // 0.5^9 / 9! = 5.4e-9 < eps / 8
   static constexpr float align_tolerance = 3.4526698e-04f;  // eps^(1/2)
+  static constexpr float covariance_pivot_tolerance = 1.9073486e-06f;  // 16 eps
 };
 
 template <>
@@ -163,6 +164,7 @@ struct Thresholds<double> {
   static constexpr double sim3_jacobian_norm = 0.5;
   static constexpr int sim3_jacobian_degree = 13;  // 0.5^15 / 15! = 2.3e-17 < eps / 8
   static constexpr double align_tolerance = 1.4901161193847656e-08;  // eps^(1/2)
+  static constexpr double covariance_pivot_tolerance = 3.552713678800501e-15;  // 16 eps
 };
 
 template <>
@@ -195,6 +197,7 @@ struct Thresholds<long double> {
   static constexpr long double sim3_jacobian_norm = 0.5L;
   static constexpr int sim3_jacobian_degree = 16;  // 0.5^18 / 18! = 6e-22 < eps / 8
   static constexpr long double align_tolerance = 3.2927225399135962334e-10L;  // eps^(1/2)
+  static constexpr long double covariance_pivot_tolerance = 1.7347234759768070944e-18L;  // 16 eps
 };
 
 // mean_step_tolerance: the geodesic (Karcher) mean (mean.hpp) stops after
@@ -351,6 +354,16 @@ struct Thresholds<long double> {
 //   rotation about the line is reported not determined for d below about
 //   eps^(1/4) of the line's length: tests/cpp/test_align.cpp puts points
 //   20 times either side of that, in float and in double.
+//
+// covariance_pivot_tolerance: the Cholesky factor of a covariance
+//   (gaussian.hpp, detail::psd_cholesky) takes a pivot d_k <= tol m, m the
+//   largest diagonal entry, as a direction of zero variance (its column of
+//   the factor is zero) and a pivot below -tol m as a matrix that is not
+//   positive semidefinite. d_k = S_kk - sum_j L_kj^2 is a sum of at most 8
+//   rounded terms of size <= m (every L_kj^2 <= S_kk): its rounding is at
+//   most about 9 eps m, which 16 eps covers, so that the exactly singular
+//   covariance of a coordinate held fixed (or a rank-deficient one rounded)
+//   is never refused nor given a pivot of rounding noise.
 //
 /// The thresholds that apply to a Scalar (autodiff scalars use their real type's).
 template <typename Scalar>

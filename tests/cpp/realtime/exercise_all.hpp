@@ -85,9 +85,19 @@ typename G::Scalar exercise_families(const typename G::Tangent& x, const typenam
                                   Parts::Vector::Constant(S(0.6)), low, high)
              .matrix()
              .sum();
+  // Gaussians (gaussian.hpp).
+  const M cov = M::Identity() * S(0.01);
+  const Gaussian<G> ga(g, cov), gb = Gaussian<G>::from_left(h, cov);
+  sum += ga.inverse().cov().sum() + (ga * gb).cov().sum() + ga.compose(gb, cov).cov().sum() +
+         ga.between(gb).cov().sum() + ga.between(gb, cov).cov().sum() + ga.left_covariance().sum() +
+         ga.log().cov.sum() + ga.interpolate(gb, S(0.3)).cov().sum() + ga.mahalanobis(h) + ga.factor().sum();
+  constexpr int P = GroupParts<G>::Rotation::DoF == 1 ? 2 : 3;  // the points of the plane or of space
+  const Eigen::Matrix<S, P, 1> pt = Eigen::Matrix<S, P, 1>::Constant(S(0.5));
+  sum += ga.act(pt).cov.sum() + ga.act(pt, Eigen::Matrix<S, P, P>::Identity()).cov.sum();
   if constexpr (std::is_floating_point<S>::value) {  // the standard distributions: real scalars only
     std::minstd_rand gen(11);
     sum += random_uniform<Rotation>(gen).matrix().sum() + random_gaussian(gen, g, M(M::Identity())).matrix().sum();
+    sum += ga.sample(gen).matrix().sum();
     if constexpr (Parts::K > 0) sum += random_pose<G>(gen, low, high).matrix().sum();
   }
   // Splines over caller storage.

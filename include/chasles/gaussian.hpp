@@ -1,0 +1,242 @@
+// chasles: Gaussians on a group, and how their covariances propagate
+// through the group's operations, to first order.
+//
+// Convention: the right (local) perturbation of the Jacobians
+// (lie_group.hpp): a Gaussian with mean M and covariance S (DoF x DoF, in
+// the order of the group's tangent) is the distribution of
+//   X = M exp(e),  e ~ N(0, S),
+// the "concentrated Gaussian" of Barfoot and Furgale ("Associating
+// Uncertainty With Three-Dimensional Poses for Use in Estimation
+// Problems", IEEE T-RO 2014) written on the right, as Sola, Deray and
+// Atchuthan ("A micro Lie theory for state estimation in robotics", 2018,
+// section V.B) and manif write it. The left perturbation X = exp(e_l) M
+// has e_l = Ad_M e, so S_l = Ad_M S Ad_M^T (left_covariance, from_left).
+//
+// Each operation f maps the perturbations linearly to first order,
+// f(X) = f(M) exp(J e + o(e)), with J the operation's Jacobian
+// (lie_group.hpp, jacobians.hpp), so the result is the Gaussian with mean
+// f(M) and covariance J S J^T; for two operands, J_a S_a J_a^T +
+// J_b S_b J_b^T + J_a C J_b^T + J_b C^T J_a^T, C = E[e_a e_b^T] their
+// cross-covariance (zero when they are independent). First order is exact
+// for the means' linear parts and accurate while the covariances are small
+// against the curvature (angles well below a radian); tests/cpp/test_gaussian
+// checks it against Monte Carlo at small and large uncertainty.
+//
+// Every operation is noexcept, allocation-free and of bounded cost, for
+// every group and scalar (float, double, autodiff); sampling for float and
+// double.
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Core>
+
+#include "chasles/constants.hpp"
+#include "chasles/jacobians.hpp"
+#include "chasles/lie_group.hpp"
+#include "chasles/random.hpp"
+
+namespace chasles {
+
+namespace detail {
+
+/// L lower triangular with L L^T = A, for a symmetric positive semidefinite
+/// A (its lower triangle is read): the Cholesky factorization, in which a
+/// pivot at or below covariance_pivot_tolerance times A's largest diagonal
+/// entry (constants.hpp) is a direction of zero variance: its column of L
+/// is zero, so that a singular covariance (a coordinate held fixed) still
+/// has a factor. A pivot below minus that tolerance (A not positive
+/// semidefinite) makes the factor NaN.
+template <typename Scalar, int N>
+inline Eigen::Matrix<Scalar, N, N> psd_cholesky(const Eigen::Matrix<Scalar, N, N>& A) noexcept {
+  using std::sqrt;
+  Scalar top(0);
+  for (int i = 0; i < N; ++i) top = A(i, i) > top ? A(i, i) : top;
+  const Scalar floor = Scalar(ThresholdsOf<Scalar>::covariance_pivot_tolerance) * top;
+  Eigen::Matrix<Scalar, N, N> L = Eigen::Matrix<Scalar, N, N>::Zero();
+  for (int k = 0; k < N; ++k) {
+    Scalar d = A(k, k);
+    for (int j = 0; j < k; ++j) d -= L(k, j) * L(k, j);
+    if (d < -floor) {
+      L(k, k) = Scalar(std::numeric_limits<RealOf<Scalar>>::quiet_NaN());
+      continue;
+    }
+    if (!(d > floor)) continue;  // zero variance: the column stays 0
+    const Scalar l = sqrt(d);
+    L(k, k) = l;
+    for (int i = k + 1; i < N; ++i) {
+      Scalar s = A(i, k);
+      for (int j = 0; j < k; ++j) s -= L(i, j) * L(k, j);
+      L(i, k) = s / l;
+    }
+  }
+  return L;
+}
+
+/// J S J^T, symmetric to the last bit (the upper triangle copied from the
+/// lower), for a covariance S and any Jacobian J.
+template <typename JMatrix, typename SMatrix>
+inline Eigen::Matrix<typename SMatrix::Scalar, JMatrix::RowsAtCompileTime, JMatrix::RowsAtCompileTime> congruence(
+    const JMatrix& J, const SMatrix& S) noexcept {
+  constexpr int R = JMatrix::RowsAtCompileTime;
+  const Eigen::Matrix<typename SMatrix::Scalar, R, SMatrix::ColsAtCompileTime> JS = J * S;
+  Eigen::Matrix<typename SMatrix::Scalar, R, R> out;
+  for (int j = 0; j < R; ++j)
+    for (int i = j; i < R; ++i) out(i, j) = out(j, i) = JS.row(i).dot(J.row(j));
+  return out;
+}
+
+}  // namespace detail
+
+/// A point of R^n with a covariance: what the action of a Gaussian on a
+/// point gives.
+template <typename Scalar, int N>
+struct PointGaussian {
+  Eigen::Matrix<Scalar, N, 1> mean;
+  Eigen::Matrix<Scalar, N, N> cov;
+};
+
+/// A Gaussian on the tangent space (the log of a Gaussian on the group).
+template <typename Scalar, int N>
+struct TangentGaussian {
+  Eigen::Matrix<Scalar, N, 1> mean;
+  Eigen::Matrix<Scalar, N, N> cov;
+};
+
+/// A Gaussian on the group G: X = mean exp(e), e ~ N(0, cov), cov in the
+/// order of G's tangent ((v, w) for SE(3), (v, w, sigma) for Sim(3), ...).
+/// The covariance is not checked (symmetric positive semidefinite is the
+/// caller's to keep; the Python package checks it).
+template <typename G>
+class Gaussian {
+  static_assert(detail::IsLieGroup<G>::value, "Gaussian<G>: G must be a group of the library (SO3d, SE3d, ...)");
+
+ public:
+  using Group = G;
+  using Scalar = typename G::Scalar;
+  using Tangent = typename G::Tangent;
+  using Covariance = typename G::AdjointMatrix;
+  static constexpr int DoF = G::DoF;
+
+  /// The identity with zero covariance.
+  Gaussian() noexcept : mean_(), cov_(Covariance::Zero()) {}
+  Gaussian(const G& mean, const Covariance& cov) noexcept : mean_(mean), cov_(cov) {}
+  /// From the covariance of the left perturbation X = exp(e_l) mean.
+  static Gaussian from_left(const G& mean, const Covariance& left_cov) noexcept {
+    const Covariance Ad_inv = mean.inverse().adjoint();
+    return Gaussian(mean, detail::congruence(Ad_inv, left_cov));
+  }
+
+  const G& mean() const noexcept { return mean_; }
+  const Covariance& cov() const noexcept { return cov_; }
+  /// The covariance of the left perturbation: Ad_mean cov Ad_mean^T.
+  Covariance left_covariance() const noexcept { return detail::congruence(mean_.adjoint(), cov_); }
+
+  /// X^-1 = exp(-e) mean^-1 = mean^-1 exp(-Ad_mean e): mean^-1, Ad cov Ad^T.
+  Gaussian inverse() const noexcept { return Gaussian(mean_.inverse(), left_covariance()); }
+
+  /// X_a X_b for independent X_a (this) and X_b: mean_a mean_b, and
+  /// Ad_{b^-1} cov_a Ad_{b^-1}^T + cov_b (compose_jacobians).
+  Gaussian compose(const Gaussian& b) const noexcept { return compose(b, Covariance::Zero()); }
+  /// The same with the cross-covariance cross = E[e_a e_b^T].
+  Gaussian compose(const Gaussian& b, const Covariance& cross) const noexcept {
+    const auto J = compose_jacobians(mean_, b.mean_);
+    return Gaussian(mean_ * b.mean_, combine(J.lhs, J.rhs, b, cross));
+  }
+  Gaussian operator*(const Gaussian& b) const noexcept { return compose(b); }
+
+  /// X_a^-1 X_b (the relative motion from X_a, this, to X_b), independent:
+  /// J_a = -Ad_{b^-1 a}, J_b = I (between_jacobians).
+  Gaussian between(const Gaussian& b) const noexcept { return between(b, Covariance::Zero()); }
+  /// The same with the cross-covariance cross = E[e_a e_b^T].
+  Gaussian between(const Gaussian& b, const Covariance& cross) const noexcept {
+    const auto J = between_jacobians(mean_, b.mean_);
+    return Gaussian(chasles::between(mean_, b.mean_), combine(J.lhs, J.rhs, b, cross));
+  }
+
+  /// The point X p for a point p known exactly: mean p, and J cov J^T with
+  /// J = d(X p)/dX (act_jacobians).
+  template <typename Point>
+  auto act(const Eigen::MatrixBase<Point>& p) const noexcept {
+    constexpr int N = Point::RowsAtCompileTime;
+    const Eigen::Matrix<Scalar, N, 1> q = p;
+    const auto J = act_jacobians(mean_, q);
+    return PointGaussian<Scalar, N>{Eigen::Matrix<Scalar, N, 1>(mean_.act(q)), detail::congruence(J.group, cov_)};
+  }
+  /// The same for an uncertain point (independent of X): adds R_p cov_p R_p^T,
+  /// R_p = d(X p)/dp.
+  template <typename Point, typename PointCov>
+  auto act(const Eigen::MatrixBase<Point>& p, const Eigen::MatrixBase<PointCov>& point_cov) const noexcept {
+    constexpr int N = Point::RowsAtCompileTime;
+    const Eigen::Matrix<Scalar, N, 1> q = p;
+    const Eigen::Matrix<Scalar, N, N> Sp = point_cov;
+    const auto J = act_jacobians(mean_, q);
+    return PointGaussian<Scalar, N>{
+        Eigen::Matrix<Scalar, N, 1>(mean_.act(q)),
+        Eigen::Matrix<Scalar, N, N>(detail::congruence(J.group, cov_) + detail::congruence(J.point, Sp))};
+  }
+
+  /// log(X) = log(mean exp(e)) = log(mean) + J_r(log mean)^-1 e + o(e):
+  /// the tangent Gaussian (log_jacobian).
+  TangentGaussian<Scalar, DoF> log() const noexcept {
+    return {mean_.log(), detail::congruence(log_jacobian(mean_), cov_)};
+  }
+
+  /// interpolate(X_a, X_b, t) = X_a exp(t log(X_a^-1 X_b)) for independent
+  /// X_a (this) and X_b: with xi = rminus(b, a) and (J_g, J_x) the Jacobians
+  /// of rplus(a, t xi), J_a = J_g + t J_x d(xi)/da and J_b = t J_x d(xi)/db
+  /// (rplus_jacobians, rminus_jacobians).
+  Gaussian interpolate(const Gaussian& b, const Scalar& t) const noexcept {
+    const Tangent xi = rminus(b.mean_, mean_);
+    const auto Jm = rminus_jacobians(b.mean_, mean_);
+    const auto Jp = rplus_jacobians(mean_, Tangent(t * xi));
+    const Covariance Ja = Jp.lhs + t * (Jp.rhs * Jm.rhs);
+    const Covariance Jb = t * (Jp.rhs * Jm.lhs);
+    return Gaussian(rplus(mean_, Tangent(t * xi)), combine(Ja, Jb, b, Covariance::Zero()));
+  }
+
+  /// The squared Mahalanobis distance of X from the mean,
+  /// e^T cov^-1 e with e = rminus(X, mean), through the Cholesky factor
+  /// (psd_cholesky). It needs a positive definite covariance: NaN for a
+  /// singular one (along a direction of zero variance no distance is
+  /// defined: the rounding of rminus alone would put the mean itself at
+  /// infinity) and for one that is not positive semidefinite.
+  Scalar mahalanobis(const G& X) const noexcept {
+    const Tangent e = rminus(X, mean_);
+    const Covariance L = factor();
+    Tangent y;
+    Scalar d2(0);
+    for (int k = 0; k < DoF; ++k) {
+      if (!(L(k, k) > Scalar(0))) return Scalar(std::numeric_limits<RealOf<Scalar>>::quiet_NaN());  // zero or NaN
+      Scalar s = e[k];
+      for (int j = 0; j < k; ++j) s -= L(k, j) * y[j];
+      y[k] = s / L(k, k);
+      d2 += y[k] * y[k];
+    }
+    return d2;
+  }
+
+  /// L with L L^T = cov, lower triangular (detail::psd_cholesky).
+  Covariance factor() const noexcept { return detail::psd_cholesky(cov_); }
+
+  /// One sample mean exp(L z), z ~ N(0, I) drawn from gen (random_gaussian).
+  template <typename Generator>
+  G sample(Generator& gen) const noexcept {
+    return random_gaussian(gen, mean_, factor());
+  }
+
+ private:
+  /// J_a cov_a J_a^T + J_b cov_b J_b^T + J_a C J_b^T + (J_a C J_b^T)^T.
+  Covariance combine(const Covariance& Ja, const Covariance& Jb, const Gaussian& b,
+                     const Covariance& cross) const noexcept {
+    const Covariance K = Ja * cross * Jb.transpose();
+    Covariance S = detail::congruence(Ja, cov_) + detail::congruence(Jb, b.cov_) + K + K.transpose();
+    return S;
+  }
+
+  G mean_;
+  Covariance cov_;
+};
+
+}  // namespace chasles
