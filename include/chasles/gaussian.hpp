@@ -221,6 +221,8 @@ class Gaussian {
   Covariance factor() const noexcept { return detail::psd_cholesky(cov_); }
 
   /// One sample mean exp(L z), z ~ N(0, I) drawn from gen (random_gaussian).
+  /// It factors the covariance on each call: for many samples, take
+  /// factor() once and call random_gaussian(gen, mean(), L).
   template <typename Generator>
   G sample(Generator& gen) const noexcept {
     return random_gaussian(gen, mean_, factor());
@@ -238,5 +240,72 @@ class Gaussian {
   G mean_;
   Covariance cov_;
 };
+
+namespace detail {
+
+/// <<A>> = -tr(A) I + A, for 3x3 A (Barfoot and Furgale 2014, eq. 46).
+template <typename Scalar>
+inline Eigen::Matrix<Scalar, 3, 3> bracket(const Eigen::Matrix<Scalar, 3, 3>& A) noexcept {
+  return Eigen::Matrix<Scalar, 3, 3>(A - A.trace() * Eigen::Matrix<Scalar, 3, 3>::Identity());
+}
+/// <<A, B>> = <<A>> <<B>> + <<B A>>.
+template <typename Scalar>
+inline Eigen::Matrix<Scalar, 3, 3> bracket(const Eigen::Matrix<Scalar, 3, 3>& A,
+                                           const Eigen::Matrix<Scalar, 3, 3>& B) noexcept {
+  return Eigen::Matrix<Scalar, 3, 3>(bracket(A) * bracket(B) + bracket(Eigen::Matrix<Scalar, 3, 3>(B * A)));
+}
+/// <<S>> for a 6x6 covariance S = [[S_rr, S_rp], [S_rp^T, S_pp]] (translation
+/// rows first): [[<<S_pp>>, <<S_rp + S_rp^T>>], [0, <<S_pp>>]].
+template <typename Scalar>
+inline Eigen::Matrix<Scalar, 6, 6> bracket6(const Eigen::Matrix<Scalar, 6, 6>& S) noexcept {
+  using M3 = Eigen::Matrix<Scalar, 3, 3>;
+  const M3 pp = bracket(M3(S.template bottomRightCorner<3, 3>()));
+  const M3 rp = S.template topRightCorner<3, 3>();
+  Eigen::Matrix<Scalar, 6, 6> A = Eigen::Matrix<Scalar, 6, 6>::Zero();
+  A.template topLeftCorner<3, 3>() = pp;
+  A.template topRightCorner<3, 3>() = bracket(M3(rp + rp.transpose()));
+  A.template bottomRightCorner<3, 3>() = pp;
+  return A;
+}
+
+}  // namespace detail
+
+/// X_a X_b for independent Gaussians on SE(3), with the covariance to fourth
+/// order in the perturbations: Barfoot and Furgale 2014, section III.C
+/// (eqs. 53-55), written in the left perturbation, where with
+/// S_1 = Ad_a S_a Ad_a^T and S_2 = Ad_ab S_b Ad_ab^T (the two left
+/// covariances, S_b carried through a) the product's left covariance is
+///   S_1 + S_2 + (A_1 S_2 + S_2 A_1^T + A_2 S_1 + S_1 A_2^T) / 12 + B / 4,
+///   A_i = <<S_i>>,  B = [[B_rr, B_rp], [B_rp^T, B_pp]],
+///   B_rr = <<S1_pp, S2_rr>> + <<S1_rp^T, S2_rp>> + <<S1_rp, S2_rp^T>> + <<S1_rr, S2_pp>>,
+///   B_rp = <<S1_pp, S2_rp^T>> + <<S1_rp^T, S2_pp>>,  B_pp = <<S1_pp, S2_pp>>
+/// (r: translation, p: rotation, chasles' (v, w) order), taken back to the
+/// right perturbation. The first two terms are compose()'s first order;
+/// the rest matters once the rotations' standard deviations reach a tenth
+/// of a radian (test_gaussian: FourthOrderCompoundingOfLargeUncertainty).
+template <typename Scalar>
+inline Gaussian<SE3<Scalar>> compose_fourth_order(const Gaussian<SE3<Scalar>>& a,
+                                                  const Gaussian<SE3<Scalar>>& b) noexcept {
+  using M3 = Eigen::Matrix<Scalar, 3, 3>;
+  using M6 = Eigen::Matrix<Scalar, 6, 6>;
+  const SE3<Scalar> ab = a.mean() * b.mean();
+  const M6 S1 = a.left_covariance();
+  const M6 S2 = detail::congruence(ab.adjoint(), b.cov());
+  const M6 A1 = detail::bracket6(S1), A2 = detail::bracket6(S2);
+  const M3 S1rr = S1.template topLeftCorner<3, 3>(), S1rp = S1.template topRightCorner<3, 3>(),
+           S1pp = S1.template bottomRightCorner<3, 3>();
+  const M3 S2rr = S2.template topLeftCorner<3, 3>(), S2rp = S2.template topRightCorner<3, 3>(),
+           S2pp = S2.template bottomRightCorner<3, 3>();
+  const M3 Brr = detail::bracket(S1pp, S2rr) + detail::bracket(M3(S1rp.transpose()), S2rp) +
+                 detail::bracket(S1rp, M3(S2rp.transpose())) + detail::bracket(S1rr, S2pp);
+  const M3 Brp = detail::bracket(S1pp, M3(S2rp.transpose())) + detail::bracket(M3(S1rp.transpose()), S2pp);
+  const M3 Bpp = detail::bracket(S1pp, S2pp);
+  M6 B;
+  B << Brr, Brp, Brp.transpose(), Bpp;
+  const M6 K = A1 * S2 + A2 * S1;
+  const M6 left = S1 + S2 + (K + K.transpose()) / Scalar(12) + B / Scalar(4);
+  // B's blocks are symmetric only to the order kept: its symmetric part.
+  return Gaussian<SE3<Scalar>>::from_left(ab, M6(Scalar(0.5) * (left + left.transpose())));
+}
 
 }  // namespace chasles

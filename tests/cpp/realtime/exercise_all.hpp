@@ -190,6 +190,10 @@ S exercise_all() noexcept {
   sum +=
       se3_gaussian_from_normals(g, Eigen::Matrix<S, 6, 6>(Eigen::Matrix<S, 6, 6>::Identity()), xi).translation().sum();
   {
+    const Gaussian<SE3<S>> gg(g, Eigen::Matrix<S, 6, 6>::Identity() * S(0.01));
+    sum += compose_fourth_order(gg, gg).cov().sum();
+  }
+  {
     const std::array<SO3<S>, 3> Rs{R, I, SO3<S>::exp(p * S(0.1))};
     const std::array<SE3<S>, 3> gs{g, h, e};
     const std::array<S, 3> ws{S(1), S(2), S(0.5)};
