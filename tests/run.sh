@@ -32,9 +32,9 @@
 #
 #   bash tests/run.sh [all|cpp|fuzz|python]   # from the repository root
 #
-# On 2 quiet cores `all` took 942 s (1824 s of CPU: the g++ build 99, its
-# ctest 72, the sanitizer build 1293 beside the wheel's 429, its ctest 358
-# beside the fuzzing, pytest 149); the same work in one lane, before these
+# On 2 quiet cores `all` took 1085 s (2079 s of CPU: the g++ build 133, its
+# ctest 92, the sanitizer build 1561 beside the wheel's 514, its ctest 290
+# beside the fuzzing, pytest 155); the same work in one lane, before these
 # cuts, took about 1600 s there and 3440 s on CI's shared machine. Building
 # the wheel needs about 1.7 GB of memory. CONTRIBUTING.md has a faster loop
 # for a single change.
