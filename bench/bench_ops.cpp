@@ -455,6 +455,25 @@ void register_statistics(const std::string& sn) {
   add("SE3/between_jacobians/generic/" + sn, gpairs,
       [](const auto& p) { return between_jacobians(p.first, p.second); });
   add("SE3/act_jacobians/generic/" + sn, gpoints, [](const auto& p) { return act_jacobians(p.first, p.second); });
+  // Gaussians (gaussian.hpp): compose, between and the fourth-order compose
+  // of two uncertain poses, beside compose's arithmetic written plainly with
+  // Eigen (Ad_{b^-1} S_a Ad_{b^-1}^T + S_b from the adjoint).
+  using M6 = Eigen::Matrix<S, 6, 6>;
+  std::vector<std::pair<Gaussian<SE3<S>>, Gaussian<SE3<S>>>> gaussians;
+  for (const auto& p : gpairs) {
+    const M6 A = M6::Random() * S(0.1);
+    gaussians.emplace_back(Gaussian<SE3<S>>(p.first, M6(A * A.transpose())),
+                           Gaussian<SE3<S>>(p.second, M6(A.transpose() * A)));
+  }
+  add("SE3/gaussian_compose/generic/" + sn, gaussians, [](const auto& p) { return p.first * p.second; });
+  add("SE3/gaussian_between/generic/" + sn, gaussians, [](const auto& p) { return p.first.between(p.second); });
+  add("SE3/gaussian_compose_fourth_order/generic/" + sn, gaussians,
+      [](const auto& p) { return compose_fourth_order(p.first, p.second); });
+  add("Eigen/gaussian_compose_plain/generic/" + sn, gaussians, [](const auto& p) {
+    const M6 A = p.second.mean().inverse().adjoint();
+    return std::make_pair(SE3<S>(p.first.mean() * p.second.mean()),
+                          M6(A * p.first.cov() * A.transpose() + p.second.cov()));
+  });
 
   // Sampling: one draw per iteration from a generator kept across iterations.
   benchmark::RegisterBenchmark(("SO3/random/uniform/" + sn).c_str(), [](benchmark::State& st) {

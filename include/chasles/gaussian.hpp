@@ -137,22 +137,29 @@ class Gaussian {
   Gaussian inverse() const noexcept { return Gaussian(mean_.inverse(), left_covariance()); }
 
   /// X_a X_b for independent X_a (this) and X_b: mean_a mean_b, and
-  /// Ad_{b^-1} cov_a Ad_{b^-1}^T + cov_b (compose_jacobians).
-  Gaussian compose(const Gaussian& b) const noexcept { return compose(b, Covariance::Zero()); }
-  /// The same with the cross-covariance cross = E[e_a e_b^T].
+  /// Ad_{b^-1} cov_a Ad_{b^-1}^T + cov_b (compose_jacobians: J_b = I).
+  Gaussian compose(const Gaussian& b) const noexcept {
+    const auto J = compose_jacobians(mean_, b.mean_);
+    return Gaussian(mean_ * b.mean_, Covariance(detail::congruence(J.lhs, cov_) + b.cov_));
+  }
+  /// The same with the cross-covariance cross = E[e_a e_b^T]: adds
+  /// J_a cross + (J_a cross)^T.
   Gaussian compose(const Gaussian& b, const Covariance& cross) const noexcept {
     const auto J = compose_jacobians(mean_, b.mean_);
-    return Gaussian(mean_ * b.mean_, combine(J.lhs, J.rhs, b, cross));
+    return Gaussian(mean_ * b.mean_, with_cross(J.lhs, b, cross));
   }
   Gaussian operator*(const Gaussian& b) const noexcept { return compose(b); }
 
   /// X_a^-1 X_b (the relative motion from X_a, this, to X_b), independent:
   /// J_a = -Ad_{b^-1 a}, J_b = I (between_jacobians).
-  Gaussian between(const Gaussian& b) const noexcept { return between(b, Covariance::Zero()); }
+  Gaussian between(const Gaussian& b) const noexcept {
+    const auto J = between_jacobians(mean_, b.mean_);
+    return Gaussian(chasles::between(mean_, b.mean_), Covariance(detail::congruence(J.lhs, cov_) + b.cov_));
+  }
   /// The same with the cross-covariance cross = E[e_a e_b^T].
   Gaussian between(const Gaussian& b, const Covariance& cross) const noexcept {
     const auto J = between_jacobians(mean_, b.mean_);
-    return Gaussian(chasles::between(mean_, b.mean_), combine(J.lhs, J.rhs, b, cross));
+    return Gaussian(chasles::between(mean_, b.mean_), with_cross(J.lhs, b, cross));
   }
 
   /// The point X p for a point p known exactly: mean p, and J cov J^T with
@@ -193,7 +200,8 @@ class Gaussian {
     const auto Jp = rplus_jacobians(mean_, Tangent(t * xi));
     const Covariance Ja = Jp.lhs + t * (Jp.rhs * Jm.rhs);
     const Covariance Jb = t * (Jp.rhs * Jm.lhs);
-    return Gaussian(rplus(mean_, Tangent(t * xi)), combine(Ja, Jb, b, Covariance::Zero()));
+    return Gaussian(rplus(mean_, Tangent(t * xi)),
+                    Covariance(detail::congruence(Ja, cov_) + detail::congruence(Jb, b.cov_)));
   }
 
   /// The squared Mahalanobis distance of X from the mean,
@@ -229,12 +237,11 @@ class Gaussian {
   }
 
  private:
-  /// J_a cov_a J_a^T + J_b cov_b J_b^T + J_a C J_b^T + (J_a C J_b^T)^T.
-  Covariance combine(const Covariance& Ja, const Covariance& Jb, const Gaussian& b,
-                     const Covariance& cross) const noexcept {
-    const Covariance K = Ja * cross * Jb.transpose();
-    Covariance S = detail::congruence(Ja, cov_) + detail::congruence(Jb, b.cov_) + K + K.transpose();
-    return S;
+  /// J_a cov_a J_a^T + cov_b + K + K^T, K = J_a cross: a composition's or
+  /// a between's covariance (J_b = I) with correlated operands.
+  Covariance with_cross(const Covariance& Ja, const Gaussian& b, const Covariance& cross) const noexcept {
+    const Covariance K = Ja * cross;
+    return Covariance(detail::congruence(Ja, cov_) + b.cov_ + K + K.transpose());
   }
 
   G mean_;
