@@ -33,6 +33,7 @@
 #include <Eigen/Core>
 
 #include "chasles/constants.hpp"
+#include "chasles/euler.hpp"
 #include "chasles/jacobians.hpp"
 #include "chasles/lie_group.hpp"
 #include "chasles/random.hpp"
@@ -89,17 +90,11 @@ inline Eigen::Matrix<typename SMatrix::Scalar, JMatrix::RowsAtCompileTime, JMatr
 
 }  // namespace detail
 
-/// A point of R^n with a covariance: what the action of a Gaussian on a
-/// point gives.
+/// A Gaussian on R^n, mean and covariance: what the action of a Gaussian on
+/// a point gives (the point's mean and covariance), and its log (the
+/// tangent's).
 template <typename Scalar, int N>
-struct PointGaussian {
-  Eigen::Matrix<Scalar, N, 1> mean;
-  Eigen::Matrix<Scalar, N, N> cov;
-};
-
-/// A Gaussian on the tangent space (the log of a Gaussian on the group).
-template <typename Scalar, int N>
-struct TangentGaussian {
+struct VectorGaussian {
   Eigen::Matrix<Scalar, N, 1> mean;
   Eigen::Matrix<Scalar, N, N> cov;
 };
@@ -169,7 +164,7 @@ class Gaussian {
     constexpr int N = Point::RowsAtCompileTime;
     const Eigen::Matrix<Scalar, N, 1> q = p;
     const auto J = act_jacobians(mean_, q);
-    return PointGaussian<Scalar, N>{Eigen::Matrix<Scalar, N, 1>(mean_.act(q)), detail::congruence(J.group, cov_)};
+    return VectorGaussian<Scalar, N>{Eigen::Matrix<Scalar, N, 1>(mean_.act(q)), detail::congruence(J.group, cov_)};
   }
   /// The same for an uncertain point (independent of X): adds R_p cov_p R_p^T,
   /// R_p = d(X p)/dp.
@@ -179,14 +174,14 @@ class Gaussian {
     const Eigen::Matrix<Scalar, N, 1> q = p;
     const Eigen::Matrix<Scalar, N, N> Sp = point_cov;
     const auto J = act_jacobians(mean_, q);
-    return PointGaussian<Scalar, N>{
+    return VectorGaussian<Scalar, N>{
         Eigen::Matrix<Scalar, N, 1>(mean_.act(q)),
         Eigen::Matrix<Scalar, N, N>(detail::congruence(J.group, cov_) + detail::congruence(J.point, Sp))};
   }
 
   /// log(X) = log(mean exp(e)) = log(mean) + J_r(log mean)^-1 e + o(e):
   /// the tangent Gaussian (log_jacobian).
-  TangentGaussian<Scalar, DoF> log() const noexcept {
+  VectorGaussian<Scalar, DoF> log() const noexcept {
     return {mean_.log(), detail::congruence(log_jacobian(mean_), cov_)};
   }
 
@@ -313,6 +308,63 @@ inline Gaussian<SE3<Scalar>> compose_fourth_order(const Gaussian<SE3<Scalar>>& a
   const M6 left = S1 + S2 + (K + K.transpose()) / Scalar(12) + B / Scalar(4);
   // B's blocks are symmetric only to the order kept: its symmetric part.
   return Gaussian<SE3<Scalar>>::from_left(ab, M6(Scalar(0.5) * (left + left.transpose())));
+}
+
+namespace detail {
+
+/// J with (dp, d rpy) = J e to first order, for X = g exp(e) on SE(3):
+/// dp = R v (the position's change in the fixed frame) and
+/// d rpy = E^-1 R w, E the matrix of the fixed-axis roll, pitch, yaw rates
+/// to the angular velocity in the fixed frame (R = Rz(y) Ry(p) Rx(r)):
+///   E = [Rz(y) Ry(p) e_x, Rz(y) e_y, e_z]
+///     = [[cy cp, -sy, 0], [sy cp, cy, 0], [-sp, 0, 1]],  det E = cp,
+///   E^-1 = [[cy, sy, 0], [-sy cp, cy cp, 0], [cy sp, sy sp, cp]] / cp.
+/// `inverse`: J^-1 = [[R^T, 0], [0, R^T E]] instead. NaN at the gimbal lock
+/// (pitch +-pi/2), where the angles' rates are not defined (J only).
+template <typename Scalar>
+inline Eigen::Matrix<Scalar, 6, 6> ros_jacobian(const SE3<Scalar>& g, bool inverse) noexcept {
+  using std::cos;
+  using std::sin;
+  using M3 = Eigen::Matrix<Scalar, 3, 3>;
+  const EulerAngles<Scalar> rpy = as_rpy(g.rotation());
+  const Scalar cp = cos(rpy.angles[1]), sp = sin(rpy.angles[1]), cy = cos(rpy.angles[2]), sy = sin(rpy.angles[2]);
+  const M3 R = g.rotation().matrix();
+  Eigen::Matrix<Scalar, 6, 6> J = Eigen::Matrix<Scalar, 6, 6>::Zero();
+  if (inverse) {
+    M3 E;
+    E << cy * cp, -sy, Scalar(0), sy * cp, cy, Scalar(0), -sp, Scalar(0), Scalar(1);
+    J.template topLeftCorner<3, 3>() = R.transpose();
+    J.template bottomRightCorner<3, 3>() = R.transpose() * E;
+    return J;
+  }
+  if (rpy.gimbal_lock)
+    return Eigen::Matrix<Scalar, 6, 6>::Constant(Scalar(std::numeric_limits<RealOf<Scalar>>::quiet_NaN()));
+  M3 E_inv;
+  E_inv << cy, sy, Scalar(0), -sy * cp, cy * cp, Scalar(0), cy * sp, sy * sp, cp;
+  J.template topLeftCorner<3, 3>() = R;
+  J.template bottomRightCorner<3, 3>() = (E_inv / cp) * R;
+  return J;
+}
+
+}  // namespace detail
+
+/// The covariance of ROS's geometry_msgs/PoseWithCovariance for a Gaussian
+/// on SE(3): that of (x, y, z, roll, pitch, yaw), the position in the fixed
+/// frame and the roll, pitch and yaw about the fixed axes (R = Rz(yaw)
+/// Ry(pitch) Rx(roll), as_rpy), to first order (detail::ros_jacobian); the
+/// message holds it row-major, 36 numbers. NaN at the gimbal lock (pitch
+/// +-pi/2), where roll and yaw are not separate angles.
+template <typename Scalar>
+inline Eigen::Matrix<Scalar, 6, 6> to_ros_covariance(const Gaussian<SE3<Scalar>>& x) noexcept {
+  return detail::congruence(detail::ros_jacobian(x.mean(), false), x.cov());
+}
+
+/// The Gaussian on SE(3) of a ROS pose with covariance: mean and the
+/// covariance of (x, y, z, roll, pitch, yaw) (to_ros_covariance's inverse).
+template <typename Scalar>
+inline Gaussian<SE3<Scalar>> from_ros_covariance(const SE3<Scalar>& mean,
+                                                 const Eigen::Matrix<Scalar, 6, 6>& ros_cov) noexcept {
+  return Gaussian<SE3<Scalar>>(mean, detail::congruence(detail::ros_jacobian(mean, true), ros_cov));
 }
 
 }  // namespace chasles

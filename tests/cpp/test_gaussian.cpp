@@ -26,6 +26,7 @@
 #include <gtest/gtest.h>
 #include <Eigen/Core>
 
+#include <chasles/euler.hpp>
 #include <chasles/gaussian.hpp>
 
 #include "support/all_groups.hpp"
@@ -219,6 +220,8 @@ TEST(GaussianSE3, FourthOrderCompoundingOfLargeUncertainty) {
     const double noise = std::sqrt((mc.trace() * mc.trace() + mc.squaredNorm()) / n) / mc.norm();
     std::printf("  alpha %g: first order %.4f, fourth order %.4f (Monte Carlo noise about %.4f)\n", alpha, e1, e4,
                 noise);
+    // (Fourth order is not exact: at alpha 0.5 its own error, measured with
+    // 4e6 samples, is 0.8 %, under the 3 x 0.66 % noise of these 1e5.)
     EXPECT_LT(e4, 3 * noise) << alpha;
     if (alpha > 0.1) {
       EXPECT_GT(e1, 5 * noise);  // first order visibly off
@@ -226,6 +229,40 @@ TEST(GaussianSE3, FourthOrderCompoundingOfLargeUncertainty) {
     }
     EXPECT_TRUE(fourth.mean().matrix() == first.mean().matrix());
   }
+}
+
+// ROS's PoseWithCovariance: the covariance of (x, y, z, roll, pitch, yaw)
+// against central differences of (translation, as_rpy) at g exp(e), and
+// the conversion back.
+TEST(GaussianSE3, RosCovarianceAgainstDifferences) {
+  using G = chasles::SE3<double>;
+  using M6 = Eigen::Matrix<double, 6, 6>;
+  using V6 = Eigen::Matrix<double, 6, 1>;
+  const auto ros = [](const G& x) {
+    V6 u;
+    u << x.translation(), chasles::as_rpy(x.rotation()).angles;
+    return u;
+  };
+  for (const double pitch : {0.3, -1.2, 1.5}) {
+    const G g(chasles::from_rpy(0.4, pitch, -2.5), Eigen::Vector3d(1.0, -2.0, 0.5));
+    M6 J;
+    const double h = 1e-6;
+    for (int i = 0; i < 6; ++i) {
+      const V6 e = V6::Unit(i) * h;
+      J.col(i) = (ros(chasles::rplus(g, e)) - ros(chasles::rplus(g, V6(-e)))) / (2 * h);
+    }
+    const M6 cov = covariance<6>(11);
+    const Gaussian<G> x(g, cov);
+    const M6 want = J * cov * J.transpose();
+    const M6 got = chasles::to_ros_covariance(x);
+    EXPECT_LE((got - want).cwiseAbs().maxCoeff(), 1e-8 * want.cwiseAbs().maxCoeff()) << pitch;
+    const M6 back = chasles::from_ros_covariance(g, got).cov();
+    EXPECT_LE((back - cov).cwiseAbs().maxCoeff(), 1e-12 * cov.cwiseAbs().maxCoeff() / std::cos(pitch)) << pitch;
+  }
+  // At the gimbal lock roll and yaw are one angle: no covariance of the three.
+  const Gaussian<G> locked(G(chasles::from_rpy(0.4, std::acos(-1.0) / 2, -2.5), Eigen::Vector3d::Zero()),
+                           covariance<6>(12));
+  EXPECT_TRUE(chasles::to_ros_covariance(locked).hasNaN());
 }
 
 TEST(PsdCholesky, PositiveDefiniteSingularAndIndefinite) {

@@ -192,6 +192,7 @@ S exercise_all() noexcept {
   {
     const Gaussian<SE3<S>> gg(g, Eigen::Matrix<S, 6, 6>::Identity() * S(0.01));
     sum += compose_fourth_order(gg, gg).cov().sum();
+    sum += from_ros_covariance(g, to_ros_covariance(gg)).cov().sum();
   }
   {
     const std::array<SO3<S>, 3> Rs{R, I, SO3<S>::exp(p * S(0.1))};
