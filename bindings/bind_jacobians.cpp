@@ -5,7 +5,9 @@
 // compose_jacobians, act_jacobians, rplus_jacobians, rminus_jacobians,
 // lplus_jacobians, lminus_jacobians, between_jacobians,
 // interpolate_jacobian_t); and the array functions so3_act_jacobian,
-// se3_act_jacobian. The classes' own Jacobians are in lie_group.hpp.
+// se3_act_jacobian and, for every group, <g>_compose_jacobians,
+// <g>_between_jacobians and <g>_rminus_jacobians. The classes' own
+// Jacobians are in lie_group.hpp.
 #include <chasles/jacobians.hpp>
 
 #include <string>
@@ -43,7 +45,7 @@ Matrices pair(const J& j) {
 template <typename G>
 void def_group_functions(py::module_& m) {
   constexpr int D = G::DoF;
-  constexpr int P = std::is_same_v<G, SO2d> || std::is_same_v<G, SE2d> ? 2 : 3;  // the point size
+  constexpr int P = point_size<G>();
   constexpr bool kSE3 = std::is_same_v<G, SE3d>, kSO3 = std::is_same_v<G, SO3d>;
   const auto shared = [](const char* doc) { return kSE3 ? doc : nullptr; };
   // The text of the Jacobians of a function of two elements x and y of the group.
@@ -410,6 +412,51 @@ Example:
 )doc"));
 }
 
+/// The functions of two elements whose Jacobians are array functions.
+enum class Pair { compose, between, rminus };
+
+/// The Jacobians of a function of two elements over batches, as two arrays:
+/// <g>_compose_jacobians, <g>_between_jacobians, <g>_rminus_jacobians (what
+/// a solver needs per edge of a pose graph, in one call for all of them).
+template <typename Group, Pair F>
+void def_pair_jacobians(py::module_& m, const char* what, const char* params, const std::string& head) {
+  constexpr int N = chasles::detail::matrix_size<Group>, D = Group::DoF;
+  using ufunc::Core;
+  static const std::string name = std::string(GroupNames<Group>::prefix) + "_" + what;
+  const std::string n = std::to_string(N), d = std::to_string(D), x(params, 1), y(params + 3, 1);
+  const std::string doc = head + ", for each pair of the batch (as " + what + " for one).\n\nArgs:\n    " + x +
+                          ": array_like of shape (..., " + n + ", " + n + "): " + matrices_words<Group>() + ".\n    " +
+                          y + ": array_like of shape (..., " + n + ", " + n + "): of the same group.\n\n" +
+                          "Returns:\n    tuple (J_" + x + ", J_" + y + "): numpy.ndarray of shape (..., " + d + ", " +
+                          d + ") each, in the right-local convention, the batch shape being the broadcast of " + x +
+                          "'s and " + y + "'s.";
+  ufunc::def_ufunc<std::tuple<Core<D, D>, Core<D, D>>(Core<N, N>, Core<N, N>)>(
+      m, name.c_str(), params, ufunc::array_doc(doc.c_str()), ufunc::strided([](const auto& a, const auto& b) noexcept {
+        using G = Rebind<Group, ufunc::ScalarOf<decltype(a)>>;
+        const G ga = G::from_matrix_unchecked(a), gb = G::from_matrix_unchecked(b);
+        if constexpr (F == Pair::compose) {
+          const auto j = chasles::compose_jacobians(ga, gb);
+          return std::make_tuple(j.lhs, j.rhs);
+        } else if constexpr (F == Pair::between) {
+          const auto j = chasles::between_jacobians(ga, gb);
+          return std::make_tuple(j.lhs, j.rhs);
+        } else {
+          const auto j = chasles::rminus_jacobians(ga, gb);
+          return std::make_tuple(j.lhs, j.rhs);
+        }
+      }));
+}
+
+template <typename Group>
+void def_jacobian_arrays(py::module_& m) {
+  def_pair_jacobians<Group, Pair::compose>(m, "compose_jacobians", "a, b",
+                                           "The Jacobians of a b with respect to a and b");
+  def_pair_jacobians<Group, Pair::between>(m, "between_jacobians", "a, b",
+                                           "The Jacobians of a^-1 b with respect to a and b");
+  def_pair_jacobians<Group, Pair::rminus>(m, "rminus_jacobians", "g, h",
+                                          "The Jacobians of log(h^-1 g) with respect to g and h");
+}
+
 }  // namespace
 
 void bind_jacobians(py::module_& m) {
@@ -419,6 +466,12 @@ void bind_jacobians(py::module_& m) {
   def_group_functions<Sim3d>(m);
   def_group_functions<SE23d>(m);
   def_group_functions<SE3d>(m);
+  def_jacobian_arrays<SO2d>(m);
+  def_jacobian_arrays<SE2d>(m);
+  def_jacobian_arrays<SO3d>(m);
+  def_jacobian_arrays<SE3d>(m);
+  def_jacobian_arrays<Sim3d>(m);
+  def_jacobian_arrays<SE23d>(m);
 
   // ---- the Jacobian of the point action for many points (array functions) ----
 

@@ -34,10 +34,6 @@ using ufunc::ScalarOf;
 using SO3d = chasles::SO3<double>;
 using SE3d = chasles::SE3<double>;
 
-/// The group G<double> over the scalar T: G<T>.
-template <typename G, typename T>
-using Rebind = typename chasles::detail::WithScalar<G, T>::type;
-
 /// The distance's docstring and what it returns, for the groups whose
 /// distance def_distance binds (the names: GroupNames, bindings.hpp).
 template <typename G>

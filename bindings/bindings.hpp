@@ -11,6 +11,7 @@
 #include <pybind11/pybind11.h>
 
 #include <chasles/euler.hpp>
+#include <chasles/group_parts.hpp>
 #include <chasles/screw.hpp>
 #include <chasles/se2.hpp>
 #include <chasles/se23.hpp>
@@ -44,6 +45,7 @@ void bind_splines(py::module_& m);       // bind_splines.cpp: the cores of SO3/S
 void bind_dynamics(py::module_& m);      // bind_dynamics.cpp: class SpatialInertia
 void bind_threads(py::module_& m);       // bind_threads.cpp: set_num_threads, get_num_threads
 void bind_align(py::module_& m);         // bind_align.cpp: the kernels of so3_align, se3_align, sim3_align
+void bind_gaussian(py::module_& m);      // bind_gaussian.cpp: <g>_compose_cov, ..., the kernels of Gaussian
 
 /// What the bindings call each group, written once (the classes' docstrings,
 /// the array functions' names, the error messages): its Python class, the
@@ -79,6 +81,17 @@ struct GroupNames<chasles::SE23d> {
   static constexpr const char *cls = "SE23", *prefix = "se23", *kind = "extended pose",
                               *form = "[[R, p, v], [0, 1, 0], [0, 0, 1]]", *keys = "keys";
 };
+/// The group G<double> over the scalar T (a float32 loop's G<float>).
+template <typename G, typename T>
+using Rebind = typename chasles::detail::WithScalar<G, T>::type;
+/// The size of the points a group acts on: 2 for SO2 and SE2, 3 for the others.
+template <typename G>
+constexpr int point_size() {
+  if constexpr (chasles::detail::IsRotationGroup<G>::value)
+    return chasles::detail::matrix_size<G>;
+  else
+    return chasles::detail::matrix_size<typename G::Rotation>;
+}
 /// "rotation", "rigid motion [[R, t], [0, 0, 1]]", ...: one element, in a message.
 template <typename G>
 std::string element_words() {

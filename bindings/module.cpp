@@ -36,5 +36,6 @@ PYBIND11_MODULE(_core, m) {
   cp::bind_splines(m);
   cp::bind_threads(m);
   cp::bind_align(m);
+  cp::bind_gaussian(m);
   cp::finish_functions(m);  // last: signatures for help() and inspect (signatures.hpp)
 }

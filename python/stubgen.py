@@ -60,8 +60,8 @@ _Name = typing.TypeVar("_Name", bound=str)
 _Signature = typing.TypeVar("_Signature", bound=str)
 """
 UFUNC_CLASS = """
-class _GUFunc_Nin{nin}_Nout1(numpy.ufunc, typing.Generic[_Name, _Signature]):
-    \"\"\"A numpy generalized ufunc of {nin} operand(s) and one result.\"\"\"
+class _GUFunc_Nin{nin}_Nout{nout}(numpy.ufunc, typing.Generic[_Name, _Signature]):
+    \"\"\"A numpy generalized ufunc of {nin} operand(s) and {results}.\"\"\"
     @property
     def __name__(self) -> _Name: ...
     @property
@@ -69,12 +69,12 @@ class _GUFunc_Nin{nin}_Nout1(numpy.ufunc, typing.Generic[_Name, _Signature]):
     @property
     def nin(self) -> typing.Literal[{nin}]: ...
     @property
-    def nout(self) -> typing.Literal[1]: ...
+    def nout(self) -> typing.Literal[{nout}]: ...
     def __call__(
         self,
         {operands}
         /,
-        out: numpy.ndarray | tuple[numpy.ndarray] | None = ...,
+        out: {out} = ...,
         *,
         where: numpy.typing.ArrayLike = ...,
         axes: list[tuple[int, ...]] = ...,
@@ -85,7 +85,7 @@ class _GUFunc_Nin{nin}_Nout1(numpy.ufunc, typing.Generic[_Name, _Signature]):
         dtype: numpy.typing.DTypeLike = ...,
         subok: bool = ...,
         signature: typing.Any = ...,
-    ) -> numpy.typing.NDArray[numpy.floating[typing.Any]]: ...
+    ) -> {returns}: ...
 """
 
 
@@ -103,24 +103,32 @@ def type_array_functions(stub: str) -> str:
     from chasles import _core
 
     lines = stub.splitlines(keepends=True)
-    arities: set[int] = set()
+    arities: set[tuple[int, int]] = set()
     for i, line in enumerate(lines):
         name = line.split(":")[0]
         u = getattr(_core, name, None) if line.endswith(": numpy.ufunc\n") else None
         if not isinstance(u, np.ufunc) or name.startswith("_"):
             continue
-        if u.nout != 1:
-            raise SystemExit(f"stubgen.py: {name} has {u.nout} results; add its type")
-        arities.add(u.nin)
+        arities.add((u.nin, u.nout))
         params = ", ".join(inspect.signature(u).parameters)  # named by ufunc.hpp's describe_ufunc
         params = ", ".join(p for p in params.split(", ")[: u.nin])
         lines[i] = (
             f"# {name}({params}): {u.signature}\n"
-            f'{name}: _GUFunc_Nin{u.nin}_Nout1[typing.Literal["{name}"], typing.Literal["{u.signature}"]]\n'
+            f'{name}: _GUFunc_Nin{u.nin}_Nout{u.nout}[typing.Literal["{name}"], typing.Literal["{u.signature}"]]\n'
         )
+    array = "numpy.typing.NDArray[numpy.floating[typing.Any]]"
     classes = "".join(
-        UFUNC_CLASS.format(nin=n, operands=" ".join(f"x{k}: numpy.typing.ArrayLike," for k in range(1, n + 1)))
-        for n in sorted(arities)
+        UFUNC_CLASS.format(
+            nin=n,
+            nout=k,
+            results="one result" if k == 1 else f"{k} results",
+            operands=" ".join(f"x{j}: numpy.typing.ArrayLike," for j in range(1, n + 1)),
+            out="numpy.ndarray | tuple[numpy.ndarray] | None"
+            if k == 1
+            else f"tuple[{', '.join(['numpy.ndarray'] * k)}] | None",
+            returns=array if k == 1 else f"tuple[{', '.join([array] * k)}]",
+        )
+        for n, k in sorted(arities)
     )
     at = next(i for i, line in enumerate(lines) if line.startswith("__all__"))
     return "".join(lines[: at + 1]) + UFUNC_TYPEVARS + classes + "".join(lines[at + 1 :])

@@ -8,7 +8,7 @@ import numpy
 import numpy.dtypes
 import numpy.typing
 import typing
-__all__: list[str] = ['Chain', 'SE2', 'SE23', 'SE3', 'SO2', 'SO3', 'Screw', 'Sim3', 'SpatialInertia', 'Twist', 'Wrench', 'act_jacobians', 'between', 'between_jacobians', 'compose_jacobians', 'get_num_threads', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'lminus_jacobians', 'log_jacobian', 'lplus', 'lplus_jacobians', 'rminus', 'rminus_jacobians', 'rplus', 'rplus_jacobians', 'se23_act', 'se23_compose', 'se23_distance', 'se23_exp', 'se23_hat', 'se23_interpolate', 'se23_inverse', 'se23_log', 'se23_normalize', 'se23_vee', 'se2_act', 'se2_compose', 'se2_distance', 'se2_exp', 'se2_hat', 'se2_interpolate', 'se2_inverse', 'se2_log', 'se2_normalize', 'se2_vee', 'se3_act', 'se3_act_jacobian', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_compose', 'se3_distance', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_log', 'se3_normalize', 'se3_vee', 'sim3_act', 'sim3_compose', 'sim3_distance', 'sim3_exp', 'sim3_hat', 'sim3_interpolate', 'sim3_inverse', 'sim3_log', 'sim3_normalize', 'sim3_vee', 'so2_act', 'so2_compose', 'so2_distance', 'so2_exp', 'so2_hat', 'so2_interpolate', 'so2_inverse', 'so2_log', 'so2_normalize', 'so2_vee', 'so3_act', 'so3_act_jacobian', 'so3_angle', 'so3_compose', 'so3_distance', 'so3_exp', 'so3_from_uniforms', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_log', 'so3_normalize', 'so3_vee']
+__all__: list[str] = ['Chain', 'SE2', 'SE23', 'SE3', 'SO2', 'SO3', 'Screw', 'Sim3', 'SpatialInertia', 'Twist', 'Wrench', 'act_jacobians', 'between', 'between_jacobians', 'compose_jacobians', 'get_num_threads', 'interpolate', 'interpolate_jacobian_t', 'inverse_jacobian', 'lminus', 'lminus_jacobians', 'log_jacobian', 'lplus', 'lplus_jacobians', 'rminus', 'rminus_jacobians', 'rplus', 'rplus_jacobians', 'se23_act', 'se23_between_cov', 'se23_between_jacobians', 'se23_compose', 'se23_compose_cov', 'se23_compose_jacobians', 'se23_distance', 'se23_exp', 'se23_hat', 'se23_interpolate', 'se23_inverse', 'se23_inverse_cov', 'se23_log', 'se23_normalize', 'se23_rminus_jacobians', 'se23_vee', 'se2_act', 'se2_between_cov', 'se2_between_jacobians', 'se2_compose', 'se2_compose_cov', 'se2_compose_jacobians', 'se2_distance', 'se2_exp', 'se2_hat', 'se2_interpolate', 'se2_inverse', 'se2_inverse_cov', 'se2_log', 'se2_normalize', 'se2_rminus_jacobians', 'se2_vee', 'se3_act', 'se3_act_jacobian', 'se3_act_twist', 'se3_act_wrench', 'se3_adjoint', 'se3_between_cov', 'se3_between_jacobians', 'se3_compose', 'se3_compose_cov', 'se3_compose_jacobians', 'se3_distance', 'se3_exp', 'se3_hat', 'se3_interpolate', 'se3_inverse', 'se3_inverse_cov', 'se3_log', 'se3_normalize', 'se3_rminus_jacobians', 'se3_vee', 'sim3_act', 'sim3_between_cov', 'sim3_between_jacobians', 'sim3_compose', 'sim3_compose_cov', 'sim3_compose_jacobians', 'sim3_distance', 'sim3_exp', 'sim3_hat', 'sim3_interpolate', 'sim3_inverse', 'sim3_inverse_cov', 'sim3_log', 'sim3_normalize', 'sim3_rminus_jacobians', 'sim3_vee', 'so2_act', 'so2_between_cov', 'so2_between_jacobians', 'so2_compose', 'so2_compose_cov', 'so2_compose_jacobians', 'so2_distance', 'so2_exp', 'so2_hat', 'so2_interpolate', 'so2_inverse', 'so2_inverse_cov', 'so2_log', 'so2_normalize', 'so2_rminus_jacobians', 'so2_vee', 'so3_act', 'so3_act_jacobian', 'so3_angle', 'so3_between_cov', 'so3_between_jacobians', 'so3_compose', 'so3_compose_cov', 'so3_compose_jacobians', 'so3_distance', 'so3_exp', 'so3_from_uniforms', 'so3_hat', 'so3_interpolate', 'so3_inverse', 'so3_inverse_cov', 'so3_log', 'so3_normalize', 'so3_rminus_jacobians', 'so3_vee']
 
 _Name = typing.TypeVar("_Name", bound=str)
 _Signature = typing.TypeVar("_Signature", bound=str)
@@ -67,6 +67,33 @@ class _GUFunc_Nin2_Nout1(numpy.ufunc, typing.Generic[_Name, _Signature]):
         signature: typing.Any = ...,
     ) -> numpy.typing.NDArray[numpy.floating[typing.Any]]: ...
 
+class _GUFunc_Nin2_Nout2(numpy.ufunc, typing.Generic[_Name, _Signature]):
+    """A numpy generalized ufunc of 2 operand(s) and 2 results."""
+    @property
+    def __name__(self) -> _Name: ...
+    @property
+    def signature(self) -> _Signature: ...
+    @property
+    def nin(self) -> typing.Literal[2]: ...
+    @property
+    def nout(self) -> typing.Literal[2]: ...
+    def __call__(
+        self,
+        x1: numpy.typing.ArrayLike, x2: numpy.typing.ArrayLike,
+        /,
+        out: tuple[numpy.ndarray, numpy.ndarray] | None = ...,
+        *,
+        where: numpy.typing.ArrayLike = ...,
+        axes: list[tuple[int, ...]] = ...,
+        axis: int = ...,
+        keepdims: bool = ...,
+        casting: typing.Literal["no", "equiv", "safe", "same_kind", "unsafe"] = ...,
+        order: typing.Literal["K", "A", "C", "F"] = ...,
+        dtype: numpy.typing.DTypeLike = ...,
+        subok: bool = ...,
+        signature: typing.Any = ...,
+    ) -> tuple[numpy.typing.NDArray[numpy.floating[typing.Any]], numpy.typing.NDArray[numpy.floating[typing.Any]]]: ...
+
 class _GUFunc_Nin3_Nout1(numpy.ufunc, typing.Generic[_Name, _Signature]):
     """A numpy generalized ufunc of 3 operand(s) and one result."""
     @property
@@ -93,6 +120,33 @@ class _GUFunc_Nin3_Nout1(numpy.ufunc, typing.Generic[_Name, _Signature]):
         subok: bool = ...,
         signature: typing.Any = ...,
     ) -> numpy.typing.NDArray[numpy.floating[typing.Any]]: ...
+
+class _GUFunc_Nin4_Nout2(numpy.ufunc, typing.Generic[_Name, _Signature]):
+    """A numpy generalized ufunc of 4 operand(s) and 2 results."""
+    @property
+    def __name__(self) -> _Name: ...
+    @property
+    def signature(self) -> _Signature: ...
+    @property
+    def nin(self) -> typing.Literal[4]: ...
+    @property
+    def nout(self) -> typing.Literal[2]: ...
+    def __call__(
+        self,
+        x1: numpy.typing.ArrayLike, x2: numpy.typing.ArrayLike, x3: numpy.typing.ArrayLike, x4: numpy.typing.ArrayLike,
+        /,
+        out: tuple[numpy.ndarray, numpy.ndarray] | None = ...,
+        *,
+        where: numpy.typing.ArrayLike = ...,
+        axes: list[tuple[int, ...]] = ...,
+        axis: int = ...,
+        keepdims: bool = ...,
+        casting: typing.Literal["no", "equiv", "safe", "same_kind", "unsafe"] = ...,
+        order: typing.Literal["K", "A", "C", "F"] = ...,
+        dtype: numpy.typing.DTypeLike = ...,
+        subok: bool = ...,
+        signature: typing.Any = ...,
+    ) -> tuple[numpy.typing.NDArray[numpy.floating[typing.Any]], numpy.typing.NDArray[numpy.floating[typing.Any]]]: ...
 class SO3:
     """
     A rotation of R^3: an element of SO(3), stored as its 3x3 matrix (float64).
@@ -4748,48 +4802,101 @@ _inverse_dynamics: numpy.ufunc
 _inverse_kinematics: numpy.ufunc
 _mass_matrix: numpy.ufunc
 _max_threads: int = 1024
+_se23_act_cov: numpy.ufunc
+_se23_between_cov_cross: numpy.ufunc
 _se23_bspline: numpy.ufunc
 _se23_bspline_rates: numpy.ufunc
+_se23_compose_cov_cross: numpy.ufunc
 _se23_from_uniforms: numpy.ufunc
+_se23_interpolate_cov: numpy.ufunc
+_se23_left_cov: numpy.ufunc
+_se23_log_cov: numpy.ufunc
+_se23_mahalanobis: numpy.ufunc
 _se23_spline: numpy.ufunc
 _se23_spline_rates: numpy.ufunc
+_se2_act_cov: numpy.ufunc
+_se2_between_cov_cross: numpy.ufunc
 _se2_bspline: numpy.ufunc
 _se2_bspline_rates: numpy.ufunc
+_se2_compose_cov_cross: numpy.ufunc
 _se2_from_uniforms: numpy.ufunc
+_se2_interpolate_cov: numpy.ufunc
+_se2_left_cov: numpy.ufunc
+_se2_log_cov: numpy.ufunc
+_se2_mahalanobis: numpy.ufunc
 _se2_spline: numpy.ufunc
 _se2_spline_rates: numpy.ufunc
+_se3_act_cov: numpy.ufunc
+_se3_between_cov_cross: numpy.ufunc
 _se3_bspline: numpy.ufunc
 _se3_bspline_rates: numpy.ufunc
+_se3_compose_cov4: numpy.ufunc
+_se3_compose_cov_cross: numpy.ufunc
+_se3_cov_from_ros: numpy.ufunc
+_se3_cov_to_ros: numpy.ufunc
+_se3_interpolate_cov: numpy.ufunc
+_se3_left_cov: numpy.ufunc
+_se3_log_cov: numpy.ufunc
+_se3_mahalanobis: numpy.ufunc
 _se3_spline: numpy.ufunc
 _se3_spline_rates: numpy.ufunc
+_sim3_act_cov: numpy.ufunc
+_sim3_between_cov_cross: numpy.ufunc
 _sim3_bspline: numpy.ufunc
 _sim3_bspline_rates: numpy.ufunc
+_sim3_compose_cov_cross: numpy.ufunc
 _sim3_from_uniforms: numpy.ufunc
+_sim3_interpolate_cov: numpy.ufunc
+_sim3_left_cov: numpy.ufunc
+_sim3_log_cov: numpy.ufunc
+_sim3_mahalanobis: numpy.ufunc
 _sim3_spline: numpy.ufunc
 _sim3_spline_rates: numpy.ufunc
+_so2_act_cov: numpy.ufunc
+_so2_between_cov_cross: numpy.ufunc
 _so2_bspline: numpy.ufunc
 _so2_bspline_rates: numpy.ufunc
+_so2_compose_cov_cross: numpy.ufunc
 _so2_from_uniforms: numpy.ufunc
+_so2_interpolate_cov: numpy.ufunc
+_so2_left_cov: numpy.ufunc
+_so2_log_cov: numpy.ufunc
+_so2_mahalanobis: numpy.ufunc
 _so2_spline: numpy.ufunc
 _so2_spline_rates: numpy.ufunc
+_so3_act_cov: numpy.ufunc
 _so3_as_euler: numpy.ufunc
 _so3_as_euler_lock: numpy.ufunc
 _so3_as_quat_wxyz: numpy.ufunc
 _so3_as_quat_xyzw: numpy.ufunc
 _so3_as_rpy: numpy.ufunc
 _so3_as_rpy_lock: numpy.ufunc
+_so3_between_cov_cross: numpy.ufunc
 _so3_bspline: numpy.ufunc
 _so3_bspline_rates: numpy.ufunc
+_so3_compose_cov_cross: numpy.ufunc
 _so3_from_euler: numpy.ufunc
 _so3_from_quat_wxyz: numpy.ufunc
 _so3_from_quat_xyzw: numpy.ufunc
 _so3_from_rpy: numpy.ufunc
+_so3_interpolate_cov: numpy.ufunc
+_so3_left_cov: numpy.ufunc
+_so3_log_cov: numpy.ufunc
+_so3_mahalanobis: numpy.ufunc
 _so3_spline: numpy.ufunc
 _so3_spline_rates: numpy.ufunc
 # se23_act(X, points): (5,5),(3)->(3)
 se23_act: _GUFunc_Nin2_Nout1[typing.Literal["se23_act"], typing.Literal["(5,5),(3)->(3)"]]
+# se23_between_cov(a, cov_a, b, cov_b): (5,5),(9,9),(5,5),(9,9)->(5,5),(9,9)
+se23_between_cov: _GUFunc_Nin4_Nout2[typing.Literal["se23_between_cov"], typing.Literal["(5,5),(9,9),(5,5),(9,9)->(5,5),(9,9)"]]
+# se23_between_jacobians(a, b): (5,5),(5,5)->(9,9),(9,9)
+se23_between_jacobians: _GUFunc_Nin2_Nout2[typing.Literal["se23_between_jacobians"], typing.Literal["(5,5),(5,5)->(9,9),(9,9)"]]
 # se23_compose(a, b): (5,5),(5,5)->(5,5)
 se23_compose: _GUFunc_Nin2_Nout1[typing.Literal["se23_compose"], typing.Literal["(5,5),(5,5)->(5,5)"]]
+# se23_compose_cov(a, cov_a, b, cov_b): (5,5),(9,9),(5,5),(9,9)->(5,5),(9,9)
+se23_compose_cov: _GUFunc_Nin4_Nout2[typing.Literal["se23_compose_cov"], typing.Literal["(5,5),(9,9),(5,5),(9,9)->(5,5),(9,9)"]]
+# se23_compose_jacobians(a, b): (5,5),(5,5)->(9,9),(9,9)
+se23_compose_jacobians: _GUFunc_Nin2_Nout2[typing.Literal["se23_compose_jacobians"], typing.Literal["(5,5),(5,5)->(9,9),(9,9)"]]
 # se23_distance(a, b): (5,5),(5,5)->(3)
 se23_distance: _GUFunc_Nin2_Nout1[typing.Literal["se23_distance"], typing.Literal["(5,5),(5,5)->(3)"]]
 # se23_exp(xi): (9)->(5,5)
@@ -4800,16 +4907,28 @@ se23_hat: _GUFunc_Nin1_Nout1[typing.Literal["se23_hat"], typing.Literal["(9)->(5
 se23_interpolate: _GUFunc_Nin3_Nout1[typing.Literal["se23_interpolate"], typing.Literal["(5,5),(5,5),()->(5,5)"]]
 # se23_inverse(X): (5,5)->(5,5)
 se23_inverse: _GUFunc_Nin1_Nout1[typing.Literal["se23_inverse"], typing.Literal["(5,5)->(5,5)"]]
+# se23_inverse_cov(a, cov_a): (5,5),(9,9)->(5,5),(9,9)
+se23_inverse_cov: _GUFunc_Nin2_Nout2[typing.Literal["se23_inverse_cov"], typing.Literal["(5,5),(9,9)->(5,5),(9,9)"]]
 # se23_log(X): (5,5)->(9)
 se23_log: _GUFunc_Nin1_Nout1[typing.Literal["se23_log"], typing.Literal["(5,5)->(9)"]]
 # se23_normalize(X): (5,5)->(5,5)
 se23_normalize: _GUFunc_Nin1_Nout1[typing.Literal["se23_normalize"], typing.Literal["(5,5)->(5,5)"]]
+# se23_rminus_jacobians(g, h): (5,5),(5,5)->(9,9),(9,9)
+se23_rminus_jacobians: _GUFunc_Nin2_Nout2[typing.Literal["se23_rminus_jacobians"], typing.Literal["(5,5),(5,5)->(9,9),(9,9)"]]
 # se23_vee(matrix): (5,5)->(9)
 se23_vee: _GUFunc_Nin1_Nout1[typing.Literal["se23_vee"], typing.Literal["(5,5)->(9)"]]
 # se2_act(g, points): (3,3),(2)->(2)
 se2_act: _GUFunc_Nin2_Nout1[typing.Literal["se2_act"], typing.Literal["(3,3),(2)->(2)"]]
+# se2_between_cov(a, cov_a, b, cov_b): (3,3),(3,3),(3,3),(3,3)->(3,3),(3,3)
+se2_between_cov: _GUFunc_Nin4_Nout2[typing.Literal["se2_between_cov"], typing.Literal["(3,3),(3,3),(3,3),(3,3)->(3,3),(3,3)"]]
+# se2_between_jacobians(a, b): (3,3),(3,3)->(3,3),(3,3)
+se2_between_jacobians: _GUFunc_Nin2_Nout2[typing.Literal["se2_between_jacobians"], typing.Literal["(3,3),(3,3)->(3,3),(3,3)"]]
 # se2_compose(a, b): (3,3),(3,3)->(3,3)
 se2_compose: _GUFunc_Nin2_Nout1[typing.Literal["se2_compose"], typing.Literal["(3,3),(3,3)->(3,3)"]]
+# se2_compose_cov(a, cov_a, b, cov_b): (3,3),(3,3),(3,3),(3,3)->(3,3),(3,3)
+se2_compose_cov: _GUFunc_Nin4_Nout2[typing.Literal["se2_compose_cov"], typing.Literal["(3,3),(3,3),(3,3),(3,3)->(3,3),(3,3)"]]
+# se2_compose_jacobians(a, b): (3,3),(3,3)->(3,3),(3,3)
+se2_compose_jacobians: _GUFunc_Nin2_Nout2[typing.Literal["se2_compose_jacobians"], typing.Literal["(3,3),(3,3)->(3,3),(3,3)"]]
 # se2_distance(a, b): (3,3),(3,3)->(2)
 se2_distance: _GUFunc_Nin2_Nout1[typing.Literal["se2_distance"], typing.Literal["(3,3),(3,3)->(2)"]]
 # se2_exp(xi): (3)->(3,3)
@@ -4820,10 +4939,14 @@ se2_hat: _GUFunc_Nin1_Nout1[typing.Literal["se2_hat"], typing.Literal["(3)->(3,3
 se2_interpolate: _GUFunc_Nin3_Nout1[typing.Literal["se2_interpolate"], typing.Literal["(3,3),(3,3),()->(3,3)"]]
 # se2_inverse(g): (3,3)->(3,3)
 se2_inverse: _GUFunc_Nin1_Nout1[typing.Literal["se2_inverse"], typing.Literal["(3,3)->(3,3)"]]
+# se2_inverse_cov(a, cov_a): (3,3),(3,3)->(3,3),(3,3)
+se2_inverse_cov: _GUFunc_Nin2_Nout2[typing.Literal["se2_inverse_cov"], typing.Literal["(3,3),(3,3)->(3,3),(3,3)"]]
 # se2_log(g): (3,3)->(3)
 se2_log: _GUFunc_Nin1_Nout1[typing.Literal["se2_log"], typing.Literal["(3,3)->(3)"]]
 # se2_normalize(g): (3,3)->(3,3)
 se2_normalize: _GUFunc_Nin1_Nout1[typing.Literal["se2_normalize"], typing.Literal["(3,3)->(3,3)"]]
+# se2_rminus_jacobians(g, h): (3,3),(3,3)->(3,3),(3,3)
+se2_rminus_jacobians: _GUFunc_Nin2_Nout2[typing.Literal["se2_rminus_jacobians"], typing.Literal["(3,3),(3,3)->(3,3),(3,3)"]]
 # se2_vee(matrix): (3,3)->(3)
 se2_vee: _GUFunc_Nin1_Nout1[typing.Literal["se2_vee"], typing.Literal["(3,3)->(3)"]]
 # se3_act(g, points): (4,4),(3)->(3)
@@ -4836,8 +4959,16 @@ se3_act_twist: _GUFunc_Nin2_Nout1[typing.Literal["se3_act_twist"], typing.Litera
 se3_act_wrench: _GUFunc_Nin2_Nout1[typing.Literal["se3_act_wrench"], typing.Literal["(4,4),(6)->(6)"]]
 # se3_adjoint(g): (4,4)->(6,6)
 se3_adjoint: _GUFunc_Nin1_Nout1[typing.Literal["se3_adjoint"], typing.Literal["(4,4)->(6,6)"]]
+# se3_between_cov(a, cov_a, b, cov_b): (4,4),(6,6),(4,4),(6,6)->(4,4),(6,6)
+se3_between_cov: _GUFunc_Nin4_Nout2[typing.Literal["se3_between_cov"], typing.Literal["(4,4),(6,6),(4,4),(6,6)->(4,4),(6,6)"]]
+# se3_between_jacobians(a, b): (4,4),(4,4)->(6,6),(6,6)
+se3_between_jacobians: _GUFunc_Nin2_Nout2[typing.Literal["se3_between_jacobians"], typing.Literal["(4,4),(4,4)->(6,6),(6,6)"]]
 # se3_compose(a, b): (4,4),(4,4)->(4,4)
 se3_compose: _GUFunc_Nin2_Nout1[typing.Literal["se3_compose"], typing.Literal["(4,4),(4,4)->(4,4)"]]
+# se3_compose_cov(a, cov_a, b, cov_b): (4,4),(6,6),(4,4),(6,6)->(4,4),(6,6)
+se3_compose_cov: _GUFunc_Nin4_Nout2[typing.Literal["se3_compose_cov"], typing.Literal["(4,4),(6,6),(4,4),(6,6)->(4,4),(6,6)"]]
+# se3_compose_jacobians(a, b): (4,4),(4,4)->(6,6),(6,6)
+se3_compose_jacobians: _GUFunc_Nin2_Nout2[typing.Literal["se3_compose_jacobians"], typing.Literal["(4,4),(4,4)->(6,6),(6,6)"]]
 # se3_distance(a, b): (4,4),(4,4)->(2)
 se3_distance: _GUFunc_Nin2_Nout1[typing.Literal["se3_distance"], typing.Literal["(4,4),(4,4)->(2)"]]
 # se3_exp(xi): (6)->(4,4)
@@ -4848,16 +4979,28 @@ se3_hat: _GUFunc_Nin1_Nout1[typing.Literal["se3_hat"], typing.Literal["(6)->(4,4
 se3_interpolate: _GUFunc_Nin3_Nout1[typing.Literal["se3_interpolate"], typing.Literal["(4,4),(4,4),()->(4,4)"]]
 # se3_inverse(g): (4,4)->(4,4)
 se3_inverse: _GUFunc_Nin1_Nout1[typing.Literal["se3_inverse"], typing.Literal["(4,4)->(4,4)"]]
+# se3_inverse_cov(a, cov_a): (4,4),(6,6)->(4,4),(6,6)
+se3_inverse_cov: _GUFunc_Nin2_Nout2[typing.Literal["se3_inverse_cov"], typing.Literal["(4,4),(6,6)->(4,4),(6,6)"]]
 # se3_log(g): (4,4)->(6)
 se3_log: _GUFunc_Nin1_Nout1[typing.Literal["se3_log"], typing.Literal["(4,4)->(6)"]]
 # se3_normalize(g): (4,4)->(4,4)
 se3_normalize: _GUFunc_Nin1_Nout1[typing.Literal["se3_normalize"], typing.Literal["(4,4)->(4,4)"]]
+# se3_rminus_jacobians(g, h): (4,4),(4,4)->(6,6),(6,6)
+se3_rminus_jacobians: _GUFunc_Nin2_Nout2[typing.Literal["se3_rminus_jacobians"], typing.Literal["(4,4),(4,4)->(6,6),(6,6)"]]
 # se3_vee(matrix): (4,4)->(6)
 se3_vee: _GUFunc_Nin1_Nout1[typing.Literal["se3_vee"], typing.Literal["(4,4)->(6)"]]
 # sim3_act(g, points): (4,4),(3)->(3)
 sim3_act: _GUFunc_Nin2_Nout1[typing.Literal["sim3_act"], typing.Literal["(4,4),(3)->(3)"]]
+# sim3_between_cov(a, cov_a, b, cov_b): (4,4),(7,7),(4,4),(7,7)->(4,4),(7,7)
+sim3_between_cov: _GUFunc_Nin4_Nout2[typing.Literal["sim3_between_cov"], typing.Literal["(4,4),(7,7),(4,4),(7,7)->(4,4),(7,7)"]]
+# sim3_between_jacobians(a, b): (4,4),(4,4)->(7,7),(7,7)
+sim3_between_jacobians: _GUFunc_Nin2_Nout2[typing.Literal["sim3_between_jacobians"], typing.Literal["(4,4),(4,4)->(7,7),(7,7)"]]
 # sim3_compose(a, b): (4,4),(4,4)->(4,4)
 sim3_compose: _GUFunc_Nin2_Nout1[typing.Literal["sim3_compose"], typing.Literal["(4,4),(4,4)->(4,4)"]]
+# sim3_compose_cov(a, cov_a, b, cov_b): (4,4),(7,7),(4,4),(7,7)->(4,4),(7,7)
+sim3_compose_cov: _GUFunc_Nin4_Nout2[typing.Literal["sim3_compose_cov"], typing.Literal["(4,4),(7,7),(4,4),(7,7)->(4,4),(7,7)"]]
+# sim3_compose_jacobians(a, b): (4,4),(4,4)->(7,7),(7,7)
+sim3_compose_jacobians: _GUFunc_Nin2_Nout2[typing.Literal["sim3_compose_jacobians"], typing.Literal["(4,4),(4,4)->(7,7),(7,7)"]]
 # sim3_distance(a, b): (4,4),(4,4)->(3)
 sim3_distance: _GUFunc_Nin2_Nout1[typing.Literal["sim3_distance"], typing.Literal["(4,4),(4,4)->(3)"]]
 # sim3_exp(xi): (7)->(4,4)
@@ -4868,16 +5011,28 @@ sim3_hat: _GUFunc_Nin1_Nout1[typing.Literal["sim3_hat"], typing.Literal["(7)->(4
 sim3_interpolate: _GUFunc_Nin3_Nout1[typing.Literal["sim3_interpolate"], typing.Literal["(4,4),(4,4),()->(4,4)"]]
 # sim3_inverse(g): (4,4)->(4,4)
 sim3_inverse: _GUFunc_Nin1_Nout1[typing.Literal["sim3_inverse"], typing.Literal["(4,4)->(4,4)"]]
+# sim3_inverse_cov(a, cov_a): (4,4),(7,7)->(4,4),(7,7)
+sim3_inverse_cov: _GUFunc_Nin2_Nout2[typing.Literal["sim3_inverse_cov"], typing.Literal["(4,4),(7,7)->(4,4),(7,7)"]]
 # sim3_log(g): (4,4)->(7)
 sim3_log: _GUFunc_Nin1_Nout1[typing.Literal["sim3_log"], typing.Literal["(4,4)->(7)"]]
 # sim3_normalize(g): (4,4)->(4,4)
 sim3_normalize: _GUFunc_Nin1_Nout1[typing.Literal["sim3_normalize"], typing.Literal["(4,4)->(4,4)"]]
+# sim3_rminus_jacobians(g, h): (4,4),(4,4)->(7,7),(7,7)
+sim3_rminus_jacobians: _GUFunc_Nin2_Nout2[typing.Literal["sim3_rminus_jacobians"], typing.Literal["(4,4),(4,4)->(7,7),(7,7)"]]
 # sim3_vee(matrix): (4,4)->(7)
 sim3_vee: _GUFunc_Nin1_Nout1[typing.Literal["sim3_vee"], typing.Literal["(4,4)->(7)"]]
 # so2_act(R, points): (2,2),(2)->(2)
 so2_act: _GUFunc_Nin2_Nout1[typing.Literal["so2_act"], typing.Literal["(2,2),(2)->(2)"]]
+# so2_between_cov(a, cov_a, b, cov_b): (2,2),(1,1),(2,2),(1,1)->(2,2),(1,1)
+so2_between_cov: _GUFunc_Nin4_Nout2[typing.Literal["so2_between_cov"], typing.Literal["(2,2),(1,1),(2,2),(1,1)->(2,2),(1,1)"]]
+# so2_between_jacobians(a, b): (2,2),(2,2)->(1,1),(1,1)
+so2_between_jacobians: _GUFunc_Nin2_Nout2[typing.Literal["so2_between_jacobians"], typing.Literal["(2,2),(2,2)->(1,1),(1,1)"]]
 # so2_compose(a, b): (2,2),(2,2)->(2,2)
 so2_compose: _GUFunc_Nin2_Nout1[typing.Literal["so2_compose"], typing.Literal["(2,2),(2,2)->(2,2)"]]
+# so2_compose_cov(a, cov_a, b, cov_b): (2,2),(1,1),(2,2),(1,1)->(2,2),(1,1)
+so2_compose_cov: _GUFunc_Nin4_Nout2[typing.Literal["so2_compose_cov"], typing.Literal["(2,2),(1,1),(2,2),(1,1)->(2,2),(1,1)"]]
+# so2_compose_jacobians(a, b): (2,2),(2,2)->(1,1),(1,1)
+so2_compose_jacobians: _GUFunc_Nin2_Nout2[typing.Literal["so2_compose_jacobians"], typing.Literal["(2,2),(2,2)->(1,1),(1,1)"]]
 # so2_distance(a, b): (2,2),(2,2)->()
 so2_distance: _GUFunc_Nin2_Nout1[typing.Literal["so2_distance"], typing.Literal["(2,2),(2,2)->()"]]
 # so2_exp(theta): ()->(2,2)
@@ -4888,10 +5043,14 @@ so2_hat: _GUFunc_Nin1_Nout1[typing.Literal["so2_hat"], typing.Literal["()->(2,2)
 so2_interpolate: _GUFunc_Nin3_Nout1[typing.Literal["so2_interpolate"], typing.Literal["(2,2),(2,2),()->(2,2)"]]
 # so2_inverse(R): (2,2)->(2,2)
 so2_inverse: _GUFunc_Nin1_Nout1[typing.Literal["so2_inverse"], typing.Literal["(2,2)->(2,2)"]]
+# so2_inverse_cov(a, cov_a): (2,2),(1,1)->(2,2),(1,1)
+so2_inverse_cov: _GUFunc_Nin2_Nout2[typing.Literal["so2_inverse_cov"], typing.Literal["(2,2),(1,1)->(2,2),(1,1)"]]
 # so2_log(R): (2,2)->()
 so2_log: _GUFunc_Nin1_Nout1[typing.Literal["so2_log"], typing.Literal["(2,2)->()"]]
 # so2_normalize(R): (2,2)->(2,2)
 so2_normalize: _GUFunc_Nin1_Nout1[typing.Literal["so2_normalize"], typing.Literal["(2,2)->(2,2)"]]
+# so2_rminus_jacobians(g, h): (2,2),(2,2)->(1,1),(1,1)
+so2_rminus_jacobians: _GUFunc_Nin2_Nout2[typing.Literal["so2_rminus_jacobians"], typing.Literal["(2,2),(2,2)->(1,1),(1,1)"]]
 # so2_vee(matrix): (2,2)->()
 so2_vee: _GUFunc_Nin1_Nout1[typing.Literal["so2_vee"], typing.Literal["(2,2)->()"]]
 # so3_act(R, points): (3,3),(3)->(3)
@@ -4900,8 +5059,16 @@ so3_act: _GUFunc_Nin2_Nout1[typing.Literal["so3_act"], typing.Literal["(3,3),(3)
 so3_act_jacobian: _GUFunc_Nin2_Nout1[typing.Literal["so3_act_jacobian"], typing.Literal["(3,3),(3)->(3,3)"]]
 # so3_angle(R): (3,3)->()
 so3_angle: _GUFunc_Nin1_Nout1[typing.Literal["so3_angle"], typing.Literal["(3,3)->()"]]
+# so3_between_cov(a, cov_a, b, cov_b): (3,3),(3,3),(3,3),(3,3)->(3,3),(3,3)
+so3_between_cov: _GUFunc_Nin4_Nout2[typing.Literal["so3_between_cov"], typing.Literal["(3,3),(3,3),(3,3),(3,3)->(3,3),(3,3)"]]
+# so3_between_jacobians(a, b): (3,3),(3,3)->(3,3),(3,3)
+so3_between_jacobians: _GUFunc_Nin2_Nout2[typing.Literal["so3_between_jacobians"], typing.Literal["(3,3),(3,3)->(3,3),(3,3)"]]
 # so3_compose(a, b): (3,3),(3,3)->(3,3)
 so3_compose: _GUFunc_Nin2_Nout1[typing.Literal["so3_compose"], typing.Literal["(3,3),(3,3)->(3,3)"]]
+# so3_compose_cov(a, cov_a, b, cov_b): (3,3),(3,3),(3,3),(3,3)->(3,3),(3,3)
+so3_compose_cov: _GUFunc_Nin4_Nout2[typing.Literal["so3_compose_cov"], typing.Literal["(3,3),(3,3),(3,3),(3,3)->(3,3),(3,3)"]]
+# so3_compose_jacobians(a, b): (3,3),(3,3)->(3,3),(3,3)
+so3_compose_jacobians: _GUFunc_Nin2_Nout2[typing.Literal["so3_compose_jacobians"], typing.Literal["(3,3),(3,3)->(3,3),(3,3)"]]
 # so3_distance(a, b): (3,3),(3,3)->()
 so3_distance: _GUFunc_Nin2_Nout1[typing.Literal["so3_distance"], typing.Literal["(3,3),(3,3)->()"]]
 # so3_exp(w): (3)->(3,3)
@@ -4914,9 +5081,13 @@ so3_hat: _GUFunc_Nin1_Nout1[typing.Literal["so3_hat"], typing.Literal["(3)->(3,3
 so3_interpolate: _GUFunc_Nin3_Nout1[typing.Literal["so3_interpolate"], typing.Literal["(3,3),(3,3),()->(3,3)"]]
 # so3_inverse(R): (3,3)->(3,3)
 so3_inverse: _GUFunc_Nin1_Nout1[typing.Literal["so3_inverse"], typing.Literal["(3,3)->(3,3)"]]
+# so3_inverse_cov(a, cov_a): (3,3),(3,3)->(3,3),(3,3)
+so3_inverse_cov: _GUFunc_Nin2_Nout2[typing.Literal["so3_inverse_cov"], typing.Literal["(3,3),(3,3)->(3,3),(3,3)"]]
 # so3_log(R): (3,3)->(3)
 so3_log: _GUFunc_Nin1_Nout1[typing.Literal["so3_log"], typing.Literal["(3,3)->(3)"]]
 # so3_normalize(R): (3,3)->(3,3)
 so3_normalize: _GUFunc_Nin1_Nout1[typing.Literal["so3_normalize"], typing.Literal["(3,3)->(3,3)"]]
+# so3_rminus_jacobians(g, h): (3,3),(3,3)->(3,3),(3,3)
+so3_rminus_jacobians: _GUFunc_Nin2_Nout2[typing.Literal["so3_rminus_jacobians"], typing.Literal["(3,3),(3,3)->(3,3),(3,3)"]]
 # so3_vee(matrix): (3,3)->(3)
 so3_vee: _GUFunc_Nin1_Nout1[typing.Literal["so3_vee"], typing.Literal["(3,3)->(3)"]]

@@ -934,6 +934,111 @@ class SplineSelf(Instance):
         return Refused(TypeError, ())
 
 
+@dataclass
+class Covariance(Arg):
+    """A Gaussian's covariance: shape (d, d), finite, symmetric and positive
+    semidefinite within 1e-12 of its largest entry."""
+
+    shape: tuple = (6, 6)
+    flat: bool = False  # the row-major entries, shape (d * d,), are taken too
+
+    def good(self):
+        return 0.01 * np.eye(self.shape[0])
+
+    def judge(self, value):
+        n = math.prod(self.shape)
+        verdict = judge_fixed_array(value, self.label, (self.shape, (n,)) if self.flat else (self.shape,), True)
+        if isinstance(verdict, Accepted):
+            verdict = Accepted(verdict.value.reshape(self.shape))
+        if not isinstance(verdict, Accepted):
+            return verdict
+        c = verdict.value
+        tol = 1e-12 * max(float(np.abs(c).max()), np.finfo(np.float64).tiny)
+        if np.abs(c - c.T).max() > tol:
+            return Refused(ValueError, (self.label, "symmetric"))
+        if np.linalg.eigvalsh(c).min() < -tol:
+            return Refused(ValueError, (self.label, "positive semidefinite"))
+        return verdict
+
+
+@dataclass
+class GaussianOperand(Instance):
+    """The other operand of a Gaussian on SE3: a Gaussian on SE3 or an SE3."""
+
+    def good(self):
+        return GOOD[chasles.Gaussian]()
+
+    def judge(self, value):
+        if isinstance(value, chasles.Gaussian):
+            if not is_initialized(value):
+                return Refused(TypeError, ("not initialized",))
+            if not isinstance(value.mean, chasles.SE3):
+                return Refused(TypeError, ("Gaussian on SE3", "got a Gaussian on"))
+            return Accepted(value)
+        if isinstance(value, chasles.SE3):
+            return Instance(self.label, (chasles.SE3,)).judge(value)
+        return Refused(TypeError, ())
+
+
+@dataclass
+class OptionalArray(Arg):
+    """None, or a finite array-like of the shape (batch=True: (..., *shape))."""
+
+    shape: tuple = (6, 6)
+    batch: bool = False
+
+    def good(self):
+        return None
+
+    def judge(self, value):
+        if value is None:
+            return Accepted(None)
+        a = real_array(value, self.label)
+        if isinstance(a, Refused):
+            return a
+        k = len(self.shape)
+        if (a.shape[a.ndim - k :] != self.shape or a.ndim < k) if self.batch else a.shape != self.shape:
+            return Refused(ValueError, (self.label, "expected shape", f"got {shape_text(a.shape)}"))
+        return finite_or_refused(a, self.label)
+
+
+@dataclass
+class GaussianPoints(Arg):
+    """Gaussian.act's points (..., 3) or Gaussian.mahalanobis's matrices
+    (..., 4, 4), finite; `element`: an object of that class is taken too."""
+
+    shape: tuple = (3,)
+    element: Any = None
+
+    def good(self):
+        return np.array([[1.0, 2.0, 3.0], [0.5, -1.0, 0.0]]) if self.shape == (3,) else np.stack([pose(), np.eye(4)])
+
+    def judge(self, value):
+        if self.element is not None and isinstance(value, self.element):
+            return Instance(self.label, (self.element,)).judge(value)
+        a = real_array(value, self.label)
+        if isinstance(a, Refused):
+            return a
+        k = len(self.shape)
+        if a.ndim < k or a.shape[a.ndim - k :] != self.shape:
+            return Refused(ValueError, (self.label, "expected", f"got {shape_text(a.shape)}"))
+        return finite_or_refused(a, self.label)
+
+
+class Order(Arg):
+    """Gaussian.compose's order: the int 1 or 4 (4 for a Gaussian on SE3)."""
+
+    def good(self):
+        return 1
+
+    def judge(self, value):
+        if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+            return Refused(TypeError, (self.label, "expected 1 or 4"))
+        if value not in (1, 4):
+            return Refused(ValueError, (self.label, "expected 1 or 4"))
+        return Accepted(int(value))
+
+
 def spline_control(group):
     """Five control elements for the B-spline entries: (5, 3, 3) or (5, 4, 4)."""
     k = np.arange(5.0)[:, None]
@@ -981,6 +1086,7 @@ GOOD = {  # a fresh valid object of each class
     chasles.SE2BSpline: lambda: chasles.SE2BSpline(0.0, 0.5, spline_control(chasles.SE2)),
     chasles.Sim3BSpline: lambda: chasles.Sim3BSpline(0.0, 0.5, spline_control(chasles.Sim3)),
     chasles.SE23BSpline: lambda: chasles.SE23BSpline(0.0, 0.5, spline_control(chasles.SE23)),
+    chasles.Gaussian: lambda: chasles.Gaussian(GOOD[chasles.SE3](), 0.01 * np.eye(6)),
     chasles.SpatialInertia: lambda: chasles.SpatialInertia(
         2.0, [0.1, 0.2, 0.3], [[0.1, 0.01, 0.0], [0.01, 0.2, 0.0], [0.0, 0.0, 0.25]]
     ),
@@ -1721,6 +1827,50 @@ def _build_spec():
             passes_arguments=False,
             direct=_direct(cls, "__repr__"),
         )
+    # Gaussian (on SE3: its self; every group's mean in the constructor)
+    Gaussian = chasles.Gaussian
+    me = SplineSelf("self", (Gaussian,))
+    spec["Gaussian.__init__"] = Entry(
+        [[_element("mean", G), Covariance("Gaussian(cov)", (n, n))] for G, (n, _) in GROUPS.items()], call=Gaussian
+    )
+    spec["Gaussian.from_left"] = Entry(
+        [[_element("mean", G), Covariance("Gaussian.from_left(cov)", (n, n))] for G, (n, _) in GROUPS.items()],
+        call=Gaussian.from_left,
+    )
+    spec["Gaussian.from_ros"] = Entry(
+        [[Instance("mean", (SE3,)), Covariance("Gaussian.from_ros(cov)", (6, 6), flat=True)]],
+        call=Gaussian.from_ros,
+    )
+    operand = GaussianOperand("b", (Gaussian, SE3))
+    cross = OptionalArray("cross_cov", (6, 6))
+    calls = {
+        "compose": [operand, cross, Order("Gaussian.compose(order)")],
+        "between": [operand, cross],
+        "inverse": [],
+        "log": [],
+        "act": [GaussianPoints("Gaussian.act(points)", (3,)), OptionalArray("Gaussian.act(cov)", (3, 3), batch=True)],
+        "interpolate": [operand, Real("Gaussian.interpolate(t)")],
+        "mahalanobis": [GaussianPoints("Gaussian.mahalanobis(x)", (4, 4), element=SE3)],
+        "sample": [Size("Gaussian.sample(n)"), Rng("Gaussian.sample(rng)")],
+        "__reduce__": [],
+        "to_ros_covariance": [],
+    }
+    for m, args in calls.items():
+        spec[f"Gaussian.{m}"] = Entry(
+            [[me, *args]], call=lambda *a, m=m: getattr(Gaussian, m)(*a), self_first=True, passes_arguments=False
+        )
+    spec["Gaussian.__matmul__"] = _binop(Gaussian, operator.matmul, operand, "__matmul__")
+    for p in ("mean", "cov", "left_cov"):
+        spec[f"Gaussian.{p}"] = Entry(
+            [[me]], call=lambda x, p=p: getattr(Gaussian, p).fget(x), self_first=True, passes_arguments=False
+        )
+    spec["Gaussian.__repr__"] = Entry(
+        [[SplineSelf("self", (Gaussian,), uninitialized_ok=True)]],
+        call=repr,
+        self_first=True,
+        passes_arguments=False,
+        direct=_direct(Gaussian, "__repr__"),
+    )
     # SpatialInertia
     Inertia = chasles.SpatialInertia
     spec["SpatialInertia.__init__"] = Entry(
@@ -1854,6 +2004,21 @@ def _build_spec():
         "sim3_distance": [("a",) + S4, ("b",) + S4],
         "se23_distance": [("a",) + X5, ("b",) + X5],
     }
+    # the Gaussians' propagation (means and covariances)
+    for prefix, mean, d in (
+        ("so2", R2, 1),
+        ("se2", G3, 3),
+        ("so3", R3, 3),
+        ("se3", G4, 6),
+        ("sim3", S4, 7),
+        ("se23", X5, 9),
+    ):
+        cov = ((d, d), lambda d=d: 0.01 * np.eye(d))
+        for f in ("compose_cov", "between_cov"):
+            arrays[f"{prefix}_{f}"] = [("a",) + mean, ("cov_a",) + cov, ("b",) + mean, ("cov_b",) + cov]
+        arrays[f"{prefix}_inverse_cov"] = [("a",) + mean, ("cov_a",) + cov]
+        for f, (x, y) in (("compose", "ab"), ("between", "ab"), ("rminus", "gh")):
+            arrays[f"{prefix}_{f}_jacobians"] = [(x,) + mean, (y,) + mean]
     for name, ops in arrays.items():
         spec[name] = _array_function(name, ops)
     spec["so3_from_quat"] = _array_function("so3_from_quat", [("quat", (4,), quat)], kw=("scalar_first",))

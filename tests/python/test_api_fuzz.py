@@ -230,22 +230,23 @@ def check(name, signature_index, args, i):
             assert got == want, f"{name}: {arg.label} = {show(args[i])}: {got} != canonical {want}"
             if shape_rule is not None:
                 batch, dtype = shape_rule
-                result = call(*args)
-                assert result.shape[: len(batch)] == batch and result.dtype == dtype, (
-                    result.shape,
-                    batch,
-                )
-                if isinstance(result, np.generic):
-                    # a 0-d result is a numpy scalar, as numpy's ufuncs
-                    # (np.linalg.det) give: nothing to write or share
-                    assert result.shape == () and batch == ()
-                    return
-                # a fresh, writeable array, laid out as numpy's order="K"
-                # does: C-contiguous for C-contiguous operands
-                assert result.flags.writeable
-                assert not any(isinstance(a, np.ndarray) and np.shares_memory(result, a) for a in args)
-                if all(a.flags.c_contiguous for a in args if isinstance(a, np.ndarray)):
-                    assert result.flags.c_contiguous
+                out = call(*args)
+                for result in out if isinstance(out, tuple) else (out,):  # a gufunc of several results
+                    assert result.shape[: len(batch)] == batch and result.dtype == dtype, (
+                        result.shape,
+                        batch,
+                    )
+                    if isinstance(result, np.generic):
+                        # a 0-d result is a numpy scalar, as numpy's ufuncs
+                        # (np.linalg.det) give: nothing to write or share
+                        assert result.shape == () and batch == ()
+                        continue
+                    # a fresh, writeable array, laid out as numpy's order="K"
+                    # does: C-contiguous for C-contiguous operands
+                    assert result.flags.writeable
+                    assert not any(isinstance(a, np.ndarray) and np.shares_memory(result, a) for a in args)
+                    if all(a.flags.c_contiguous for a in args if isinstance(a, np.ndarray)):
+                        assert result.flags.c_contiguous
 
 
 def good_args(entry, k=0):

@@ -36,6 +36,7 @@ def test_the_pages_are_there():
     assert {p.name for p in DOCS.glob("*.md")} >= {
         "conventions.md",
         "coming_from.md",
+        "estimation.md",
         "formulas.md",
         "numerics.md",
         "performance.md",

@@ -578,3 +578,31 @@ def test_act_jacobian_array_functions_are_documented():
         assert "d(R p)/dp, is R itself" in doc or "d(g p)/dp, is the rotation block R" in doc
     assert chasles.so3_act_jacobian.signature == "(3,3),(3)->(3,3)"
     assert chasles.se3_act_jacobian.signature == "(4,4),(3)->(3,6)"
+
+
+@pytest.mark.parametrize("group", [chasles.SO2, chasles.SE2, chasles.SO3, chasles.SE3, chasles.Sim3, chasles.SE23])
+def test_batched_jacobians_are_the_objects_ones(group):
+    """<g>_compose_jacobians, <g>_between_jacobians, <g>_rminus_jacobians over a
+    batch: each pair's Jacobians are those of the object functions (to 1e-13:
+    the objects' matrices round anew), near them in float32; broadcasting as
+    numpy's."""
+    rng = np.random.default_rng(3)
+    d = np.atleast_2d(group.identity().adjoint()).shape[0]
+    tangent = (lambda: float(rng.normal())) if d == 1 else (lambda: rng.normal(size=d))
+    A = [group.exp(tangent()) for _ in range(4)]
+    B = [group.exp(tangent()) for _ in range(4)]
+    MA, MB = np.stack([np.asarray(x) for x in A]), np.stack([np.asarray(x) for x in B])
+    p = group.__name__.lower()
+    for f in ("compose", "between", "rminus"):
+        batched = getattr(chasles, f"{p}_{f}_jacobians")
+        one = getattr(chasles, f"{f}_jacobians")
+        ja, jb = batched(MA, MB)
+        assert ja.shape == jb.shape == (4, d, d)
+        for i in range(4):
+            wa, wb = one(A[i], B[i])
+            np.testing.assert_allclose(ja[i], np.atleast_2d(wa), rtol=0, atol=1e-13)
+            np.testing.assert_allclose(jb[i], np.atleast_2d(wb), rtol=0, atol=1e-13)
+        ja1, _ = batched(MA[0], MB)  # one a against the batch
+        assert ja1.shape == (4, d, d) and np.array_equal(ja1[2], batched(MA[0], MB[2])[0])
+        j32, _ = batched(MA.astype(np.float32), MB.astype(np.float32))
+        assert j32.dtype == np.float32 and np.abs(j32 - ja).max() < 1e-4 * max(1.0, np.abs(ja).max())

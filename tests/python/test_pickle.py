@@ -47,6 +47,7 @@ PROTOCOLS = list(range(pickle.HIGHEST_PROTOCOL + 1))
 
 # Classes that did not pickle in chasles 0.1.0 (or did not exist): no legacy pickles of them.
 NOT_PICKLED_IN_0_1_0 = {
+    "Gaussian",
     "SO3BSpline",
     "SE3BSpline",
     "SO2",
@@ -169,6 +170,13 @@ EXAMPLES = {
     "SE23BSpline": {
         "spline": lambda: chasles.SE23BSpline(1.0, 2.0, chasles.se23_exp(np.arange(36.0).reshape(4, 9) / 40))
     },
+    "Gaussian": {
+        "se3": lambda: chasles.Gaussian(
+            chasles.SE3.exp([1.0, 0.5, 0.0, 0.25, 0.0, 0.5]), np.diag(np.arange(1.0, 7.0)) / 8
+        ),
+        "so2": lambda: chasles.Gaussian(chasles.SO2.exp(0.75), [[0.125]]),
+        "sim3": lambda: chasles.Gaussian(chasles.Sim3.exp(np.arange(7.0) / 8), np.eye(7) / 4),
+    },
 }
 
 # States made invalid in the ways the constructors check, beyond the NaN of
@@ -257,6 +265,7 @@ TAMPERED = {
     "SE2Spline": [("times that do not increase", _spline_times)],
     "Sim3Spline": [("times that do not increase", _spline_times)],
     "SE23Spline": [("times that do not increase", _spline_times)],
+    "Gaussian": [("a covariance that is not positive semidefinite", lambda args: (args[0], -np.asarray(args[1])))],
 }
 
 

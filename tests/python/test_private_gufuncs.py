@@ -1,5 +1,6 @@
 """The private gufuncs behind Chain's methods, its dynamics and inverse
-kinematics and the splines' evaluation: registered by the same mechanism as
+kinematics, the splines' evaluation and the Gaussians' propagation:
+registered by the same mechanism as
 the public array functions (bindings/ufunc.hpp), with a core dimension n
 bound at run time and several results. What numpy gives every gufunc (out=,
 broadcasting of every operand, casting to the float64 loop, errors for core
@@ -43,6 +44,29 @@ PRIVATE = {
     "_se3_bspline": ("(),(),(n,4,4),()->(4,4)", ["dddd->d"]),
     "_se3_bspline_rates": ("(),(),(n,4,4),()->(4,4),(6),(6)", ["dddd->ddd"]),
 }
+
+# Gaussian's kernels, on every group: (prefix, matrix size, tangent dimension, point size)
+for _p, _n, _d, _k in (
+    ("so2", 2, 1, 2),
+    ("se2", 3, 3, 2),
+    ("so3", 3, 3, 3),
+    ("se3", 4, 6, 3),
+    ("sim3", 4, 7, 3),
+    ("se23", 5, 9, 3),
+):
+    _M, _C = f"({_n},{_n})", f"({_d},{_d})"
+    PRIVATE.update(
+        {
+            f"_{_p}_compose_cov_cross": (f"{_M},{_C},{_M},{_C},{_C}->{_M},{_C}", ["ddddd->dd"]),
+            f"_{_p}_between_cov_cross": (f"{_M},{_C},{_M},{_C},{_C}->{_M},{_C}", ["ddddd->dd"]),
+            f"_{_p}_interpolate_cov": (f"{_M},{_C},{_M},{_C},()->{_M},{_C}", ["ddddd->dd"]),
+            f"_{_p}_act_cov": (f"{_M},{_C},({_k}),({_k},{_k})->({_k}),({_k},{_k})", ["dddd->dd"]),
+            f"_{_p}_log_cov": (f"{_M},{_C}->({_d}),{_C}", ["dd->dd"]),
+            f"_{_p}_left_cov": (f"{_M},{_C}->{_C}", ["dd->d"]),
+            f"_{_p}_mahalanobis": (f"{_M},{_C},{_M}->()", ["ddd->d"]),
+        }
+    )
+PRIVATE["_se3_compose_cov4"] = ("(4,4),(6,6),(4,4),(6,6)->(4,4),(6,6)", ["dddd->dd"])
 
 
 @pytest.mark.parametrize("name", sorted(PRIVATE))
