@@ -10,7 +10,8 @@ Two layers over the same C++ kernels:
 - array functions for batches: ``so3_exp``, ``se3_log``, ``se3_compose``,
   ... (and the methods of ``Chain``);
 - ``Gaussian(mean, cov)``: uncertainty on any of the groups, propagated
-  through their operations (docs/estimation.md).
+  through their operations; ``PoseGraph``, ``read_g2o``: pose graphs solved
+  with the analytic Jacobians (docs/estimation.md).
 
 The array functions are numpy generalized ufuncs over the C++ kernels, each
 with a core signature, ``so3_exp`` ``(3)->(3,3)``, ``se3_compose``
@@ -202,6 +203,7 @@ from chasles._core import (
 )
 from chasles._gaussian import Gaussian
 from chasles._mean import se2_mean, se3_mean, se23_mean, sim3_mean, so2_mean, so3_mean
+from chasles._pose_graph import PoseGraph, pose_graph_grid, pose_graph_sphere, read_g2o, write_g2o
 from chasles._random import (
     se2_gaussian,
     se2_random,
@@ -227,6 +229,7 @@ __all__ = [
     "SO3",
     "Chain",
     "Gaussian",
+    "PoseGraph",
     "SE2BSpline",
     "SE2Spline",
     "SE3BSpline",
@@ -258,6 +261,9 @@ __all__ = [
     "log_jacobian",
     "lplus",
     "lplus_jacobians",
+    "pose_graph_grid",
+    "pose_graph_sphere",
+    "read_g2o",
     "rminus",
     "rminus_jacobians",
     "rplus",
@@ -393,6 +399,7 @@ __all__ = [
     "so3_random",
     "so3_rminus_jacobians",
     "so3_vee",
+    "write_g2o",
 ]
 
 _threads._read_environment()

@@ -1025,6 +1025,30 @@ class GaussianPoints(Arg):
         return finite_or_refused(a, self.label)
 
 
+@dataclass
+class G2oPath(Anything):
+    """A g2o file's path: a str or a pathlib.Path (written with `text` for
+    the reader, a fresh one for the writer); anything else a TypeError."""
+
+    text: Any = None
+
+    def good(self):
+        import pathlib
+        import tempfile
+
+        path = pathlib.Path(tempfile.mkdtemp()) / "graph.g2o"
+        if self.text is not None:
+            path.write_text(self.text)
+        return str(path)
+
+    def judge(self, value):
+        import pathlib
+
+        if isinstance(value, (str, pathlib.Path)):
+            return None  # a file of the system: no model
+        return Refused(TypeError, (self.label, "str"))
+
+
 class Order(Arg):
     """Gaussian.compose's order: the int 1 or 4 (4 for a Gaussian on SE3)."""
 
@@ -1087,6 +1111,7 @@ GOOD = {  # a fresh valid object of each class
     chasles.Sim3BSpline: lambda: chasles.Sim3BSpline(0.0, 0.5, spline_control(chasles.Sim3)),
     chasles.SE23BSpline: lambda: chasles.SE23BSpline(0.0, 0.5, spline_control(chasles.SE23)),
     chasles.Gaussian: lambda: chasles.Gaussian(GOOD[chasles.SE3](), 0.01 * np.eye(6)),
+    chasles.PoseGraph: lambda: chasles.pose_graph_grid(20, 4, seed=1)[0],
     chasles.SpatialInertia: lambda: chasles.SpatialInertia(
         2.0, [0.1, 0.2, 0.3], [[0.1, 0.01, 0.0], [0.01, 0.2, 0.0], [0.0, 0.0, 0.25]]
     ),
@@ -1340,6 +1365,24 @@ def _setstate(cls, state):
     x = cls.__new__(cls)
     x.__setstate__(state)
     return x
+
+
+def _in_a_fresh_directory(call):
+    """`call` run in a new temporary directory (a relative path the fuzzing
+    passes is written there, not into the tree the tests run from)."""
+    import os
+    import tempfile
+
+    def wrapped(*a):
+        here = os.getcwd()
+        with tempfile.TemporaryDirectory() as directory:
+            os.chdir(directory)
+            try:
+                return call(*a)
+            finally:
+                os.chdir(here)
+
+    return wrapped
 
 
 def _gimbal_lock_allowed(call):
@@ -1871,6 +1914,51 @@ def _build_spec():
         passes_arguments=False,
         direct=_direct(Gaussian, "__repr__"),
     )
+    # pose graphs (the g2o reader's refusals: test_pose_graph.py)
+    graph = GOOD[chasles.PoseGraph]()
+    spec["PoseGraph.__init__"] = Entry(
+        [
+            [
+                Anything("group", "se2"),
+                Anything("ids", graph.ids),
+                Anything("poses", graph.poses),
+                Anything("edges", graph.edges),
+                Anything("measurements", graph.measurements),
+                Anything("information", graph.information),
+            ]
+        ],
+        call=chasles.PoseGraph,
+    )
+    pg = SplineSelf("self", (chasles.PoseGraph,))
+    for m, args in {
+        "with_poses": [Anything("poses", graph.poses)],
+        "residuals": [],
+        "chi2": [],
+        "solve": [Anything("max_iterations", 20), Anything("tolerance", 1e-10)],
+        "__reduce__": [],
+    }.items():
+        spec[f"PoseGraph.{m}"] = Entry(
+            [[pg, *args]],
+            call=lambda *a, m=m: getattr(chasles.PoseGraph, m)(*a),
+            self_first=True,
+            passes_arguments=False,
+        )
+    spec["PoseGraph.__repr__"] = Entry(
+        [[SplineSelf("self", (chasles.PoseGraph,), uninitialized_ok=True)]],
+        call=repr,
+        self_first=True,
+        passes_arguments=False,
+        direct=_direct(chasles.PoseGraph, "__repr__"),
+    )
+    g2o = f"VERTEX_SE2 0 0 0 0\nVERTEX_SE2 1 1 0 0\nEDGE_SE2 0 1 1 0 0 {' '.join(['1', '0', '0', '1', '0', '1'])}\n"
+    spec["read_g2o"] = Entry([[G2oPath("read_g2o(path)", text=g2o)]], call=chasles.read_g2o, extra_errors=(OSError,))
+    spec["write_g2o"] = Entry(
+        [[G2oPath("write_g2o(path)", None), Anything("graph", graph)]],
+        call=_in_a_fresh_directory(chasles.write_g2o),
+        extra_errors=(OSError,),
+    )
+    spec["pose_graph_sphere"] = Entry([[Anything("rings", 3), Anything("per_ring", 4)]], call=chasles.pose_graph_sphere)
+    spec["pose_graph_grid"] = Entry([[Anything("poses", 30), Anything("size", 5)]], call=chasles.pose_graph_grid)
     # SpatialInertia
     Inertia = chasles.SpatialInertia
     spec["SpatialInertia.__init__"] = Entry(

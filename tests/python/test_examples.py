@@ -16,6 +16,7 @@ EXPECTED = {
     "arm_kinematics.py": "10000 configurations: the tool stays between 0.100 and 0.700 m",
     "average_and_spline.py": "the spline passes through the means: worst",
     "poses_and_frames.py": "as a twist xi = (v, w):",
+    "pose_graph.py": "chi2 of the true poses:",
     "robot_arm.py": "peak torque within the effort limits of every joint: True",
     "twist_from_trajectory.py": "worst error over the trajectory:",
     "urdf_arm.py": "1000 configurations: forward kinematics within",

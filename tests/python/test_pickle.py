@@ -48,6 +48,7 @@ PROTOCOLS = list(range(pickle.HIGHEST_PROTOCOL + 1))
 # Classes that did not pickle in chasles 0.1.0 (or did not exist): no legacy pickles of them.
 NOT_PICKLED_IN_0_1_0 = {
     "Gaussian",
+    "PoseGraph",
     "SO3BSpline",
     "SE3BSpline",
     "SO2",
@@ -170,6 +171,7 @@ EXAMPLES = {
     "SE23BSpline": {
         "spline": lambda: chasles.SE23BSpline(1.0, 2.0, chasles.se23_exp(np.arange(36.0).reshape(4, 9) / 40))
     },
+    "PoseGraph": {"grid": lambda: chasles.pose_graph_grid(12, 3, seed=4)[0]},
     "Gaussian": {
         "se3": lambda: chasles.Gaussian(
             chasles.SE3.exp([1.0, 0.5, 0.0, 0.25, 0.0, 0.5]), np.diag(np.arange(1.0, 7.0)) / 8
@@ -265,6 +267,7 @@ TAMPERED = {
     "SE2Spline": [("times that do not increase", _spline_times)],
     "Sim3Spline": [("times that do not increase", _spline_times)],
     "SE23Spline": [("times that do not increase", _spline_times)],
+    "PoseGraph": [("a group that is not one", lambda args: ("so3",) + tuple(args[1:]))],
     "Gaussian": [("a covariance that is not positive semidefinite", lambda args: (args[0], -np.asarray(args[1])))],
 }
 
