@@ -17,6 +17,7 @@ EXPECTED = {
     "average_and_spline.py": "the spline passes through the means: worst",
     "poses_and_frames.py": "as a twist xi = (v, w):",
     "pose_graph.py": "chi2 of the true poses:",
+    "imu_propagation.py": "the invariant EKF's prediction matches Monte Carlo",
     "robot_arm.py": "peak torque within the effort limits of every joint: True",
     "twist_from_trajectory.py": "worst error over the trajectory:",
     "urdf_arm.py": "1000 configurations: forward kinematics within",
