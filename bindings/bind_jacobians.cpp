@@ -434,16 +434,15 @@ void def_pair_jacobians(py::module_& m, const char* what, const char* params, co
       m, name.c_str(), params, ufunc::array_doc(doc.c_str()), ufunc::strided([](const auto& a, const auto& b) noexcept {
         using G = Rebind<Group, ufunc::ScalarOf<decltype(a)>>;
         const G ga = G::from_matrix_unchecked(a), gb = G::from_matrix_unchecked(b);
-        if constexpr (F == Pair::compose) {
-          const auto j = chasles::compose_jacobians(ga, gb);
-          return std::make_tuple(j.lhs, j.rhs);
-        } else if constexpr (F == Pair::between) {
-          const auto j = chasles::between_jacobians(ga, gb);
-          return std::make_tuple(j.lhs, j.rhs);
-        } else {
-          const auto j = chasles::rminus_jacobians(ga, gb);
-          return std::make_tuple(j.lhs, j.rhs);
-        }
+        const auto j = [&] {
+          if constexpr (F == Pair::compose)
+            return chasles::compose_jacobians(ga, gb);
+          else if constexpr (F == Pair::between)
+            return chasles::between_jacobians(ga, gb);
+          else
+            return chasles::rminus_jacobians(ga, gb);
+        }();
+        return std::make_tuple(j.lhs, j.rhs);
       }));
 }
 

@@ -531,19 +531,6 @@ struct IsStrided : std::false_type {};
 template <typename Kernel>
 struct IsStrided<Strided<Kernel>> : std::true_type {};
 
-/// The loop of a strided kernel: run() without its layouts. Flattened as
-/// run() is: left to the compiler, se3_compose_cov took 174 ns per element
-/// instead of 121.
-template <typename P, typename T, typename Kernel, std::size_t... I>
-CHASLES_PY_FLATTEN void run_strided(char** args, ssize count, const ssize* steps, const Steps<P>& core, ssize n,
-                                    const Kernel& kernel, std::index_sequence<I...>) noexcept {
-  const auto outs = std::make_index_sequence<P::nout>();
-  for (ssize i = 0; i < count; ++i)
-    store_results<P, T, false>(
-        kernel(view<typename P::template At<I>, T, false>(args[I] + i * steps[I], core[I], n)...), args, i, steps, core,
-        n, outs);
-}
-
 /// The loop of a ufunc with a model (see def_ufunc): the model is made from
 /// the first K operands once per loop when they stay put (outer strides 0,
 /// as when a Chain method passes its own screws), else once per element;
@@ -644,7 +631,8 @@ void loop(char** args, const ssize* dims, const ssize* steps, void* data) noexce
       run_model<P, T>(at.data(), end - begin, steps, core, n, entry.model.make, entry.kernel,
                       std::make_index_sequence<K>(), shifted<K>(std::make_index_sequence<N - K>()));
     } else if constexpr (IsStrided<typename E::KernelType>::value) {
-      run_strided<P, T>(at.data(), end - begin, steps, core, n, entry.kernel, std::make_index_sequence<N>());
+      // run()'s strided layout with no operand held (Fixed = N), the one instantiation
+      run<P, T, false, N>(at.data(), end - begin, steps, core, n, entry.kernel, std::make_index_sequence<N>());
     } else if constexpr (IsCases<typename E::KernelType>::value) {
       dispatch_cases<P, T>(at.data(), end - begin, steps, core, n, entry.kernel, typename E::KernelType::Sequence());
     } else {

@@ -69,6 +69,13 @@ def _fn(group: str, name: str) -> Any:
     return getattr(_core, f"{group}_{name}")
 
 
+def _residuals(group: str, X: np.ndarray, i: np.ndarray, j: np.ndarray, Zinv: np.ndarray) -> tuple:
+    """(X_i^-1 X_j, e = log(Z^-1 X_i^-1 X_j)) of every edge (i, j), e of shape (E, d)."""
+    relative = _fn(group, "compose")(_fn(group, "inverse")(X[i]), X[j])
+    e = _fn(group, "log")(_fn(group, "compose")(Zinv, relative))
+    return relative, e.reshape(i.shape[0], _FORMATS[group][4])
+
+
 def _graph(self: Any, member: str) -> PoseGraph:
     """self, when it is a PoseGraph (TypeError otherwise, as a method of a bound class)."""
     if not isinstance(self, PoseGraph):
@@ -175,11 +182,8 @@ class PoseGraph(Value):
     def residuals(self) -> np.ndarray:
         """e_k = log(Z_k^-1 X_i^-1 X_j) of every edge, (E, d)."""
         _graph(self, "residuals")
-        X = self.poses
-        relative = _fn(self.group, "compose")(_fn(self.group, "inverse")(X[self.edges[:, 0]]), X[self.edges[:, 1]])
-        return _fn(self.group, "log")(
-            _fn(self.group, "compose")(_fn(self.group, "inverse")(self.measurements), relative)
-        )
+        Zinv = _fn(self.group, "inverse")(self.measurements)
+        return _residuals(self.group, self.poses, self.edges[:, 0], self.edges[:, 1], Zinv)[1]
 
     def chi2(self) -> float:
         """sum_k e_k^T Omega_k e_k (twice GTSAM's graph error)."""
@@ -239,9 +243,7 @@ class PoseGraph(Value):
         n = (V - 1) * d
 
         def linearize(X: np.ndarray) -> tuple[np.ndarray, Any]:
-            relative = _fn(self.group, "compose")(_fn(self.group, "inverse")(X[i]), X[j])
-            error = _fn(self.group, "compose")(Zinv, relative)
-            e = _fn(self.group, "log")(error).reshape(E, d)
+            relative, e = _residuals(self.group, X, i, j, Zinv)
             dlog, _ = _fn(self.group, "rminus_jacobians")(relative, self.measurements)
             Ja, Jb = _fn(self.group, "between_jacobians")(X[i], X[j])
             Ji, Jj = Lt @ dlog @ Ja, Lt @ dlog @ Jb
@@ -258,8 +260,7 @@ class PoseGraph(Value):
             return (Lt @ e[..., None])[..., 0].ravel(), J
 
         def cost(X: np.ndarray) -> float:
-            relative = _fn(self.group, "compose")(_fn(self.group, "inverse")(X[i]), X[j])
-            e = _fn(self.group, "log")(_fn(self.group, "compose")(Zinv, relative)).reshape(E, d)
+            e = _residuals(self.group, X, i, j, Zinv)[1]
             return float(np.einsum("ki,kij,kj->", e, self.information, e))
 
         X = self.poses.copy()
