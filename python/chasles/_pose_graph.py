@@ -332,7 +332,8 @@ def read_g2o(path: PathLike) -> PoseGraph:
 
     Raises:
         ValueError: a line that is not one of these (unknown tag, wrong count
-            of numbers, not a number, an edge to an unknown vertex, a repeated
+            of numbers, not a number or not finite, an id beyond 64 bits, a
+            quaternion of zero norm, an edge to an unknown vertex, a repeated
             vertex, both groups in one file), with its line number.
     """
     if not isinstance(path, (str, Path)):
@@ -362,6 +363,10 @@ def read_g2o(path: PathLike) -> PoseGraph:
             raise ValueError(f"read_g2o: line {number}: {e}") from None
         if not all(math.isfinite(x) for x in values):
             raise ValueError(f"read_g2o: line {number}: expected finite numbers")
+        if not all(-(2**63) <= v < 2**63 for v in ints):
+            raise ValueError(f"read_g2o: line {number}: a vertex id beyond 64 bits")
+        if kind == "se3" and not sum(q * q for q in values[3:7]) > 0:
+            raise ValueError(f"read_g2o: line {number}: a quaternion of zero norm")
         if tag == vertex_tag:
             if ints[0] in vertices:
                 raise ValueError(f"read_g2o: line {number}: vertex {ints[0]} is defined twice")

@@ -131,6 +131,8 @@ EDGE_SE2 10 20 1 0 1.5707963267948966 100 0 0 100 0 400
         ("VERTEX_SE2 1.5 0 0 0", "line 2: invalid literal for int"),
         ("VERTEX_SE2 0 0 0 0", "line 2: vertex 0 is defined twice"),
         ("VERTEX_SE2 1 0 nan 0", "line 2: expected finite numbers"),
+        ("VERTEX_SE2 1 0 1e400 0", "line 2: expected finite numbers"),
+        ("VERTEX_SE2 " + "9" * 400 + " 0 0 0", "line 2: a vertex id beyond 64 bits"),
         ("EDGE_SE2 0 7 1 0 0 1 0 0 1 0 1", "line 2: an edge to vertex 7, not defined"),
         ("VERTEX_SE3:QUAT 1 0 0 0 0 0 0 1", "line 2: a se3 line in a se2 graph"),
         ("EDGE_SE2 0 0 1 0 0 1 0 0 -1 0 1", "information): expected positive definite"),
@@ -140,6 +142,13 @@ def test_malformed_lines_are_refused_with_their_number(line, message, tmp_path):
     path = tmp_path / "bad.g2o"
     path.write_text("VERTEX_SE2 0 0 0 0\n" + line + "\n")
     with pytest.raises(ValueError, match=message.replace("(", r"\(").replace(")", r"\)")):
+        chasles.read_g2o(path)
+
+
+def test_a_quaternion_of_zero_norm_is_refused(tmp_path):
+    path = tmp_path / "bad.g2o"
+    path.write_text("VERTEX_SE3:QUAT 0 0 0 0 0 0 0 1\nVERTEX_SE3:QUAT 1 1 2 3 0 0 0 0\n")
+    with pytest.raises(ValueError, match="line 2: a quaternion of zero norm"):
         chasles.read_g2o(path)
 
 
