@@ -127,16 +127,6 @@ inline Eigen::Matrix<S, 6, 1> lie_bracket(const SE3<S>* /*tag*/, const Eigen::Ma
   return Twist<S>(a).bracket(Twist<S>(b)).vector();
 }
 
-/// The real value of a scalar (the value of an autodiff scalar), to pick a
-/// segment: a comparison and an integer, never differentiated.
-template <typename Scalar>
-inline RealOf<Scalar> real_value(const Scalar& x) noexcept {
-  if constexpr (std::is_arithmetic<Scalar>::value)
-    return x;
-  else
-    return x.value();
-}
-
 }  // namespace detail
 
 /// The cubic B-spline segment over the four control elements first[0..3]

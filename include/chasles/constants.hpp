@@ -5,15 +5,43 @@
 // detail/series.hpp and the checked constructors read them from here.
 #pragma once
 
+#include <type_traits>
+
 #include <Eigen/Core>
 
 namespace chasles {
 
 /// The floating-point type under a Scalar: float for float, double for double
 /// and for automatic-differentiation scalars over double
-/// (`Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>`).
+/// (`Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>`, whose
+/// `NumTraits::Literal` is double). A scalar type whose `Literal` is itself
+/// names its real type by specializing RealType (chasles/ceres.hpp does
+/// for `ceres::Jet`).
 template <typename Scalar>
-using RealOf = typename Eigen::NumTraits<Scalar>::Literal;
+struct RealType {
+  using type = typename Eigen::NumTraits<Scalar>::Literal;
+  /// x as its real type: x itself, or an autodiff scalar's value (of
+  /// autodiff scalars of autodiff scalars too: the splines differentiate a
+  /// Jacobian once more, spline.hpp).
+  static type value(const Scalar& x) noexcept {
+    if constexpr (std::is_floating_point<Scalar>::value) {
+      return x;
+    } else {
+      return RealType<std::decay_t<decltype(x.value())>>::value(x.value());
+    }
+  }
+};
+template <typename Scalar>
+using RealOf = typename RealType<Scalar>::type;
+
+namespace detail {
+/// The real value of a scalar (the value of an autodiff scalar): for a
+/// comparison or a branch, never differentiated.
+template <typename Scalar>
+inline RealOf<Scalar> real_value(const Scalar& x) noexcept {
+  return RealType<Scalar>::value(x);
+}
+}  // namespace detail
 
 /// Thresholds for one real type. Only float, double and long double are
 /// defined: a new real type must state its own numbers here.

@@ -88,7 +88,7 @@ class SE2 {
   /// (vx, vy) from the last column, w from the antisymmetric part of the
   /// top-left block; the bottom row is not read.
   static Tangent vee(const Matrix3& X) noexcept {
-    return Tangent(X(0, 2), X(1, 2), Scalar(0.5) * X(1, 0) - Scalar(0.5) * X(0, 1));
+    return Tangent(X(0, 2), X(1, 2), detail::half_difference(X(1, 0), X(0, 1)));
   }
   /// ad_xi = [[0, -w, vy], [w, 0, -vx], [0, 0, 0]]: ad_a b = [a, b].
   static Matrix3 ad(const Tangent& xi) noexcept {

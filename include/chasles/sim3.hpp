@@ -253,11 +253,11 @@ class Sim3 {
   /// (exactly a when the three are equal: vee(hat(xi)) == xi); the bottom
   /// row is not read.
   static Tangent vee(const Matrix4& X) noexcept {
-    const Scalar half(0.5);
+    using detail::half_difference;
     const Scalar a = X(0, 0);
     Tangent xi;
-    xi << X(0, 3), X(1, 3), X(2, 3), half * X(2, 1) - half * X(1, 2), half * X(0, 2) - half * X(2, 0),
-        half * X(1, 0) - half * X(0, 1), a + ((X(1, 1) - a) + (X(2, 2) - a)) / Scalar(3);
+    xi << X(0, 3), X(1, 3), X(2, 3), half_difference(X(2, 1), X(1, 2)), half_difference(X(0, 2), X(2, 0)),
+        half_difference(X(1, 0), X(0, 1)), a + ((X(1, 1) - a) + (X(2, 2) - a)) / Scalar(3);
     return xi;
   }
   /// ad_xi = [[ [w] + sigma I, [v], -v ], [0, [w], 0], [0, 0, 0]], so that
@@ -501,7 +501,7 @@ class Sim3 {
     // Q and q are linear in v: computed for v / 2^m, |v / 2^m|_max <= 1,
     // and scaled back by 2^m (exact), so that |v| adds no doublings.
     Real vmax(0);
-    for (int i = 0; i < 3; ++i) vmax = abs(real_of(xi[i])) > vmax ? abs(real_of(xi[i])) : vmax;
+    for (int i = 0; i < 3; ++i) vmax = abs(detail::real_value(xi[i])) > vmax ? abs(detail::real_value(xi[i])) : vmax;
     int vexp = 0;
     if (vmax > Real(1)) std::frexp(vmax, &vexp);
     Tangent xs = xi;
@@ -511,7 +511,7 @@ class Sim3 {
     Real norm(0);
     for (int j = 0; j < 7; ++j) {
       Real c(0);
-      for (int i = 0; i < 7; ++i) c += abs(real_of(X(i, j)));
+      for (int i = 0; i < 7; ++i) c += abs(detail::real_value(X(i, j)));
       if (c > norm) norm = c;
     }
     int halvings = 0;
@@ -546,17 +546,6 @@ class Sim3 {
     out.template block<3, 3>(3, 3) = Ji;
     out(6, 6) = Scalar(1);
     return out;
-  }
-  /// The real value of a Scalar (its value for autodiff scalars, of autodiff
-  /// scalars of autodiff scalars too: the splines differentiate a Jacobian
-  /// once more, spline.hpp).
-  template <typename T>
-  static RealOf<T> real_of(const T& x) noexcept {
-    if constexpr (std::is_floating_point<T>::value) {
-      return x;
-    } else {
-      return real_of(x.value());
-    }
   }
 
   Rotation R_;

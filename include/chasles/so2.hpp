@@ -136,7 +136,7 @@ class SO2 {
     return W;
   }
   /// vee reads the antisymmetric part: (W(1, 0) - W(0, 1)) / 2.
-  static Tangent vee(const Matrix2& W) noexcept { return Tangent(Scalar(0.5) * W(1, 0) - Scalar(0.5) * W(0, 1)); }
+  static Tangent vee(const Matrix2& W) noexcept { return Tangent(detail::half_difference(W(1, 0), W(0, 1))); }
   /// ad(theta) = 0: SO(2) is commutative.
   static AdjointMatrix ad(const Tangent& /*theta*/) noexcept { return AdjointMatrix::Zero(); }
 

@@ -81,8 +81,9 @@ class SO3 {
   /// vee([w]) = w. Reads the antisymmetric part (W - W^T)/2, so a matrix that
   /// is not exactly skew gives the w of its nearest skew matrix.
   static Vector3 vee(const Matrix3& W) noexcept {
-    const Scalar half(0.5);
-    return Vector3(half * W(2, 1) - half * W(1, 2), half * W(0, 2) - half * W(2, 0), half * W(1, 0) - half * W(0, 1));
+    using detail::half_difference;
+    return Vector3(half_difference(W(2, 1), W(1, 2)), half_difference(W(0, 2), W(2, 0)),
+                   half_difference(W(1, 0), W(0, 1)));
   }
 
   /// Adjoint of the algebra: ad(w) = [w] (3x3), so ad(a) b = [a, b].

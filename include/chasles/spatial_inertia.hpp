@@ -155,13 +155,13 @@ class SpatialInertia {
   /// no allocation).
   bool is_physical(const RealOf<Scalar>& tolerance = ThresholdsOf<Scalar>::inertia_tolerance) const noexcept {
     using std::isfinite;
-    const RealOf<Scalar> m = value(m_);
+    const RealOf<Scalar> m = detail::real_value(m_);
     if (!(m > 0) || !isfinite(m)) return false;
     Eigen::Matrix<RealOf<Scalar>, 3, 3> I;
     for (int i = 0; i < 3; ++i) {
-      if (!isfinite(value(c_[i]))) return false;
+      if (!isfinite(detail::real_value(c_[i]))) return false;
       for (int j = 0; j < 3; ++j) {
-        I(i, j) = value(I_(i, j));
+        I(i, j) = detail::real_value(I_(i, j));
         if (!isfinite(I(i, j))) return false;
       }
     }
@@ -189,23 +189,17 @@ class SpatialInertia {
   bool is_approx(const SpatialInertia& other, const RealOf<Scalar>& tol) const noexcept {
     using std::abs;
     using std::max;
-    const RealOf<Scalar> scale = max({RealOf<Scalar>(1), value(abs(m_)), value(abs(other.m_)),
-                                      value(c_.cwiseAbs().maxCoeff()), value(other.c_.cwiseAbs().maxCoeff()),
-                                      value(I_.cwiseAbs().maxCoeff()), value(other.I_.cwiseAbs().maxCoeff())});
-    const RealOf<Scalar> diff = max({value(abs(m_ - other.m_)), value((c_ - other.c_).cwiseAbs().maxCoeff()),
-                                     value((I_ - other.I_).cwiseAbs().maxCoeff())});
+    const RealOf<Scalar> scale =
+        max({RealOf<Scalar>(1), detail::real_value(abs(m_)), detail::real_value(abs(other.m_)),
+             detail::real_value(c_.cwiseAbs().maxCoeff()), detail::real_value(other.c_.cwiseAbs().maxCoeff()),
+             detail::real_value(I_.cwiseAbs().maxCoeff()), detail::real_value(other.I_.cwiseAbs().maxCoeff())});
+    const RealOf<Scalar> diff =
+        max({detail::real_value(abs(m_ - other.m_)), detail::real_value((c_ - other.c_).cwiseAbs().maxCoeff()),
+             detail::real_value((I_ - other.I_).cwiseAbs().maxCoeff())});
     return diff <= tol * scale;
   }
 
  private:
-  /// The real value of a Scalar (the value of an autodiff scalar).
-  static RealOf<Scalar> value(const Scalar& x) noexcept {
-    if constexpr (std::is_same_v<Scalar, RealOf<Scalar>>)
-      return x;
-    else
-      return x.value();
-  }
-
   Scalar m_;
   Vector3 c_;
   Matrix3 I_;

@@ -2,7 +2,9 @@
 // vectors (up to 1e300 and past the overflow of |w|^2), log of arbitrary
 // finite matrices (zero, huge and tiny entries, reflections, singular),
 // quaternions of arbitrary matrices, from_quaternion of zero, tiny and
-// huge quaternions, projections, and screws of zero (and large) twists.
+// huge quaternions, projections, and screws of zero (and large) twists;
+// and vee(hat(x)) == x exactly, for every group and scalar, at the smallest
+// subnormal and at the largest finite numbers.
 // Only inputs whose true result is representable are used (for SE3 exp,
 // |V v| <= |v|, so v is kept at or below 1e300).
 #include <cmath>
@@ -191,6 +193,39 @@ void so3_exp_finite() {
   }
   expect_none(f, std::string("SO3::exp ") + type_name<T>());
 }
+/// vee(hat(x)) == x bit for bit with entries of +-the smallest subnormal,
+/// +-the largest finite number, 1 and 0, at every position.
+template <typename G>
+void vee_of_hat_is_exact() {
+  using S = typename G::Scalar;
+  using T = typename G::Tangent;
+  const S values[] = {std::numeric_limits<S>::denorm_min(),
+                      -std::numeric_limits<S>::denorm_min(),
+                      std::numeric_limits<S>::max(),
+                      -std::numeric_limits<S>::max(),
+                      S(1),
+                      S(0)};
+  for (int i = 0; i < G::DoF; ++i)
+    for (const S v : values) {
+      T x = T::Constant(S(0.5));
+      x[i] = v;
+      const T back = G::vee(G::hat(x));
+      for (int k = 0; k < G::DoF; ++k)
+        EXPECT_TRUE(back[k] <= x[k] && back[k] >= x[k]) << type_name<S>() << " entry " << i << " = " << v;
+    }
+}
+
+TEST(Finite, VeeOfHatIsExact) {
+  vee_of_hat_is_exact<chasles::SO2<double>>();
+  vee_of_hat_is_exact<chasles::SE2<double>>();
+  vee_of_hat_is_exact<chasles::SO3<double>>();
+  vee_of_hat_is_exact<chasles::SE3<double>>();
+  vee_of_hat_is_exact<chasles::Sim3<double>>();
+  vee_of_hat_is_exact<chasles::SE23<double>>();
+  vee_of_hat_is_exact<chasles::SO3<float>>();
+  vee_of_hat_is_exact<chasles::SE23<float>>();
+}
+
 TEST(Finite, SO3ExpDouble) { so3_exp_finite<double>(); }
 TEST(Finite, SO3ExpFloat) { so3_exp_finite<float>(); }
 

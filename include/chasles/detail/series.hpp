@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstddef>
 #include <type_traits>
+#include <utility>
 
 #include <Eigen/Core>
 
@@ -198,6 +199,12 @@ inline ExpCoefficients<Scalar> exp_coefficients(const Scalar& theta2) noexcept {
   return k;
 }
 
+/// Whether Scalar is Eigen's AutoDiffScalar (a value and its derivatives()).
+template <typename Scalar, typename = void>
+struct IsEigenAutoDiff : std::false_type {};
+template <typename Scalar>
+struct IsEigenAutoDiff<Scalar, std::void_t<decltype(std::declval<const Scalar&>().derivatives())>> : std::true_type {};
+
 /// atan2(y, x): std::atan2 for the real types. For an autodiff scalar (a
 /// value and derivatives: Eigen's AutoDiffScalar, nested or not), the
 /// atan2 of the values and the derivatives (y' x - y x') / (x^2 + y^2), in
@@ -205,11 +212,14 @@ inline ExpCoefficients<Scalar> exp_coefficients(const Scalar& theta2) noexcept {
 /// returns a dynamic-size derivative vector, a heap allocation on every
 /// call (tests/cpp/realtime/test_no_allocation.cpp found it in
 /// SO3::angle). Call it as arctan2<Scalar>(y, x): the arguments may be
-/// expressions of autodiff scalars.
+/// expressions of autodiff scalars. Another scalar type (ceres::Jet) uses
+/// its own atan2, found by argument-dependent lookup.
 template <typename Scalar>
 inline Scalar arctan2(const Scalar& y, const Scalar& x) noexcept {
   if constexpr (std::is_floating_point<Scalar>::value) {
     return std::atan2(y, x);
+  } else if constexpr (!IsEigenAutoDiff<Scalar>::value) {
+    return atan2(y, x);
   } else {
     using Value = std::decay_t<decltype(y.value())>;
     const Value& yv = y.value();
