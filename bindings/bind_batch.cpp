@@ -75,6 +75,19 @@ auto as_quat_kernel() {
   };
 }
 
+/// se3_from_quat's kernel: the pose of a quaternion (so3_from_quat's
+/// rotation, NaN for a zero quaternion) and a translation.
+template <bool ScalarFirst>
+auto pose_from_quat_kernel() {
+  return [](const auto& q, const auto& t) {
+    using T = ScalarOf<decltype(q)>;
+    Eigen::Matrix<T, 4, 4> g = Eigen::Matrix<T, 4, 4>::Identity();
+    g.template topLeftCorner<3, 3>() = from_quat_kernel<ScalarFirst>()(q);
+    g.template topRightCorner<3, 1>() = t;
+    return g;
+  };
+}
+
 const char* const kFromQuatDoc = R"(Rotation matrices of quaternions, as scipy's Rotation.from_quat.
 
 Quaternions of any nonzero norm are normalized. A zero or non-finite
@@ -86,6 +99,20 @@ Args:
 
 Returns:
     numpy.ndarray of shape (..., 3, 3): the rotation matrices.)";
+
+const char* const kPoseFromQuatDoc =
+    R"(Poses of quaternions and translations, as scipy's RigidTransform.from_components.
+
+The rotation is so3_from_quat's (any nonzero norm normalized, a zero or
+non-finite quaternion gives NaN). The private ufunc behind
+chasles.se3_from_quat for one quaternion order.
+
+Args:
+    quat: array_like of shape (..., 4): quaternions.
+    translation: array_like of shape (..., 3).
+
+Returns:
+    numpy.ndarray of shape (..., 4, 4): the poses.)";
 
 const char* const kAsQuatDoc = R"(Unit quaternions of rotation matrices, as scipy's Rotation.as_quat.
 
@@ -616,6 +643,10 @@ void bind_so3_batch(py::module_& m) {
 
 void bind_se3_batch(py::module_& m) {
   bind_group_batch<SE3>(m);
+  def_ufunc<Core<4, 4>(Core<4>, Core<3>)>(m, "_se3_from_quat_xyzw", "quat, translation", array_doc(kPoseFromQuatDoc),
+                                          pose_from_quat_kernel<false>());
+  def_ufunc<Core<4, 4>(Core<4>, Core<3>)>(m, "_se3_from_quat_wxyz", "quat, translation", array_doc(kPoseFromQuatDoc),
+                                          pose_from_quat_kernel<true>());
   def_ufunc<Core<6, 6>(Core<4, 4>)>(
       m, "se3_adjoint", "g", array_doc(R"(Adjoint matrices: Ad_g = [[R, [p] R], [0, R]] (6x6).
 

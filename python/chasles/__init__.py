@@ -25,8 +25,8 @@ dtype by calling the function on arrays of size 1, which a fixed core size
 refuses): ``dask.array.apply_gufunc(f, f.signature, x, output_dtypes=...)``
 maps an array function over the chunks, lazily.
 
-``so3_from_quat`` and ``so3_as_quat`` take ``scalar_first``, which a ufunc
-cannot: they are Python functions that pick one of two ufuncs and pass the
+``so3_from_quat``, ``so3_as_quat`` and ``se3_from_quat`` take
+``scalar_first``, which a ufunc cannot: they are Python functions that pick one of two ufuncs and pass the
 other keywords on. So are ``so3_from_euler`` / ``so3_as_euler`` (an Euler
 sequence such as ``"xyz"`` or ``"ZYX"``, ``degrees=``) and ``so3_from_rpy`` /
 ``so3_as_rpy`` (URDF's roll, pitch, yaw).
@@ -59,6 +59,7 @@ checked and drawn into a PNG.
 from chasles import _threads
 from chasles._align import se3_align, sim3_align, so3_align
 from chasles._arrays import (
+    se3_from_quat,
     so3_as_euler,
     so3_as_quat,
     so3_as_rpy,
@@ -300,6 +301,7 @@ __all__ = [
     "se3_compose_jacobians",
     "se3_distance",
     "se3_exp",
+    "se3_from_quat",
     "se3_gaussian",
     "se3_hat",
     "se3_interpolate",

@@ -39,6 +39,38 @@ def so3_from_quat(quat: ArrayLike, /, *, scalar_first: bool = False, **kwargs: A
     return ufunc(quat, **kwargs)
 
 
+def se3_from_quat(
+    quat: ArrayLike, translation: ArrayLike, /, *, scalar_first: bool = False, **kwargs: Any
+) -> np.ndarray:
+    """Poses of quaternions and translations, as scipy's ``RigidTransform.from_components``.
+
+    The rotations are ``so3_from_quat``'s: quaternions of any nonzero norm
+    are normalized; a zero or non-finite quaternion gives a rotation block of
+    NaN. ``quat`` and ``translation`` broadcast against each other, as the
+    other array functions' operands do.
+
+    Args:
+        quat: array_like of shape (..., 4): quaternions, scalar-last
+            (x, y, z, w) by default, as scipy.
+        translation: array_like of shape (..., 3).
+        scalar_first: if True, ``quat`` is read as (w, x, y, z).
+        **kwargs: passed to the ufunc (``out=``, ``dtype=``, ...).
+
+    Returns:
+        numpy.ndarray of shape (..., 4, 4): the poses [[R, t], [0, 1]].
+
+    Example:
+        >>> import chasles
+        >>> chasles.se3_from_quat([[0.0, 0.0, 1.0, 0.0]], [1.0, 2.0, 3.0])[0]
+        array([[-1.,  0.,  0.,  1.],
+               [ 0., -1.,  0.,  2.],
+               [ 0.,  0.,  1.,  3.],
+               [ 0.,  0.,  0.,  1.]])
+    """
+    ufunc = _core._se3_from_quat_wxyz if scalar_first else _core._se3_from_quat_xyzw
+    return ufunc(quat, translation, **kwargs)
+
+
 def so3_as_quat(R: ArrayLike, /, *, scalar_first: bool = False, **kwargs: Any) -> np.ndarray:
     """Unit quaternions of rotation matrices, as scipy's ``Rotation.as_quat``.
 

@@ -4834,6 +4834,8 @@ _se3_compose_cov4: numpy.ufunc
 _se3_compose_cov_cross: numpy.ufunc
 _se3_cov_from_ros: numpy.ufunc
 _se3_cov_to_ros: numpy.ufunc
+_se3_from_quat_wxyz: numpy.ufunc
+_se3_from_quat_xyzw: numpy.ufunc
 _se3_interpolate_cov: numpy.ufunc
 _se3_left_cov: numpy.ufunc
 _se3_log_cov: numpy.ufunc

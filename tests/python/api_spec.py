@@ -2111,6 +2111,9 @@ def _build_spec():
         spec[name] = _array_function(name, ops)
     spec["so3_from_quat"] = _array_function("so3_from_quat", [("quat", (4,), quat)], kw=("scalar_first",))
     spec["so3_as_quat"] = _array_function("so3_as_quat", [("R",) + R3], kw=("scalar_first",))
+    spec["se3_from_quat"] = _array_function(
+        "se3_from_quat", [("quat", (4,), quat), ("translation",) + v3], kw=("scalar_first",)
+    )
 
     # the threads of the array functions' loops
     spec["set_num_threads"] = Entry([[ThreadCount("set_num_threads(n)")]], call=chasles.set_num_threads)

@@ -114,6 +114,7 @@ FUNCS = {
     "se3_normalize": (("pose",), (4, 4)),
     "se3_hat": (("twist",), (4, 4)),
     "se3_vee": (("twistmat",), (6,)),
+    "se3_from_quat": (("quat", "point"), (4, 4)),
 }
 NAMES = sorted(FUNCS)
 CORE_NDIM = {"rot": 2, "pose": 2, "skew": 2, "twistmat": 2, "t": 0}
@@ -234,6 +235,27 @@ def test_quaternions_match_scipy_in_both_orders():
     np.testing.assert_allclose(got, sign * ref, atol=2e-15)
     np.testing.assert_allclose(np.linalg.norm(got, axis=1), 1.0, rtol=2e-16 * 4)
     np.testing.assert_array_equal(chasles.so3_as_quat(R, scalar_first=True), got[:, [3, 0, 1, 2]])
+
+
+def test_poses_of_quaternions_and_translations_match_scipy():
+    from scipy.spatial.transform import RigidTransform
+
+    rng = np.random.default_rng(7)
+    q, t = rng.normal(size=(100, 4)), rng.normal(size=(100, 3))
+    want = RigidTransform.from_components(t, Rotation.from_quat(q)).as_matrix()
+    np.testing.assert_allclose(chasles.se3_from_quat(q, t), want, atol=2e-15)
+    np.testing.assert_array_equal(
+        chasles.se3_from_quat(q[:, [3, 0, 1, 2]], t, scalar_first=True), chasles.se3_from_quat(q, t)
+    )
+    # rotation block: so3_from_quat's, bit for bit; broadcasting: one translation for every quaternion
+    g = chasles.se3_from_quat(q, t[0])
+    np.testing.assert_array_equal(g[:, :3, :3], chasles.so3_from_quat(q))
+    np.testing.assert_array_equal(g[:, :3, 3], np.broadcast_to(t[0], (100, 3)))
+    np.testing.assert_array_equal(g[:, 3], np.broadcast_to([0.0, 0.0, 0.0, 1.0], (100, 4)))
+    bad = chasles.se3_from_quat([[0.0, 0, 0, 0], [0, 0, 0, 1]], [1.0, 2, 3])
+    assert np.all(np.isnan(bad[0, :3, :3])) and np.array_equal(
+        bad[1], chasles.se3_from_quat([0, 0, 0, 1.0], [1.0, 2, 3])
+    )
 
 
 def test_zero_or_non_finite_quaternion_gives_nan():

@@ -54,7 +54,7 @@ def test_the_array_functions_are_all_here():
         "sim3_align",
     }
     public = sorted(n for n in chasles.__all__ if n.startswith(prefixes) and n not in not_ufuncs)
-    assert ARRAY_FUNCTIONS == public and len(public) == 109
+    assert ARRAY_FUNCTIONS == public and len(public) == 110
 
 
 def as_bytes(result) -> bytes:
