@@ -24,6 +24,7 @@
 //   _so3_spline_rates, _se3_spline_rates    (n),(n,D,D),(n,3 DoF),()->(D,D),(DoF),(DoF)  and its rates
 //   _so3_bspline, _se3_bspline              (),(),(n,D,D),()->(D,D)                      (t0, dt, control, t)
 //   _so3_bspline_rates, _se3_bspline_rates  (),(),(n,D,D),()->(D,D),(DoF),(DoF)
+//   _so3_bspline_jacobians, ...             (),(),(n,D,D),()->(D,D),(4 DoF^2),()     and d/d(control), segment
 //
 // with D = 3, DoF = 3 for SO(3) and D = 4, DoF = 6 for SE(3); the rates are the
 // body velocity and the body acceleration.
@@ -254,6 +255,23 @@ struct BSplineView {
     const chasles::BSplinePoint<Group> p = chasles::cubic_bspline_segment_derivatives(four.data(), at.u, spacing);
     return {p.value.matrix(), p.velocity, p.acceleration};
   }
+  /// The element at t, its Jacobians with respect to the four control
+  /// elements of t's segment, flat (entry (k DoF + r) DoF + c is row r,
+  /// column c of the k-th: a C-order (4, DoF, DoF) array), and the index of
+  /// the segment's first control element (as a float).
+  using Flat = Eigen::Matrix<double, 4 * Group::DoF * Group::DoF, 1>;
+  std::tuple<Matrix<Group>, Flat, double> jacobians(double t) const noexcept {
+    if (!valid()) return {Matrix<Group>::Constant(not_a_number), Flat::Constant(not_a_number), not_a_number};
+    std::array<Group, 4> four;
+    const chasles::BSplineTime<double> at = locate(t, four);
+    const chasles::BSplineSegmentJacobians<Group> J = chasles::cubic_bspline_segment_jacobians(four.data(), at.u);
+    constexpr int d = Group::DoF;
+    Flat flat;
+    for (int k = 0; k < 4; ++k)
+      for (int r = 0; r < d; ++r)
+        for (int c = 0; c < d; ++c) flat[(k * d + r) * d + c] = J.control[k](r, c);
+    return {J.value.matrix(), flat, static_cast<double>(at.segment)};
+  }
 };
 
 /// Registers the gufuncs `name` (the element at t) and `name`_rates (the
@@ -371,14 +389,24 @@ void bind_one(py::module_& m) {
          " constructor's ValueError / TypeError. A private function of chasles." + bcls +
          " (python/chasles/_bspline.py).")
             .c_str());
-  def_gufuncs<Group, Core<>, Core<>, Core<n, D, D>>(
-      m, bspline.c_str(), "start_time, spacing, control, t",
+  const auto make_bspline = [](double start_time, double spacing, const auto& control) {
+    return BSplineView<Group, std::decay_t<decltype(control)>>{start_time, spacing, control};
+  };
+  const std::string bspline_operands =
       "\n\nOperands (float64): start_time (), spacing () > 0, control (n, " + d + ", " + d +
-          "), n >= 4 (NaN results otherwise), t (), clamped to [start_time, end_time]. A private ufunc of chasles." +
-          bcls + ".",
-      [](double start_time, double spacing, const auto& control) {
-        return BSplineView<Group, std::decay_t<decltype(control)>>{start_time, spacing, control};
-      });
+      "), n >= 4 (NaN results otherwise), t (), clamped to [start_time, end_time]. A private ufunc of chasles." + bcls +
+      ".";
+  def_gufuncs<Group, Core<>, Core<>, Core<n, D, D>>(m, bspline.c_str(), "start_time, spacing, control, t",
+                                                    bspline_operands, make_bspline);
+  static const std::string jacobians = bspline + "_jacobians";
+  ufunc::def_ufunc<std::tuple<Core<D, D>, Core<4 * DoF * DoF>, Core<>>(Core<>, Core<>, Core<n, D, D>, Core<>),
+                   ufunc::Float64>(
+      m, jacobians.c_str(), "start_time, spacing, control, t",
+      "The spline's element at t, its Jacobians with respect to the four control elements of t's segment (right "
+      "perturbations; flat: reshape to (4, DoF, DoF)) and the index of the segment's first control element (a "
+      "float), for " +
+          bcls + ".fit." + bspline_operands,
+      ufunc::model<3>(make_bspline), [](const auto& spline, double t) noexcept { return spline.jacobians(t); });
 }
 
 }  // namespace

@@ -146,6 +146,52 @@ inline auto cubic_bspline_segment(Iterator first,
   return X;
 }
 
+/// A point of a segment and its Jacobians with respect to the segment's four
+/// control elements, in the right-local convention of lie_group.hpp:
+/// X(u; X_k exp(e)) = X(u) exp(control[k] e + o(e)).
+template <typename Group>
+struct BSplineSegmentJacobians {
+  Group value;
+  typename Group::AdjointMatrix control[4];
+};
+
+/// The segment at u (as cubic_bspline_segment) and its Jacobians with
+/// respect to first[0..3] (Sommer et al. 2020, section 4.3, on the right):
+/// with B_j = Bt_j(u), A_j = exp(B_j d_j) and the suffixes S_j = A_{j+1}
+/// ... A_3 (S_3 = I), X = X_0 S_0 and
+///   dX/dd_j = Ad_{S_j^-1} J_r(B_j d_j) B_j,
+/// while d_j = log(X_{j-1}^-1 X_j) moves by J_r(d_j)^-1 with X_j and by
+/// -J_l(d_j)^-1 with X_{j-1} (rminus_jacobians), so
+///   control[0] = Ad_{S_0^-1} - dX/dd_1 J_l(d_1)^-1,
+///   control[k] = dX/dd_k J_r(d_k)^-1 - dX/dd_{k+1} J_l(d_{k+1})^-1,
+///   control[3] = dX/dd_3 J_r(d_3)^-1.
+/// Six exp/log and their Jacobians, no difference quotient; every group.
+template <typename Iterator>
+inline auto cubic_bspline_segment_jacobians(
+    Iterator first, const typename std::iterator_traits<Iterator>::value_type::Scalar& u) noexcept {
+  using Group = typename std::iterator_traits<Iterator>::value_type;
+  using Tangent = typename Group::Tangent;
+  using Matrix = typename Group::AdjointMatrix;
+  const CubicBSplineBasis<typename Group::Scalar> b = cubic_bspline_basis(u);
+  Tangent d[3];
+  Matrix dX[3];  // dX / dd_j
+  for (int j = 0; j < 3; ++j) d[j] = (first[j].inverse() * first[j + 1]).log();
+  Group S = Group::identity();  // S_j, built from the right
+  for (int j = 2; j >= 0; --j) {
+    const Tangent step = b.value[j] * d[j];
+    dX[j] = S.inverse().adjoint() * Group::right_jacobian(step) * b.value[j];
+    S = Group::exp(step) * S;
+  }
+  BSplineSegmentJacobians<Group> out;
+  out.value = first[0] * S;
+  out.control[0] = S.inverse().adjoint();
+  for (int j = 0; j < 3; ++j) {
+    out.control[j] -= dX[j] * Group::left_jacobian_inverse(d[j]);
+    out.control[j + 1] = dX[j] * Group::right_jacobian_inverse(d[j]);
+  }
+  return out;
+}
+
 /// The same segment with its body velocity and body acceleration per unit
 /// of time, for knots `spacing` apart (u = (t - t_i) / spacing): the
 /// recursion of Sommer et al. (2020) written at the top of this file.

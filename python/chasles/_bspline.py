@@ -16,12 +16,15 @@ checks), copied the same way.
 
 from __future__ import annotations
 
-from typing import Any, NoReturn
+import math
+from typing import Any, NamedTuple, NoReturn, Optional
 
 import numpy as np
 from numpy.typing import ArrayLike
 
 from chasles import _core
+from chasles._least_squares import check_iterations, import_scipy, levenberg_marquardt
+from chasles._least_squares import splu as _splu
 from chasles._value import Value
 
 # What the docstrings say of each group: the matrix size, the tangent size,
@@ -361,6 +364,223 @@ def _properties(group: str) -> tuple[property, property, property, property, Any
     return property(start_time), property(spacing), property(end_time), property(control), __repr__
 
 
+class BSplineFit(NamedTuple):
+    """What ``<Group>BSpline.fit`` returns."""
+
+    spline: Any
+    """The fitted B-spline (of the class ``fit`` was called on)."""
+    residuals: np.ndarray
+    """(K, DoF): rminus(X(t_k), Z_k) = log(Z_k^-1 X(t_k)) of every pose at the fit."""
+    initial_chi2: float
+    """sum_k r_k^T Omega_k r_k at the start (control elements taken from the poses)."""
+    final_chi2: float
+    """The same at the fit."""
+    iterations: int
+    converged: bool
+
+
+def _fit(group: str) -> Any:
+    """The classmethod ``fit`` of the B-spline on `group`."""
+    n, dof = _GROUPS[group][:2]
+    name, lower = f"{group}BSpline", group.lower()
+    where = f"{name}.fit"
+
+    def fit(
+        cls: type,
+        times: ArrayLike,
+        poses: ArrayLike,
+        spacing: float,
+        *,
+        start_time: Optional[float] = None,
+        information: Optional[ArrayLike] = None,
+        max_iterations: int = 100,
+        tolerance: float = 1e-12,
+    ) -> BSplineFit:
+        max_iterations, tolerance = check_iterations(max_iterations, tolerance, where)
+        import_scipy(where)
+        import scipy.sparse as sparse
+
+        t = _real_array(times, f"{where}(times)")
+        if t.ndim != 1 or t.shape[0] < 4:
+            raise ValueError(f"{where}(times): expected shape (K,) with K >= 4, got {t.shape}")
+        k = t.shape[0]
+        Z = _real_array(poses, f"{where}(poses)")
+        if Z.shape != (k, n, n):
+            raise ValueError(f"{where}(poses): expected shape ({k}, {n}, {n}) (one pose per time), got {Z.shape}")
+        try:  # the constructor's check of the control elements, for the poses
+            Z = getattr(_core, f"_{lower}_bspline_new")(0.0, 1.0, Z)[2]
+        except (TypeError, ValueError) as e:
+            raise type(e)(str(e).replace(f"{name}(control)", f"{where}(poses)")) from None
+        t0 = float(t.min()) if start_time is None else _finite_real(start_time, f"{where}(start_time)")
+        dt = _finite_real(spacing, f"{where}(spacing)")
+        if not dt > 0:
+            raise ValueError(f"{where}(spacing): expected a positive spacing (> 0), got {dt!r}")
+        if t.min() < t0:
+            raise ValueError(f"{where}(times): expected times >= start_time = {t0!r}, got {float(t.min())!r}")
+        # the fewest control elements whose end_time = t0 + (count - 3) dt reaches the last time
+        # (a time within 1e-9 spacings past a knot counts as on it), at most one per pose
+        span = (float(t.max()) - t0) / dt
+        if not span + 3 <= k:
+            raise ValueError(
+                f"{where}: a spacing of {dt!r} over [{t0!r}, {float(t.max())!r}] needs {span + 3:.6g} control "
+                f"elements, more than the {k} poses determine: use a larger spacing"
+            )
+        count = max(4, math.ceil(span - 1e-9) + 3)
+        Lt = _information_factor(information, k, dof, where)
+        # Control element j sits near t0 + (j - 1) dt (X(t0 + i dt) is X_{i+1} to first order): the
+        # start takes the pose nearest that time. Every control element needs a pose in its support.
+        segment = np.minimum(np.floor((t - t0) / dt), count - 4).astype(np.int64)
+        touched = np.zeros(count, bool)
+        for m in range(4):
+            touched[segment + m] = True
+        if not touched.all():
+            j = int(np.argmin(touched))
+            raise ValueError(
+                f"{where}: no pose in the support of control element {j} (times "
+                f"[{t0 + (j - 3) * dt!r}, {t0 + (j + 1) * dt!r}]): use a larger spacing"
+            )
+        order = np.argsort(t, kind="stable")
+        ts = t[order]
+        knots = t0 + (np.arange(count) - 1.0) * dt
+        nearest = np.clip(np.searchsorted(ts, knots), 1, k - 1)
+        nearest -= (knots - ts[nearest - 1]) < (ts[nearest] - knots)
+        control = Z[order[nearest]]
+
+        undetermined = (
+            f"{where}: the poses do not determine every control element (too few poses in some segments): "
+            "use a larger spacing"
+        )
+        jacobians = getattr(_core, f"_{lower}_bspline_jacobians")
+        rminus_jacobians, log = getattr(_core, f"{lower}_rminus_jacobians"), getattr(_core, f"{lower}_log")
+        compose, exp = getattr(_core, f"{lower}_compose"), getattr(_core, f"{lower}_exp")
+        inverse_Z = getattr(_core, f"{lower}_inverse")(Z)
+        rows = np.broadcast_to(np.arange(k * dof).reshape(k, 1, dof, 1), (k, 4, dof, dof))
+        cols = (segment[:, None, None, None] + np.arange(4)[None, :, None, None]) * dof + np.arange(dof)
+        cols = np.broadcast_to(cols, (k, 4, dof, dof))
+
+        def residuals(X: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+            value, J, _ = jacobians(t0, dt, X, t)
+            return value, J, log(compose(inverse_Z, value)).reshape(k, dof)
+
+        def cost(X: np.ndarray) -> float:
+            r = residuals(X)[2]
+            return float(np.sum((Lt @ r[..., None]) ** 2))
+
+        def linearize(X: np.ndarray) -> tuple[np.ndarray, Any]:
+            value, J, r = residuals(X)
+            dlog = rminus_jacobians(value, Z)[0].reshape(k, 1, dof, dof)  # J_r(r)^-1
+            blocks = Lt[:, None] @ dlog @ J.reshape(k, 4, dof, dof)
+            matrix = sparse.coo_matrix((blocks.ravel(), (rows.ravel(), cols.ravel())), shape=(k * dof, count * dof))
+            return (Lt @ r[..., None]).ravel(), matrix.tocsr()
+
+        def step(X: np.ndarray, dx: np.ndarray) -> np.ndarray:
+            delta = dx.reshape(count, dof)
+            return compose(X, exp(delta[:, 0] if dof == 1 else delta))
+
+        X, initial, final, iterations, converged = levenberg_marquardt(
+            control,
+            cost,
+            linearize,
+            step,
+            max_iterations=max_iterations,
+            tolerance=tolerance,
+            singular=undetermined,
+        )
+        # Determined: J^T J at the fit regular (a pivot of its factorization
+        # not below 1e-12 of the largest; the damping made every step regular).
+        _, J = linearize(X)
+        pivots = np.abs(_splu((J.T @ J).tocsc(), undetermined).U.diagonal())
+        if not pivots.min() > 1e-12 * pivots.max():
+            raise ValueError(undetermined)
+        spline = cls(t0, dt, X)
+        return BSplineFit(spline, residuals(spline.control)[2], initial, final, iterations, converged)
+
+    fit.__name__ = "fit"
+    fit.__qualname__ = f"{name}.fit"
+    fit.__doc__ = f"""The B-spline of spacing ``spacing`` nearest to timestamped poses, by least squares.
+
+Minimizes chi2 = sum_k r_k^T Omega_k r_k over the control elements, with
+r_k = rminus(X(t_k), Z_k) = log(Z_k^-1 X(t_k)) ({dof} numbers each, in the
+order of the group's tangent): Levenberg-Marquardt with the analytic
+Jacobians of X(t) with respect to the four control elements of its segment
+(right perturbations), one sparse system per iteration (scipy). The spline
+starts at ``start_time`` (default: the first time) and has the fewest
+control elements whose end_time reaches the last time; they start at the
+poses nearest their knots.
+
+Args:
+    times: array_like (K,), K >= 4, the poses' times (any order), >= start_time.
+    poses: array_like (K, {n}, {n}), the measured elements Z_k.
+    spacing: the knot spacing (> 0).
+    start_time: the spline's start (default: min(times)).
+    information: None (the identity), ({dof}, {dof}) for every pose or
+        (K, {dof}, {dof}): Omega_k, symmetric positive definite (the inverse
+        of a pose's covariance in the right perturbation Z_k exp(e)).
+    max_iterations: at most this many iterations (default 100).
+    tolerance: stop when a step lowers chi2 by less than this, relative.
+
+Returns:
+    BSplineFit: (spline, residuals (K, {dof}), initial_chi2, final_chi2,
+    iterations, converged).
+
+Raises:
+    ValueError: wrong shapes, numbers that are not finite, a pose that is
+        not an element of the group, a spacing <= 0, times before
+        start_time, more control elements than poses, a control element
+        with no pose in its support or poses that do not determine the
+        control elements, an information matrix that is not symmetric
+        positive definite.
+    TypeError: arguments of the wrong type.
+"""
+    return classmethod(fit)
+
+
+def _real_array(a: Any, what: str) -> np.ndarray:
+    """A float64 array of finite real numbers (TypeError / ValueError naming `what`)."""
+    if a is None or isinstance(a, (str, bytes)):
+        raise TypeError(f"{what}: expected real numbers (float64), got {'None' if a is None else _type_name(a)}")
+    try:
+        m = np.asarray(a)
+    except Exception as e:
+        _reraise(e, f"{what}: expected an array-like of real numbers (float64), could not convert {_type_name(a)}")
+    if m.dtype.kind not in "biuf":
+        raise TypeError(f"{what}: expected real numbers (float64), got dtype {m.dtype}")
+    m = m.astype(np.float64)
+    if not np.all(np.isfinite(m)):
+        raise ValueError(f"{what}: expected finite numbers")
+    return m
+
+
+def _finite_real(x: Any, what: str) -> float:
+    if isinstance(x, (bool, np.bool_)) or not isinstance(x, (int, float, np.integer, np.floating)):
+        raise TypeError(f"{what}: expected a real number, got {_type_name(x)}")
+    try:
+        value = float(x)
+    except OverflowError:  # an int beyond float's range
+        value = math.inf
+    if not math.isfinite(value):
+        raise ValueError(f"{what}: expected a finite number, got {x!r}")
+    return value
+
+
+def _information_factor(information: Any, k: int, dof: int, where: str) -> np.ndarray:
+    """(K, dof, dof) L^T with L L^T = Omega_k (the identity for None)."""
+    if information is None:
+        return np.broadcast_to(np.eye(dof), (k, dof, dof))
+    omega = _real_array(information, f"{where}(information)")
+    if omega.shape not in ((dof, dof), (k, dof, dof)):
+        raise ValueError(
+            f"{where}(information): expected shape ({dof}, {dof}) or ({k}, {dof}, {dof}), got {omega.shape}"
+        )
+    if np.abs(omega - np.swapaxes(omega, -1, -2)).max() > 1e-9 * max(np.abs(omega).max(), np.finfo(float).tiny):
+        raise ValueError(f"{where}(information): expected symmetric matrices")
+    try:
+        L = np.linalg.cholesky(omega)
+    except np.linalg.LinAlgError:
+        raise ValueError(f"{where}(information): expected positive definite matrices") from None
+    return np.broadcast_to(np.swapaxes(L, -1, -2), (k, dof, dof))
+
+
 class SO3BSpline(_BSpline):
     __doc__ = _class_doc("SO3", "SO3BSpline")
     _name = "SO3BSpline"
@@ -372,6 +592,7 @@ class SO3BSpline(_BSpline):
     __init__.__doc__ = _init_doc("SO3")
     __call__, body_velocity, body_acceleration = _methods("SO3")
     start_time, spacing, end_time, control, __repr__ = _properties("SO3")
+    fit = _fit("SO3")
 
 
 class SE3BSpline(_BSpline):
@@ -385,6 +606,7 @@ class SE3BSpline(_BSpline):
     __init__.__doc__ = _init_doc("SE3")
     __call__, body_velocity, body_acceleration = _methods("SE3")
     start_time, spacing, end_time, control, __repr__ = _properties("SE3")
+    fit = _fit("SE3")
 
 
 def _make_bspline(group: str) -> type:
@@ -400,6 +622,7 @@ def _make_bspline(group: str) -> type:
     members.update(_name=name, _new=f"_{group.lower()}_bspline_new", __init__=__init__)
     members.update(zip(("__call__", "body_velocity", "body_acceleration"), _methods(group)))
     members.update(zip(("start_time", "spacing", "end_time", "control", "__repr__"), _properties(group)))
+    members["fit"] = _fit(group)
     return type(name, (_BSpline,), members)
 
 

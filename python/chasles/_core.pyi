@@ -4805,6 +4805,7 @@ _max_threads: int = 1024
 _se23_act_cov: numpy.ufunc
 _se23_between_cov_cross: numpy.ufunc
 _se23_bspline: numpy.ufunc
+_se23_bspline_jacobians: numpy.ufunc
 _se23_bspline_rates: numpy.ufunc
 _se23_compose_cov_cross: numpy.ufunc
 _se23_from_uniforms: numpy.ufunc
@@ -4817,6 +4818,7 @@ _se23_spline_rates: numpy.ufunc
 _se2_act_cov: numpy.ufunc
 _se2_between_cov_cross: numpy.ufunc
 _se2_bspline: numpy.ufunc
+_se2_bspline_jacobians: numpy.ufunc
 _se2_bspline_rates: numpy.ufunc
 _se2_compose_cov_cross: numpy.ufunc
 _se2_from_uniforms: numpy.ufunc
@@ -4829,6 +4831,7 @@ _se2_spline_rates: numpy.ufunc
 _se3_act_cov: numpy.ufunc
 _se3_between_cov_cross: numpy.ufunc
 _se3_bspline: numpy.ufunc
+_se3_bspline_jacobians: numpy.ufunc
 _se3_bspline_rates: numpy.ufunc
 _se3_compose_cov4: numpy.ufunc
 _se3_compose_cov_cross: numpy.ufunc
@@ -4845,6 +4848,7 @@ _se3_spline_rates: numpy.ufunc
 _sim3_act_cov: numpy.ufunc
 _sim3_between_cov_cross: numpy.ufunc
 _sim3_bspline: numpy.ufunc
+_sim3_bspline_jacobians: numpy.ufunc
 _sim3_bspline_rates: numpy.ufunc
 _sim3_compose_cov_cross: numpy.ufunc
 _sim3_from_uniforms: numpy.ufunc
@@ -4857,6 +4861,7 @@ _sim3_spline_rates: numpy.ufunc
 _so2_act_cov: numpy.ufunc
 _so2_between_cov_cross: numpy.ufunc
 _so2_bspline: numpy.ufunc
+_so2_bspline_jacobians: numpy.ufunc
 _so2_bspline_rates: numpy.ufunc
 _so2_compose_cov_cross: numpy.ufunc
 _so2_from_uniforms: numpy.ufunc
@@ -4875,6 +4880,7 @@ _so3_as_rpy: numpy.ufunc
 _so3_as_rpy_lock: numpy.ufunc
 _so3_between_cov_cross: numpy.ufunc
 _so3_bspline: numpy.ufunc
+_so3_bspline_jacobians: numpy.ufunc
 _so3_bspline_rates: numpy.ufunc
 _so3_compose_cov_cross: numpy.ufunc
 _so3_from_euler: numpy.ufunc

@@ -29,7 +29,8 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from chasles import _core
-from chasles._arrays import so3_as_quat, so3_from_euler, so3_from_quat
+from chasles._arrays import se3_from_quat, so3_as_quat, so3_from_euler
+from chasles._least_squares import check_iterations, import_scipy, levenberg_marquardt
 from chasles._random import _asarray
 from chasles._value import Value
 
@@ -45,16 +46,12 @@ _FORMATS = {
 
 def _poses_from_numbers(prefix: str, x: np.ndarray) -> np.ndarray:
     """(N, k, k) matrices from g2o's numbers: (x, y, z, qx, qy, qz, qw) or (x, y, theta)."""
-    n = _FORMATS[prefix][3]
-    out = np.zeros((x.shape[0], n, n))
     if prefix == "se3":
-        q = x[:, 3:7] / np.linalg.norm(x[:, 3:7], axis=1, keepdims=True)
-        out[:, :3, :3] = so3_from_quat(q)
-        out[:, :3, 3] = x[:, :3]
-    else:
-        out[:, :2, :2] = _core.so2_exp(x[:, 2])
-        out[:, :2, 2] = x[:, :2]
-    out[:, -1, -1] = 1.0
+        return se3_from_quat(x[:, 3:7], x[:, :3])
+    out = np.zeros((x.shape[0], 3, 3))
+    out[:, :2, :2] = _core.so2_exp(x[:, 2])
+    out[:, :2, 2] = x[:, :2]
+    out[:, 2, 2] = 1.0
     return out
 
 
@@ -215,19 +212,10 @@ class PoseGraph(Value):
             the iterations and whether it converged.
         """
         _graph(self, "solve")
-        if isinstance(max_iterations, (bool, np.bool_)) or not isinstance(max_iterations, (int, np.integer)):
-            raise TypeError(f"PoseGraph.solve(max_iterations): expected an int, got {type(max_iterations).__name__}")
-        if max_iterations < 1:
-            raise ValueError(f"PoseGraph.solve(max_iterations): expected an int >= 1, got {max_iterations}")
-        if isinstance(tolerance, (bool, np.bool_)) or not isinstance(tolerance, (int, float, np.integer, np.floating)):
-            raise TypeError(f"PoseGraph.solve(tolerance): expected a float, got {type(tolerance).__name__}")
-        if not tolerance >= 0:
-            raise ValueError(f"PoseGraph.solve(tolerance): expected a float >= 0, got {tolerance!r}")
-        try:
-            import scipy.sparse as sparse
-            import scipy.sparse.linalg as linalg
-        except ImportError:  # pragma: no cover - scipy is installed with the tests
-            raise ImportError("PoseGraph.solve needs scipy: pip install chasles[estimation]") from None
+        max_iterations, tolerance = check_iterations(max_iterations, tolerance, "PoseGraph.solve")
+        import_scipy("PoseGraph.solve")
+        import scipy.sparse as sparse
+
         _, _, _, _, d = _FORMATS[self.group]
         V, E = self.poses.shape[0], self.edges.shape[0]
         L = np.linalg.cholesky(self.information)  # Omega = L L^T: whitened e is L^T e
@@ -263,46 +251,24 @@ class PoseGraph(Value):
             e = _residuals(self.group, X, i, j, Zinv)[1]
             return float(np.einsum("ki,kij,kj->", e, self.information, e))
 
-        X = self.poses.copy()
-        chi2 = initial = cost(X)
+        def step(X: np.ndarray, dx: np.ndarray) -> np.ndarray:
+            moved = X.copy()  # the first pose stays
+            delta = dx.reshape(V - 1, d)
+            moved[1:] = _fn(self.group, "compose")(X[1:], _fn(self.group, "exp")(delta[:, 0] if d == 1 else delta))
+            return moved
+
         if V < 2 or E == 0:
-            return PoseGraphSolution(self.with_poses(X), initial, chi2, 0, True)
-        lam, converged, iterations = 1e-4, False, 0
-        r, J = linearize(X)
-        H, g = (J.T @ J).tocsc(), J.T @ r
-        while iterations < max_iterations:
-            iterations += 1
-            diag = H.diagonal()
-            # SuperLU in symmetric mode (the minimum degree ordering of H, no
-            # pivoting: H is positive definite): 0.13 s for sphere2500's
-            # 15000 unknowns, where spsolve's default (COLAMD, pivoting) takes 0.55 s.
-            damped = (H + sparse.diags(lam * np.maximum(diag, 1e-12))).tocsc()
-            try:
-                lu = linalg.splu(
-                    damped, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0, options={"SymmetricMode": True}
-                )
-            except RuntimeError:  # SuperLU: "Factor is exactly singular"
-                raise ValueError(
-                    "PoseGraph.solve: the normal equations are singular: is every pose tied to the first by edges?"
-                ) from None
-            step = lu.solve(-g)
-            trial = X.copy()
-            delta = step.reshape(V - 1, d)
-            trial[1:] = _fn(self.group, "compose")(X[1:], _fn(self.group, "exp")(delta[:, 0] if d == 1 else delta))
-            new = cost(trial)
-            if new < chi2:
-                decrease = (chi2 - new) / max(chi2, np.finfo(float).tiny)
-                X, chi2, lam = trial, new, max(lam / 10, 1e-12)
-                if decrease < tolerance:
-                    converged = True
-                    break
-                r, J = linearize(X)
-                H, g = (J.T @ J).tocsc(), J.T @ r
-            else:
-                lam *= 10
-                if lam > 1e12:
-                    converged = True  # no step lowers chi2: a minimum to working precision
-                    break
+            chi2 = cost(self.poses)
+            return PoseGraphSolution(self.with_poses(self.poses), chi2, chi2, 0, True)
+        X, initial, chi2, iterations, converged = levenberg_marquardt(
+            self.poses.copy(),
+            cost,
+            linearize,
+            step,
+            max_iterations=max_iterations,
+            tolerance=tolerance,
+            singular="PoseGraph.solve: the normal equations are singular: is every pose tied to the first by edges?",
+        )
         return PoseGraphSolution(self.with_poses(X), initial, chi2, iterations, converged)
 
 

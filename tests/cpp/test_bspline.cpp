@@ -12,6 +12,8 @@
 // - the body velocity and acceleration against central differences of the
 //   evaluated elements (typed, float and double) and against automatic
 //   differentiation through Eigen::AutoDiffScalar (time as the variable);
+// - the Jacobians of a segment's element with respect to its four control
+//   elements against central differences (long double);
 // - C2 at the knots, constant control, one-parameter subgroups (SO3 and
 //   SE3 screw motions), SE3 of pure rotations equal to SO3, and the time
 //   convention of the view (knots, clamping, NaN).
@@ -226,6 +228,44 @@ TYPED_TEST(BSpline, ElementMatchesTheExplicitFormulaInLongDouble) {
   // of eps (the control elements themselves carry their rounding: the
   // reference starts from the same rounded matrices).
   EXPECT_LE(worst, 64 * eps<S>()) << worst / eps<S>() << " eps";
+}
+
+/// The Jacobians of a segment's element with respect to its four control
+/// elements, against central differences of rminus(X(u; X_k exp(e)), X(u))
+/// on the long double group (step 1e-6: truncation and rounding near
+/// 1e-12), at u = 0, 0.37 and 1 of steps d_j about 1 rad.
+TYPED_TEST(BSpline, SegmentJacobiansMatchCentralDifferences) {
+  using G = TypeParam;
+  using S = typename G::Scalar;
+  using GL = typename chasles::detail::WithScalar<G, ld>::type;
+  using TL = typename GL::Tangent;
+  const auto X = random_control<G>(4, 1.0, 11);
+  std::vector<GL> XL;
+  for (const G& x : X) XL.push_back(x.template cast<ld>());
+  // 1e-9 in double (the differences' error is near 1e-12), 1e3 eps in float.
+  const ld tol = std::is_same<S, float>::value ? 1e3 * eps<S>() : 1e-9L;
+  for (const double u : {0.0, 0.37, 1.0}) {
+    const auto J = chasles::cubic_bspline_segment_jacobians(X.data(), S(u));
+    const auto value = GroupOf<G>::matrix(chasles::cubic_bspline_segment(X.data(), S(u)));
+    EXPECT_LE(max_diff(GroupOf<G>::matrix(J.value), value),
+              16 * eps<S>() * std::max<ld>(1, value.cwiseAbs().maxCoeff()));
+    const GL center = chasles::cubic_bspline_segment(XL.data(), ld(u));
+    for (int k = 0; k < 4; ++k) {
+      for (int i = 0; i < G::DoF; ++i) {
+        const ld h = 1e-6L;
+        TL e = TL::Zero();
+        e[i] = h;
+        std::vector<GL> plus = XL, minus = XL;
+        plus[k] = plus[k] * GL::exp(e);
+        minus[k] = minus[k] * GL::exp(TL(-e));
+        const TL fd = (chasles::rminus(chasles::cubic_bspline_segment(plus.data(), ld(u)), center) -
+                       chasles::rminus(chasles::cubic_bspline_segment(minus.data(), ld(u)), center)) /
+                      (2 * h);
+        EXPECT_LE(max_diff(J.control[k].col(i), fd), tol * std::max<ld>(1, fd.cwiseAbs().maxCoeff()))
+            << "u " << u << ", control " << k << ", axis " << i;
+      }
+    }
+  }
 }
 
 TYPED_TEST(BSpline, ConstantControlGivesAConstantWithZeroRates) {

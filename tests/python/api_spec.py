@@ -1870,6 +1870,11 @@ def _build_spec():
             passes_arguments=False,
             direct=_direct(cls, "__repr__"),
         )
+        times = np.linspace(0.0, 1.0, 8)
+        spec[f"{n}.fit"] = Entry(
+            [[Anything("times", times), Anything("poses", GOOD[cls]()(times)), Anything("spacing", 0.5)]],
+            call=cls.fit,
+        )
     # Gaussian (on SE3: its self; every group's mean in the constructor)
     Gaussian = chasles.Gaussian
     me = SplineSelf("self", (Gaussian,))
@@ -2398,7 +2403,7 @@ def callables() -> dict[str, Any]:
             for member, value in vars(obj).items():
                 if member in NOT_API or value is None:
                     continue
-                if callable(value) or isinstance(value, (property, staticmethod)):
+                if callable(value) or isinstance(value, (property, staticmethod, classmethod)):
                     out[f"{name}.{member}"] = value
         elif callable(obj):
             out[name] = obj
