@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Pose-graph solves: chasles' Python solve beside GTSAM's, on the same g2o files, in one run.
 
-    python bench/bench_pose_graph.py [--rounds 3] [--sphere 50 50] [--grid 3500 40]
+    python bench/bench_pose_graph.py [--rounds 3] [--sphere 50 50] [--grid 3500 40] [--cpp PATH]
 
 Makes the benchmark graphs (chasles.pose_graph_sphere: 2500 poses and 4949
 edges, as g2o's sphere2500; chasles.pose_graph_grid: 3500 planar poses, as
@@ -10,19 +10,24 @@ the Manhattan dataset), writes them as g2o files, and solves each with
 - chasles: ``chasles.read_g2o(path).solve()`` (Levenberg-Marquardt, the
   analytic Jacobians of every edge from the array functions, one sparse
   matrix, scipy's sparse LU), the first pose held fixed;
+- chasles in C++ (with --cpp PATH, the program of examples/cpp/pose_graph.cpp,
+  built when CMake finds Ceres): Ceres on chasles::CeresManifold and
+  chasles::BetweenCost, timed as a whole process (start, read, solve);
 - GTSAM (if importable): ``gtsam.readG2o(path, is3D)``, a prior of standard
   deviation 1e-9 on the first pose, LevenbergMarquardtOptimizer with the
   relative error tolerance 1e-12.
 
 Prints a markdown table: initial and final chi2 (chasles' chi2 = twice
 GTSAM's graph error), iterations, seconds (the best of --rounds rounds, the
-contenders alternating within each round), and the ratios chasles / GTSAM of
-the final chi2 and of the time.
+contenders alternating within each round), and the ratios to GTSAM of the
+final chi2 and of the time.
 """
 
 from __future__ import annotations
 
 import argparse
+import re
+import subprocess
 import tempfile
 import time
 from pathlib import Path
@@ -56,11 +61,18 @@ def solve_gtsam(path: Path, is3d: bool) -> tuple[float, float, int]:
     return 2 * graph.error(initial), 2 * graph.error(result), optimizer.iterations()
 
 
+def solve_cpp(program: Path, path: Path) -> tuple[float, float, int]:
+    out = subprocess.run([str(program), str(path)], capture_output=True, text=True, check=True).stdout
+    number = {k: re.search(rf"^{k}: (\S+)$", out, re.M).group(1) for k in ("initial chi2", "final chi2", "iterations")}
+    return float(number["initial chi2"]), float(number["final chi2"]), int(number["iterations"])
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--rounds", type=int, default=3)
     parser.add_argument("--sphere", type=int, nargs=2, default=(50, 50), metavar=("RINGS", "PER_RING"))
     parser.add_argument("--grid", type=int, nargs=2, default=(3500, 40), metavar=("POSES", "SIZE"))
+    parser.add_argument("--cpp", type=Path, help="the program example_pose_graph (examples/cpp/pose_graph.cpp)")
     args = parser.parse_args()
     version = getattr(gtsam, "__version__", "?") if gtsam else "not installed"
     print(f"chasles {chasles.__version__}, gtsam {version}, numpy {np.__version__}\n")
@@ -76,6 +88,8 @@ def main() -> None:
             chasles.write_g2o(path, graph)
             label = f"{name} ({graph.poses.shape[0]} poses, {graph.edges.shape[0]} edges)"
             contenders = {"chasles": lambda p=path: solve_chasles(p)}
+            if args.cpp is not None:
+                contenders["chasles C++ (Ceres)"] = lambda p=path: solve_cpp(args.cpp, p)
             if gtsam is not None:
                 contenders["gtsam"] = lambda p=path, d=is3d: solve_gtsam(p, d)
             best: dict[str, float] = dict.fromkeys(contenders, np.inf)
@@ -89,12 +103,14 @@ def main() -> None:
             for k, (initial, final, iterations) in outcome.items():
                 print(f"| {label} | {k} | {initial:.10g} | {final:.10g} | {iterations} | {best[k]:.3f} |")
             if gtsam is not None:
-                ratios.append((label, outcome["chasles"][1] / outcome["gtsam"][1], best["chasles"] / best["gtsam"]))
+                for k in contenders:
+                    if k != "gtsam":
+                        ratios.append((label, k, outcome[k][1] / outcome["gtsam"][1], best[k] / best["gtsam"]))
     if ratios:
-        print("\n| graph | final chi2, chasles / gtsam | time, chasles / gtsam |")
-        print("| --- | ---: | ---: |")
-        for label, chi2, seconds in ratios:
-            print(f"| {label} | {chi2:.12f} | {seconds:.2f} |")
+        print("\n| graph | solver | final chi2 / gtsam's | time / gtsam's |")
+        print("| --- | --- | ---: | ---: |")
+        for label, k, chi2, seconds in ratios:
+            print(f"| {label} | {k} | {chi2:.12f} | {seconds:.2f} |")
 
 
 if __name__ == "__main__":

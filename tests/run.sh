@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs the tests of chasles on a fresh Debian/Ubuntu machine: installs what
-# it needs (apt-get for Eigen, GoogleTest, Google Benchmark, urdfdom for the
-# C++ URDF loader, clang; pip for the Python side), then, by stage:
+# it needs (apt-get for Eigen, GoogleTest and GoogleMock, Google Benchmark,
+# urdfdom for the C++ URDF loader, Ceres for chasles/ceres.hpp, clang; pip
+# for the Python side), then, by stage:
 #   cpp        two C++ builds. With g++ at -O3 (build/tests): the real-time
 #              exercise in double (every operation) and each header alone
 #              under the strict flags, the allocation test, the examples,
@@ -105,7 +106,7 @@ apt_install() {
 apt_cpp() {
   local extra=()
   python3 -c "import venv, ensurepip" >/dev/null 2>&1 || extra+=(python3-venv)
-  apt_install libeigen3-dev libgtest-dev libbenchmark-dev liburdfdom-dev cmake g++ "${extra[@]}"
+  apt_install libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev liburdfdom-dev libceres-dev cmake g++ "${extra[@]}"
 }
 
 # The g++ build: what needs the optimizer of the compiler that builds the
@@ -183,6 +184,7 @@ stage_fuzz() {
 run_pytest() {
   (cd "$VENV" && OPENBLAS_NUM_THREADS=1 CHASLES_REQUIRE_URDF_DUMP=1 \
     CHASLES_URDF_DUMP="$BUILD_DIR/tests/cpp/chasles_urdf_dump" \
+    CHASLES_POSE_GRAPH_EXAMPLE="$BUILD_DIR/examples/example_pose_graph" \
     "$VENV/bin/python" -m pytest "$ROOT/tests/python" -p no:cacheprovider)
 }
 
@@ -217,10 +219,13 @@ stage_python() {
   # compares with Chain.from_urdf on the arms of example-robot-data (a Python
   # package); CHASLES_REQUIRE_URDF_DUMP=1 makes that cross-check fail, not skip,
   # when anything it needs is missing.
+  # CHASLES_POSE_GRAPH_EXAMPLE: the C++ pose-graph solve over Ceres
+  # (examples/cpp/pose_graph.cpp), which tests/python/test_pose_graph.py runs
+  # on the benchmark graphs beside the Python solve.
   if [ "$STAGE" = python ]; then
-    echo "== the C++ URDF loader's dump program, for the cross-check"
+    echo "== the C++ URDF loader's dump program and the C++ pose-graph example, for the cross-checks"
     configure_cpp
-    cmake --build "$BUILD_DIR" -j "$JOBS" --target chasles_urdf_dump
+    cmake --build "$BUILD_DIR" -j "$JOBS" --target chasles_urdf_dump example_pose_graph
   fi
   # One BLAS thread: the tests' small scipy/numpy products gain nothing from
   # more, and OpenBLAS threads spinning on a loaded 2-core machine made the

@@ -6,18 +6,31 @@ by central differences of chi2 (its gradient vanishes: no perturbation of a
 free pose lowers it); the statistics of the optimum (chi2 about the number
 of residuals minus unknowns, and below the truth's); the g2o text written
 and read back bit for bit. (GTSAM, where installed, reaches the same final
-chi2 on the same files: bench/bench_pose_graph.py.)
+chi2 on the same files: bench/bench_pose_graph.py.) The C++ solve over Ceres
+(examples/cpp/pose_graph.cpp: chasles::CeresManifold, chasles::BetweenCost),
+an independent solver, reaches the same minimum on the benchmark graphs and
+refuses the same malformed lines; tests/run.sh passes its program in
+CHASLES_POSE_GRAPH_EXAMPLE (unset, those tests skip).
 """
 
 from __future__ import annotations
 
 import copy
+import os
 import pickle
+import re
+import subprocess
 
 import numpy as np
 import pytest
 
 import chasles
+
+EXAMPLE = os.environ.get("CHASLES_POSE_GRAPH_EXAMPLE")
+needs_example = pytest.mark.skipif(
+    not EXAMPLE,
+    reason="CHASLES_POSE_GRAPH_EXAMPLE is unset (tests/run.sh sets it to examples/cpp/pose_graph.cpp's program)",
+)
 
 
 @pytest.fixture(scope="module")
@@ -122,27 +135,66 @@ EDGE_SE2 10 20 1 0 1.5707963267948966 100 0 0 100 0 400
     assert b.chi2() < 1e-25
 
 
-@pytest.mark.parametrize(
-    "line, message",
-    [
-        ("VERTEX_XYZ 0 1 2 3", "line 2: unknown tag 'VERTEX_XYZ'"),
-        ("VERTEX_SE2 1 0 0", "line 2: VERTEX_SE2 expects 4 values, got 3"),
-        ("VERTEX_SE2 1 0 zero 0", "line 2: could not convert"),
-        ("VERTEX_SE2 1.5 0 0 0", "line 2: invalid literal for int"),
-        ("VERTEX_SE2 0 0 0 0", "line 2: vertex 0 is defined twice"),
-        ("VERTEX_SE2 1 0 nan 0", "line 2: expected finite numbers"),
-        ("VERTEX_SE2 1 0 1e400 0", "line 2: expected finite numbers"),
-        ("VERTEX_SE2 " + "9" * 400 + " 0 0 0", "line 2: a vertex id beyond 64 bits"),
-        ("EDGE_SE2 0 7 1 0 0 1 0 0 1 0 1", "line 2: an edge to vertex 7, not defined"),
-        ("VERTEX_SE3:QUAT 1 0 0 0 0 0 0 1", "line 2: a se3 line in a se2 graph"),
-        ("EDGE_SE2 0 0 1 0 0 1 0 0 -1 0 1", "information): expected positive definite"),
-    ],
-)
+MALFORMED = [
+    ("VERTEX_XYZ 0 1 2 3", "line 2: unknown tag 'VERTEX_XYZ'"),
+    ("VERTEX_SE2 1 0 0", "line 2: VERTEX_SE2 expects 4 values, got 3"),
+    ("VERTEX_SE2 1 0 zero 0", "line 2: could not convert"),
+    ("VERTEX_SE2 1.5 0 0 0", "line 2: invalid literal for int"),
+    ("VERTEX_SE2 0 0 0 0", "line 2: vertex 0 is defined twice"),
+    ("VERTEX_SE2 1 0 nan 0", "line 2: expected finite numbers"),
+    ("VERTEX_SE2 1 0 1e400 0", "line 2: expected finite numbers"),
+    ("VERTEX_SE2 " + "9" * 400 + " 0 0 0", "line 2: a vertex id beyond 64 bits"),
+    ("EDGE_SE2 0 7 1 0 0 1 0 0 1 0 1", "line 2: an edge to vertex 7, not defined"),
+    ("VERTEX_SE3:QUAT 1 0 0 0 0 0 0 1", "line 2: a se3 line in a se2 graph"),
+    ("EDGE_SE2 0 0 1 0 0 1 0 0 -1 0 1", "information): expected positive definite"),
+]
+
+
+@pytest.mark.parametrize("line, message", MALFORMED)
 def test_malformed_lines_are_refused_with_their_number(line, message, tmp_path):
     path = tmp_path / "bad.g2o"
     path.write_text("VERTEX_SE2 0 0 0 0\n" + line + "\n")
     with pytest.raises(ValueError, match=message.replace("(", r"\(").replace(")", r"\)")):
         chasles.read_g2o(path)
+
+
+def run_example(*args):
+    assert os.access(EXAMPLE, os.X_OK), f"CHASLES_POSE_GRAPH_EXAMPLE={EXAMPLE!r} is not an executable program"
+    return subprocess.run([EXAMPLE, *map(str, args)], capture_output=True, text=True, timeout=120, check=False)
+
+
+@needs_example
+@pytest.mark.parametrize("which", ["sphere", "grid"])
+def test_the_cpp_ceres_solve_reaches_the_same_minimum(which, tmp_path):
+    graph, _ = chasles.pose_graph_sphere() if which == "sphere" else chasles.pose_graph_grid()
+    path, out = tmp_path / "graph.g2o", tmp_path / "solved.g2o"
+    chasles.write_g2o(path, graph)
+    r = run_example(path, "--out", out)
+    assert r.returncode == 0 and "all checks passed" in r.stdout, r.stdout + r.stderr
+    printed = {k: float(re.search(rf"^{k}: (\S+)$", r.stdout, re.M).group(1)) for k in ("initial chi2", "final chi2")}
+    python = graph.solve()
+    assert printed["initial chi2"] == pytest.approx(graph.chi2(), rel=1e-13)
+    assert printed["final chi2"] == pytest.approx(python.final_chi2, rel=1e-9)
+    solved = chasles.read_g2o(out)
+    assert solved.chi2() == pytest.approx(printed["final chi2"], rel=1e-12)
+    assert np.array_equal(solved.ids, graph.ids) and np.array_equal(solved.edges, graph.edges)
+    # The same poses, to what the stopping rule leaves free: a step that lowers
+    # chi2 by 1e-12 relative (1.5e-8 here) ends either solve, and the graph's
+    # softest modes (bending the sphere, 50 m across) move poses by ~1e-5 for it.
+    assert np.abs(solved.poses - python.graph.poses).max() < 1e-4
+
+
+@needs_example
+@pytest.mark.parametrize(
+    "first, line",
+    [("VERTEX_SE2 0 0 0 0", line) for line, _ in MALFORMED]
+    + [("VERTEX_SE3:QUAT 0 0 0 0 0 0 0 1", "VERTEX_SE3:QUAT 1 1 2 3 0 0 0 0")],
+)
+def test_the_cpp_example_refuses_malformed_lines_with_their_number(first, line, tmp_path):
+    path = tmp_path / "bad.g2o"
+    path.write_text(first + "\n" + line + "\n")
+    r = run_example(path)
+    assert r.returncode == 1 and f"{path}: line 2: " in r.stderr, r.stdout + r.stderr
 
 
 def test_a_quaternion_of_zero_norm_is_refused(tmp_path):
