@@ -14,8 +14,9 @@
 //   closure, first pose held) solved from a perturbed start to the ground
 //   truth that generated its measurements, with the analytic and with the
 //   autodiff cost.
-// - CubicBSplineCost<G>: the same two checks for a B-spline fitted to poses
-//   sampled from a known B-spline (its control elements are the optimum).
+// - CubicBSplineCost<G>: its Jacobians against autodiff, and a B-spline
+//   fitted to poses sampled from a known B-spline (its control elements are
+//   the optimum).
 #include <cmath>
 #include <memory>
 #include <random>
@@ -396,9 +397,11 @@ TYPED_TEST(CeresOfEveryGroup, CubicBSplineCostJacobiansMatchAutodiff) {
 
 /// Poses sampled without noise from a B-spline of 8 known control elements
 /// (spacing 0.5), fitted from control elements perturbed by 0.2: the fit is
-/// the known spline (zero cost, the same control elements).
+/// the known spline (zero cost, the same control elements). (The analytic
+/// cost only: CubicBSplineCostJacobiansMatchAutodiff compares it with the
+/// autodiff one, whose solve took 37 CPU-s for Sim3 in the sanitizer build.)
 template <typename G>
-void fit_known_bspline(bool use_autodiff) {
+void fit_known_bspline() {
   std::mt19937_64 gen(23);
   std::vector<G> truth{random_element<G>(gen, 1.0)};
   for (int i = 1; i < 8; ++i)
@@ -409,12 +412,12 @@ void fit_known_bspline(bool use_autodiff) {
   for (const G& g : truth) x.push_back(block(chasles::rplus(g, Tangent<G>(chasles_test::normal_tangent<G>(gen, 0.2)))));
   ceres::Problem problem;
   for (Vector& xi : x) problem.AddParameterBlock(xi.data(), Parameters<G>::size, new chasles::CeresManifold<G>);
-  for (int k = 0; k <= 100; ++k) {
-    const double t = t0 + k * (spline.end_time() - t0) / 100;
+  for (int k = 0; k <= 40; ++k) {
+    const double t = t0 + k * (spline.end_time() - t0) / 40;
     const chasles::BSplineTime<double> at = spline.locate(t);
     const auto i = static_cast<std::size_t>(at.segment);
-    problem.AddResidualBlock(bspline_cost(use_autodiff, at.u, spline(t), G::AdjointMatrix::Identity()), nullptr,
-                             x[i].data(), x[i + 1].data(), x[i + 2].data(), x[i + 3].data());
+    problem.AddResidualBlock(bspline_cost(false, at.u, spline(t), G::AdjointMatrix::Identity()), nullptr, x[i].data(),
+                             x[i + 1].data(), x[i + 2].data(), x[i + 3].data());
   }
   ceres::Solver::Options options;
   options.function_tolerance = options.gradient_tolerance = options.parameter_tolerance = 1e-16;
@@ -426,9 +429,6 @@ void fit_known_bspline(bool use_autodiff) {
         << "control " << i << ": " << summary.BriefReport();
 }
 
-TYPED_TEST(CeresOfEveryGroup, BSplineFitRecoversAKnownSpline) {
-  fit_known_bspline<TypeParam>(false);
-  fit_known_bspline<TypeParam>(true);
-}
+TYPED_TEST(CeresOfEveryGroup, BSplineFitRecoversAKnownSpline) { fit_known_bspline<TypeParam>(); }
 
 }  // namespace
