@@ -23,8 +23,9 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from chasles import _core
-from chasles._least_squares import check_iterations, import_scipy, levenberg_marquardt
+from chasles._least_squares import check_iterations, import_scipy, information_factor, levenberg_marquardt
 from chasles._least_squares import splu as _splu
+from chasles._random import _asarray
 from chasles._value import Value
 
 # What the docstrings say of each group: the matrix size, the tangent size,
@@ -537,15 +538,7 @@ Raises:
 
 def _real_array(a: Any, what: str) -> np.ndarray:
     """A float64 array of finite real numbers (TypeError / ValueError naming `what`)."""
-    if a is None or isinstance(a, (str, bytes)):
-        raise TypeError(f"{what}: expected real numbers (float64), got {'None' if a is None else _type_name(a)}")
-    try:
-        m = np.asarray(a)
-    except Exception as e:
-        _reraise(e, f"{what}: expected an array-like of real numbers (float64), could not convert {_type_name(a)}")
-    if m.dtype.kind not in "biuf":
-        raise TypeError(f"{what}: expected real numbers (float64), got dtype {m.dtype}")
-    m = m.astype(np.float64)
+    m = _asarray(a, what).astype(np.float64)
     if not np.all(np.isfinite(m)):
         raise ValueError(f"{what}: expected finite numbers")
     return m
@@ -572,12 +565,7 @@ def _information_factor(information: Any, k: int, dof: int, where: str) -> np.nd
         raise ValueError(
             f"{where}(information): expected shape ({dof}, {dof}) or ({k}, {dof}, {dof}), got {omega.shape}"
         )
-    if np.abs(omega - np.swapaxes(omega, -1, -2)).max() > 1e-9 * max(np.abs(omega).max(), np.finfo(float).tiny):
-        raise ValueError(f"{where}(information): expected symmetric matrices")
-    try:
-        L = np.linalg.cholesky(omega)
-    except np.linalg.LinAlgError:
-        raise ValueError(f"{where}(information): expected positive definite matrices") from None
+    L = information_factor(omega, f"{where}(information)")
     return np.broadcast_to(np.swapaxes(L, -1, -2), (k, dof, dof))
 
 

@@ -1,5 +1,5 @@
 """Levenberg-Marquardt over group elements, shared by ``PoseGraph.solve`` and
-the B-splines' ``fit``: the caller gives the cost (chi2), the whitened
+the B-splines' ``fit`` (with the check of their information matrices): the caller gives the cost (chi2), the whitened
 residuals and their sparse Jacobian at a state, and how a step moves the
 state (X_i <- X_i exp(dx_i), right-local as every Jacobian of the library).
 Each iteration solves the damped normal equations
@@ -78,6 +78,17 @@ def splu(H: Any, singular: str) -> Any:
         return linalg.splu(H, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0, options={"SymmetricMode": True})
     except RuntimeError:  # SuperLU: "Factor is exactly singular"
         raise ValueError(singular) from None
+
+
+def information_factor(omega: np.ndarray, what: str) -> np.ndarray:
+    """L with L L^T = Omega for each information matrix of omega (..., d, d),
+    or the ValueError of one that is not symmetric positive definite, naming `what`."""
+    if omega.size and np.abs(omega - np.swapaxes(omega, -1, -2)).max() > 1e-9 * np.abs(omega).max():
+        raise ValueError(f"{what}: expected symmetric matrices")
+    try:
+        return np.linalg.cholesky(omega)
+    except np.linalg.LinAlgError:
+        raise ValueError(f"{what}: expected positive definite matrices") from None
 
 
 def check_iterations(max_iterations: Any, tolerance: Any, where: str) -> tuple[int, float]:

@@ -30,7 +30,7 @@ from numpy.typing import ArrayLike
 
 from chasles import _core
 from chasles._arrays import se3_from_quat, so3_as_quat, so3_from_euler
-from chasles._least_squares import check_iterations, import_scipy, levenberg_marquardt
+from chasles._least_squares import check_iterations, import_scipy, information_factor, levenberg_marquardt
 from chasles._random import _asarray
 from chasles._value import Value
 
@@ -148,13 +148,7 @@ class PoseGraph(Value):
                 raise ValueError(f"PoseGraph({name}): expected finite numbers")
         if e and (arrays["edges"].min() < 0 or arrays["edges"].max() >= v):
             raise ValueError(f"PoseGraph(edges): expected indices into the {v} poses")
-        info = arrays["information"]
-        if e and (np.abs(info - np.swapaxes(info, 1, 2)).max() > 1e-9 * np.abs(info).max()):
-            raise ValueError("PoseGraph(information): expected symmetric matrices")
-        try:
-            np.linalg.cholesky(info)
-        except np.linalg.LinAlgError:
-            raise ValueError("PoseGraph(information): expected positive definite matrices") from None
+        information_factor(arrays["information"], "PoseGraph(information)")
         self.group = group
         for name, a in arrays.items():
             a.flags.writeable = False

@@ -92,40 +92,40 @@ Tangent<G> principal(Tangent<G> delta) {
   return delta;
 }
 
+/// Ceres's manifold checks at the element `at`, with a step delta and a
+/// y = at exp(e), delta and e of N(0, spread^2) coordinates (principal), y's
+/// quaternion on x's side (Plus writes that sign).
+template <typename G>
+void expect_manifold_invariants_at(const G& at, std::mt19937_64& gen, double spread) {
+  const chasles::CeresManifold<G> manifold;
+  constexpr double kTolerance = 1e-9;  // Ridders' derivatives agree to about 1e-11 here
+  const Vector x = block(at);
+  const Vector delta = principal<G>(chasles_test::normal_tangent<G>(gen, spread));
+  const Vector y = block(chasles::rplus(at, principal<G>(chasles_test::normal_tangent<G>(gen, spread))), &x);
+  using namespace ceres;  // the macro names ceres' matchers unqualified
+  EXPECT_THAT_MANIFOLD_INVARIANTS_HOLD(manifold, x, delta, y, kTolerance);
+}
+
 TYPED_TEST(CeresOfEveryGroup, ManifoldPassesCeresChecks) {
   using G = TypeParam;
   const chasles::CeresManifold<G> manifold;
   EXPECT_EQ(manifold.AmbientSize(), Parameters<G>::size);
   EXPECT_EQ(manifold.TangentSize(), G::DoF);
   std::mt19937_64 gen(7);
-  constexpr double kTolerance = 1e-9;  // Ridders' derivatives agree to about 1e-11 here
   for (int trial = 0; trial < 20; ++trial) {
-    const double spread = trial < 10 ? 0.5 : 1.5;  // steps past a radian in the second half
-    const Vector x = block(random_element<G>(gen, 1.0));
-    const Vector delta = principal<G>(chasles_test::normal_tangent<G>(gen, spread));
-    // y on x's side of the quaternion sphere: Plus writes that sign.
-    const Vector y = block(
-        chasles::rplus(Parameters<G>::read(x.data()), principal<G>(chasles_test::normal_tangent<G>(gen, spread))), &x);
-    using namespace ceres;  // the macro names ceres' matchers unqualified
-    EXPECT_THAT_MANIFOLD_INVARIANTS_HOLD(manifold, x, delta, y, kTolerance);
+    const G at = random_element<G>(gen, 1.0);
+    expect_manifold_invariants_at(at, gen, trial < 10 ? 0.5 : 1.5);  // steps past a radian in the second half
   }
 }
 
 TYPED_TEST(CeresOfEveryGroup, ManifoldNearAHalfTurn) {
   using G = TypeParam;
-  const chasles::CeresManifold<G> manifold;
   std::mt19937_64 gen(11);
-  constexpr double kTolerance = 1e-9;
   for (int trial = 0; trial < 5; ++trial) {
     Tangent<G> xi = chasles_test::normal_tangent<G>(gen, 0.3);
     xi.segment(rotation_start<G>(), rotation_size<G>()) *=
         (M_PI - 1e-6) / xi.segment(rotation_start<G>(), rotation_size<G>()).norm();
-    const Vector x = block(G::exp(xi));
-    const Vector delta = chasles_test::normal_tangent<G>(gen, 0.1);
-    const Vector y =
-        block(chasles::rplus(Parameters<G>::read(x.data()), Tangent<G>(chasles_test::normal_tangent<G>(gen, 0.1))), &x);
-    using namespace ceres;  // the macro names ceres' matchers unqualified
-    EXPECT_THAT_MANIFOLD_INVARIANTS_HOLD(manifold, x, delta, y, kTolerance);
+    expect_manifold_invariants_at(G::exp(xi), gen, 0.1);
   }
 }
 
