@@ -13,6 +13,7 @@
 #include "chasles/constants.hpp"
 #include "chasles/distance.hpp"
 #include "chasles/dynamics.hpp"
+#include "chasles/dynamics_derivatives.hpp"
 #include "chasles/euler.hpp"
 #include "chasles/gaussian.hpp"
 #include "chasles/inverse_kinematics.hpp"

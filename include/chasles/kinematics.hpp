@@ -124,21 +124,31 @@ struct NoLink {
 /// The type of a joint of a Chain: a revolute joint turns about its axis
 /// between position limits, a continuous one turns without limits (its
 /// limits are -inf and +inf), a prismatic one slides along its axis (URDF's
-/// "revolute", "continuous" and "prismatic").
-enum class JointType : unsigned char { revolute, continuous, prismatic };
+/// "revolute", "continuous" and "prismatic"), a helical one turns and
+/// slides along its axis together, h metres per radian (a screw of pitch
+/// h: (-w x q + h w, w); Pinocchio's helical joint; URDF has none).
+enum class JointType : unsigned char { revolute, continuous, prismatic, helical };
+
+/// What Chain::validate() asks of the norm of a joint's screw: unit (|w| = 1
+/// for a joint that turns, |v| = 1 for a prismatic one: the joint variable
+/// in radians or metres), or any nonzero norm k (the screw k S of a unit
+/// screw S: the joint turns k radians, or slides k metres, per unit of its
+/// variable; Modern Robotics' chapter 8 example has a screw of norm sqrt(2)).
+enum class ScrewNorms : unsigned char { unit, any };
 
 /// What Chain::validate() finds: the first problem, in this order, of the
 /// first joint that has one.
 enum class ChainStatus : unsigned char {
   ok,
-  /// a revolute or continuous joint whose angular part w is not a unit
-  /// vector (| |w| - 1 | > screw_tolerance)
+  /// a revolute, continuous or helical joint whose angular part w is not a
+  /// unit vector (| |w| - 1 | > screw_tolerance; ScrewNorms::unit)
   revolute_axis_not_unit,
-  /// a revolute or continuous joint of nonzero pitch: |w . v| > screw_tolerance (1 + |v|)
+  /// a revolute or continuous joint of nonzero pitch:
+  /// |w . v| > screw_tolerance |w| (|w| + |v|)
   revolute_pitch_not_zero,
-  /// a prismatic joint with a nonzero angular part (|w| > screw_tolerance)
+  /// a prismatic joint with a nonzero angular part (|w| > screw_tolerance |v|)
   prismatic_rotates,
-  /// a prismatic joint whose linear part is not a unit vector
+  /// a prismatic joint whose linear part is not a unit vector (ScrewNorms::unit)
   prismatic_axis_not_unit,
   /// lower > upper, a NaN limit, or a continuous joint with a finite limit
   position_limits_invalid,
@@ -149,6 +159,8 @@ enum class ChainStatus : unsigned char {
   /// a link inertia with a NaN or infinite mass, center of mass or
   /// rotational inertia, or a negative mass
   link_inertia_invalid,
+  /// a joint screw that is zero, or not finite (ScrewNorms::any)
+  screw_zero,
 };
 
 /// ChainStatus and the joint it is about (-1 for ok and gravity_not_finite;
@@ -230,8 +242,10 @@ class Chain {
   static constexpr int MaxJointsAtCompileTime = MaxJoints;
 
   /// From the space screws S (6 x n, columns (v, w)) and the home pose M:
-  /// joint types inferred (prismatic where w = 0, revolute elsewhere), no
-  /// limits (+-inf), identity base and tool, default gravity, massless links.
+  /// joint types inferred (prismatic where w = 0; helical where the pitch
+  /// is not zero, |w . v| > screw_tolerance |w| (|w| + |v|); revolute
+  /// elsewhere), no limits (+-inf), identity base and tool, default
+  /// gravity, massless links.
   template <typename Derived>
   Chain(const Eigen::MatrixBase<Derived>& space_screws, const Group& home) noexcept
       : S_(space_screws),
@@ -243,9 +257,13 @@ class Chain {
         effort_(JointVector::Constant(space_screws.cols(), infinity())),
         gravity_(default_gravity()) {
     types_.fill(JointType::revolute);
-    for (Eigen::Index i = 0; i < S_.cols(); ++i)
+    for (Eigen::Index i = 0; i < S_.cols(); ++i) {
+      const auto k = static_cast<std::size_t>(i);
       if (!(S_.col(i).template tail<3>().squaredNorm() > Scalar(0)))
-        types_[static_cast<std::size_t>(i)] = JointType::prismatic;
+        types_[k] = JointType::prismatic;
+      else if (!pitch_is_zero(S_.col(i)))
+        types_[k] = JointType::helical;
+    }
     compute_body_screws();
   }
 
@@ -439,28 +457,30 @@ class Chain {
   /// are used, the others are zero. Massless (zero) unless given.
   const Inertias& link_inertias() const noexcept { return inertias_; }
 
-  /// Whether each joint is what its type says (unit axes, zero pitch for
-  /// revolute joints: see ChainStatus), its limits are ordered and
-  /// nonnegative, gravity is finite, and the link inertias are finite with
-  /// masses >= 0; the first problem found. A link inertia need not be a
-  /// rigid body's (SpatialInertia::is_physical): a massless link (zero, the
-  /// default) and a point mass (I_c = 0) are valid models, as in URDF files.
-  /// Tolerance: Thresholds::screw_tolerance (constants.hpp).
-  ChainCheck validate() const noexcept {
+  /// Whether each joint is what its type says (unit axes unless `norms` is
+  /// ScrewNorms::any, zero pitch for revolute joints: see ChainStatus), its
+  /// limits are ordered and nonnegative, gravity is finite, and the link
+  /// inertias are finite with masses >= 0; the first problem found. A link
+  /// inertia need not be a rigid body's (SpatialInertia::is_physical): a
+  /// massless link (zero, the default) and a point mass (I_c = 0) are valid
+  /// models, as in URDF files. Tolerance: Thresholds::screw_tolerance
+  /// (constants.hpp), relative to the screw's norm.
+  ChainCheck validate(ScrewNorms norms = ScrewNorms::unit) const noexcept {
     using std::abs;
     using std::sqrt;
     const Scalar tol(ThresholdsOf<Scalar>::screw_tolerance);
+    const bool unit = norms == ScrewNorms::unit;
     for (Eigen::Index i = 0; i < n_joints(); ++i) {
       const Vector3 v = S_.col(i).template head<3>(), w = S_.col(i).template tail<3>();
+      const Scalar nv = sqrt(v.squaredNorm()), nw = sqrt(w.squaredNorm());
       const JointType type = types_[static_cast<std::size_t>(i)];
+      if (!unit && !(nv + nw > Scalar(0) && nv + nw < infinity())) return {ChainStatus::screw_zero, i};
       if (type == JointType::prismatic) {
-        if (!(sqrt(w.squaredNorm()) <= tol)) return {ChainStatus::prismatic_rotates, i};
-        if (!(abs(sqrt(v.squaredNorm()) - Scalar(1)) <= tol)) return {ChainStatus::prismatic_axis_not_unit, i};
+        if (!(nw <= tol * (unit ? Scalar(1) : nv))) return {ChainStatus::prismatic_rotates, i};
+        if (unit && !(abs(nv - Scalar(1)) <= tol)) return {ChainStatus::prismatic_axis_not_unit, i};
       } else {
-        if (!(abs(sqrt(w.squaredNorm()) - Scalar(1)) <= tol)) return {ChainStatus::revolute_axis_not_unit, i};
-        // w . v is the pitch of a screw with |w| = 1 (Lynch and Park, 3.3.2.2)
-        if (!(abs(w.dot(v)) <= tol * (Scalar(1) + sqrt(v.squaredNorm()))))
-          return {ChainStatus::revolute_pitch_not_zero, i};
+        if (unit ? !(abs(nw - Scalar(1)) <= tol) : !(nw > Scalar(0))) return {ChainStatus::revolute_axis_not_unit, i};
+        if (type != JointType::helical && !pitch_is_zero(S_.col(i))) return {ChainStatus::revolute_pitch_not_zero, i};
       }
       const Scalar lo = lower_(i), hi = upper_(i);
       if (!(lo <= hi) || (type == JointType::continuous && (lo > -infinity() || hi < infinity())))
@@ -492,6 +512,18 @@ class Chain {
   }
 
   static Scalar infinity() noexcept { return Scalar(std::numeric_limits<RealOf<Scalar>>::infinity()); }
+
+  /// Whether a screw (v, w) has zero pitch to screw_tolerance: w . v / |w|^2
+  /// is the pitch (Lynch and Park, 3.3.2.2), tested as
+  /// |w . v| <= tol |w| (|w| + |v|) (for |w| = 1: tol (1 + |v|)).
+  template <typename Column>
+  static bool pitch_is_zero(const Column& screw) noexcept {
+    using std::abs;
+    using std::sqrt;
+    const Vector3 v = screw.template head<3>(), w = screw.template tail<3>();
+    const Scalar nw = sqrt(w.squaredNorm());
+    return abs(w.dot(v)) <= Scalar(ThresholdsOf<Scalar>::screw_tolerance) * nw * (nw + sqrt(v.squaredNorm()));
+  }
 
   /// B_i = Ad_{M^-1} S_i, then with the two invariants of S_i under Ad
   /// restored: |w|, and w . v (|v| when w = 0). Rounding in Ad moves them by

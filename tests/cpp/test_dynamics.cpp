@@ -17,7 +17,12 @@
 //   (a massless link, point masses on the joint axes, an indefinite
 //   inertia, a pivot of rounding size) and on both sides of its threshold;
 // - energy conserved by an RK4 simulation with no torque;
-// - float and double against the same algorithm in long double (rounding).
+// - float and double against the same algorithm in long double (rounding);
+// - the analytic derivatives of inverse and forward dynamics
+//   (dynamics_derivatives.hpp) against automatic differentiation of the
+//   algorithms themselves and against central differences in long double,
+//   on random arms of revolute, prismatic and helical joints with screws of
+//   any norm; M(q)^-1 against M(q).
 // The modern_robotics package (and Pinocchio, bench/) check the values
 // themselves from Python (tests/python/test_dynamics.py).
 #include <array>
@@ -33,6 +38,7 @@
 #include <unsupported/Eigen/AutoDiff>
 
 #include <chasles/dynamics.hpp>
+#include <chasles/dynamics_derivatives.hpp>
 #include <chasles/kinematics.hpp>
 
 #include "support/arms.hpp"
@@ -780,6 +786,171 @@ TEST(Dynamics, ForwardDynamicsWithAutomaticDifferentiation) {
   Ia[6] = SpatialInertia<AD>();
   const PandaState<double> x(rng);
   EXPECT_TRUE(fails_at(forward_dynamics(panda_with<AD>(Ia), x.q.cast<AD>(), x.qd.cast<AD>(), x.tau.cast<AD>()), 6));
+}
+
+// ---- the derivatives (dynamics_derivatives.hpp) -----------------------------------
+
+/// random_arm with some joints helical (a revolute screw plus pitch h w,
+/// h in [-0.3, 0.3] m/rad) and every screw scaled by a factor in [0.5, 2]
+/// (a joint variable in other units than radians or metres).
+Arm random_screw_arm(std::mt19937& rng, int n) {
+  Arm a = random_arm(rng, n);
+  std::uniform_real_distribution<double> pitch(-0.3, 0.3), norm(0.5, 2.0), coin(0.0, 1.0);
+  for (int i = 0; i < n; ++i) {
+    if (a.S.col(i).tail<3>().squaredNorm() > 0 && coin(rng) < 0.5)
+      a.S.col(i).head<3>() += pitch(rng) * a.S.col(i).tail<3>();
+    a.S.col(i) *= norm(rng);
+  }
+  return a;
+}
+
+/// An autodiff scalar with derivatives with respect to 3 kMax variables
+/// (fixed-size: constants carry zero derivatives, not empty ones).
+constexpr int kVariables = 3 * kMax;
+using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, kVariables, 1>>;
+
+/// x as the autodiff variables first, first + 1, ...
+Dyn<AD>::JointVector variables(const Dyn<double>::JointVector& x, int first) {
+  Dyn<AD>::JointVector v(x.size());
+  for (Eigen::Index i = 0; i < x.size(); ++i) v(i) = AD(x(i), kVariables, first + static_cast<int>(i));
+  return v;
+}
+
+/// Columns [first, first + n) of the derivatives of r.
+Eigen::MatrixXd derivatives_of(const Dyn<AD>::JointVector& r, int first, int n) {
+  Eigen::MatrixXd J(r.size(), n);
+  for (Eigen::Index i = 0; i < r.size(); ++i) {
+    for (int j = 0; j < n; ++j) J(i, j) = r(i).derivatives()(first + j);
+  }
+  return J;
+}
+
+Dyn<double>::JointVector joints(std::mt19937& rng, int n, double scale) { return random_joints<double>(rng, n, scale); }
+
+TEST(DynamicsDerivatives, InverseDynamicsEqualsAutomaticDifferentiation) {
+  // d tau / d q and d tau / d qd against the derivatives of inverse_dynamics
+  // itself (forward-mode autodiff through the recursion), with a tip
+  // wrench, on 60 random arms of 1 to 8 joints.
+  std::mt19937 rng(50);
+  for (int trial = 0; trial < 60; ++trial) {
+    const int n = 1 + trial % kMax;
+    const Arm a = random_screw_arm(rng, n);
+    const Dyn<double> d = dynamics_of<double>(a);
+    const Dyn<AD> da = dynamics_of<AD>(a);
+    const Dyn<double>::JointVector q = joints(rng, n, 3), qd = joints(rng, n, 2), qdd = joints(rng, n, 2);
+    const Eigen::Matrix<double, 6, 1> w = Eigen::Matrix<double, 6, 1>::Random() * 10;
+    const auto D = chasles::inverse_dynamics_derivatives(d, q, qd, qdd, Wrench<double>(w));
+    const Dyn<AD>::JointVector tau = inverse_dynamics(da, variables(q, 0), variables(qd, n),
+                                                      Dyn<AD>::JointVector(qdd.cast<AD>()), Wrench<AD>(w.cast<AD>()));
+    EXPECT_TRUE(near<double>(D.dtau_dq, derivatives_of(tau, 0, n), kPerJoint * n)) << "trial " << trial;
+    EXPECT_TRUE(near<double>(D.dtau_dqd, derivatives_of(tau, n, n), kPerJoint * n)) << "trial " << trial;
+  }
+}
+
+TEST(DynamicsDerivatives, InverseDynamicsEqualsCentralDifferencesInLongDouble) {
+  // A second oracle, independent of the recursion's code: central
+  // differences of inverse_dynamics in long double with step 1e-5
+  // (truncation about 1e-10 of the third derivative, rounding about
+  // 1e-19 / 1e-5 of tau: 1e-8 relative is far above both).
+  std::mt19937 rng(51);
+  for (int trial = 0; trial < 16; ++trial) {
+    const int n = 1 + trial % kMax;
+    const Arm a = random_screw_arm(rng, n);
+    const Dyn<double> d = dynamics_of<double>(a);
+    const Dyn<LD> dl = dynamics_of<LD>(a);
+    const Dyn<double>::JointVector q = joints(rng, n, 3), qd = joints(rng, n, 2), qdd = joints(rng, n, 2);
+    const auto D = chasles::inverse_dynamics_derivatives(d, q, qd, qdd);
+    const LD h = 1e-5L;
+    const Dyn<LD>::JointVector ql = q.cast<LD>(), qdl = qd.cast<LD>(), qddl = qdd.cast<LD>();
+    Eigen::Matrix<LD, Eigen::Dynamic, Eigen::Dynamic> cq(n, n), cqd(n, n);
+    for (int j = 0; j < n; ++j) {
+      Dyn<LD>::JointVector e = Dyn<LD>::JointVector::Zero(n);
+      e(j) = h;
+      cq.col(j) = (inverse_dynamics(dl, Dyn<LD>::JointVector(ql + e), qdl, qddl) -
+                   inverse_dynamics(dl, Dyn<LD>::JointVector(ql - e), qdl, qddl)) /
+                  (2 * h);
+      cqd.col(j) = (inverse_dynamics(dl, ql, Dyn<LD>::JointVector(qdl + e), qddl) -
+                    inverse_dynamics(dl, ql, Dyn<LD>::JointVector(qdl - e), qddl)) /
+                   (2 * h);
+    }
+    const LD scale = std::max({LD(1), max_abs(cq), max_abs(cqd)});
+    EXPECT_LE(max_abs_diff(D.dtau_dq.cast<LD>(), cq), 1e-8L * scale) << "trial " << trial;
+    EXPECT_LE(max_abs_diff(D.dtau_dqd.cast<LD>(), cqd), 1e-8L * scale) << "trial " << trial;
+  }
+}
+
+TEST(DynamicsDerivatives, ForwardDynamicsEqualsAutomaticDifferentiation) {
+  // d qdd / d (q, qd, tau) against autodiff through forward_dynamics (its
+  // Cholesky solve included), and d qdd / d tau = M(q)^-1 =
+  // mass_matrix_inverse. The two differ by rounding, which cond(M) and the
+  // cancellation in the terms of M(q) and tau (a link's inertia about the
+  // base origin, m |c|^2 against I_c) magnify: 1e-11 cond(M) relative to the
+  // result (seen: 1e-12 at cond(M) 1); an error in the formulas is of the
+  // result's own size.
+  std::mt19937 rng(52);
+  for (int trial = 0; trial < 40; ++trial) {
+    const int n = 1 + trial % kMax;
+    const Arm a = random_screw_arm(rng, n);
+    const Dyn<double> d = dynamics_of<double>(a);
+    const Dyn<AD> da = dynamics_of<AD>(a);
+    const Dyn<double>::JointVector q = joints(rng, n, 3), qd = joints(rng, n, 2), tau = joints(rng, n, 20);
+    const Eigen::Matrix<double, 6, 1> w = Eigen::Matrix<double, 6, 1>::Random() * 10;
+    const auto D = chasles::forward_dynamics_derivatives(d, q, qd, tau, Wrench<double>(w));
+    ASSERT_TRUE(D) << "trial " << trial;
+    EXPECT_EQ(D.joint, -1);
+    const auto r =
+        forward_dynamics(da, variables(q, 0), variables(qd, n), variables(tau, 2 * n), Wrench<AD>(w.cast<AD>()));
+    ASSERT_TRUE(r);
+    const Eigen::MatrixXd Mq = mass_matrix(d, q);
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(Mq);
+    const LD tol = 1e-11L * LD(es.eigenvalues().maxCoeff() / es.eigenvalues().minCoeff());
+    const auto close = [&](const Dyn<double>::MassMatrix& a, const Eigen::MatrixXd& b) {
+      return max_abs_diff(a, b) <= tol * std::max(LD(1), max_abs(b));
+    };
+    EXPECT_TRUE(close(D.dqdd_dq, derivatives_of(r.qdd, 0, n))) << "trial " << trial;
+    EXPECT_TRUE(close(D.dqdd_dqd, derivatives_of(r.qdd, n, n))) << "trial " << trial;
+    EXPECT_TRUE(close(D.dqdd_dtau, derivatives_of(r.qdd, 2 * n, n))) << "trial " << trial;
+    const auto Minv = chasles::mass_matrix_inverse(d, q);
+    ASSERT_TRUE(Minv);
+    EXPECT_EQ(Minv.inverse, D.dqdd_dtau);  // the same factorization and solves
+    EXPECT_TRUE(close(Dyn<double>::MassMatrix(Mq * Minv.inverse), Eigen::MatrixXd::Identity(n, n)));
+  }
+}
+
+TEST(DynamicsDerivatives, FailuresAreForwardDynamicsFailures) {
+  // A massless last link: forward_dynamics fails at joint 6, and so do its
+  // derivatives and M(q)^-1, all NaN.
+  std::array<SpatialInertia<double>, 7> I = PandaLike<double>().inertias;
+  I[6] = SpatialInertia<double>();
+  const Panda<double> arm = panda_with<double>(I);
+  std::mt19937 rng(53);
+  const PandaState<double> x(rng);
+  const auto D = chasles::forward_dynamics_derivatives(arm, x.q, x.qd, x.tau);
+  EXPECT_FALSE(D);
+  EXPECT_EQ(D.status, DynamicsStatus::mass_matrix_not_positive_definite);
+  EXPECT_EQ(D.joint, 6);
+  EXPECT_TRUE(D.dqdd_dq.array().isNaN().all() && D.dqdd_dqd.array().isNaN().all() && D.dqdd_dtau.array().isNaN().all());
+  const auto Minv = chasles::mass_matrix_inverse(arm, x.q);
+  EXPECT_FALSE(Minv);
+  EXPECT_EQ(Minv.joint, 6);
+  EXPECT_TRUE(Minv.inverse.array().isNaN().all());
+}
+
+TEST(DynamicsDerivatives, FloatAgreesWithDouble) {
+  // The Panda-like arm in float against double: rounding only.
+  std::mt19937 rng(54);
+  const Panda<double> d = panda_with<double>(PandaLike<double>().inertias);
+  const Panda<float> f = panda_with<float>(PandaLike<float>().inertias);
+  for (int trial = 0; trial < 20; ++trial) {
+    const PandaState<double> x(rng);
+    const Eigen::Matrix<double, 7, 1> qdd = x.tau / 10;
+    const auto Dd = chasles::inverse_dynamics_derivatives(d, x.q, x.qd, qdd);
+    const auto Df = chasles::inverse_dynamics_derivatives(f, Eigen::Matrix<float, 7, 1>(x.q.cast<float>()),
+                                                          Eigen::Matrix<float, 7, 1>(x.qd.cast<float>()),
+                                                          Eigen::Matrix<float, 7, 1>(qdd.cast<float>()));
+    EXPECT_TRUE(near<float>(Df.dtau_dq.cast<double>(), Dd.dtau_dq, kPerJoint * 7, max_abs(Dd.dtau_dq)));
+    EXPECT_TRUE(near<float>(Df.dtau_dqd.cast<double>(), Dd.dtau_dqd, kPerJoint * 7, max_abs(Dd.dtau_dqd)));
+  }
 }
 
 }  // namespace

@@ -515,6 +515,39 @@ TYPED_TEST(Kinematics, ValidateBothSidesOfTheTolerance) {
   EXPECT_EQ(check(V6(0, 0, 1 + 2 * tol, 0, 0, 0), JointType::prismatic).status, ChainStatus::prismatic_axis_not_unit);
   EXPECT_EQ(check(V6(0, 0, 0, 0, 0, 1), JointType::prismatic).status, ChainStatus::prismatic_rotates);
   EXPECT_EQ(check(V6(0, 0, 1, 0, 0, 0), JointType::revolute).status, ChainStatus::revolute_axis_not_unit);
+  // helical: |w| = 1 and any pitch; inferred where the pitch is not zero
+  EXPECT_EQ(check(V6(1, 0, S(0.3), 0, 0, 1), JointType::helical).status, ChainStatus::ok);
+  EXPECT_EQ(check(V6(1, 0, 0, 0, 0, 1), JointType::helical).status, ChainStatus::ok);  // pitch 0: a revolute
+  EXPECT_EQ(check(V6(0, 0, S(0.3), 0, 0, 1 + 2 * tol), JointType::helical).status, ChainStatus::revolute_axis_not_unit);
+  {
+    typename C::Screws screws;
+    screws.col(0) = V6(1, 0, S(0.3), 0, 0, 1);  // pitch 0.3
+    screws.col(1) = V6(1, 0, S(0.5) * tol * S(1 + 1), 0, 0, 1);  // pitch within the tolerance: revolute
+    const C inferred(screws, SE3<S>());
+    EXPECT_EQ(inferred.joint_type(0), JointType::helical);
+    EXPECT_EQ(inferred.joint_type(1), JointType::revolute);
+  }
+  // ScrewNorms::any: any nonzero norm, the pitch test relative to it; zero or not finite refused
+  {
+    auto any = [&](const V6& s0, JointType type) {
+      typename C::Screws screws;
+      screws.col(0) = s0;
+      screws.col(1) = V6(0, 0, 0, 0, 0, 1);
+      typename C::JointTypes types{type, JointType::revolute};
+      const typename C::JointVector lower(-1, -1), upper(1, 1);
+      return C(screws, SE3<S>(), types, lower, upper, upper, upper).validate(chasles::ScrewNorms::any);
+    };
+    EXPECT_EQ(any(V6(0, 1, 0, 1, 0, 1), JointType::revolute).status, ChainStatus::ok);  // |w| = sqrt(2)
+    EXPECT_EQ(any(V6(0, 0, 3, 0, 0, 0), JointType::prismatic).status, ChainStatus::ok);
+    EXPECT_EQ(any(V6(3, 0, 0, 0, 0, 3), JointType::revolute).status, ChainStatus::ok);   // w . v = 0
+    EXPECT_EQ(any(V6(0, 0, 3, 0, 0, 3), JointType::revolute).status, ChainStatus::revolute_pitch_not_zero);
+    EXPECT_EQ(any(V6(0, 0, 3, 0, 0, 3), JointType::helical).status, ChainStatus::ok);
+    EXPECT_EQ(any(V6(0, 0, 3, 0, 3, 0), JointType::prismatic).status, ChainStatus::prismatic_rotates);
+    EXPECT_EQ(any(V6(0, 0, 0, 0, 0, 0), JointType::revolute).status, ChainStatus::screw_zero);
+    EXPECT_EQ(any(V6(0, 0, 0, 0, 0, 0), JointType::prismatic).status, ChainStatus::screw_zero);
+    EXPECT_EQ(any(V6(0, 0, 0, 0, 0, inf), JointType::revolute).status, ChainStatus::screw_zero);
+    EXPECT_EQ(any(V6(0, 0, 0, 0, 0, 1), JointType::revolute).joint, -1);
+  }
   // limits
   const V6 z(0, 0, 0, 0, 0, 1);
   EXPECT_EQ(check(z, JointType::revolute, 1, 1).status, ChainStatus::ok);

@@ -546,6 +546,26 @@ S exercise_all() noexcept {
   sum += inverse_dynamics(dd, thd, qdd, qddd, tip).sum() + mass_matrix(dd, thd).sum() + gravity_torques(dd, thd).sum();
   sum += coriolis(dd, thd, qdd).sum() + bias(dd, thd, qdd).sum() + forward_dynamics(dd, thd, qdd, qddd, tip).qdd.sum();
   sum += kinetic_energy(dd, thd, qdd) + potential_energy(dd, thd);
+  // Their derivatives and M(q)^-1 (dynamics_derivatives.hpp), both sizes.
+  {
+    const auto id6 = inverse_dynamics_derivatives(d6, th6, qd6, qdd6, tip);
+    const auto fd6 = forward_dynamics_derivatives(d6, th6, qd6, qdd6, tip);
+    const auto mi6 = mass_matrix_inverse(d6, th6);
+    sum += id6.dtau_dq.sum() + id6.dtau_dqd.sum() + fd6.dqdd_dq.sum() + fd6.dqdd_dqd.sum() + fd6.dqdd_dtau.sum();
+    sum += mi6.inverse.sum() + S(RealOf<S>(int(fd6.status) + int(fd6.joint) + (fd6 ? 1 : 0) + (mi6 ? 1 : 0)));
+    const auto idd = inverse_dynamics_derivatives(dd, thd, qdd, qddd);
+    const auto fdd = forward_dynamics_derivatives(dd, thd, qdd, qddd);
+    sum += idd.dtau_dq.sum() + idd.dtau_dqd.sum() + fdd.dqdd_dq.sum() + mass_matrix_inverse(dd, thd).inverse.sum();
+  }
+  // A helical joint, and validate() with screws of any norm.
+  {
+    typename C6::Screws H6 = S6;
+    H6.col(1).template head<3>() += S(0.1) * H6.col(1).template tail<3>();
+    H6.col(3) *= S(2);
+    const C6 helical(H6, g);
+    sum += S(RealOf<S>(int(helical.joint_type(1)) + int(helical.validate(chasles::ScrewNorms::any).status)));
+    sum += helical.forward(th6).translation().sum() + helical.jacobian_body(th6).sum();
+  }
   // A Chain carrying its link inertias (moved by its base frame), and its Dynamics.
   const CD heavy(SD, h, types, lo, hi, CD::JointVector::Constant(7, S(3)), CD::JointVector::Constant(7, S(50)), g, h,
                  CD::default_gravity(), ID);
