@@ -10,6 +10,9 @@ largest relative difference (max |a - b| / max(1, max |b|)) of
 - inverse dynamics (pin.rnea), the mass matrix (pin.crba, both triangles),
   gravity torques (pin.computeGeneralizedGravity), the Coriolis terms
   (pin.nonLinearEffects minus gravity) and forward dynamics (pin.aba),
+- the derivatives of inverse dynamics (pin.computeRNEADerivatives: d tau / d q
+  and d tau / d qd) and of forward dynamics (pin.computeABADerivatives: d qdd /
+  d q, d qd, d tau), and M(q)^-1 (pin.computeMinverse, both triangles),
 and the time of each side's Python call: one configuration per call (the
 median over 7 runs of 2000 calls), and chasles' batched call on N = 1000
 configurations ((N, n) arrays) per configuration (Pinocchio's Python API
@@ -124,6 +127,21 @@ def timings(chain: Chain, model, data, rng):
             per_call(lambda: pin.aba(model, data, qp, qd, qdd)),
             batch(lambda: chain.forward_dynamics(Q, QD, QDD)),
         ),
+        "d_rnea": (
+            per_call(lambda: chain.inverse_dynamics_derivatives(q, qd, qdd)),
+            per_call(lambda: pin.computeRNEADerivatives(model, data, qp, qd, qdd)),
+            batch(lambda: chain.inverse_dynamics_derivatives(Q, QD, QDD)),
+        ),
+        "d_aba": (
+            per_call(lambda: chain.forward_dynamics_derivatives(q, qd, qdd)),
+            per_call(lambda: pin.computeABADerivatives(model, data, qp, qd, qdd)),
+            batch(lambda: chain.forward_dynamics_derivatives(Q, QD, QDD)),
+        ),
+        "minv": (
+            per_call(lambda: chain.mass_matrix_inverse(q)),
+            per_call(lambda: pin.computeMinverse(model, data, qp)),
+            batch(lambda: chain.mass_matrix_inverse(Q)),
+        ),
         "floor": (per_call(lambda: chain.lower), (np.nan, np.nan), (np.nan, np.nan)),
     }
 
@@ -131,7 +149,8 @@ def timings(chain: Chain, model, data, rng):
 def main() -> None:
     root = robots_dir()
     print(f"pinocchio {pin.__version__}; largest relative difference over {STATES} states")
-    print(f"{'arm':6} {'n':>2} {'forward':>8} {'rnea':>8} {'crba':>8} {'gravity':>8} {'coriolis':>8} {'aba':>8}")
+    columns = ("forward", "rnea", "crba", "gravity", "coriolis", "aba", "d_rnea", "d_aba", "minv")
+    print(f"{'arm':6} {'n':>2} " + " ".join(f"{c:>8}" for c in columns))
     timing = {}
     for name, (rel_path, tip) in ARMS.items():
         path = root / rel_path
@@ -144,7 +163,7 @@ def main() -> None:
         frame = model.getFrameId(tip)
         rng = np.random.default_rng(0)
         n = chain.n_joints
-        worst = dict.fromkeys(("forward", "rnea", "crba", "gravity", "coriolis", "aba"), 0.0)
+        worst = dict.fromkeys(columns, 0.0)
         for _ in range(STATES):
             q = rng.uniform(np.maximum(chain.lower, -np.pi), np.minimum(chain.upper, np.pi))
             qd, qdd, tau = rng.uniform(-2, 2, (3, n))
@@ -163,6 +182,15 @@ def main() -> None:
                 worst["coriolis"], rel(chain.coriolis(q, qd), pin.nonLinearEffects(model, data, qp, qd) - g)
             )
             worst["aba"] = max(worst["aba"], rel(chain.forward_dynamics(q, qd, tau), pin.aba(model, data, qp, qd, tau)))
+            dq, dqd, _ = pin.computeRNEADerivatives(model, data, qp, qd, qdd)
+            mine = chain.inverse_dynamics_derivatives(q, qd, qdd)
+            worst["d_rnea"] = max(worst["d_rnea"], rel(mine[0], dq), rel(mine[1], dqd))
+            theirs = pin.computeABADerivatives(model, data, qp, qd, tau)
+            mine = chain.forward_dynamics_derivatives(q, qd, tau)
+            worst["d_aba"] = max(worst["d_aba"], *(rel(a, b) for a, b in zip(mine, theirs)))
+            Minv = pin.computeMinverse(model, data, qp)
+            Minv = np.triu(Minv) + np.triu(Minv, 1).T
+            worst["minv"] = max(worst["minv"], rel(chain.mass_matrix_inverse(q), Minv))
         print(f"{name:6} {n:>2} " + " ".join(f"{worst[k]:8.1e}" for k in worst))
         if name in ("UR5", "Panda"):
             timing[name] = timings(chain, model, data, rng)

@@ -13,6 +13,7 @@
 // (tests/python/test_ufuncs.py, test_robot.py compare them); anything else
 // goes to the ufunc.
 #include <chasles/dynamics.hpp>
+#include <chasles/dynamics_derivatives.hpp>
 #include <chasles/inverse_kinematics.hpp>
 #include <chasles/kinematics.hpp>
 #include <chasles/spatial_inertia.hpp>
@@ -98,10 +99,11 @@ ChainD::JointVector limits_of(py::handle h, py::ssize_t n, double fill, const ch
 
 /// The chain from the constructor's arguments, converted and checked for
 /// shapes and numbers here (chasles.Chain checks the model: _check); the
-/// joint types as codes (0 revolute, 1 continuous, 2 prismatic) or None.
+/// joint types as codes (0 revolute, 1 continuous, 2 prismatic, 3 helical)
+/// or None (inferred, as the C++ constructor infers them).
 PyChain make_chain(py::handle screws, py::handle home, py::handle types, py::handle lower, py::handle upper,
                    py::handle velocity, py::handle effort, py::handle base, py::handle tool, py::handle gravity,
-                   py::handle inertias, bool home_as_given) {
+                   py::handle inertias, bool home_as_given, bool unit_screws) {
   const py::array a = as_float64_array(screws, "Chain(screws)");
   if (a.ndim() != 2 || a.shape(1) != 6 || a.shape(0) < 1) {
     const bool columns = a.ndim() == 2 && a.shape(0) == 6 && a.shape(1) >= 1;
@@ -120,13 +122,11 @@ PyChain make_chain(py::handle screws, py::handle home, py::handle types, py::han
       table_of<Eigen::Matrix<double, Eigen::Dynamic, 6, 0, kMaxJoints, 6>>(a, n, 6, "", "").transpose();
   require_finite(S, "Chain(screws)");
   const SE3d M = pose_of(home, "Chain(home)");
-  ChainD::JointTypes t{};
-  for (py::ssize_t i = 0; i < n; ++i)
-    t[static_cast<std::size_t>(i)] =
-        types.is_none()
-            ? (S.col(i).tail<3>().squaredNorm() > 0 ? chasles::JointType::revolute : chasles::JointType::prismatic)
-            : static_cast<chasles::JointType>(
-                  py::reinterpret_borrow<py::sequence>(types)[static_cast<std::size_t>(i)].cast<int>());
+  ChainD::JointTypes t = ChainD(S, SE3d()).joint_types();
+  if (!types.is_none())
+    for (py::ssize_t i = 0; i < n; ++i)
+      t[static_cast<std::size_t>(i)] = static_cast<chasles::JointType>(
+          py::reinterpret_borrow<py::sequence>(types)[static_cast<std::size_t>(i)].cast<int>());
   const auto lo = limits_of(lower, n, -INFINITY, "Chain(lower)"), hi = limits_of(upper, n, INFINITY, "Chain(upper)");
   const auto vel = limits_of(velocity, n, INFINITY, "Chain(velocity_limits)");
   const auto eff = limits_of(effort, n, INFINITY, "Chain(effort_limits)");
@@ -148,7 +148,7 @@ PyChain make_chain(py::handle screws, py::handle home, py::handle types, py::han
   ChainD c = home_as_given ? ChainD(chasles::Chain<double, Eigen::Dynamic, kMaxJoints>::Stored(), S, M, t, lo, hi, vel,
                                     eff, b, to, g, link)
                            : ChainD(S, M, t, lo, hi, vel, eff, b, to, g, link);
-  const chasles::ChainCheck check = c.validate();
+  const chasles::ChainCheck check = c.validate(unit_screws ? chasles::ScrewNorms::unit : chasles::ScrewNorms::any);
   const Py_intptr_t dims[3] = {n, 6, 6};
   py::array_t<double> screws_out = new_array(2, dims);
   RowsMap(array_data(screws_out), n, 6) = c.space_screws().transpose();
@@ -182,6 +182,7 @@ using ufunc::upto;
 using JointsCore = Core<upto<kMaxJoints>>;
 using ScrewsCore = Core<upto<kMaxJoints>, 6>;
 using Joints = ChainD::JointVector;
+using MassMatrix = ChainD::MassMatrix;
 
 /// The chain of the operands screws, home (as given) and, for the
 /// dynamics, the matrices G and gravity (zero without one: mass matrix, Coriolis).
@@ -215,8 +216,20 @@ enum class Op {
   forward_dynamics,
   mass,
   gravity,
-  coriolis
+  coriolis,
+  inverse_derivatives,
+  forward_derivatives,
+  mass_inverse
 };
+
+/// The computations that take a tip wrench, and those that report where M(q) is not positive definite.
+constexpr bool has_tip(Op op) {
+  return op == Op::inverse || op == Op::forward_dynamics || op == Op::inverse_derivatives ||
+         op == Op::forward_derivatives;
+}
+constexpr bool may_fail(Op op) {
+  return op == Op::forward_dynamics || op == Op::forward_derivatives || op == Op::mass_inverse;
+}
 
 template <Op op>
 auto compute(const ChainD& c, const Joints* x, const chasles::Wrenchd& tip) {
@@ -237,8 +250,14 @@ auto compute(const ChainD& c, const Joints* x, const chasles::Wrenchd& tip) {
     return chasles::mass_matrix(c, x[0]);
   else if constexpr (op == Op::gravity)
     return chasles::gravity_torques(c, x[0]);
-  else
+  else if constexpr (op == Op::coriolis)
     return chasles::coriolis(c, x[0], x[1]);
+  else if constexpr (op == Op::inverse_derivatives)
+    return chasles::inverse_dynamics_derivatives(c, x[0], x[1], x[2], tip);
+  else if constexpr (op == Op::forward_derivatives)
+    return chasles::forward_dynamics_derivatives(c, x[0], x[1], x[2], tip);
+  else
+    return chasles::mass_matrix_inverse(c, x[0]);
 }
 
 template <typename Tuple, std::size_t... k>
@@ -250,18 +269,24 @@ template <Op op>
 struct Kernel {
   template <typename... X>
   auto operator()(const ChainD& c, const X&... x) const noexcept {
-    constexpr std::size_t J = sizeof...(X) - (op == Op::inverse || op == Op::forward_dynamics ? 1 : 0);
+    constexpr std::size_t J = sizeof...(X) - (has_tip(op) ? 1 : 0);
     const auto all = std::forward_as_tuple(x...);
     Joints joints[3];
     chasles::Wrenchd tip;
     fill(joints, all, std::make_index_sequence<J>());
     if constexpr (J < sizeof...(X)) tip = chasles::Wrenchd(Vector6(std::get<J>(all)));
-    if constexpr (op == Op::forward_dynamics) {
-      const auto r = compute<op>(c, joints, tip);
+    const auto r = compute<op>(c, joints, tip);
+    if constexpr (op == Op::forward_dynamics)
       return std::tuple<Joints, int>{r.qdd, static_cast<int>(r.joint)};
-    } else {
-      return compute<op>(c, joints, tip);
-    }
+    else if constexpr (op == Op::inverse_derivatives)
+      return std::tuple<MassMatrix, MassMatrix>{r.dtau_dq, r.dtau_dqd};
+    else if constexpr (op == Op::forward_derivatives)
+      return std::tuple<MassMatrix, MassMatrix, MassMatrix, int>{r.dqdd_dq, r.dqdd_dqd, r.dqdd_dtau,
+                                                                 static_cast<int>(r.joint)};
+    else if constexpr (op == Op::mass_inverse)
+      return std::tuple<MassMatrix, int>{r.inverse, static_cast<int>(r.joint)};
+    else
+      return r;
   }
 };
 
@@ -271,7 +296,7 @@ std::string private_doc(const char* signature, const char* method) {
 }
 
 /// The ufuncs, registered once: their objects, kept for the methods, by Op.
-using Ufuncs = std::array<py::object, static_cast<std::size_t>(Op::coriolis) + 1>;
+using Ufuncs = std::array<py::object, static_cast<std::size_t>(Op::mass_inverse) + 1>;
 
 Ufuncs register_ufuncs(py::module_& m) {
   using ufunc::def_ufunc;
@@ -318,6 +343,25 @@ Ufuncs register_ufuncs(py::module_& m) {
   u[std::size_t(Op::coriolis)] = def_ufunc<JointsCore(ScrewsCore, Core<4, 4>, G, JointsCore, JointsCore), Float64>(
       m, "_coriolis", "screws, home, inertias, q, qd", private_doc("C(q, qd) qd (no gravity).", "coriolis"),
       model<3>(ChainOf()), Kernel<Op::coriolis>());
+  using Square = Core<upto<kMaxJoints>, upto<kMaxJoints>>;
+  using Int = ufunc::Typed<Core<>, int>;
+  u[std::size_t(Op::inverse_derivatives)] = def_ufunc<
+      std::tuple<Square, Square>(ScrewsCore, Core<4, 4>, G, Core<3>, JointsCore, JointsCore, JointsCore, Core<6>),
+      Float64>(m, "_inverse_dynamics_derivatives", "screws, home, inertias, gravity, q, qd, qdd, tip_wrench",
+               private_doc("(dtau_dq, dtau_dqd) of inverse dynamics (analytic).", "inverse_dynamics_derivatives"),
+               model<4>(ChainOf()), Kernel<Op::inverse_derivatives>());
+  u[std::size_t(Op::forward_derivatives)] =
+      def_ufunc<std::tuple<Square, Square, Square, Int>(ScrewsCore, Core<4, 4>, G, Core<3>, JointsCore, JointsCore,
+                                                        JointsCore, Core<6>),
+                Float64>(m, "_forward_dynamics_derivatives", "screws, home, inertias, gravity, q, qd, tau, tip_wrench",
+                         private_doc("(dqdd_dq, dqdd_dqd, dqdd_dtau, joint) of forward dynamics (analytic; joint as "
+                                     "_forward_dynamics').",
+                                     "forward_dynamics_derivatives"),
+                         model<4>(ChainOf()), Kernel<Op::forward_derivatives>());
+  u[std::size_t(Op::mass_inverse)] = def_ufunc<std::tuple<Square, Int>(ScrewsCore, Core<4, 4>, G, JointsCore), Float64>(
+      m, "_mass_matrix_inverse", "screws, home, inertias, q",
+      private_doc("(M(q)^-1, joint) (joint as _forward_dynamics').", "mass_matrix_inverse"), model<3>(ChainOf()),
+      Kernel<Op::mass_inverse>());
   return u;
 }
 
@@ -399,31 +443,47 @@ py::object joint_operand(py::handle x, py::ssize_t n, const std::string& what) {
   return operand;
 }
 
-[[noreturn]] void raise_not_positive_definite(const std::string& where, Eigen::Index joint) {
-  raise_value_error("Chain.forward_dynamics: the mass matrix M(q) is not positive definite" + where +
+[[noreturn]] void raise_not_positive_definite(const char* method, const std::string& where, Eigen::Index joint) {
+  raise_value_error(std::string("Chain.") + method + ": the mass matrix M(q) is not positive definite" + where +
                     ": its Cholesky factorization fails at joint " + std::to_string(joint) +
                     " (a link without mass, or without rotational inertia about its joint's axis, or an inertia "
                     "that no rigid body has?)");
 }
 
-/// A batch of forward dynamics, the ufunc's (qdd, joint): ValueError naming
-/// the first configuration (C order) whose joint is not -1 when `raise`.
-py::object checked_accelerations(const py::object& result, bool raise) {
+/// A batch of a computation that may fail (forward dynamics, its
+/// derivatives, M(q)^-1), the ufunc's (results..., joint): the results (one,
+/// or a tuple), or ValueError naming the first configuration (C order)
+/// whose joint is not -1 when `raise`.
+py::object checked_batch(const char* method, const py::object& result, bool raise) {
   const py::tuple r = py::reinterpret_borrow<py::tuple>(result);
-  if (!raise) return r[0];
-  const auto joint = py::array_t<int, py::array::c_style | py::array::forcecast>::ensure(r[1]);
+  const std::size_t last = r.size() - 1;
+  const py::object values =
+      last == 1 ? py::object(r[0]) : py::object(r[py::slice(0, static_cast<py::ssize_t>(last), 1)]);
+  if (!raise) return values;
+  const auto joint = py::array_t<int, py::array::c_style | py::array::forcecast>::ensure(r[last]);
   py::ssize_t first = -1, failed = 0;
   for (py::ssize_t i = 0; i < joint.size(); ++i)
     if (joint.data()[i] >= 0 && failed++ == 0) first = i;
-  if (failed == 0) return r[0];
-  if (joint.ndim() == 0) raise_not_positive_definite("", joint.data()[0]);
+  if (failed == 0) return values;
+  if (joint.ndim() == 0) raise_not_positive_definite(method, "", joint.data()[0]);
   std::string index;
   for (py::ssize_t d = joint.ndim(), rest = first; d-- > 0; rest /= joint.shape(d))
     index = std::to_string(rest % joint.shape(d)) + (index.empty() ? "" : ", ") + index;
-  raise_not_positive_definite(" at batch index (" + index + (joint.ndim() == 1 ? ",)" : ")") + ", the first of " +
+  raise_not_positive_definite(method,
+                              " at batch index (" + index + (joint.ndim() == 1 ? ",)" : ")") + ", the first of " +
                                   std::to_string(failed) + " of " + std::to_string(joint.size()) +
                                   " configurations; on_failure=\"nan\" gives NaN there instead)",
                               joint.data()[first]);
+}
+
+/// A new array of a matrix or vector's values ((rows,) for a vector).
+template <typename Derived>
+py::object array_of(const Eigen::MatrixBase<Derived>& x) {
+  constexpr bool vector = Derived::ColsAtCompileTime == 1;
+  const Py_intptr_t dims[2] = {x.rows(), x.cols()};
+  py::array_t<double> out = new_array(vector ? 1 : 2, dims);
+  RowsMap(array_data(out), dims[0], dims[1]) = x;
+  return std::move(out);
 }
 
 /// A method: J joint arguments (and for the dynamics the tip wrench, None:
@@ -434,9 +494,8 @@ py::object checked_accelerations(const py::object& result, bool raise) {
 template <Op op, std::size_t J>
 py::object call(PyObject* u, const PyChain& c, const char* method, const std::array<py::handle, J>& x,
                 const py::handle* tip, bool raise = true) {
-  constexpr bool dynamics = op >= Op::inverse,
-                 with_gravity = op == Op::inverse || op == Op::forward_dynamics || op == Op::gravity;
-  static_cast<void>(raise);  // (forward dynamics only)
+  constexpr bool dynamics = op >= Op::inverse, with_gravity = has_tip(op) || op == Op::gravity;
+  static_cast<void>(raise);  // (may_fail(op) only)
   if (dynamics && c.operands.size() < 4)
     raise_value_error(std::string("Chain.") + method +
                       ": the chain has no link inertias (give Chain(..., link_inertias=...), or load it with "
@@ -452,20 +511,19 @@ py::object call(PyObject* u, const PyChain& c, const char* method, const std::ar
     tip_wrench = chasles::Wrenchd(w);
   }
   if (single) {
-    const auto result = [&] {
-      if constexpr (op == Op::forward_dynamics) {
-        const auto r = compute<op>(c.chain, one, tip_wrench);
-        if (!r && raise) raise_not_positive_definite("", r.joint);
-        return r.qdd;
-      } else {
-        return compute<op>(c.chain, one, tip_wrench);
-      }
-    }();
-    constexpr bool vector = decltype(result)::ColsAtCompileTime == 1;
-    const Py_intptr_t dims[2] = {result.rows(), result.cols()};
-    py::array_t<double> out = new_array(vector ? 1 : 2, dims);
-    RowsMap(array_data(out), dims[0], dims[1]) = result;
-    return std::move(out);
+    const auto r = compute<op>(c.chain, one, tip_wrench);
+    if constexpr (may_fail(op))
+      if (!r && raise) raise_not_positive_definite(method, "", r.joint);
+    if constexpr (op == Op::forward_dynamics)
+      return array_of(r.qdd);
+    else if constexpr (op == Op::inverse_derivatives)
+      return py::object(py::make_tuple(array_of(r.dtau_dq), array_of(r.dtau_dqd)));
+    else if constexpr (op == Op::forward_derivatives)
+      return py::object(py::make_tuple(array_of(r.dqdd_dq), array_of(r.dqdd_dqd), array_of(r.dqdd_dtau)));
+    else if constexpr (op == Op::mass_inverse)
+      return array_of(r.inverse);
+    else
+      return array_of(r);
   }
   // The batch: the messages name the method (strings made here only, off the fast path).
   const std::string what = std::string("Chain.") + method, call_what = dynamics ? what : what + "(theta)";
@@ -475,8 +533,9 @@ py::object call(PyObject* u, const PyChain& c, const char* method, const std::ar
   for (std::size_t i = 0; i < (!dynamics ? 2 : with_gravity ? 4 : 3); ++i)  // the model's operands
     keep[k] = c.operands[i], args[k] = keep[k].ptr(), ++k;
   static const char* const names[] = {"q", "qd", "qdd", "tau", "theta"};
+  constexpr bool takes_tau = op == Op::forward_dynamics || op == Op::forward_derivatives;
   for (std::size_t j = 0; j < J; ++j) {
-    const char* arg = !dynamics ? names[4] : (op == Op::forward_dynamics && j == 2) ? names[3] : names[j];
+    const char* arg = !dynamics ? names[4] : (takes_tau && j == 2) ? names[3] : names[j];
     keep[k] = joint_operand(x[j], n, what + "(" + arg + ")");
     args[k] = keep[k].ptr(), ++k;
   }
@@ -491,17 +550,17 @@ py::object call(PyObject* u, const PyChain& c, const char* method, const std::ar
     raise_conversion_error(e, call_what);
   }
   py::object result = py::reinterpret_steal<py::object>(r);
-  if constexpr (op == Op::forward_dynamics) return checked_accelerations(result, raise);
+  if constexpr (may_fail(op)) return checked_batch(method, result, raise);
   return result;
 }
 
-/// Chain.forward_dynamics(on_failure): true for "raise" (the default), false for "nan".
-bool failure_raises(py::handle on_failure) {
+/// Chain.<method>(on_failure): true for "raise" (the default), false for "nan".
+bool failure_raises(const char* method, py::handle on_failure) {
   if (PyUnicode_Check(on_failure.ptr())) {
     if (PyUnicode_CompareWithASCIIString(on_failure.ptr(), "raise") == 0) return true;
     if (PyUnicode_CompareWithASCIIString(on_failure.ptr(), "nan") == 0) return false;
   }
-  raise_value_error("Chain.forward_dynamics(on_failure): expected \"raise\" or \"nan\", got " +
+  raise_value_error(std::string("Chain.") + method + "(on_failure): expected \"raise\" or \"nan\", got " +
                     std::string(py::repr(on_failure)));
 }
 
@@ -529,14 +588,14 @@ void bind_kinematics(py::module_& m) {
   cls.attr("__array_ufunc__") = py::none();  // numpy defers operators (np.float64(1.0) == c) to us
   cls.def(py::init([](ArrayLike screws, py::object home, py::object types, py::object lower, py::object upper,
                       py::object velocity, py::object effort, py::object base, py::object tool, py::object gravity,
-                      py::object inertias, bool home_as_given) {
+                      py::object inertias, bool home_as_given, bool unit_screws) {
             return make_chain(screws.obj, home, types, lower, upper, velocity, effort, base, tool, gravity, inertias,
-                              home_as_given);
+                              home_as_given, unit_screws);
           }),
           py::arg("screws"), py::arg("home"), py::arg("joint_types"), py::arg("lower"), py::arg("upper"),
           py::arg("velocity_limits"), py::arg("effort_limits"), py::arg("base"), py::arg("tool"), py::arg("gravity"),
-          py::arg("link_inertias"), py::arg("home_as_given"),
-          "The model from chasles.Chain's arguments (joint types as codes 0, 1, 2 or None).");
+          py::arg("link_inertias"), py::arg("home_as_given"), py::arg("unit_screws"),
+          "The model from chasles.Chain's arguments (joint types as codes 0, 1, 2, 3 or None).");
   cls.def(
       "_check",
       [](Obj<PyChain> c) {
@@ -630,7 +689,7 @@ Returns (..., n), N m for revolute joints and N for prismatic ones.)doc") +
       "forward_dynamics",
       [f_forward](Obj<PyChain> c, py::object q, py::object qd, py::object tau, py::object tip, py::object on_failure) {
         return call<Op::forward_dynamics, 3>(f_forward, *c, "forward_dynamics", {q, qd, tau}, &tip,
-                                             failure_raises(on_failure));
+                                             failure_raises("forward_dynamics", on_failure));
       },
       py::arg("q"), py::arg("qd"), py::arg("tau"), py::kw_only(), py::arg("tip_wrench") = py::none(),
       py::arg("on_failure") = "raise",
@@ -661,6 +720,55 @@ q: array_like (..., n); returns (..., n).)doc",
       (std::string(R"doc(The Coriolis and centrifugal torques C(q, qd) qd (no gravity).
 
 q, qd: array_like (..., n); returns (..., n).)doc") +
+       kArrayFunction + kRaises)
+          .c_str());
+
+  // ---- derivatives (chasles/dynamics_derivatives.hpp)
+  PyObject *f_id = ufunc_of(Op::inverse_derivatives), *f_fd = ufunc_of(Op::forward_derivatives),
+           *f_minv = ufunc_of(Op::mass_inverse);
+  cls.def(
+      "inverse_dynamics_derivatives",
+      [f_id](Obj<PyChain> c, py::object q, py::object qd, py::object qdd, py::object tip) {
+        return call<Op::inverse_derivatives, 3>(f_id, *c, "inverse_dynamics_derivatives", {q, qd, qdd}, &tip);
+      },
+      py::arg("q"), py::arg("qd"), py::arg("qdd"), py::kw_only(), py::arg("tip_wrench") = py::none(),
+      (std::string(R"doc(The partial derivatives (dtau_dq, dtau_dqd) of inverse_dynamics at (q, qd, qdd), analytic.
+
+dtau_dq[i, j] = d tau_i / d q_j, likewise for qd; d tau / d qdd is mass_matrix(q). The
+recursion of inverse dynamics differentiated in closed form (base frame; Carpentier and
+Mansard, RSS 2018), O(n^2): what an optimal-control or MPC solver linearizes with.
+q, qd, qdd: array_like (..., n); tip_wrench as in inverse_dynamics. Returns two arrays of
+shape (..., n, n).)doc") +
+       kArrayFunction + kRaises)
+          .c_str());
+  cls.def(
+      "forward_dynamics_derivatives",
+      [f_fd](Obj<PyChain> c, py::object q, py::object qd, py::object tau, py::object tip, py::object on_failure) {
+        return call<Op::forward_derivatives, 3>(f_fd, *c, "forward_dynamics_derivatives", {q, qd, tau}, &tip,
+                                                failure_raises("forward_dynamics_derivatives", on_failure));
+      },
+      py::arg("q"), py::arg("qd"), py::arg("tau"), py::kw_only(), py::arg("tip_wrench") = py::none(),
+      py::arg("on_failure") = "raise",
+      (std::string(R"doc(The partial derivatives (dqdd_dq, dqdd_dqd, dqdd_dtau) of forward_dynamics at (q, qd, tau).
+
+With qdd = forward_dynamics(q, qd, tau): dqdd_dq = -M^-1 dtau_dq, dqdd_dqd = -M^-1 dtau_dqd
+(inverse_dynamics_derivatives at (q, qd, qdd)) and dqdd_dtau = M(q)^-1, analytic, O(n^3).
+Fails where forward_dynamics fails (ValueError, or NaN with on_failure="nan").
+q, qd, tau: array_like (..., n); tip_wrench as in inverse_dynamics. Returns three arrays of
+shape (..., n, n).)doc") +
+       kArrayFunction + kRaises)
+          .c_str());
+  cls.def(
+      "mass_matrix_inverse",
+      [f_minv](Obj<PyChain> c, py::object q, py::object on_failure) {
+        return call<Op::mass_inverse, 1>(f_minv, *c, "mass_matrix_inverse", {q}, nullptr,
+                                         failure_raises("mass_matrix_inverse", on_failure));
+      },
+      py::arg("q"), py::kw_only(), py::arg("on_failure") = "raise",
+      (std::string(R"doc(M(q)^-1, by the Cholesky factorization of forward_dynamics (Pinocchio's computeMinverse).
+
+Fails where forward_dynamics fails (ValueError, or NaN with on_failure="nan").
+q: array_like (..., n); returns (..., n, n).)doc") +
        kArrayFunction + kRaises)
           .c_str());
 }

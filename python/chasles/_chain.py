@@ -29,7 +29,7 @@ from numpy.typing import ArrayLike
 from chasles import _core
 from chasles._results import IKResult
 
-_TYPES = ("revolute", "continuous", "prismatic")
+_TYPES = ("revolute", "continuous", "prismatic", "helical")
 _MAX_JOINTS = 32
 _SCREW_TOLERANCE = 1.4901161193847656e-08  # Thresholds<double>::screw_tolerance (constants.hpp)
 _IK_TOLERANCE = 3.666852862501036e-11  # Thresholds<double>::ik_tolerance
@@ -69,7 +69,7 @@ def _type_codes(joint_types: Any, n: int) -> tuple:
     if isinstance(joint_types, str) or not _is_sequence(joint_types):
         raise TypeError(
             f"Chain(joint_types): expected a sequence of {n} of 'revolute', 'continuous', 'prismatic', "
-            f"got {_tp_name(joint_types)}"
+            f"'helical', got {_tp_name(joint_types)}"
         )
     items = list(joint_types)
     if len(items) != n:
@@ -80,7 +80,8 @@ def _type_codes(joint_types: Any, n: int) -> tuple:
             raise TypeError(f"Chain(joint_types): expected strings, got {_tp_name(t)} for joint {i}")
         if t not in _TYPES:
             raise ValueError(
-                f"Chain(joint_types): expected 'revolute', 'continuous' or 'prismatic', got '{t}' for joint {i}"
+                f"Chain(joint_types): expected 'revolute', 'continuous', 'prismatic' or 'helical', got '{t}' for "
+                f"joint {i}"
             )
         codes.append(_TYPES.index(t))
     return tuple(codes)
@@ -122,7 +123,7 @@ def _frozen(x: Any) -> Optional[np.ndarray]:
 def _model_valid(screws: np.ndarray, codes: Optional[tuple]) -> bool:
     """Whether these screws with these types (None: inferred) make a valid chain."""
     c = _core._Chain.__new__(_core._Chain)
-    _core._Chain.__init__(c, screws, np.eye(4), codes, None, None, None, None, None, None, None, None, True)
+    _core._Chain.__init__(c, screws, np.eye(4), codes, None, None, None, None, None, None, None, None, True, True)
     return c._check()[0] == 0
 
 
@@ -137,23 +138,26 @@ def _invalid_message(chain: Any, status: int, joint: int, screws: np.ndarray, co
     Robotics' (w, v) order or as a transposed 6 x 6 table would be valid."""
     j = f"joint {joint}"
     v, w = screws[joint, :3], screws[joint, 3:] if joint >= 0 else (None, None)
+    kind = _TYPES[chain._arrays()[2][joint]] if joint >= 0 else ""
     if status == 1:
         message = (
-            f"Chain(screws): {j} is revolute but its angular part w is not a unit vector "
-            f"(|w| = {_short(math.sqrt(w @ w))})"
+            f"Chain(screws): {j} is {kind} but its angular part w is not a unit vector "
+            f"(|w| = {_short(math.sqrt(w @ w))}; unit_screws=False accepts a screw of any norm)"
         )
     elif status == 2:
         message = (
-            f"Chain(screws): {j} is revolute but its screw has a pitch: w . v = {_short(w @ v)} "
-            f"(a revolute screw is (-w x q, w))"
+            f"Chain(screws): {j} is {kind} but its screw has a pitch: w . v = {_short(w @ v)} "
+            f"(a revolute screw is (-w x q, w); a joint that turns and slides is 'helical')"
         )
     elif status == 3:
         message = f"Chain(screws): {j} is prismatic but its angular part w is not zero"
     elif status == 4:
         message = (
             f"Chain(screws): {j} is prismatic but its linear part v is not a unit vector "
-            f"(|v| = {_short(math.sqrt(v @ v))})"
+            f"(|v| = {_short(math.sqrt(v @ v))}; unit_screws=False accepts a screw of any norm)"
         )
+    elif status == 9:
+        return ValueError(f"Chain(screws): {j}: expected a nonzero screw, got zero")
     else:
         arrays = chain._arrays()
         if status == 5:
@@ -273,6 +277,9 @@ class Chain(_core._Chain):
     mass_matrix = vars(_core._Chain)["mass_matrix"]
     gravity_torques = vars(_core._Chain)["gravity_torques"]
     coriolis = vars(_core._Chain)["coriolis"]
+    inverse_dynamics_derivatives = vars(_core._Chain)["inverse_dynamics_derivatives"]
+    forward_dynamics_derivatives = vars(_core._Chain)["forward_dynamics_derivatives"]
+    mass_matrix_inverse = vars(_core._Chain)["mass_matrix_inverse"]
     home = vars(_core._Chain)["home"]
     revolute_screw = vars(_core._Chain)["revolute_screw"]
     prismatic_screw = vars(_core._Chain)["prismatic_screw"]
@@ -292,6 +299,7 @@ class Chain(_core._Chain):
         tool=None,
         gravity=None,
         link_inertias=None,
+        unit_screws=True,
         names=None,
     ):
         # (no annotations: help() and inspect.signature show the parameters as the documentation writes
@@ -305,7 +313,11 @@ class Chain(_core._Chain):
 
         Each screw is checked against its joint's type: a revolute or continuous
         joint's angular part w must be a unit vector and its pitch w . v zero, a
-        prismatic joint's w zero and its linear part v a unit vector (to 1.5e-8).
+        helical joint's w a unit vector (its pitch h = w . v, metres per radian, any),
+        a prismatic joint's w zero and its linear part v a unit vector (to 1.5e-8).
+        With ``unit_screws=False`` a screw may have any nonzero norm k: the joint
+        then turns k radians (or slides k metres) per unit of its variable, as in
+        Modern Robotics' chapter 8 example (a screw of norm sqrt(2)).
         A table in Modern Robotics' (w, v) order, or transposed (one column per
         joint, as MR's Slist), is refused with the conversion in the message.
 
@@ -314,8 +326,9 @@ class Chain(_core._Chain):
                 of joint i at the home configuration, in the base frame, finite.
             home: SE3 or shape (4, 4), M = g(0), the tool frame at home (before
                 ``tool``), in the base frame.
-            joint_types: n of "revolute", "continuous", "prismatic"; None infers
-                them (prismatic where w = 0, revolute elsewhere).
+            joint_types: n of "revolute", "continuous", "prismatic", "helical"; None
+                infers them (prismatic where w = 0, helical where the pitch w . v is
+                not zero, revolute elsewhere).
             joint_names: n joint names (str), or None.
             lower: shape (n,), lower position limits (radians or metres); None: -inf.
             upper: shape (n,), upper position limits; None: inf. A continuous joint
@@ -329,6 +342,8 @@ class Chain(_core._Chain):
                 frame at home: a sequence of n SpatialInertia, or shape (n, 10)
                 (mass, center of mass (3), ixx, ixy, ixz, iyy, iyz, izz about the
                 center of mass; ``Chain.from_urdf`` fills it), or None.
+            unit_screws: True (the default) requires unit screws (|w| = 1, or |v| = 1 for
+                a prismatic joint); False accepts any nonzero norm.
             names: deprecated, the old name of ``joint_names`` (warns).
 
         Raises:
@@ -368,6 +383,7 @@ class Chain(_core._Chain):
             tool=tool,
             gravity=gravity,
             link_inertias=link_inertias,
+            unit_screws=unit_screws,
         )
 
     # ---- properties ------------------------------------------------------------------------
@@ -392,7 +408,7 @@ class Chain(_core._Chain):
 
     @property
     def joint_types(self) -> tuple:
-        """tuple[str, ...]: each joint's type: "revolute", "continuous" or "prismatic"."""
+        """tuple[str, ...]: each joint's type: "revolute", "continuous", "prismatic" or "helical"."""
         return tuple(_TYPES[c] for c in _m(self)[2])
 
     @property
@@ -752,7 +768,11 @@ def _make(
     tool: Any = None,
     gravity: Any = None,
     link_inertias: Any = None,
+    unit_screws: bool = True,
 ) -> None:
+    if not isinstance(unit_screws, (bool, np.bool_)):
+        raise TypeError(f"Chain(unit_screws): expected a bool, got {_tp_name(unit_screws)}")
+    unit_screws = bool(unit_screws)
     n = _joint_count(screws)
     codes = None if joint_types is None or n is None else _type_codes(joint_types, n)
     inertias = _inertia_rows(link_inertias)
@@ -770,6 +790,7 @@ def _make(
         gravity,
         inertias,
         home_as_given,
+        unit_screws,
     )
     given = np.array(screws, dtype=np.float64)
     status, joint = self._check()
@@ -809,6 +830,7 @@ def _make(
             "tool": _pose_array(tool),
             "gravity": _frozen(gravity),
             "link_inertias": self._inertias,
+            "unit_screws": unit_screws,
         },
     )
 
@@ -850,7 +872,7 @@ def _setstate(self: Any, state: Any) -> None:
     x = floats(numbers)
     k = 6 * n + 12
     codes = x[k : k + n]
-    if not np.all((codes >= 0) & (codes <= 2) & (codes == np.floor(codes))):
+    if not np.all((codes >= 0) & (codes < len(_TYPES)) & (codes == np.floor(codes))):
         raise bad()
     limits = [x[k + n + i * n : k + n + (i + 1) * n] for i in range(4)]
     k += 5 * n

@@ -3958,9 +3958,9 @@ class _Chain:
         The point comes first, as in ``SE3.from_screw``; both shape (3,), w nonzero (normalized here).
         Returns shape (6,), (v, w).
         """
-    def __init__(self, screws: numpy.typing.ArrayLike, home: typing.Any, joint_types: typing.Any, lower: typing.Any, upper: typing.Any, velocity_limits: typing.Any, effort_limits: typing.Any, base: typing.Any, tool: typing.Any, gravity: typing.Any, link_inertias: typing.Any, home_as_given: bool) -> None:
+    def __init__(self, screws: numpy.typing.ArrayLike, home: typing.Any, joint_types: typing.Any, lower: typing.Any, upper: typing.Any, velocity_limits: typing.Any, effort_limits: typing.Any, base: typing.Any, tool: typing.Any, gravity: typing.Any, link_inertias: typing.Any, home_as_given: bool, unit_screws: bool) -> None:
         """
-        The model from chasles.Chain's arguments (joint types as codes 0, 1, 2 or None).
+        The model from chasles.Chain's arguments (joint types as codes 0, 1, 2, 3 or None).
         """
     def _arrays(self) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], tuple, numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], SE3, SE3, numpy.typing.NDArray[numpy.float64]]:
         """
@@ -4009,6 +4009,19 @@ class _Chain:
         An array function: (n,) gives one result, (..., n) one per configuration,
         by numpy's rules (broadcasting, dtypes, the GIL released; NaN gives NaN). ValueError: a chain without link inertias, shapes that do not match.
         """
+    def forward_dynamics_derivatives(self, q: typing.Any, qd: typing.Any, tau: typing.Any, *, tip_wrench: typing.Any = None, on_failure: typing.Any = 'raise') -> typing.Any:
+        """
+        The partial derivatives (dqdd_dq, dqdd_dqd, dqdd_dtau) of forward_dynamics at (q, qd, tau).
+        
+        With qdd = forward_dynamics(q, qd, tau): dqdd_dq = -M^-1 dtau_dq, dqdd_dqd = -M^-1 dtau_dqd
+        (inverse_dynamics_derivatives at (q, qd, qdd)) and dqdd_dtau = M(q)^-1, analytic, O(n^3).
+        Fails where forward_dynamics fails (ValueError, or NaN with on_failure="nan").
+        q, qd, tau: array_like (..., n); tip_wrench as in inverse_dynamics. Returns three arrays of
+        shape (..., n, n).
+        
+        An array function: (n,) gives one result, (..., n) one per configuration,
+        by numpy's rules (broadcasting, dtypes, the GIL released; NaN gives NaN). ValueError: a chain without link inertias, shapes that do not match.
+        """
     def gravity_torques(self, q: numpy.typing.ArrayLike) -> typing.Any:
         """
         The torques g(q) that hold the chain still against gravity: inverse_dynamics(q, 0, 0).
@@ -4025,6 +4038,19 @@ class _Chain:
         q, qd, qdd: array_like (..., n); tip_wrench: (..., 6) or a Wrench, (f, tau) that the tool
         applies on the environment, in the tool frame (Modern Robotics' F_tip); None: zero.
         Returns (..., n), N m for revolute joints and N for prismatic ones.
+        
+        An array function: (n,) gives one result, (..., n) one per configuration,
+        by numpy's rules (broadcasting, dtypes, the GIL released; NaN gives NaN). ValueError: a chain without link inertias, shapes that do not match.
+        """
+    def inverse_dynamics_derivatives(self, q: typing.Any, qd: typing.Any, qdd: typing.Any, *, tip_wrench: typing.Any = None) -> typing.Any:
+        """
+        The partial derivatives (dtau_dq, dtau_dqd) of inverse_dynamics at (q, qd, qdd), analytic.
+        
+        dtau_dq[i, j] = d tau_i / d q_j, likewise for qd; d tau / d qdd is mass_matrix(q). The
+        recursion of inverse dynamics differentiated in closed form (base frame; Carpentier and
+        Mansard, RSS 2018), O(n^2): what an optimal-control or MPC solver linearizes with.
+        q, qd, qdd: array_like (..., n); tip_wrench as in inverse_dynamics. Returns two arrays of
+        shape (..., n, n).
         
         An array function: (n,) gives one result, (..., n) one per configuration,
         by numpy's rules (broadcasting, dtypes, the GIL released; NaN gives NaN). ValueError: a chain without link inertias, shapes that do not match.
@@ -4053,6 +4079,16 @@ class _Chain:
         """
         The joint-space mass matrix M(q), symmetric positive definite (composite rigid bodies).
         
+        q: array_like (..., n); returns (..., n, n).
+        
+        An array function: (n,) gives one result, (..., n) one per configuration,
+        by numpy's rules (broadcasting, dtypes, the GIL released; NaN gives NaN). ValueError: a chain without link inertias, shapes that do not match.
+        """
+    def mass_matrix_inverse(self, q: typing.Any, *, on_failure: typing.Any = 'raise') -> typing.Any:
+        """
+        M(q)^-1, by the Cholesky factorization of forward_dynamics (Pinocchio's computeMinverse).
+        
+        Fails where forward_dynamics fails (ValueError, or NaN with on_failure="nan").
         q: array_like (..., n); returns (..., n, n).
         
         An array function: (n,) gives one result, (..., n) one per configuration,
@@ -4797,10 +4833,13 @@ _chain_jacobian_body: numpy.ufunc
 _chain_jacobian_space: numpy.ufunc
 _coriolis: numpy.ufunc
 _forward_dynamics: numpy.ufunc
+_forward_dynamics_derivatives: numpy.ufunc
 _gravity_torques: numpy.ufunc
 _inverse_dynamics: numpy.ufunc
+_inverse_dynamics_derivatives: numpy.ufunc
 _inverse_kinematics: numpy.ufunc
 _mass_matrix: numpy.ufunc
+_mass_matrix_inverse: numpy.ufunc
 _max_threads: int = 1024
 _se23_act_cov: numpy.ufunc
 _se23_between_cov_cross: numpy.ufunc

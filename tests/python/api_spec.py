@@ -350,17 +350,19 @@ class ScrewRows(Arg):
         judged = finite_or_refused(a, self.label)
         if isinstance(judged, Refused):
             return judged
-        # the joint types inferred (prismatic where w = 0, revolute elsewhere),
-        # each screw checked against its type (Chain::validate, tolerance
-        # sqrt(eps) = 1.4901161193847656e-08)
+        # the joint types inferred (prismatic where w = 0, helical where the
+        # pitch is not zero, revolute elsewhere), each screw checked against
+        # its type (Chain::validate, tolerance sqrt(eps) =
+        # 1.4901161193847656e-08): |w| = 1 (a pitch makes the joint helical),
+        # or |v| = 1 for a prismatic joint
         tol = 1.4901161193847656e-08
         for v, w in zip(judged.value[:, :3], judged.value[:, 3:]):
             # as the C++ computes them: norms as sqrt of the sum of squares
             # (a subnormal w squares to 0: a prismatic joint; a huge one to inf)
             with np.errstate(over="ignore", invalid="ignore"):
-                ww, vv, wv = float(w @ w), float(v @ v), float(w @ v)
+                ww, vv = float(w @ w), float(v @ v)
             if ww > 0:
-                ok = abs(math.sqrt(ww) - 1) <= tol and abs(wv) <= tol * (1 + math.sqrt(vv))
+                ok = abs(math.sqrt(ww) - 1) <= tol
             else:
                 ok = abs(math.sqrt(vv) - 1) <= tol
             if not ok:
@@ -1804,6 +1806,9 @@ def _build_spec():
         ("mass_matrix", ("q",)),
         ("gravity_torques", ("q",)),
         ("coriolis", ("q", "qd")),
+        ("inverse_dynamics_derivatives", ("q", "qd", "qdd")),
+        ("forward_dynamics_derivatives", ("q", "qd", "tau")),
+        ("mass_matrix_inverse", ("q",)),
     ):
         spec[f"Chain.{m}"] = Entry(
             # (a shape error names the argument, numpy's dtype error only the call)

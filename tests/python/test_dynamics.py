@@ -2,7 +2,7 @@
 (chasles._core._inverse_dynamics, _mass_matrix, _gravity_torques, _coriolis,
 _forward_dynamics) against the modern_robotics package (InverseDynamics,
 MassMatrix, GravityForces, VelQuadraticForces, ForwardDynamics) on random arms
-of revolute and prismatic joints with random inertias and on MR's own
+of revolute, helical and prismatic joints with random inertias and on MR's own
 3-link example (the first links of a UR5, from MR's docstrings), to 1e-12
 relative; SpatialInertia against the 6x6 formulas; batches against single
 calls; errors and docstring examples.
@@ -67,6 +67,8 @@ def random_arm(rng, n):
         point, direction = rng.uniform(-1, 1, 3), rng.uniform(-1, 1, 3)
         if rng.uniform() < 0.75:
             screws.append(Chain.revolute_screw(point, direction))
+            if rng.uniform() < 0.3:  # helical: pitch h in [-0.3, 0.3] m/rad
+                screws[-1][:3] += rng.uniform(-0.3, 0.3) * screws[-1][3:]
         else:
             screws.append(Chain.prismatic_screw(direction))
         bodies.append(random_body(rng, point))
@@ -194,7 +196,16 @@ def test_batches_equal_single_calls():
 
 
 def test_private_functions_are_documented_gufuncs():
-    for name in ["_inverse_dynamics", "_forward_dynamics", "_mass_matrix", "_gravity_torques", "_coriolis"]:
+    for name in [
+        "_inverse_dynamics",
+        "_forward_dynamics",
+        "_mass_matrix",
+        "_gravity_torques",
+        "_coriolis",
+        "_inverse_dynamics_derivatives",
+        "_forward_dynamics_derivatives",
+        "_mass_matrix_inverse",
+    ]:
         u = getattr(_core, name)
         assert isinstance(u, np.ufunc)
         assert u.signature.startswith("(n,6),(4,4),(n,6,6)")

@@ -370,8 +370,21 @@ def test_model_validation():
         Chain(s, UR5_HOME)
     s[2, 4] = 1 + 1e-8  # within the tolerance, 1.5e-8
     Chain(s, UR5_HOME)
-    with pytest.raises(ValueError, match=r"joint 0 is revolute but its screw has a pitch"):
-        Chain([[0, 0, 0.5, 0, 0, 1]], np.eye(4))
+    # a screw with a pitch is a helical joint (inferred), not a revolute one (given)
+    assert Chain([[0, 0, 0.5, 0, 0, 1]], np.eye(4)).joint_types == ("helical",)
+    with pytest.raises(ValueError, match=r"joint 0 is revolute but its screw has a pitch.*'helical'"):
+        Chain([[0, 0, 0.5, 0, 0, 1]], np.eye(4), joint_types=["revolute"])
+    with pytest.raises(ValueError, match=r"joint 0 is helical but its angular part w is not a unit vector"):
+        Chain([[0, 0, 0.5, 0, 0, 2]], np.eye(4))
+    # any nonzero norm with unit_screws=False (the joint variable in other units), but not zero
+    assert Chain([[0, 0, 0.5, 0, 0, 2], [0, 0, 3, 0, 0, 0]], np.eye(4), unit_screws=False).joint_types == (
+        "helical",
+        "prismatic",
+    )
+    with pytest.raises(ValueError, match=r"joint 1: expected a nonzero screw"):
+        Chain([[0, 0, 0, 0, 0, 2], [0, 0, 0, 0, 0, 0]], np.eye(4), unit_screws=False)
+    with pytest.raises(TypeError, match=r"Chain\(unit_screws\): expected a bool"):
+        Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), unit_screws=1)
     with pytest.raises(ValueError, match=r"joint 0 is prismatic but its angular part w is not zero"):
         Chain([[0, 0, 0, 0, 0, 1]], np.eye(4), joint_types=["prismatic"])
     with pytest.raises(ValueError, match=r"Chain\(lower, upper\): joint 0"):

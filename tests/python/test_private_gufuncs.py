@@ -31,6 +31,12 @@ PRIVATE = {
     "_mass_matrix": ("(n,6),(4,4),(n,6,6),(n)->(n,n)", ["dddd->d"]),
     "_gravity_torques": ("(n,6),(4,4),(n,6,6),(3),(n)->(n)", ["ddddd->d"]),
     "_coriolis": ("(n,6),(4,4),(n,6,6),(n),(n)->(n)", ["ddddd->d"]),
+    "_inverse_dynamics_derivatives": ("(n,6),(4,4),(n,6,6),(3),(n),(n),(n),(6)->(n,n),(n,n)", ["dddddddd->dd"]),
+    "_forward_dynamics_derivatives": (
+        "(n,6),(4,4),(n,6,6),(3),(n),(n),(n),(6)->(n,n),(n,n),(n,n),()",
+        ["dddddddd->dddi"],
+    ),
+    "_mass_matrix_inverse": ("(n,6),(4,4),(n,6,6),(n)->(n,n),()", ["dddd->di"]),
     "_inverse_kinematics": (
         "(n,6),(4,4),(n),(n),(),(),(),(4,4),(n),(),()->(n),(),(),(6)",
         ["ddddddiddi" + np.dtype(np.uint64).char + "->d?id"],

@@ -495,3 +495,87 @@ def test_forward_dynamics_of_real_arms_is_the_cholesky_solve(arms, key):
     err = np.abs(qdd - expected).max(axis=-1) / np.abs(expected).max(axis=-1)
     assert np.all(err <= 1e-13 * cond), (err / cond).max()
     np.testing.assert_array_equal(qdd[7], chain.forward_dynamics(q[7], qd[7], tau[7]))
+
+
+# ---- derivatives of the dynamics ----------------------------------------------------------
+
+
+def central(f, x, h=1e-6):
+    """Central differences of f at x, one column per coordinate (truncation h^2, rounding eps / h)."""
+    return np.stack([(f(x + h * e) - f(x - h * e)) / (2 * h) for e in np.eye(len(x))], axis=-1)
+
+
+@pytest.mark.parametrize("key", sorted(ARMS))
+def test_dynamics_derivatives_against_central_differences(arms, key):
+    # On the real arms (Jaco2's continuous joints included), with a tip wrench: the analytic
+    # derivatives against central differences of the methods themselves (1e-7 relative: the
+    # differences' own error), d qdd / d tau against numpy's inverse of M(q), and
+    # forward_dynamics_derivatives' first two against -M^-1 times inverse_dynamics_derivatives'.
+    chain = arms[key]
+    n = chain.n_joints
+    rng = np.random.default_rng(12)
+    for _ in range(3):
+        q, (qd, qdd, tau), tip = within_limits(chain, rng, 0.01), rng.uniform(-2, 2, (3, n)), rng.uniform(-5, 5, 6)
+        dq, dqd = chain.inverse_dynamics_derivatives(q, qd, qdd, tip_wrench=tip)
+        assert_close(dq, central(lambda x: chain.inverse_dynamics(x, qd, qdd, tip_wrench=tip), q), 1e-7)
+        assert_close(dqd, central(lambda x: chain.inverse_dynamics(q, x, qdd, tip_wrench=tip), qd), 1e-7)
+        fq, fqd, ftau = chain.forward_dynamics_derivatives(q, qd, tau, tip_wrench=tip)
+        M = chain.mass_matrix(q)
+        cond = np.linalg.cond(M)
+        fd = chain.forward_dynamics
+        assert_close(fq, central(lambda x: fd(x, qd, tau, tip_wrench=tip), q), 1e-7 * cond)
+        assert_close(fqd, central(lambda x: fd(q, x, tau, tip_wrench=tip), qd), 1e-7 * cond)
+        assert_close(ftau, np.linalg.inv(M), 1e-13 * cond)
+        np.testing.assert_array_equal(ftau, chain.mass_matrix_inverse(q))
+        a = fd(q, qd, tau, tip_wrench=tip)
+        dq_a, dqd_a = chain.inverse_dynamics_derivatives(q, qd, a, tip_wrench=tip)
+        assert_close(fq, -ftau @ dq_a, 1e-12 * cond)
+        assert_close(fqd, -ftau @ dqd_a, 1e-12 * cond)
+
+
+def test_dynamics_derivatives_are_array_functions(arms):
+    chain = arms["panda"]
+    rng = np.random.default_rng(13)
+    q, qd, x = rng.uniform(-1, 1, (3, 2, 3, 7))
+    tip = rng.uniform(-1, 1, 6)
+    dq, dqd = chain.inverse_dynamics_derivatives(q, qd, x, tip_wrench=tip)
+    fq, fqd, ftau = chain.forward_dynamics_derivatives(q, qd, x, tip_wrench=tip)
+    Minv = chain.mass_matrix_inverse(q)
+    assert all(a.shape == (2, 3, 7, 7) for a in (dq, dqd, fq, fqd, ftau, Minv))
+    for i in range(2):
+        for j in range(3):
+            one = chain.inverse_dynamics_derivatives(q[i, j], qd[i, j], x[i, j], tip_wrench=tip)
+            np.testing.assert_array_equal(dq[i, j], one[0])
+            np.testing.assert_array_equal(dqd[i, j], one[1])
+            one = chain.forward_dynamics_derivatives(q[i, j], qd[i, j], x[i, j], tip_wrench=tip)
+            for batched, single in zip((fq, fqd, ftau), one):
+                np.testing.assert_array_equal(batched[i, j], single)
+            np.testing.assert_array_equal(Minv[i, j], chain.mass_matrix_inverse(list(q[i, j])))
+    assert isinstance(chain.inverse_dynamics_derivatives(q[0, 0], qd[0, 0], x[0, 0]), tuple)
+    assert isinstance(chain.forward_dynamics_derivatives(q, qd, x), tuple)
+    with pytest.raises(ValueError, match=r"Chain.inverse_dynamics_derivatives\(qd\): expected shape \(7,\)"):
+        chain.inverse_dynamics_derivatives(q, qd[..., :6], x)
+    with pytest.raises(ValueError, match=r"Chain.mass_matrix_inverse: the chain has no link inertias"):
+        Chain(chain.space_screws, chain.home).mass_matrix_inverse(q)
+
+
+def test_derivatives_and_inverse_fail_where_forward_dynamics_fails(arms):
+    chain, joint = not_positive_definite_chains(arms)["massless last link"]
+    rng = np.random.default_rng(14)
+    q, qd, tau = within_limits(chain, rng), rng.uniform(-1, 1, 6), rng.uniform(-5, 5, 6)
+    for method, args in (("forward_dynamics_derivatives", (q, qd, tau)), ("mass_matrix_inverse", (q,))):
+        f = getattr(chain, method)
+        with pytest.raises(
+            ValueError,
+            match=rf"Chain.{method}: the mass matrix M\(q\) is not positive definite.*"
+            rf"joint {joint}",
+        ):
+            f(*args)
+        with pytest.raises(ValueError, match=rf"Chain.{method}: .* at batch index \(0,\), the first of 2 of 2"):
+            f(np.stack([q, q]), *args[1:])
+        out = f(*args, on_failure="nan")
+        assert all(np.isnan(a).all() for a in (out if isinstance(out, tuple) else (out,)))
+        with pytest.raises(ValueError, match=rf"Chain.{method}\(on_failure\): expected \"raise\" or \"nan\""):
+            f(*args, on_failure="ignore")
+    # the inverse dynamics' derivatives need no factorization: finite there
+    assert all(np.isfinite(a).all() for a in chain.inverse_dynamics_derivatives(q, qd, tau))

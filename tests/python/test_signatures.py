@@ -196,7 +196,7 @@ def test_help_of_the_package_shows_every_signature():
             Chain.__init__,
             "(self, screws, home, *, joint_types=None, joint_names=None, lower=None, upper=None, "
             "velocity_limits=None, effort_limits=None, base=None, tool=None, gravity=None, "
-            "link_inertias=None, names=None)",
+            "link_inertias=None, unit_screws=True, names=None)",
         ),
         (chasles.rplus, "(g, xi)"),
         (chasles.interpolate, "(a, b, t)"),
