@@ -24,12 +24,15 @@
 #              the source tree (with the C++ URDF loader's cross-check, whose
 #              program it builds when the cpp stage has not);
 #   all        (the default, what CI runs) the three, in two lanes that
-#              share the machine: the g++ build first, then the python
-#              stage in the background (its output is printed when it ends)
-#              while the g++ tests, the sanitizer build, its tests and the
-#              fuzzing run in the foreground. Neither lane keeps both cores
-#              busy alone (one compile at a time at the ends of a build,
-#              pytest on one core), so together they finish sooner.
+#              share the machine: the g++ build first, then in the
+#              background the python stage and after it the g++ build's
+#              ctest (their output is printed when they end), while the
+#              sanitizer build, its tests and the fuzzing run in the
+#              foreground. Neither lane keeps both cores busy alone (one
+#              compile at a time at the ends of a build, pytest on one
+#              core), so together they finish sooner; the g++ ctest goes
+#              to the lane that ends first (the python stage's ends about
+#              200 s before the sanitizer's tests).
 #
 #   bash tests/run.sh [all|cpp|fuzz|python]   # from the repository root
 #
@@ -258,14 +261,19 @@ finish_background() {
     exit "$status"
   fi
 }
+# The background lane of `all`: the python stage, then the g++ build's ctest.
+python_then_gxx_tests() {
+  stage_python
+  gxx_tests
+}
 stage_all() {
   apt_all
   gxx_build
   local log="$ROOT/build/python-stage.log" fuzz_log="$SANITIZE_DIR/fuzz-run.log"
-  echo "== the python stage runs in the background from here on; its output follows the fuzzing's"
-  in_background "$log" stage_python
+  echo "== the python stage and then the g++ ctest run in the background from here on; their output"
+  echo "   follows the fuzzing's"
+  in_background "$log" python_then_gxx_tests
   PY_PID=$BG_PID
-  gxx_tests
   sanitizer_build
   # The fuzzing (one process) beside the sanitizer's ctest, its output
   # printed after; then the python stage's.
@@ -274,7 +282,7 @@ stage_all() {
   sanitizer_tests
   finish_background "the fuzzing" "$FUZZ_PID" "$fuzz_log"
   FUZZ_PID=""
-  finish_background "the python stage" "$PY_PID" "$log"
+  finish_background "the python stage and the g++ ctest" "$PY_PID" "$log"
   PY_PID=""
 }
 
