@@ -123,6 +123,20 @@ Eigen::Matrix<Scalar, 6, 1> cross_star(const Twist<Scalar>& V, const Wrench<Scal
   return stack<Scalar>(Vector3(w.cross(f)), Vector3(v.cross(f) + w.cross(t)));
 }
 
+/// m x y = ad_m y (motion on motion).
+template <typename Scalar>
+Eigen::Matrix<Scalar, 6, 1> motion_cross(const Eigen::Matrix<Scalar, 6, 1>& m,
+                                         const Eigen::Matrix<Scalar, 6, 1>& y) noexcept {
+  return Twist<Scalar>(m).bracket(Twist<Scalar>(y)).vector();
+}
+
+/// m x* f = -ad_m^T f (motion on force).
+template <typename Scalar>
+Eigen::Matrix<Scalar, 6, 1> force_cross(const Eigen::Matrix<Scalar, 6, 1>& m,
+                                        const Eigen::Matrix<Scalar, 6, 1>& f) noexcept {
+  return cross_star(Twist<Scalar>(m), Wrench<Scalar>(f));
+}
+
 /// The recursion of the comment above; `with_gravity` false starts from A_0 = 0.
 template <typename ChainT, typename Qd, typename Qdd>
 typename ChainT::JointVector newton_euler(const ChainT& chain, const DynamicsPass<ChainT>& pass,
@@ -346,6 +360,81 @@ ForwardDynamicsResult<typename Chain<Scalar, N, MaxN>::JointVector> forward_dyna
   // M qdd = b: L y = b, then L^T qdd = y (as Eigen's LLT::solve).
   L.template triangularView<Eigen::Lower>().solveInPlace(qdd);
   L.adjoint().template triangularView<Eigen::Upper>().solveInPlace(qdd);
+  return {qdd, DynamicsStatus::ok, -1};
+}
+
+/// qdd of forward_dynamics by the articulated-body algorithm (Featherstone
+/// 2008, ch. 7.3), O(n), in the base frame, where no link frames are needed:
+/// with V_i and c_i = (V_i x S_i(q)) qd_i from the base out, the articulated
+/// inertias and bias forces from the tip in (I^A_i = G_i(q) plus the
+/// children's I^a, p^A_i = V_i x* G_i(q) V_i (+ F_tip at the tool) plus
+/// their p^a):
+///   U_i = I^A_i S_i,  D_i = S_i . U_i,  u_i = tau_i - S_i . p^A_i,
+///   I^a_i = I^A_i - U_i U_i^T / D_i,  p^a_i = p^A_i + I^a_i c_i + U_i u_i / D_i,
+/// then from the base out, A_0 = (-gravity, 0):
+///   qdd_i = (u_i - U_i . (A_{i-1} + c_i)) / D_i,  A_i = A_{i-1} + c_i + S_i qdd_i.
+/// The status is forward_dynamics', with the pivots D_i tested as its d_k
+/// are (D_i <= mass_matrix_pivot_tolerance * s_i, s_i from I^A_i's diagonal
+/// blocks), from the tip in: where M(q) is not positive definite the joint
+/// named may differ from forward_dynamics' (which factorizes from the base
+/// out). Equal to forward_dynamics to rounding (tests/cpp/test_dynamics.cpp);
+/// forward_dynamics' composite inertias and Cholesky factorization cost
+/// O(n^2) and O(n^3) with smaller constants (bench/bench_ops.cpp measures the
+/// crossover).
+template <typename Scalar, int N, int MaxN, typename Q, typename Qd, typename Tau>
+ForwardDynamicsResult<typename Chain<Scalar, N, MaxN>::JointVector> forward_dynamics_articulated(
+    const Chain<Scalar, N, MaxN>& chain, const Eigen::MatrixBase<Q>& q, const Eigen::MatrixBase<Qd>& qd,
+    const Eigen::MatrixBase<Tau>& tau, const Wrench<Scalar>& tip_wrench = Wrench<Scalar>()) noexcept {
+  using ChainT = Chain<Scalar, N, MaxN>;
+  using JointVector = typename ChainT::JointVector;
+  using Vector6 = Eigen::Matrix<Scalar, 6, 1>;
+  using Matrix6 = Eigen::Matrix<Scalar, 6, 6>;
+  constexpr auto Max = static_cast<std::size_t>(MaxN);
+  detail::check_joint_vector(chain, q);
+  detail::check_joint_vector(chain, qd);
+  detail::check_joint_vector(chain, tau);
+  const Eigen::Index n = chain.n_joints();
+  const detail::DynamicsPass<ChainT> pass(chain, q);
+  const Scalar tolerance(ThresholdsOf<Scalar>::mass_matrix_pivot_tolerance);
+  std::array<Matrix6, Max> IA;
+  std::array<Vector6, Max> pA, c, U;
+  JointVector D(n), u(n), qdd(n);
+  Vector6 V = Vector6::Zero();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    const Vector6 S = pass.S.col(i);
+    V += S * qd(i);
+    c[k] = detail::motion_cross<Scalar>(V, S) * qd(i);
+    IA[k] = pass.I[k].matrix();
+    pA[k] = detail::force_cross<Scalar>(V, Vector6(IA[k] * V));
+  }
+  pA[static_cast<std::size_t>(n - 1)] += pass.tool.act(tip_wrench).vector();
+  for (Eigen::Index i = n - 1; i >= 0; --i) {
+    const auto k = static_cast<std::size_t>(i);
+    const Vector6 S = pass.S.col(i);
+    U[k] = IA[k] * S;
+    D(i) = S.dot(U[k]);
+    u(i) = tau(i) - S.dot(pA[k]);
+    const Scalar s = S.template head<3>().squaredNorm() * IA[k].template topLeftCorner<3, 3>().trace() +
+                     S.template tail<3>().squaredNorm() * IA[k].template bottomRightCorner<3, 3>().trace();
+    if (D(i) <= tolerance * s) {  // false for NaN: a NaN goes on to the result
+      const Scalar nan(std::numeric_limits<RealOf<Scalar>>::quiet_NaN());
+      return {JointVector::Constant(n, nan), DynamicsStatus::mass_matrix_not_positive_definite, i};
+    }
+    if (i > 0) {
+      const Matrix6 Ia = IA[k] - U[k] * U[k].transpose() / D(i);
+      IA[k - 1] += Ia;
+      pA[k - 1] += pA[k] + Ia * c[k] + U[k] * (u(i) / D(i));
+    }
+  }
+  Vector6 A = Vector6::Zero();
+  A.template head<3>() = -chain.gravity();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    A += c[k];
+    qdd(i) = (u(i) - U[k].dot(A)) / D(i);
+    A += pass.S.col(i) * qdd(i);
+  }
   return {qdd, DynamicsStatus::ok, -1};
 }
 

@@ -82,20 +82,6 @@ struct MassMatrixInverse {
 
 namespace detail {
 
-/// m x y = ad_m y (motion on motion).
-template <typename Scalar>
-Eigen::Matrix<Scalar, 6, 1> motion_cross(const Eigen::Matrix<Scalar, 6, 1>& m,
-                                         const Eigen::Matrix<Scalar, 6, 1>& y) noexcept {
-  return Twist<Scalar>(m).bracket(Twist<Scalar>(y)).vector();
-}
-
-/// m x* f = -ad_m^T f (motion on force).
-template <typename Scalar>
-Eigen::Matrix<Scalar, 6, 1> force_cross(const Eigen::Matrix<Scalar, 6, 1>& m,
-                                        const Eigen::Matrix<Scalar, 6, 1>& f) noexcept {
-  return cross_star(Twist<Scalar>(m), Wrench<Scalar>(f));
-}
-
 /// The derivatives of the comment above at (q, qd, qdd), q's pass given.
 template <typename ChainT, typename Qd, typename Qdd>
 InverseDynamicsDerivatives<typename ChainT::MassMatrix> newton_euler_derivatives(

@@ -423,6 +423,48 @@ class Chain {
     return J;
   }
 
+  /// dJ_s/dt at joint velocities theta_dot: column i is d/dt S_i(theta) =
+  /// [V_{i-1}, S_i(theta)] (V_{i-1} = sum_{j<i} S_j(theta) theta_dot_j, the
+  /// twist of the link before joint i, base frame; the bracket of
+  /// Twist::bracket). With it the tool's acceleration (the time derivative
+  /// of V^s's coordinates) is J_s theta_ddot + J_s_dot theta_dot.
+  template <typename Q, typename Qd>
+  Jacobian jacobian_space_dot(const Eigen::MatrixBase<Q>& theta,
+                              const Eigen::MatrixBase<Qd>& theta_dot) const noexcept {
+    check_size(theta);
+    check_size(theta_dot);
+    Jacobian J(6, n_joints()), Jd(6, n_joints());
+    detail::space_pass(*this, theta, &J, detail::NoLink(), false);
+    Twist<Scalar> V;
+    for (Eigen::Index i = 0; i < n_joints(); ++i) {
+      const Twist<Scalar> Si{Vector6(J.col(i))};
+      Jd.col(i) = V.bracket(Si).vector();
+      V = V + Si * theta_dot(i);
+    }
+    return Jd;
+  }
+
+  /// dJ_b/dt at joint velocities theta_dot: J_b = Ad_{g^-1} J_s and
+  /// d/dt Ad_{g^-1} = -Ad_{g^-1} ad_{V^s}, so column i is
+  /// Ad_{g^-1} [V_{i-1} - V^s, S_i(theta)] (V^s = J_s theta_dot, the tool's
+  /// spatial twist). The tool's body acceleration is J_b theta_ddot +
+  /// J_b_dot theta_dot.
+  template <typename Q, typename Qd>
+  Jacobian jacobian_body_dot(const Eigen::MatrixBase<Q>& theta, const Eigen::MatrixBase<Qd>& theta_dot) const noexcept {
+    check_size(theta);
+    check_size(theta_dot);
+    Jacobian J(6, n_joints()), Jd(6, n_joints());
+    const Group g = detail::space_pass(*this, theta, &J, detail::NoLink()) * M_;
+    const Vector6 Vs = J.lazyProduct(theta_dot);
+    Vector6 V = Vector6::Zero();
+    for (Eigen::Index i = 0; i < n_joints(); ++i) {
+      const Twist<Scalar> Si{Vector6(J.col(i))};
+      Jd.col(i) = g.act_inv(Twist<Scalar>(Vector6(V - Vs)).bracket(Si)).vector();
+      V += J.col(i) * theta_dot(i);
+    }
+    return Jd;
+  }
+
   /// n, the number of joints.
   Eigen::Index n_joints() const noexcept { return S_.cols(); }
   /// S (6 x n): the joint screws at home, in the base frame.

@@ -917,6 +917,47 @@ TEST(DynamicsDerivatives, ForwardDynamicsEqualsAutomaticDifferentiation) {
   }
 }
 
+TEST(ArticulatedBody, EqualsForwardDynamics) {
+  // The articulated-body algorithm against the composite inertias and
+  // Cholesky solve, on the random arms (helical joints, screws of any norm,
+  // a tip wrench): the same accelerations to rounding (cond(M) eps).
+  std::mt19937 rng(55);
+  for (int trial = 0; trial < 80; ++trial) {
+    const int n = 1 + trial % kMax;
+    const Dyn<double> d = dynamics_of<double>(random_screw_arm(rng, n));
+    const Dyn<double>::JointVector q = joints(rng, n, 3), qd = joints(rng, n, 2), tau = joints(rng, n, 20);
+    const Wrench<double> w(Eigen::Matrix<double, 6, 1>(Eigen::Matrix<double, 6, 1>::Random() * 10));
+    const auto crba = forward_dynamics(d, q, qd, tau, w);
+    const auto aba = chasles::forward_dynamics_articulated(d, q, qd, tau, w);
+    ASSERT_TRUE(crba && aba) << "trial " << trial;
+    EXPECT_EQ(aba.joint, -1);
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(Eigen::MatrixXd(mass_matrix(d, q)));
+    const LD cond = LD(es.eigenvalues().maxCoeff() / es.eigenvalues().minCoeff());
+    EXPECT_TRUE(near<double>(aba.qdd, crba.qdd, kPerJoint * n * cond, max_abs(tau))) << "trial " << trial;
+  }
+  // The Panda-like arm in float and double: rounding only.
+  const Panda<float> f = panda_with<float>(PandaLike<float>().inertias);
+  for (int trial = 0; trial < 20; ++trial) {
+    const PandaState<float> x(rng);
+    EXPECT_TRUE(near<float>(chasles::forward_dynamics_articulated(f, x.q, x.qd, x.tau).qdd,
+                            forward_dynamics(f, x.q, x.qd, x.tau).qdd, 1e4L, max_abs(x.tau)));
+  }
+}
+
+TEST(ArticulatedBody, ReportsWhereTheArticulatedInertiaIsNotPositive) {
+  // A massless last link: the tip's articulated inertia is zero, its pivot
+  // fails first (the algorithm works from the tip in); an indefinite
+  // inertia gives a negative pivot. NaN accelerations, the joint named.
+  std::array<SpatialInertia<double>, 7> I = PandaLike<double>().inertias;
+  I[6] = SpatialInertia<double>();
+  std::mt19937 rng(56);
+  const PandaState<double> x(rng);
+  EXPECT_TRUE(fails_at(chasles::forward_dynamics_articulated(panda_with<double>(I), x.q, x.qd, x.tau), 6));
+  I = PandaLike<double>().inertias;
+  I[6] = SpatialInertia<double>::from_matrix_unchecked(Eigen::Matrix<double, 6, 6>(-I[6].matrix()));
+  EXPECT_TRUE(fails_at(chasles::forward_dynamics_articulated(panda_with<double>(I), x.q, x.qd, x.tau), 6));
+}
+
 TEST(DynamicsDerivatives, FailuresAreForwardDynamicsFailures) {
   // A massless last link: forward_dynamics fails at joint 6, and so do its
   // derivatives and M(q)^-1, all NaN.

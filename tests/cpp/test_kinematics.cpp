@@ -653,3 +653,46 @@ TYPED_TEST(Kinematics, ValidateLinkInertias) {
 }
 
 }  // namespace
+
+namespace {
+
+// ---- the time derivatives of the Jacobians ------------------------------------
+
+TEST(JacobianDot, EqualsTheDerivativeAlongTheMotion) {
+  // jacobian_space_dot and jacobian_body_dot at (q, qd) against the
+  // five-point central difference of the Jacobians along q + t qd, in long
+  // double (step 1e-4: truncation h^4/30 |J^(5)| ~ 1e-12 with |J^(5)| ~
+  // (sum |qd_i|)^5 <= 14^5, rounding 1e-19 / h), on the railed UR5 and on it with
+  // two joints made helical (pitches 0.2 and -0.5 m/rad).
+  using C = Chain<double, Eigen::Dynamic, 8>;
+  using CL = Chain<LD, Eigen::Dynamic, 8>;
+  Arm arm = ur5_on_rail();
+  Arm helical = arm;
+  helical.S.col(2).head<3>() += 0.2L * helical.S.col(2).tail<3>();
+  helical.S.col(5).head<3>() -= 0.5L * helical.S.col(5).tail<3>();
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-2.0, 2.0);
+  for (Arm a : {arm, helical}) {
+    const C chain = make_chain<C>(a);
+    const CL chain_l(CL::Screws(a.S), SE3<LD>::from_matrix_unchecked(a.M));
+    for (int trial = 0; trial < 10; ++trial) {
+      C::JointVector q(7), qd(7);
+      for (int i = 0; i < 7; ++i) q(i) = u(rng), qd(i) = u(rng);
+      const CL::JointVector ql = q.cast<LD>(), qdl = qd.cast<LD>();
+      const LD h = 1e-4L;
+      auto along = [&](auto jacobian, LD t) { return jacobian(CL::JointVector(ql + t * qdl)); };
+      auto five_point = [&](auto jacobian) {
+        return Eigen::Matrix<LD, 6, Eigen::Dynamic>(
+            (-along(jacobian, 2 * h) + 8 * along(jacobian, h) - 8 * along(jacobian, -h) + along(jacobian, -2 * h)) /
+            (12 * h));
+      };
+      const auto Js = [&](const CL::JointVector& x) { return chain_l.jacobian_space(x); };
+      const auto Jb = [&](const CL::JointVector& x) { return chain_l.jacobian_body(x); };
+      const LD scale = 10;  // |J_dot| for these arms and velocities
+      EXPECT_LE(max_abs_diff(to_ld(chain.jacobian_space_dot(q, qd)), five_point(Js)), 1e-11L * scale) << trial;
+      EXPECT_LE(max_abs_diff(to_ld(chain.jacobian_body_dot(q, qd)), five_point(Jb)), 1e-11L * scale) << trial;
+    }
+  }
+}
+
+}  // namespace
