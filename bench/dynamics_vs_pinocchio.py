@@ -12,7 +12,9 @@ largest relative difference (max |a - b| / max(1, max |b|)) of
   (pin.nonLinearEffects minus gravity) and forward dynamics (pin.aba),
 - the derivatives of inverse dynamics (pin.computeRNEADerivatives: d tau / d q
   and d tau / d qd) and of forward dynamics (pin.computeABADerivatives: d qdd /
-  d q, d qd, d tau), and M(q)^-1 (pin.computeMinverse, both triangles),
+  d q, d qd, d tau), M(q)^-1 (pin.computeMinverse, both triangles), and
+  the time derivatives of the tool's Jacobians
+  (pin.getFrameJacobianTimeVariation, WORLD and LOCAL),
 and the time of each side's Python call: one configuration per call (the
 median over 7 runs of 2000 calls), and chasles' batched call on N = 1000
 configurations ((N, n) arrays) per configuration (Pinocchio's Python API
@@ -149,7 +151,7 @@ def timings(chain: Chain, model, data, rng):
 def main() -> None:
     root = robots_dir()
     print(f"pinocchio {pin.__version__}; largest relative difference over {STATES} states")
-    columns = ("forward", "rnea", "crba", "gravity", "coriolis", "aba", "d_rnea", "d_aba", "minv")
+    columns = ("forward", "rnea", "crba", "gravity", "coriolis", "aba", "d_rnea", "d_aba", "minv", "jdot")
     print(f"{'arm':6} {'n':>2} " + " ".join(f"{c:>8}" for c in columns))
     timing = {}
     for name, (rel_path, tip) in ARMS.items():
@@ -191,6 +193,13 @@ def main() -> None:
             Minv = pin.computeMinverse(model, data, qp)
             Minv = np.triu(Minv) + np.triu(Minv, 1).T
             worst["minv"] = max(worst["minv"], rel(chain.mass_matrix_inverse(q), Minv))
+            pin.computeJointJacobiansTimeVariation(model, data, qp, qd)
+            pin.updateFramePlacements(model, data)
+            Jw = pin.getFrameJacobianTimeVariation(model, data, frame, pin.WORLD)
+            Jl = pin.getFrameJacobianTimeVariation(model, data, frame, pin.LOCAL)
+            worst["jdot"] = max(
+                worst["jdot"], rel(chain.jacobian_space_dot(q, qd), Jw), rel(chain.jacobian_body_dot(q, qd), Jl)
+            )
         print(f"{name:6} {n:>2} " + " ".join(f"{worst[k]:8.1e}" for k in worst))
         if name in ("UR5", "Panda"):
             timing[name] = timings(chain, model, data, rng)

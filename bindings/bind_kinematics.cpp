@@ -212,6 +212,8 @@ enum class Op {
   forward_body,
   jacobian_space,
   jacobian_body,
+  jacobian_space_dot,
+  jacobian_body_dot,
   inverse,
   forward_dynamics,
   mass,
@@ -242,6 +244,10 @@ auto compute(const ChainD& c, const Joints* x, const chasles::Wrenchd& tip) {
     return c.jacobian_space(x[0]);
   else if constexpr (op == Op::jacobian_body)
     return c.jacobian_body(x[0]);
+  else if constexpr (op == Op::jacobian_space_dot)
+    return c.jacobian_space_dot(x[0], x[1]);
+  else if constexpr (op == Op::jacobian_body_dot)
+    return c.jacobian_body_dot(x[0], x[1]);
   else if constexpr (op == Op::inverse)
     return chasles::inverse_dynamics(c, x[0], x[1], x[2], tip);
   else if constexpr (op == Op::forward_dynamics)
@@ -318,6 +324,15 @@ Ufuncs register_ufuncs(py::module_& m) {
   u[std::size_t(Op::jacobian_body)] =
       def_ufunc<Jac, Float64>(m, "_chain_jacobian_body", kin, private_doc("J_b(theta).", "jacobian_body"),
                               model<2>(ChainOf()), Kernel<Op::jacobian_body>());
+  using JacDot = Core<6, upto<kMaxJoints>>(ScrewsCore, Core<4, 4>, JointsCore, JointsCore);
+  u[std::size_t(Op::jacobian_space_dot)] =
+      def_ufunc<JacDot, Float64>(m, "_chain_jacobian_space_dot", "screws, home, theta, theta_dot",
+                                 private_doc("dJ_s/dt at (theta, theta_dot).", "jacobian_space_dot"),
+                                 model<2>(ChainOf()), Kernel<Op::jacobian_space_dot>());
+  u[std::size_t(Op::jacobian_body_dot)] =
+      def_ufunc<JacDot, Float64>(m, "_chain_jacobian_body_dot", "screws, home, theta, theta_dot",
+                                 private_doc("dJ_b/dt at (theta, theta_dot).", "jacobian_body_dot"),
+                                 model<2>(ChainOf()), Kernel<Op::jacobian_body_dot>());
   // (n,6),(4,4),(n,6,6),(3),(n),(n),(n),(6)->(n) [,()]: screws, home, inertias, gravity, q, qd, qdd (tau), tip wrench
   u[std::size_t(Op::inverse)] =
       def_ufunc<JointsCore(ScrewsCore, Core<4, 4>, G, Core<3>, JointsCore, JointsCore, JointsCore, Core<6>), Float64>(
@@ -526,16 +541,16 @@ py::object call(PyObject* u, const PyChain& c, const char* method, const std::ar
       return array_of(r);
   }
   // The batch: the messages name the method (strings made here only, off the fast path).
-  const std::string what = std::string("Chain.") + method, call_what = dynamics ? what : what + "(theta)";
+  const std::string what = std::string("Chain.") + method, call_what = dynamics || J > 1 ? what : what + "(theta)";
   std::array<py::object, 8> keep;  // the operands, alive through the call
   std::array<PyObject*, 8> args{};
   std::size_t k = 0;
   for (std::size_t i = 0; i < (!dynamics ? 2 : with_gravity ? 4 : 3); ++i)  // the model's operands
     keep[k] = c.operands[i], args[k] = keep[k].ptr(), ++k;
-  static const char* const names[] = {"q", "qd", "qdd", "tau", "theta"};
+  static const char* const names[] = {"q", "qd", "qdd", "tau", "theta", "theta_dot"};
   constexpr bool takes_tau = op == Op::forward_dynamics || op == Op::forward_derivatives;
   for (std::size_t j = 0; j < J; ++j) {
-    const char* arg = !dynamics ? names[4] : (takes_tau && j == 2) ? names[3] : names[j];
+    const char* arg = !dynamics ? names[4 + j] : (takes_tau && j == 2) ? names[3] : names[j];
     keep[k] = joint_operand(x[j], n, what + "(" + arg + ")");
     args[k] = keep[k].ptr(), ++k;
   }
@@ -667,6 +682,35 @@ theta: array_like (..., n); returns (..., 6, n).)doc");
 
 Column i is Ad_{(exp([B_{i+1}] th_{i+1}) ... exp([B_n] th_n))^-1} B_i, rows (v, w).
 theta: array_like (..., n); returns (..., 6, n).)doc");
+
+  PyObject *f_jsd = ufunc_of(Op::jacobian_space_dot), *f_jbd = ufunc_of(Op::jacobian_body_dot);
+  cls.def(
+      "jacobian_space_dot",
+      [f_jsd](Obj<PyChain> c, py::object theta, py::object theta_dot) {
+        return call<Op::jacobian_space_dot, 2>(f_jsd, *c, "jacobian_space_dot", {theta, theta_dot}, nullptr);
+      },
+      py::arg("theta"), py::arg("theta_dot"),
+      (std::string(R"doc(The time derivative of the space Jacobian, dJ_s/dt, at joint positions and velocities.
+
+Column i is [V_{i-1}, S_i(theta)]: the bracket of the twist of the link before joint i
+(sum_{j<i} S_j(theta) theta_dot_j) with joint i's screw. The tool's spatial acceleration
+(the time derivative of V^s) is J_s theta_ddot + J_s_dot theta_dot.
+theta, theta_dot: array_like (..., n); returns (..., 6, n).)doc") +
+       kArrayFunction)
+          .c_str());
+  cls.def(
+      "jacobian_body_dot",
+      [f_jbd](Obj<PyChain> c, py::object theta, py::object theta_dot) {
+        return call<Op::jacobian_body_dot, 2>(f_jbd, *c, "jacobian_body_dot", {theta, theta_dot}, nullptr);
+      },
+      py::arg("theta"), py::arg("theta_dot"),
+      (std::string(R"doc(The time derivative of the body Jacobian, dJ_b/dt, at joint positions and velocities.
+
+Column i is Ad_{g^-1} [V_{i-1} - V^s, S_i(theta)] (V^s = J_s theta_dot). The tool's body
+acceleration is J_b theta_ddot + J_b_dot theta_dot: what a task-space controller feeds forward.
+theta, theta_dot: array_like (..., n); returns (..., 6, n).)doc") +
+       kArrayFunction)
+          .c_str());
 
   // ---- dynamics (chasles/dynamics.hpp)
   const char* const kRaises = R"doc( ValueError: a chain without link inertias, shapes that do not match.)doc";

@@ -272,6 +272,8 @@ class Chain(_core._Chain):
     forward_body = vars(_core._Chain)["forward_body"]
     jacobian_space = vars(_core._Chain)["jacobian_space"]
     jacobian_body = vars(_core._Chain)["jacobian_body"]
+    jacobian_space_dot = vars(_core._Chain)["jacobian_space_dot"]
+    jacobian_body_dot = vars(_core._Chain)["jacobian_body_dot"]
     inverse_dynamics = vars(_core._Chain)["inverse_dynamics"]
     forward_dynamics = vars(_core._Chain)["forward_dynamics"]
     mass_matrix = vars(_core._Chain)["mass_matrix"]

@@ -4065,12 +4065,35 @@ class _Chain:
         An array function: (n,) gives one result, (..., n) one per configuration,
         by numpy's rules (broadcasting, dtypes, the GIL released; NaN gives NaN).
         """
+    def jacobian_body_dot(self, theta: typing.Any, theta_dot: typing.Any) -> typing.Any:
+        """
+        The time derivative of the body Jacobian, dJ_b/dt, at joint positions and velocities.
+        
+        Column i is Ad_{g^-1} [V_{i-1} - V^s, S_i(theta)] (V^s = J_s theta_dot). The tool's body
+        acceleration is J_b theta_ddot + J_b_dot theta_dot: what a task-space controller feeds forward.
+        theta, theta_dot: array_like (..., n); returns (..., 6, n).
+        
+        An array function: (n,) gives one result, (..., n) one per configuration,
+        by numpy's rules (broadcasting, dtypes, the GIL released; NaN gives NaN).
+        """
     def jacobian_space(self, theta: numpy.typing.ArrayLike) -> typing.Any:
         """
         The space Jacobian J_s: (g' g^-1)^vee = J_s theta'.
         
         Column i is Ad_{exp([S_1] th_1) ... exp([S_{i-1}] th_{i-1})} S_i, rows (v, w); J_s = Ad_g J_b.
         theta: array_like (..., n); returns (..., 6, n).
+        
+        An array function: (n,) gives one result, (..., n) one per configuration,
+        by numpy's rules (broadcasting, dtypes, the GIL released; NaN gives NaN).
+        """
+    def jacobian_space_dot(self, theta: typing.Any, theta_dot: typing.Any) -> typing.Any:
+        """
+        The time derivative of the space Jacobian, dJ_s/dt, at joint positions and velocities.
+        
+        Column i is [V_{i-1}, S_i(theta)]: the bracket of the twist of the link before joint i
+        (sum_{j<i} S_j(theta) theta_dot_j) with joint i's screw. The tool's spatial acceleration
+        (the time derivative of V^s) is J_s theta_ddot + J_s_dot theta_dot.
+        theta, theta_dot: array_like (..., n); returns (..., 6, n).
         
         An array function: (n,) gives one result, (..., n) one per configuration,
         by numpy's rules (broadcasting, dtypes, the GIL released; NaN gives NaN).
@@ -4830,7 +4853,9 @@ __version__: str = '0.1.0'
 _chain_forward: numpy.ufunc
 _chain_forward_body: numpy.ufunc
 _chain_jacobian_body: numpy.ufunc
+_chain_jacobian_body_dot: numpy.ufunc
 _chain_jacobian_space: numpy.ufunc
+_chain_jacobian_space_dot: numpy.ufunc
 _coriolis: numpy.ufunc
 _forward_dynamics: numpy.ufunc
 _forward_dynamics_derivatives: numpy.ufunc

@@ -1792,6 +1792,9 @@ def _build_spec():
     spec["Chain.prismatic_screw"] = _static(Chain, "prismatic_screw", Array("Chain.prismatic_screw(direction)", (3,)))
     for m in ("forward", "forward_body", "jacobian_space", "jacobian_body"):
         spec[f"Chain.{m}"] = _method(Chain, m, JointArray(f"Chain.{m}(theta)", 2))
+    for m in ("jacobian_space_dot", "jacobian_body_dot"):
+        # (a shape error names the argument, numpy's dtype error only the call)
+        spec[f"Chain.{m}"] = _method(Chain, m, JointArray(f"Chain.{m}", 2), JointArray(f"Chain.{m}", 2))
     spec["Chain.inverse_kinematics"] = _method(
         Chain,
         "inverse_kinematics",

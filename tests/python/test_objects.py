@@ -447,6 +447,11 @@ COMPUTED = {
         "mass_matrix",
         "gravity_torques",
         "coriolis",
+        "jacobian_space_dot",
+        "jacobian_body_dot",
+        "inverse_dynamics_derivatives",
+        "forward_dynamics_derivatives",
+        "mass_matrix_inverse",
     },
 }
 

@@ -26,6 +26,8 @@ PRIVATE = {
     "_chain_forward_body": ("(n,6),(4,4),(n)->(4,4)", ["ddd->d"]),
     "_chain_jacobian_space": ("(n,6),(4,4),(n)->(6,n)", ["ddd->d"]),
     "_chain_jacobian_body": ("(n,6),(4,4),(n)->(6,n)", ["ddd->d"]),
+    "_chain_jacobian_space_dot": ("(n,6),(4,4),(n),(n)->(6,n)", ["dddd->d"]),
+    "_chain_jacobian_body_dot": ("(n,6),(4,4),(n),(n)->(6,n)", ["dddd->d"]),
     "_inverse_dynamics": ("(n,6),(4,4),(n,6,6),(3),(n),(n),(n),(6)->(n)", ["dddddddd->d"]),
     "_forward_dynamics": ("(n,6),(4,4),(n,6,6),(3),(n),(n),(n),(6)->(n),()", ["dddddddd->di"]),
     "_mass_matrix": ("(n,6),(4,4),(n,6,6),(n)->(n,n)", ["dddd->d"]),

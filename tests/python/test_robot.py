@@ -579,3 +579,43 @@ def test_derivatives_and_inverse_fail_where_forward_dynamics_fails(arms):
             f(*args, on_failure="ignore")
     # the inverse dynamics' derivatives need no factorization: finite there
     assert all(np.isfinite(a).all() for a in chain.inverse_dynamics_derivatives(q, qd, tau))
+
+
+# ---- time derivatives of the Jacobians ------------------------------------------------------
+
+
+@pytest.mark.parametrize("key", sorted(ARMS))
+def test_jacobian_dots_against_central_differences(arms, key):
+    # dJ/dt along q(t) = q + t qd + t^2 qdd / 2 by central differences (step 1e-5: 1e-9 relative),
+    # and the tool's body acceleration J_b qdd + J_b_dot qd as d/dt (J_b(q(t)) q'(t)) (the body
+    # twist's rate), space likewise.
+    chain = arms[key]
+    n = chain.n_joints
+    rng = np.random.default_rng(15)
+    h = 1e-5
+    for _ in range(3):
+        q, qd, qdd = within_limits(chain, rng, 0.01), rng.uniform(-2, 2, n), rng.uniform(-2, 2, n)
+
+        def along(f, t):
+            return f(q + t * qd + t * t / 2 * qdd)
+
+        def rate(f):
+            return (along(f, h) - along(f, -h)) / (2 * h)
+
+        Js_dot, Jb_dot = chain.jacobian_space_dot(q, qd), chain.jacobian_body_dot(q, qd)
+        assert_close(Js_dot, rate(chain.jacobian_space), 1e-8)
+        assert_close(Jb_dot, rate(chain.jacobian_body), 1e-8)
+        for jacobian, dot in ((chain.jacobian_space, Js_dot), (chain.jacobian_body, Jb_dot)):
+            twist_rate = (
+                jacobian(q + h * qd + h * h / 2 * qdd) @ (qd + h * qdd)
+                - jacobian(q - h * qd + h * h / 2 * qdd) @ (qd - h * qdd)
+            ) / (2 * h)
+            assert_close(jacobian(q) @ qdd + dot @ qd, twist_rate, 1e-8)
+    # array functions: a batch equals its single calls
+    Q, QD = rng.uniform(-1, 1, (2, 3, n))
+    batch = chain.jacobian_body_dot(Q, QD)
+    assert batch.shape == (3, 6, n)
+    for i in range(3):
+        np.testing.assert_array_equal(batch[i], chain.jacobian_body_dot(Q[i], QD[i]))
+    with pytest.raises(ValueError, match=rf"Chain.jacobian_space_dot\(theta_dot\): expected shape \({n},\)"):
+        chain.jacobian_space_dot(q, qd[:-1])
