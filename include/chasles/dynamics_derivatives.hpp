@@ -112,10 +112,9 @@ InverseDynamicsDerivatives<typename ChainT::MassMatrix> newton_euler_derivatives
     const auto k = static_cast<std::size_t>(i);
     const Matrix6 G = pass.I[k].matrix();
     const Vector6 h = G * V[k];
-    const Matrix6 ad = Twist<Scalar>(V[k]).ad();
+    const Matrix6 X = Twist<Scalar>(V[k]).ad().transpose() * G;
     I_sum += G;
-    B_sum.noalias() -= ad.transpose() * G;  // V x* G - G V x = -ad^T G - G ad
-    B_sum.noalias() -= G * ad;
+    B_sum -= X + X.transpose();  // V x* G - G V x = -ad^T G - G ad = -(X + X^T), G symmetric
     h_sum += h;
     F_sum += G * A[k] + force_cross<Scalar>(V[k], h);
     Ic[k] = I_sum;
@@ -149,15 +148,31 @@ InverseDynamicsDerivatives<typename ChainT::MassMatrix> newton_euler_derivatives
   return d;
 }
 
-/// X = M^-1 X for M = L L^T (L in the lower triangle of `L`), column by
-/// column (a vector's triangular solves: no workspace).
+/// M^-1 = L^-T L^-1 for M = L L^T (L in the lower triangle of `L`): X =
+/// L^-1 by forward substitution on the columns of the identity (lower
+/// triangular), then the upper triangle of X^T X, mirrored: about n^3 / 3
+/// products, coefficient by coefficient (no workspace).
 template <typename MassMatrix>
-void cholesky_solve_columns(const MassMatrix& L, MassMatrix& X) noexcept {
-  for (Eigen::Index c = 0; c < X.cols(); ++c) {
-    auto x = X.col(c);
-    L.template triangularView<Eigen::Lower>().solveInPlace(x);
-    L.adjoint().template triangularView<Eigen::Upper>().solveInPlace(x);
+MassMatrix cholesky_inverse(const MassMatrix& L) noexcept {
+  using Scalar = typename MassMatrix::Scalar;
+  const Eigen::Index n = L.rows();
+  MassMatrix X = MassMatrix::Zero(n, n);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    X(j, j) = Scalar(1) / L(j, j);
+    for (Eigen::Index i = j + 1; i < n; ++i) {
+      Scalar sum(0);
+      for (Eigen::Index k = j; k < i; ++k) sum += L(i, k) * X(k, j);
+      X(i, j) = -sum / L(i, i);
+    }
   }
+  MassMatrix inverse(n, n);
+  for (Eigen::Index j = 0; j < n; ++j)
+    for (Eigen::Index i = 0; i <= j; ++i) {
+      Scalar sum(0);
+      for (Eigen::Index k = j; k < n; ++k) sum += X(k, i) * X(k, j);
+      inverse(i, j) = inverse(j, i) = sum;
+    }
+  return inverse;
 }
 
 }  // namespace detail
@@ -194,9 +209,7 @@ MassMatrixInverse<typename Chain<Scalar, N, MaxN>::MassMatrix> mass_matrix_inver
     const Scalar nan(std::numeric_limits<RealOf<Scalar>>::quiet_NaN());
     return {MassMatrix::Constant(n, n, nan), DynamicsStatus::mass_matrix_not_positive_definite, k};
   }
-  MassMatrix X = MassMatrix::Identity(n, n);
-  detail::cholesky_solve_columns(L, X);
-  return {X, DynamicsStatus::ok, -1};
+  return {detail::cholesky_inverse(L), DynamicsStatus::ok, -1};
 }
 
 /// d qdd / d q, d qdd / d qd and d qdd / d tau of forward_dynamics(chain, q,
@@ -229,11 +242,9 @@ ForwardDynamicsDerivatives<typename Chain<Scalar, N, MaxN>::MassMatrix> forward_
   L.template triangularView<Eigen::Lower>().solveInPlace(qdd);
   L.adjoint().template triangularView<Eigen::Upper>().solveInPlace(qdd);
   InverseDynamicsDerivatives<MassMatrix> d = detail::newton_euler_derivatives(chain, pass, qd, qdd, tip_wrench);
-  MassMatrix Minv = MassMatrix::Identity(n, n);
-  detail::cholesky_solve_columns(L, Minv);
-  detail::cholesky_solve_columns(L, d.dtau_dq);
-  detail::cholesky_solve_columns(L, d.dtau_dqd);
-  return {MassMatrix(-d.dtau_dq), MassMatrix(-d.dtau_dqd), Minv, DynamicsStatus::ok, -1};
+  const MassMatrix Minv = detail::cholesky_inverse(L);
+  return {MassMatrix(-Minv.lazyProduct(d.dtau_dq)), MassMatrix(-Minv.lazyProduct(d.dtau_dqd)), Minv, DynamicsStatus::ok,
+          -1};
 }
 
 }  // namespace chasles
