@@ -323,9 +323,12 @@ struct Thresholds<long double> {
 //   1e200. float: 100 (|r| ~ 1e6 |D|, products below 1e30).
 //
 // screw_tolerance: Chain::validate() (kinematics.hpp) accepts a revolute
-//   joint's angular part w with | |w| - 1 | <= tol and |w . v| <= tol (1 + |v|)
-//   (zero pitch), a prismatic joint's linear part v with | |v| - 1 | <= tol
-//   and |w| <= tol. sqrt(eps), as rotation_tolerance: an axis written with
+//   or helical joint's angular part w with | |w| - 1 | <= tol, a revolute
+//   joint's pitch with |w . v| <= tol |w| (|w| + |v|) (zero pitch; the same
+//   test makes Chain's constructor infer a helical joint where it fails), a
+//   prismatic joint's linear part v with | |v| - 1 | <= tol and |w| <= tol
+//   (with ScrewNorms::any, no norm is asked and |w| <= tol |v|: the tests are
+//   relative to the screw's norm). sqrt(eps), as rotation_tolerance: an axis written with
 //   half the digits of the type passes (0.70710678 twice has | |w| - 1 | ~ 1e-9);
 //   a screw table in Modern Robotics' (w, v) order does not, read as (v, w):
 //   its "angular part" is then v = -w x q, of norm the distance of the axis
