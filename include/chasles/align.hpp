@@ -66,7 +66,6 @@
 #pragma once
 
 #include <cmath>
-#include <limits>
 #include <type_traits>
 #include <utility>
 
@@ -126,11 +125,6 @@ namespace detail {
 /// The Scalar of the 3-vectors an iterator points to.
 template <typename Iterator>
 using VectorScalarOf = typename std::decay_t<decltype(*std::declval<Iterator&>())>::Scalar;
-
-template <typename Scalar>
-inline Scalar quiet_nan() noexcept {
-  return Scalar(std::numeric_limits<RealOf<Scalar>>::quiet_NaN());
-}
 
 /// A result with the identity and NaN numbers: a refusal.
 template <typename Group>

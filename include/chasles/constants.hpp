@@ -5,6 +5,7 @@
 // detail/series.hpp and the checked constructors read them from here.
 #pragma once
 
+#include <limits>
 #include <type_traits>
 
 #include <Eigen/Core>
@@ -41,6 +42,12 @@ template <typename Scalar>
 inline RealOf<Scalar> real_value(const Scalar& x) noexcept {
   return RealType<Scalar>::value(x);
 }
+/// The quiet NaN of a scalar type (of its real type for an autodiff scalar).
+template <typename Scalar>
+inline Scalar quiet_nan() noexcept {
+  return Scalar(std::numeric_limits<RealOf<Scalar>>::quiet_NaN());
+}
+
 }  // namespace detail
 
 /// Thresholds for one real type. Only float, double and long double are

@@ -11,7 +11,6 @@
 
 #include <array>
 #include <cstddef>
-#include <limits>
 
 #include <Eigen/Core>
 
@@ -228,6 +227,26 @@ Eigen::Index factorize(MassMatrix& A, const JointVector& floor) noexcept {
   return -1;
 }
 
+/// forward_dynamics at the pass of q: M(q) = L L^T into `L` (composite,
+/// factorize) and qdd = M^-1 (tau - h - J_b^T F_tip) into `qdd`; returns -1,
+/// or the joint of the failed pivot (then `qdd` is not solved).
+template <typename ChainT, typename Qd, typename Tau>
+Eigen::Index accelerations(const ChainT& chain, const DynamicsPass<ChainT>& pass, const Eigen::MatrixBase<Qd>& qd,
+                           const Eigen::MatrixBase<Tau>& tau, const Wrench<typename ChainT::Scalar>& tip,
+                           typename ChainT::MassMatrix& L, typename ChainT::JointVector& qdd) noexcept {
+  using JointVector = typename ChainT::JointVector;
+  const Eigen::Index n = chain.n_joints();
+  qdd = tau - newton_euler(chain, pass, qd, JointVector::Zero(n), true, tip);
+  JointVector floor(n);
+  L = composite(pass, n, &floor);
+  const Eigen::Index k = factorize(L, floor);
+  if (k >= 0) return k;
+  // M qdd = b: L y = b, then L^T qdd = y (as Eigen's LLT::solve).
+  L.template triangularView<Eigen::Lower>().solveInPlace(qdd);
+  L.adjoint().template triangularView<Eigen::Upper>().solveInPlace(qdd);
+  return -1;
+}
+
 }  // namespace detail
 
 /// tau = M(q) qdd + C(q, qd) qd + g(q) + J_b(q)^T F_tip: the joint forces
@@ -349,17 +368,12 @@ ForwardDynamicsResult<typename Chain<Scalar, N, MaxN>::JointVector> forward_dyna
   detail::check_joint_vector(chain, tau);
   const Eigen::Index n = chain.n_joints();
   const detail::DynamicsPass<ChainT> pass(chain, q);
-  JointVector qdd = tau - detail::newton_euler(chain, pass, qd, JointVector::Zero(n), true, tip_wrench);
-  JointVector floor(n);
-  typename ChainT::MassMatrix L = detail::composite(pass, n, &floor);
-  const Eigen::Index k = detail::factorize(L, floor);
-  if (k >= 0) {
-    const Scalar nan(std::numeric_limits<RealOf<Scalar>>::quiet_NaN());
-    return {JointVector::Constant(n, nan), DynamicsStatus::mass_matrix_not_positive_definite, k};
-  }
-  // M qdd = b: L y = b, then L^T qdd = y (as Eigen's LLT::solve).
-  L.template triangularView<Eigen::Lower>().solveInPlace(qdd);
-  L.adjoint().template triangularView<Eigen::Upper>().solveInPlace(qdd);
+  typename ChainT::MassMatrix L;
+  JointVector qdd;
+  const Eigen::Index k = detail::accelerations(chain, pass, qd, tau, tip_wrench, L, qdd);
+  if (k >= 0)
+    return {JointVector::Constant(n, detail::quiet_nan<Scalar>()), DynamicsStatus::mass_matrix_not_positive_definite,
+            k};
   return {qdd, DynamicsStatus::ok, -1};
 }
 
@@ -379,8 +393,8 @@ ForwardDynamicsResult<typename Chain<Scalar, N, MaxN>::JointVector> forward_dyna
 /// named may differ from forward_dynamics' (which factorizes from the base
 /// out). Equal to forward_dynamics to rounding (tests/cpp/test_dynamics.cpp);
 /// forward_dynamics' composite inertias and Cholesky factorization cost
-/// O(n^2) and O(n^3) with smaller constants (bench/bench_ops.cpp measures the
-/// crossover).
+/// O(n^2) and O(n^3) with smaller constants (bench/bench_chain_length.cpp
+/// measures the crossover: about 24 joints).
 template <typename Scalar, int N, int MaxN, typename Q, typename Qd, typename Tau>
 ForwardDynamicsResult<typename Chain<Scalar, N, MaxN>::JointVector> forward_dynamics_articulated(
     const Chain<Scalar, N, MaxN>& chain, const Eigen::MatrixBase<Q>& q, const Eigen::MatrixBase<Qd>& qd,
@@ -417,10 +431,9 @@ ForwardDynamicsResult<typename Chain<Scalar, N, MaxN>::JointVector> forward_dyna
     u(i) = tau(i) - S.dot(pA[k]);
     const Scalar s = S.template head<3>().squaredNorm() * IA[k].template topLeftCorner<3, 3>().trace() +
                      S.template tail<3>().squaredNorm() * IA[k].template bottomRightCorner<3, 3>().trace();
-    if (D(i) <= tolerance * s) {  // false for NaN: a NaN goes on to the result
-      const Scalar nan(std::numeric_limits<RealOf<Scalar>>::quiet_NaN());
-      return {JointVector::Constant(n, nan), DynamicsStatus::mass_matrix_not_positive_definite, i};
-    }
+    if (D(i) <= tolerance * s)  // false for NaN: a NaN goes on to the result
+      return {JointVector::Constant(n, detail::quiet_nan<Scalar>()), DynamicsStatus::mass_matrix_not_positive_definite,
+              i};
     if (i > 0) {
       const Matrix6 Ia = IA[k] - U[k] * U[k].transpose() / D(i);
       IA[k - 1] += Ia;

@@ -9,7 +9,6 @@
 
 #include <array>
 #include <cstddef>
-#include <limits>
 
 #include <Eigen/Core>
 
@@ -205,10 +204,9 @@ MassMatrixInverse<typename Chain<Scalar, N, MaxN>::MassMatrix> mass_matrix_inver
   typename ChainT::JointVector floor(n);
   MassMatrix L = detail::composite(pass, n, &floor);
   const Eigen::Index k = detail::factorize(L, floor);
-  if (k >= 0) {
-    const Scalar nan(std::numeric_limits<RealOf<Scalar>>::quiet_NaN());
-    return {MassMatrix::Constant(n, n, nan), DynamicsStatus::mass_matrix_not_positive_definite, k};
-  }
+  if (k >= 0)
+    return {MassMatrix::Constant(n, n, detail::quiet_nan<Scalar>()), DynamicsStatus::mass_matrix_not_positive_definite,
+            k};
   return {detail::cholesky_inverse(L), DynamicsStatus::ok, -1};
 }
 
@@ -230,17 +228,13 @@ ForwardDynamicsDerivatives<typename Chain<Scalar, N, MaxN>::MassMatrix> forward_
   detail::check_joint_vector(chain, tau);
   const Eigen::Index n = chain.n_joints();
   const detail::DynamicsPass<ChainT> pass(chain, q);
-  JointVector qdd = tau - detail::newton_euler(chain, pass, qd, JointVector::Zero(n), true, tip_wrench);
-  JointVector floor(n);
-  MassMatrix L = detail::composite(pass, n, &floor);
-  const Eigen::Index k = detail::factorize(L, floor);
+  MassMatrix L;
+  JointVector qdd;
+  const Eigen::Index k = detail::accelerations(chain, pass, qd, tau, tip_wrench, L, qdd);
   if (k >= 0) {
-    const Scalar nan(std::numeric_limits<RealOf<Scalar>>::quiet_NaN());
-    const MassMatrix all_nan = MassMatrix::Constant(n, n, nan);
+    const MassMatrix all_nan = MassMatrix::Constant(n, n, detail::quiet_nan<Scalar>());
     return {all_nan, all_nan, all_nan, DynamicsStatus::mass_matrix_not_positive_definite, k};
   }
-  L.template triangularView<Eigen::Lower>().solveInPlace(qdd);
-  L.adjoint().template triangularView<Eigen::Upper>().solveInPlace(qdd);
   InverseDynamicsDerivatives<MassMatrix> d = detail::newton_euler_derivatives(chain, pass, qd, qdd, tip_wrench);
   const MassMatrix Minv = detail::cholesky_inverse(L);
   return {MassMatrix(-Minv.lazyProduct(d.dtau_dq)), MassMatrix(-Minv.lazyProduct(d.dtau_dqd)), Minv, DynamicsStatus::ok,

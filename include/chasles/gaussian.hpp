@@ -28,7 +28,6 @@
 #pragma once
 
 #include <cmath>
-#include <limits>
 
 #include <Eigen/Core>
 
@@ -60,7 +59,7 @@ inline Eigen::Matrix<Scalar, N, N> psd_cholesky(const Eigen::Matrix<Scalar, N, N
     Scalar d = A(k, k);
     for (int j = 0; j < k; ++j) d -= L(k, j) * L(k, j);
     if (d < -floor) {
-      L(k, k) = Scalar(std::numeric_limits<RealOf<Scalar>>::quiet_NaN());
+      L(k, k) = detail::quiet_nan<Scalar>();
       continue;
     }
     if (!(d > floor)) continue;  // zero variance: the column stays 0
@@ -211,7 +210,7 @@ class Gaussian {
     Tangent y;
     Scalar d2(0);
     for (int k = 0; k < DoF; ++k) {
-      if (!(L(k, k) > Scalar(0))) return Scalar(std::numeric_limits<RealOf<Scalar>>::quiet_NaN());  // zero or NaN
+      if (!(L(k, k) > Scalar(0))) return detail::quiet_nan<Scalar>();  // zero or NaN
       Scalar s = e[k];
       for (int j = 0; j < k; ++j) s -= L(k, j) * y[j];
       y[k] = s / L(k, k);
@@ -337,8 +336,7 @@ inline Eigen::Matrix<Scalar, 6, 6> ros_jacobian(const SE3<Scalar>& g, bool inver
     J.template bottomRightCorner<3, 3>() = R.transpose() * E;
     return J;
   }
-  if (rpy.gimbal_lock)
-    return Eigen::Matrix<Scalar, 6, 6>::Constant(Scalar(std::numeric_limits<RealOf<Scalar>>::quiet_NaN()));
+  if (rpy.gimbal_lock) return Eigen::Matrix<Scalar, 6, 6>::Constant(detail::quiet_nan<Scalar>());
   M3 E_inv;
   E_inv << cy, sy, Scalar(0), -sy * cp, cy * cp, Scalar(0), cy * sp, sy * sp, cp;
   J.template topLeftCorner<3, 3>() = R;
