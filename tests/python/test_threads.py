@@ -194,12 +194,22 @@ def holds_the_gil_for(seconds):
 
 def steps_while_releasing(counter, call, enough=1, attempts=5):
     """The most steps the counter makes during call(), over up to `attempts`
-    calls (until one reaches `enough`): a loaded machine that does not
-    schedule the counter in time gets another chance. The control: a call of
-    the same length that keeps the GIL must see exactly 0 steps."""
+    measurements (until one reaches `enough`): a loaded machine that does not
+    schedule the counter in time gets another chance, each one 4 times longer
+    (1, 4, 16, ... calls in a row: a call of 50,000 elements lasts about a
+    millisecond, less than a loaded machine may take to schedule the counter;
+    between the calls the GIL stays with this thread, switchinterval 100 s).
+    The control: a call of the same length that keeps the GIL must see
+    exactly 0 steps."""
     best, seconds = 0, 0.0
-    for _ in range(attempts):
-        steps, seconds = counter.steps_during(call)
+    for attempt in range(attempts):
+        repeats = 4**attempt
+
+        def repeated(call=call, repeats=repeats):
+            for _ in range(repeats):
+                call()
+
+        steps, seconds = counter.steps_during(repeated)
         control, _ = counter.steps_during(holds_the_gil_for(seconds))
         assert control == 0, f"the measurement is broken: {control} steps while the GIL was held"
         best = max(best, steps)
