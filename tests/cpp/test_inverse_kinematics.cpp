@@ -10,8 +10,13 @@
 //   the bound; 0 iterations when q0 is a solution;
 // - joint limits: q0 and every result within them, and a target reachable
 //   only outside them is reported as not converged;
-// - an unreachable target: not converged, finite, within the bound.
+// - an unreachable target: not converged, finite, within the bound, its
+//   status iteration_bound, or no_progress at the nearest configuration;
+// - the status, the iterations of the attempt returned and of all attempts,
+//   the attempts; the time budget (max_time) over restarts; restarts that
+//   depend on the generator only.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -29,6 +34,7 @@ namespace {
 using namespace chasles_test;
 using chasles::Chain;
 using chasles::IKOptions;
+using chasles::IKStatus;
 using chasles::SE3;
 
 /// |log(g^-1 T)| parts by the long double reference forward kinematics.
@@ -162,8 +168,21 @@ TYPED_TEST(InverseKinematics, RandomSeedsWithRestarts) {
     const auto r1 = chasles::inverse_kinematics(chain, T, q0, lower, upper, options);
     converged += r.converged;
     converged_first += r1.converged;
-    EXPECT_LE(r.iterations, 11 * options.max_iterations);
-    EXPECT_GE(r.iterations, r1.iterations);
+    EXPECT_LE(r.iterations, options.max_iterations) << "iterations count the attempt returned";
+    EXPECT_LE(r.total_iterations, 11 * options.max_iterations);
+    EXPECT_GE(r.total_iterations, r1.iterations);
+    EXPECT_GE(r.attempts, 1);
+    EXPECT_LE(r.attempts, 11);
+    EXPECT_EQ(r.converged, r.status == IKStatus::converged);
+    if (!r.converged) {
+      EXPECT_EQ(r.attempts, 11) << "every restart is taken when none converges";
+      EXPECT_TRUE(r.status == IKStatus::iteration_bound || r.status == IKStatus::no_progress);
+    }
+    if (r1.converged) {
+      EXPECT_EQ(r.attempts, 1) << "a converged first attempt stops the restarts";
+      EXPECT_EQ(r.total_iterations, r1.iterations);
+      EXPECT_EQ(r.iterations, r1.iterations);
+    }
     EXPECT_TRUE((r.q.array() >= lower.array()).all() && (r.q.array() <= upper.array()).all());
     EXPECT_EQ(r.error, chasles::pose_error(chain, T, r.q));
     if (r1.converged) {
@@ -189,8 +208,15 @@ TYPED_TEST(InverseKinematics, ZeroIterationsAtASolution) {
   for (int i = 0; i < n; ++i) q(i) = S(0.1) * S(i + 1);
   const auto r = chasles::inverse_kinematics(chain, chain.forward(q), q);
   EXPECT_TRUE(r.converged);
+  EXPECT_EQ(r.status, IKStatus::converged);
   EXPECT_EQ(r.iterations, 0);
+  EXPECT_EQ(r.total_iterations, 0);
+  EXPECT_EQ(r.attempts, 1);
   EXPECT_EQ(r.q, q);
+  // The solution is checked before the budget: a spent budget still finds it.
+  IKOptions<S> spent;
+  spent.max_time = 0;
+  EXPECT_EQ(chasles::inverse_kinematics(chain, chain.forward(q), q, spent).status, IKStatus::converged);
 }
 
 TYPED_TEST(InverseKinematics, RespectsJointLimits) {
@@ -234,9 +260,76 @@ TYPED_TEST(InverseKinematics, UnreachableTargetIsReportedWithinTheBound) {
   options.max_iterations = 25;
   const auto r = chasles::inverse_kinematics(chain, far, JV(JV::Zero(n)), lower, upper, options);
   EXPECT_FALSE(r.converged);
-  EXPECT_LE(r.iterations, 25);
+  EXPECT_EQ(r.status, IKStatus::iteration_bound);
+  EXPECT_EQ(r.iterations, 25);
   EXPECT_TRUE(r.q.allFinite() && r.error.allFinite());
   EXPECT_GT(r.error.template head<3>().norm(), S(3));
+
+  // Given iterations enough, the 6-joint arm reaches the configuration
+  // nearest the target and stops there when the step falls below rounding,
+  // before the bound. (The railed arm, held at two limits, in double still
+  // gains 1e-9 of its cost per iteration after 10000: it may end at the bound.)
+  options.max_iterations = 2000;
+  const auto stalled = chasles::inverse_kinematics(chain, far, JV(JV::Zero(n)), lower, upper, options);
+  if (n == 6) {
+    EXPECT_EQ(stalled.status, IKStatus::no_progress);
+    EXPECT_LT(stalled.iterations, options.max_iterations);
+  } else {
+    EXPECT_TRUE(stalled.status == IKStatus::iteration_bound || stalled.status == IKStatus::no_progress);
+  }
+  EXPECT_LE(stalled.error.norm(), r.error.norm());
+}
+
+// The time budget: a spent budget stops before the first step; a budget of
+// 20 ms with unbounded restarts on an unreachable target is spent (it
+// cannot end otherwise), and the call returns after it. The seeds depend on
+// the generator only: equal generators, no budget, equal results.
+TYPED_TEST(InverseKinematics, TimeBudgetAndRestarts) {
+  using C = typename TypeParam::Chain;
+  using S = typename C::Scalar;
+  using JV = typename C::JointVector;
+  const int n = TypeParam::joints;
+  const C chain = ur5_chain<C>(n);
+  JV lower(n), upper(n), q0(n);
+  for (int i = 0; i < n; ++i) lower(i) = S(-kPi), upper(i) = S(kPi), q0(i) = S(4);  // q0 clamped to pi
+  const SE3<S> far(chain.home().rotation(), chain.home().translation() + Eigen::Matrix<S, 3, 1>(S(5), S(5), S(5)));
+  IKOptions<S> options;
+  options.max_time = 0;
+  std::mt19937_64 gen(3);
+  const auto spent = chasles::inverse_kinematics(chain, far, q0, lower, upper, options, gen, 1000);
+  EXPECT_EQ(spent.status, IKStatus::time_budget);
+  EXPECT_FALSE(spent.converged);
+  EXPECT_EQ(spent.iterations, 0);
+  EXPECT_EQ(spent.attempts, 1);
+  EXPECT_EQ(spent.q, JV(JV::Constant(n, S(kPi))));
+  EXPECT_EQ(spent.error, chasles::pose_error(chain, far, spent.q));
+
+  options.max_time = 0.02;
+  options.max_iterations = 10;
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto budget = chasles::inverse_kinematics(chain, far, q0, lower, upper, options, gen, 1 << 30);
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_EQ(budget.status, IKStatus::time_budget);
+  EXPECT_GT(budget.attempts, 1);
+  EXPECT_LE(budget.iterations, options.max_iterations);
+  EXPECT_GE(budget.total_iterations, budget.iterations);
+  EXPECT_GE(elapsed, options.max_time);
+  EXPECT_LT(elapsed, options.max_time + 10.0) << "the budget ends the call (10 s: slack for a loaded machine)";
+  EXPECT_EQ(budget.error, chasles::pose_error(chain, far, budget.q));
+
+  // A reachable target with restarts and no budget: the same generator state gives the same result.
+  JV qt(n);
+  for (int i = 0; i < n; ++i) qt(i) = S(0.4) * S(i % 3) - S(0.5);
+  options = IKOptions<S>();
+  options.max_iterations = 5;  // a few attempts fail, so that the restarts draw seeds
+  std::mt19937_64 g1(11), g2(11);
+  const auto a = chasles::inverse_kinematics(chain, chain.forward(qt), q0, lower, upper, options, g1, 50);
+  const auto b = chasles::inverse_kinematics(chain, chain.forward(qt), q0, lower, upper, options, g2, 50);
+  EXPECT_GT(a.attempts, 1);
+  EXPECT_EQ(a.q, b.q);
+  EXPECT_EQ(a.status, b.status);
+  EXPECT_EQ(a.attempts, b.attempts);
+  EXPECT_EQ(a.total_iterations, b.total_iterations);
 }
 
 }  // namespace

@@ -17,7 +17,10 @@
 // (7, the first n used), lo, hi.
 // Properties, every input:
 // - it returns (the sanitizers see every read out of bounds) after at most
-//   max_iterations = 100 iterations (200 with the restart), iterations >= 0;
+//   max_iterations = 100 iterations per attempt, 0 <= iterations <=
+//   total_iterations <= 100 attempts, 1 <= attempts <= 2 (1 without the
+//   restart, or when the first converged); converged == (status ==
+//   converged), status time_budget never (no budget given);
 // - the returned error is pose_error at the returned q, bit for bit;
 // - converged implies |e_v| <= position_tolerance, |e_w| <=
 //   orientation_tolerance (e finite);
@@ -130,8 +133,14 @@ void fuzz_ik(Bytes& in) {
   const chasles::IKResult<C> r = restart ? chasles::inverse_kinematics(chain, target, q0, lower, upper, opt, gen, 1)
                                          : chasles::inverse_kinematics(chain, target, q0, lower, upper, opt);
 
-  const int bound = (restart ? 2 : 1) * opt.max_iterations;
-  check(r.iterations >= 0 && r.iterations <= bound, "IK: 0 <= iterations <= the bound", ty, input);
+  check(r.attempts >= 1 && r.attempts <= (restart ? 2 : 1), "IK: 1 <= attempts <= 1 + restarts", ty, input);
+  check(r.iterations >= 0 && r.iterations <= opt.max_iterations && r.total_iterations >= r.iterations &&
+            r.total_iterations <= r.attempts * opt.max_iterations,
+        "IK: 0 <= iterations <= total_iterations <= attempts * the bound", ty, input);
+  check(r.converged == (r.status == chasles::IKStatus::converged) && r.status != chasles::IKStatus::time_budget,
+        "IK: converged == (status == converged); no time_budget without a budget", ty, input);
+  check(r.status != chasles::IKStatus::iteration_bound || r.iterations == opt.max_iterations,
+        "IK: status iteration_bound after max_iterations iterations", ty, input);
   const Vec6<T> e = chasles::pose_error(chain, target, r.q);
   check(same_bits<T, 6, 1>(r.error, e), "IK: error is pose_error at the returned q, bit for bit", ty, input);
   if (r.converged) {

@@ -384,7 +384,13 @@ S exercise_all() noexcept {
     const SE3<S> nan_target = SE3<S>::from_matrix_unchecked(Eigen::Matrix<S, 4, 4>::Constant(S(RealOf<S>(NAN))));
     const auto not_finite = inverse_kinematics(cd, nan_target, thd);
     sum += held.q.sum() + S(held.iterations) + unreachable.error.sum() + S(unreachable.iterations);
+    // A time budget over unbounded restarts (the clock read, no allocation).
+    IKOptions<S> timed;
+    timed.max_time = 1e-4;
+    timed.max_iterations = 3;
+    const auto budget = inverse_kinematics(c6, far, th6, lo6, hi6, timed, gen6, 1 << 30);
     sum += restarted.q.sum() + S(restarted.converged ? 1 : 0) + S(not_finite.iterations);
+    sum += budget.q.sum() + S(budget.total_iterations + budget.attempts + static_cast<int>(budget.status));
   }
 
   // Splines (spline.hpp) over caller storage, both groups and both end conditions.
