@@ -24,6 +24,7 @@
 #include <string>
 #include <tuple>
 #include <utility>
+#include <vector>
 
 #include "bindings.hpp"
 #include "convert.hpp"
@@ -380,12 +381,13 @@ Ufuncs register_ufuncs(py::module_& m) {
   return u;
 }
 
-// ---- inverse kinematics: (n,6),(4,4),(n),(n),(),(),(),(4,4),(n),(),()->(n),(),(),(6) ----------
+// ---- inverse kinematics: (n,6),(4,4),(n),(n),(),(),(),(),(4,4),(n),(),()->(n),(),(),(),(),(),(6) ----
 //
 // The chain (screws, home, lower and upper limits) and the solver's options
-// (tolerances, max_iterations) make the model; each element solves for a
-// target from a seed q0 with `restarts` further attempts drawn from a 64-bit
-// Mersenne twister seeded with `seed`.
+// (tolerances, max_iterations, max_time) make the model; each element solves
+// for a target from a seed q0 with `restarts` further attempts drawn from a
+// 64-bit Mersenne twister seeded with `seed`. Chain.inverse_kinematics solves
+// one target from one seed with the same kernel (ik_solve), without numpy.
 
 struct IKModel {
   ChainD chain;
@@ -396,50 +398,227 @@ struct IKModel {
 struct IKModelOf {
   template <typename S, typename M, typename Lo, typename Hi>
   IKModel operator()(const S& screws, const M& home, const Lo& lower, const Hi& upper, double position_tolerance,
-                     double orientation_tolerance, int max_iterations) const noexcept {
+                     double orientation_tolerance, int max_iterations, double max_time) const noexcept {
     chasles::IKOptions<double> options;
     options.position_tolerance = position_tolerance;
     options.orientation_tolerance = orientation_tolerance;
     options.max_iterations = max_iterations;
+    options.max_time = max_time;
     return {ChainOf()(screws, home), Joints(lower), Joints(upper), options};
   }
 };
 
+/// (q, converged, status (IKStatus as an int), iterations, total_iterations, attempts, error).
+using IKOutcome = std::tuple<Joints, bool, int, int, int, int, Vector6>;
+
+IKOutcome ik_solve(const ChainD& chain, const Joints& lower, const Joints& upper,
+                   const chasles::IKOptions<double>& options, const SE3d& target, const Joints& q0, int restarts,
+                   npy_uint64 seed) noexcept {
+  std::mt19937_64 gen(seed);
+  const auto r = restarts > 0 ? chasles::inverse_kinematics(chain, target, q0, lower, upper, options, gen, restarts)
+                              : chasles::inverse_kinematics(chain, target, q0, lower, upper, options);
+  return {r.q, r.converged, static_cast<int>(r.status), r.iterations, r.total_iterations, r.attempts, r.error};
+}
+
 struct IKKernel {
   template <typename Target, typename Q0>
-  std::tuple<Joints, bool, int, Vector6> operator()(const IKModel& m, const Target& target, const Q0& q0, int restarts,
-                                                    npy_uint64 seed) const noexcept {
-    const SE3d T = SE3d::from_matrix_unchecked(Matrix4(target));
-    if (restarts > 0) {
-      std::mt19937_64 gen(seed);
-      const auto r = chasles::inverse_kinematics(m.chain, T, Joints(q0), m.lower, m.upper, m.options, gen, restarts);
-      return {r.q, r.converged, r.iterations, r.error};
-    }
-    const auto r = chasles::inverse_kinematics(m.chain, T, Joints(q0), m.lower, m.upper, m.options);
-    return {r.q, r.converged, r.iterations, r.error};
+  IKOutcome operator()(const IKModel& m, const Target& target, const Q0& q0, int restarts,
+                       npy_uint64 seed) const noexcept {
+    return ik_solve(m.chain, m.lower, m.upper, m.options, SE3d::from_matrix_unchecked(Matrix4(target)), Joints(q0),
+                    restarts, seed);
   }
 };
 
 void register_ik(py::module_& m) {
   using ufunc::Typed;
   using Int = Typed<Core<>, int>;
-  using Signature = std::tuple<JointsCore, Typed<Core<>, bool>, Int, Core<6>>(
-      ScrewsCore, Core<4, 4>, JointsCore, JointsCore, Core<>, Core<>, Int, Core<4, 4>, JointsCore, Int,
+  using Signature = std::tuple<JointsCore, Typed<Core<>, bool>, Int, Int, Int, Int, Core<6>>(
+      ScrewsCore, Core<4, 4>, JointsCore, JointsCore, Core<>, Core<>, Int, Core<>, Core<4, 4>, JointsCore, Int,
       Typed<Core<>, npy_uint64>);
   ufunc::def_ufunc<Signature, ufunc::Float64>(
       m, "_inverse_kinematics",
-      "screws, home, lower, upper, position_tolerance, orientation_tolerance, max_iterations, target, q0, restarts, "
-      "seed",
+      "screws, home, lower, upper, position_tolerance, orientation_tolerance, max_iterations, max_time, target, q0, "
+      "restarts, seed",
       R"doc(A private ufunc of chasles.Chain (its method inverse_kinematics, which checks the arguments).
 
 Operands (float64 unless said): screws (n, 6), 1 <= n <= 32 (NaN results
 beyond); home (4, 4); lower, upper (n,); position_tolerance,
-orientation_tolerance (); max_iterations () int32, per attempt; target (4, 4),
-a rigid motion (taken as given); q0 (n,), the seed; restarts () int32,
-further attempts from random seeds while not converged; seed () uint64, the
-Mersenne twister's seed. Returns (q (n,), converged () bool, iterations ()
-int32, error (6,)).)doc",
-      ufunc::model<7>(IKModelOf()), IKKernel());
+orientation_tolerance (); max_iterations () int32, per attempt; max_time (),
+seconds per element (inf: none); target (4, 4), a rigid motion (taken as
+given); q0 (n,), the seed; restarts () int32, further attempts from random
+seeds while not converged; seed () uint64, the Mersenne twister's seed.
+Returns (q (n,), converged () bool, status () int32 (IKStatus: 0 converged,
+1 iteration_bound, 2 time_budget, 3 no_progress), iterations () int32 (of
+the attempt returned), total_iterations () int32, attempts () int32, error
+(6,)).)doc",
+      ufunc::model<8>(IKModelOf()), IKKernel());
+}
+
+/// IKStatus's names, by value.
+const char* const kIKStatus[] = {"converged", "iteration_bound", "time_budget", "no_progress"};
+
+/// An integer argument of Chain.inverse_kinematics (an object with
+/// __index__) within [0, high].
+unsigned long long ik_count(py::handle h, const char* name, unsigned long long high) {
+  const std::string what = std::string("Chain.inverse_kinematics(") + name + ")";
+  PyObject* index = PyNumber_Index(h.ptr());
+  if (index == nullptr) {
+    PyErr_Clear();
+    raise_type_error(what + ": expected an integer, got " + type_name(h));
+  }
+  const py::object i = py::reinterpret_steal<py::object>(index);
+  int overflow = 0;
+  const long long v = PyLong_AsLongLongAndOverflow(index, &overflow);
+  if (overflow < 0 || (overflow == 0 && v < 0))
+    raise_value_error(what + ": expected >= 0, got " + std::string(py::str(i)));
+  const unsigned long long u = overflow == 0 ? static_cast<unsigned long long>(v) : PyLong_AsUnsignedLongLong(index);
+  if (u == static_cast<unsigned long long>(-1) && PyErr_Occurred())
+    PyErr_Clear();
+  else if (u <= high)
+    return u;
+  raise_value_error(what + ": expected at most " + std::to_string(high) + ", got " + std::string(py::str(i)));
+}
+
+/// The options of Chain.inverse_kinematics, checked.
+struct IKArguments {
+  chasles::IKOptions<double> options;
+  int restarts;
+  npy_uint64 seed;
+};
+
+IKArguments ik_arguments(py::handle position_tolerance, py::handle orientation_tolerance, py::handle max_iterations,
+                         py::handle restarts, py::handle seed, py::handle max_time) {
+  constexpr unsigned long long int_max = 2147483647ULL;
+  IKArguments a;
+  a.options.position_tolerance = to_tolerance(position_tolerance, "Chain.inverse_kinematics(position_tolerance)");
+  a.options.orientation_tolerance =
+      to_tolerance(orientation_tolerance, "Chain.inverse_kinematics(orientation_tolerance)");
+  a.options.max_iterations = static_cast<int>(ik_count(max_iterations, "max_iterations", int_max));
+  a.restarts = static_cast<int>(ik_count(restarts, "restarts", int_max));
+  a.seed = ik_count(seed, "seed", ~0ULL);
+  if (!max_time.is_none()) {
+    const double t = to_real(max_time, "Chain.inverse_kinematics(max_time)");
+    if (!(t >= 0))
+      raise_value_error("Chain.inverse_kinematics(max_time): expected a time >= 0 in seconds, or None, got " +
+                        float_repr(t));
+    a.options.max_time = t;
+  }
+  return a;
+}
+
+[[noreturn]] void raise_not_rigid_target(const Eigen::Ref<const Matrix4>& M, const std::string& at) {
+  raise_value_error("Chain.inverse_kinematics(target): not a rigid motion (defect " +
+                    short_float(SE3d::transform_defect(M)) + at + "); SE3.from_matrix_projected makes one");
+}
+
+/// One target without numpy: an SE3, or a native float64 array of shape (4, 4).
+bool single_target(py::handle h, SE3d& out) {
+  py::detail::make_caster<Obj<SE3d>> caster;
+  bool loaded;
+  try {
+    loaded = caster.load(h, false);
+  } catch (const py::type_error& e) {  // an SE3 made by __new__ alone
+    raise_type_error(std::string("Chain.inverse_kinematics(target): ") + e.what());
+  }
+  if (loaded) {
+    out = *static_cast<Obj<SE3d>&>(caster);
+    return true;
+  }
+  if (!is_native_float64_array(h.ptr())) return false;
+  const auto* a = py::detail::array_proxy(h.ptr());
+  if (a->nd != 2 || a->dimensions[0] != 4 || a->dimensions[1] != 4) return false;
+  Matrix4 M;
+  read_array(h.ptr(), M);
+  const auto g = SE3d::from_matrix(M);
+  if (!g) raise_not_rigid_target(M, "");
+  out = *g;
+  return true;
+}
+
+/// chasles.IKResult(q, converged, status, iterations, total_iterations, attempts, error).
+py::object ik_result(py::object q, py::object converged, py::object status, py::object iterations,
+                     py::object total_iterations, py::object attempts, py::object error) {
+  static PyObject* type = py::module_::import("chasles._results").attr("IKResult").cast<py::object>().release().ptr();
+  return py::reinterpret_borrow<py::object>(type)(q, converged, status, iterations, total_iterations, attempts, error);
+}
+
+py::object inverse_kinematics(const PyChain& c, py::handle target, py::handle q0, const IKArguments& a) {
+  const py::ssize_t n = c.chain.n_joints();
+  const ChainD& chain = c.chain;
+  Joints q(n);
+  SE3d T;
+  if (single_target(target, T) && single_element(q0, q.data(), n)) {
+    if (!q.allFinite()) raise_value_error("Chain.inverse_kinematics(q0): expected finite numbers");
+    IKOutcome r;
+    {
+      py::gil_scoped_release release;
+      r = ik_solve(chain, chain.lower(), chain.upper(), a.options, T, q, a.restarts, a.seed);
+    }
+    static const py::str names[] = {py::str(kIKStatus[0]), py::str(kIKStatus[1]), py::str(kIKStatus[2]),
+                                    py::str(kIKStatus[3])};
+    const Joints& qr = std::get<0>(r);
+    return ik_result(py::array_t<double>(n, qr.data()), py::bool_(std::get<1>(r)), names[std::get<2>(r)],
+                     py::int_(std::get<3>(r)), py::int_(std::get<4>(r)), py::int_(std::get<5>(r)),
+                     vec_out<6>(std::get<6>(r)));
+  }
+  // A batch: targets (..., 4, 4) and seeds (..., n) broadcast together.
+  const py::array Ta = as_float64_array(target, "Chain.inverse_kinematics(target)");
+  if (Ta.ndim() < 2 || Ta.shape(Ta.ndim() - 2) != 4 || Ta.shape(Ta.ndim() - 1) != 4)
+    raise_value_error("Chain.inverse_kinematics(target): expected an SE3 or shape (4, 4) or (..., 4, 4), got " +
+                      array_shape(Ta));
+  const py::array Qa = as_float64_array(q0, "Chain.inverse_kinematics(q0)");
+  if (Qa.ndim() < 1 || Qa.shape(Qa.ndim() - 1) != n)
+    raise_value_error("Chain.inverse_kinematics(q0): expected shape (" + std::to_string(n) + ",) or (..., " +
+                      std::to_string(n) + ") for a chain of " + std::to_string(n) + " joints, got " + array_shape(Qa));
+  static PyObject* broadcast_shapes = numpy_attr("broadcast_shapes");
+  static PyObject* broadcast_to = numpy_attr("broadcast_to");
+  static PyObject* contiguous = numpy_attr("ascontiguousarray");
+  const auto head = [](const py::array& x, py::ssize_t drop) {
+    return py::tuple(py::reinterpret_borrow<py::tuple>(x.attr("shape"))[py::slice(0, x.ndim() - drop, 1)]);
+  };
+  PyObject* shape = PyObject_CallFunctionObjArgs(broadcast_shapes, head(Ta, 2).ptr(), head(Qa, 1).ptr(), nullptr);
+  if (shape == nullptr) {
+    PyErr_Clear();
+    raise_value_error("Chain.inverse_kinematics: the batch shapes of target " + array_shape(Ta) + " and q0 " +
+                      array_shape(Qa) + " do not broadcast together");
+  }
+  const py::tuple batch = py::reinterpret_steal<py::tuple>(shape);
+  const auto spread = [&](const py::array& x, py::tuple core) {
+    const py::object b = py::reinterpret_borrow<py::object>(broadcast_to)(x, batch + core);
+    return py::reinterpret_steal<py::array>(PyObject_CallOneArg(contiguous, b.ptr()));
+  };
+  const py::array Tb = spread(Ta, py::make_tuple(4, 4)), Qb = spread(Qa, py::make_tuple(n));
+  const py::ssize_t count = Tb.size() / 16;
+  const double* t = static_cast<const double*>(Tb.data());
+  for (py::ssize_t i = 0; i < count; ++i) {
+    const Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>> M(t + 16 * i);
+    if (!(SE3d::transform_defect(M) <= chasles::Thresholds<double>::rotation_tolerance))
+      raise_not_rigid_target(M, count > 1 ? " at index " + std::to_string(i) : "");
+  }
+  if (!Eigen::Map<const Eigen::ArrayXd>(static_cast<const double*>(Qb.data()), Qb.size()).allFinite())
+    raise_value_error("Chain.inverse_kinematics(q0): expected finite numbers");
+  std::vector<Py_intptr_t> dims(batch.size());
+  for (std::size_t k = 0; k < batch.size(); ++k) dims[k] = batch[k].cast<Py_intptr_t>();
+  py::array_t<npy_uint64> seeds(dims);
+  for (py::ssize_t i = 0; i < count; ++i) seeds.mutable_data()[i] = a.seed + static_cast<npy_uint64>(i);
+  static PyObject* int32 = numpy_attr("int32");
+  const auto int32_of = [](int v) { return py::reinterpret_borrow<py::object>(int32)(v); };
+  const auto limits = [n](const Joints& v) { return py::array_t<double>(n, v.data()); };
+  const py::object r = py::reinterpret_borrow<py::object>(array_function("_inverse_kinematics"))(
+      c.operands[0], c.operands[1], limits(chain.lower()), limits(chain.upper()), a.options.position_tolerance,
+      a.options.orientation_tolerance, int32_of(a.options.max_iterations), a.options.max_time, Tb, Qb,
+      int32_of(a.restarts), seeds);
+  const py::tuple out = py::reinterpret_borrow<py::tuple>(r);
+  static PyObject* names = [] {
+    py::list l;
+    for (const char* s : kIKStatus) l.append(s);
+    return py::module_::import("numpy").attr("array")(l).release().ptr();
+  }();
+  if (batch.empty())  // one solve of other input types: Python's bool, str and ints, as above
+    return ik_result(out[0], py::bool_(out[1].cast<bool>()), py::str(kIKStatus[out[2].cast<int>()]),
+                     py::int_(out[3].cast<int>()), py::int_(out[4].cast<int>()), py::int_(out[5].cast<int>()), out[6]);
+  const py::object status = py::reinterpret_borrow<py::object>(names).attr("take")(out[2]);
+  return ik_result(out[0], out[1], status, out[3], out[4], out[5], out[6]);
 }
 
 // ---- the methods ----------------------------------------------------------------
@@ -682,6 +861,79 @@ theta: array_like (..., n); returns (..., 6, n).)doc");
 
 Column i is Ad_{(exp([B_{i+1}] th_{i+1}) ... exp([B_n] th_n))^-1} B_i, rows (v, w).
 theta: array_like (..., n); returns (..., 6, n).)doc");
+
+  cls.def(
+      "inverse_kinematics",
+      [](Obj<PyChain> c, py::object target, py::object q0, RealLike position_tolerance, RealLike orientation_tolerance,
+         IndexLike max_iterations, IndexLike restarts, IndexLike seed, OptionalRealLike max_time) {
+        return inverse_kinematics(*c, target, q0,
+                                  ik_arguments(position_tolerance.obj, orientation_tolerance.obj, max_iterations.obj,
+                                               restarts.obj, seed.obj, max_time.obj));
+      },
+      py::arg("target"), py::arg("q0"), py::kw_only(),
+      py::arg_v("position_tolerance", py::float_(chasles::Thresholds<double>::ik_tolerance), "3.666852862501036e-11"),
+      py::arg_v("orientation_tolerance", py::float_(chasles::Thresholds<double>::ik_tolerance),
+                "3.666852862501036e-11"),
+      py::arg_v("max_iterations", py::int_(chasles::Thresholds<double>::ik_max_iterations), "100"),
+      py::arg_v("restarts", py::int_(0), "0"), py::arg_v("seed", py::int_(0), "0"),
+      py::arg_v("max_time", py::none(), "None"),
+      R"doc(Inverse kinematics: joint positions q with forward(q) = target, within the joint limits.
+
+Levenberg-Marquardt on the body error e(q) = log(forward(q)^-1 target)
+(twist (v, w) in the tool frame) with its exact Jacobian -J_l(e)^-1 J_b(q),
+each step projected onto [lower, upper], at most max_iterations iterations
+per attempt; then, while not converged, up to ``restarts`` more attempts
+from seeds uniform within the limits ([-pi, pi] where a limit is infinite),
+drawn from a 64-bit Mersenne twister seeded with ``seed``; all within
+``max_time`` seconds when given (checked before each iteration). The C++
+solver (chasles/inverse_kinematics.hpp) runs with the GIL released.
+
+The field's protocols (TRAC-IK's: 5 ms per solve) read
+``inverse_kinematics(T, q0, restarts=2**31 - 1, max_time=0.005)``: restart
+until solved or out of time.
+
+Targets and seeds broadcast: one target (an SE3 or (4, 4)) and q0 (n,) give
+one solve; (..., 4, 4) targets and/or (..., n) seeds give a batch (the
+private gufunc ``chasles._core._inverse_kinematics``). Element i of a batch
+(in C order) draws its restarts from a generator seeded with ``seed + i``
+and has a budget of its own: it equals the single solve with that seed.
+
+Args:
+    target: SE3 or array_like of shape (4, 4) or (..., 4, 4), the tool pose(s).
+    q0: array_like of shape (n,) or (..., n), the seed(s) (clamped into the limits).
+    position_tolerance: |e_v| at a solution (the chain's length unit); default 3.7e-11.
+    orientation_tolerance: |e_w| at a solution (radians); default 3.7e-11.
+    max_iterations: iterations per attempt (>= 0).
+    restarts: further attempts from random seeds while not converged (>= 0).
+    seed: the seed of those random seeds (0 <= seed < 2**64; seed + i for
+        element i of a batch).
+    max_time: the time budget of a solve in seconds, restarts included
+        (None: none). A solve ends at most one iteration after it.
+
+Returns:
+    IKResult: a named tuple (q, converged, status, iterations,
+    total_iterations, attempts, error): q of shape (n,); converged a bool;
+    status why it stopped, a str: "converged", "iteration_bound" (the last
+    attempt ran max_iterations iterations), "time_budget" (max_time ran out)
+    or "no_progress" (a step below rounding: a local minimum of |e|);
+    iterations of the attempt that gave q; total_iterations of all
+    attempts; attempts made (1 + the restarts taken); the body error twist e
+    of shape (6,). For a batch, arrays of shapes (..., n), (...) (status:
+    str), and (..., 6).
+
+Raises:
+    ValueError: a target that is not a rigid motion, shapes that do not
+        match or broadcast, a non-finite seed, negative counts, tolerances
+        or time.
+    TypeError: an argument of the wrong type.
+
+Example:
+    >>> arm = Chain([Chain.revolute_screw([0, 0, 0], [0, 0, 1]),
+    ...              Chain.revolute_screw([1, 0, 0], [0, 0, 1])], SE3(SO3(), [2, 0, 0]))
+    >>> r = arm.inverse_kinematics(arm.forward([0.3, -0.5]), [0.0, -0.2])
+    >>> r.converged, r.status, np.round(r.q, 12) + 0.0
+    (True, 'converged', array([ 0.3, -0.5]))
+)doc");
 
   PyObject *f_jsd = ufunc_of(Op::jacobian_space_dot), *f_jbd = ufunc_of(Op::jacobian_body_dot);
   cls.def(

@@ -82,6 +82,9 @@ struct RealLike {
 struct IndexLike {
   static constexpr auto text = py::detail::const_name("typing.SupportsIndex");
 };
+struct OptionalRealLike {
+  static constexpr auto text = py::detail::const_name("float | None");
+};
 struct DTypeLike {
   static constexpr auto text = py::detail::const_name("numpy.typing.DTypeLike");
 };
@@ -96,6 +99,8 @@ using ArrayLike = AnyObject<names::ArrayLike>;
 using RealLike = AnyObject<names::RealLike>;
 /// Any integer (an object with __index__).
 using IndexLike = AnyObject<names::IndexLike>;
+/// Any real number, or None.
+using OptionalRealLike = AnyObject<names::OptionalRealLike>;
 /// A dtype argument (numpy's __array__ protocol).
 using DTypeLike = AnyObject<names::DTypeLike>;
 /// The copy argument of __array__: True, False or None.

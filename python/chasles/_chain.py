@@ -9,32 +9,26 @@ class, the pattern of ``numpy.linalg`` over ``_umath_linalg``: what computes
 methods, taken over as they are, so that one configuration costs one C++
 call (no Python frame in between: a Python method around it would add a
 tenth of a microsecond to a call of a few tenths), and a batch goes to the
-private gufuncs ``chasles._core._chain_forward``, ``_inverse_dynamics``, ...
-What is Python's is here: the joint names, the validation messages and their
-diagnosis, the properties, pickling (``__reduce__``: the constructor's
-arguments), the inverse kinematics' broadcasting and its result type,
-``from_urdf``.
+private gufuncs ``chasles._core._chain_forward``, ``_inverse_dynamics``,
+``_inverse_kinematics``, ... What is Python's is here: the joint names, the
+validation messages and their diagnosis, the properties, pickling
+(``__reduce__``: the constructor's arguments), ``from_urdf``; and the
+inverse kinematics' result type (chasles._results.IKResult).
 """
 
 from __future__ import annotations
 
 import math
-import operator
 import warnings
 from typing import Any, Optional
 
 import numpy as np
-from numpy.typing import ArrayLike
 
 from chasles import _core
-from chasles._results import IKResult
 
 _TYPES = ("revolute", "continuous", "prismatic", "helical")
 _MAX_JOINTS = 32
 _SCREW_TOLERANCE = 1.4901161193847656e-08  # Thresholds<double>::screw_tolerance (constants.hpp)
-_IK_TOLERANCE = 3.666852862501036e-11  # Thresholds<double>::ik_tolerance
-_IK_MAX_ITERATIONS = 100  # Thresholds<double>::ik_max_iterations
-_ROTATION_TOLERANCE = 1.4901161193847656e-08  # Thresholds<double>::rotation_tolerance
 _DEFAULT_GRAVITY = (0.0, 0.0, -9.81)
 _NONE = object()
 
@@ -282,6 +276,7 @@ class Chain(_core._Chain):
     inverse_dynamics_derivatives = vars(_core._Chain)["inverse_dynamics_derivatives"]
     forward_dynamics_derivatives = vars(_core._Chain)["forward_dynamics_derivatives"]
     mass_matrix_inverse = vars(_core._Chain)["mass_matrix_inverse"]
+    inverse_kinematics = vars(_core._Chain)["inverse_kinematics"]
     home = vars(_core._Chain)["home"]
     revolute_screw = vars(_core._Chain)["revolute_screw"]
     prismatic_screw = vars(_core._Chain)["prismatic_screw"]
@@ -464,123 +459,6 @@ class Chain(_core._Chain):
         the base frame at home; None when not given (a copy)."""
         _require(self)
         return None if self._inertias is None else self._inertias.copy()
-
-    # ---- inverse kinematics ----------------------------------------------------------------
-
-    def inverse_kinematics(
-        self,
-        target: Any,
-        q0: ArrayLike,
-        *,
-        position_tolerance: float = _IK_TOLERANCE,
-        orientation_tolerance: float = _IK_TOLERANCE,
-        max_iterations: int = _IK_MAX_ITERATIONS,
-        restarts: int = 0,
-        seed: int = 0,
-    ) -> IKResult:
-        """Inverse kinematics: joint positions q with forward(q) = target, within the joint limits.
-
-        Levenberg-Marquardt on the body error e(q) = log(forward(q)^-1 target)
-        (twist (v, w) in the tool frame) with its exact Jacobian
-        -J_l(e)^-1 J_b(q), each step projected onto [lower, upper], at most
-        max_iterations iterations; then, while not converged, up to ``restarts``
-        more attempts from seeds uniform within the limits ([-pi, pi] where a
-        limit is infinite), drawn from a generator seeded with ``seed``. The C++
-        solver (chasles/inverse_kinematics.hpp) runs with the GIL released, as the
-        private gufunc ``chasles._core._inverse_kinematics``.
-
-        Targets and seeds broadcast: one target (an SE3 or (4, 4)) and q0 (n,) give
-        one solve; (..., 4, 4) targets and/or (..., n) seeds give a batch. Element
-        i of a batch (in C order) draws its restarts from a generator seeded with
-        ``seed + i``: it equals the single solve with that seed.
-
-        Args:
-            target: SE3 or array_like of shape (4, 4) or (..., 4, 4), the tool pose(s).
-            q0: array_like of shape (n,) or (..., n), the seed(s) (clamped into the limits).
-            position_tolerance: |e_v| at a solution (the chain's length unit); default 3.7e-11.
-            orientation_tolerance: |e_w| at a solution (radians); default 3.7e-11.
-            max_iterations: iterations per attempt (>= 0).
-            restarts: further attempts from random seeds while not converged (>= 0).
-            seed: the seed of those random seeds (a 64-bit Mersenne twister; seed + i
-                for element i of a batch).
-
-        Returns:
-            IKResult: a named tuple (q, converged, iterations, error): q of shape
-            (n,), a bool, an int, the body error twist e of shape (6,); for a batch,
-            arrays of shapes (..., n), (...), (...), (..., 6).
-
-        Raises:
-            ValueError: a target that is not a rigid motion, shapes that do not
-                match or broadcast, a non-finite seed, negative counts or tolerances.
-
-        Example:
-            >>> arm = Chain([Chain.revolute_screw([0, 0, 0], [0, 0, 1]),
-            ...              Chain.revolute_screw([1, 0, 0], [0, 0, 1])], SE3(SO3(), [2, 0, 0]))
-            >>> r = arm.inverse_kinematics(arm.forward([0.3, -0.5]), [0.0, -0.2])
-            >>> r.converged, np.round(r.q, 12) + 0.0
-            (True, array([ 0.3, -0.5]))
-        """
-        _require(self)
-        what = "Chain.inverse_kinematics"
-        position_tolerance = _real(position_tolerance, f"{what}(position_tolerance)")
-        orientation_tolerance = _real(orientation_tolerance, f"{what}(orientation_tolerance)")
-        max_iterations = _integer(max_iterations, f"{what}(max_iterations)", 2**31 - 1)
-        restarts = _integer(restarts, f"{what}(restarts)", 2**31 - 1)
-        seed = _integer(seed, f"{what}(seed)", 2**64 - 1, 0)
-        if max_iterations < 0:
-            raise ValueError(f"{what}(max_iterations): expected >= 0, got {max_iterations}")
-        if restarts < 0:
-            raise ValueError(f"{what}(restarts): expected >= 0, got {restarts}")
-        if not (position_tolerance >= 0) or not (orientation_tolerance >= 0):
-            raise ValueError(
-                f"{what}: expected tolerances >= 0, got {_short(position_tolerance)} and "
-                f"{_short(orientation_tolerance)}"
-            )
-        n = self.n_joints
-        T = _float64(target, f"{what}(target)")
-        if T.ndim < 2 or T.shape[-2:] != (4, 4):
-            raise ValueError(f"{what}(target): expected an SE3 or shape (4, 4) or (..., 4, 4), got {T.shape}")
-        Q = _float64(q0, f"{what}(q0)")
-        if Q.ndim < 1 or Q.shape[-1] != n:
-            raise ValueError(
-                f"{what}(q0): expected shape ({n},) or (..., {n}) for a chain of {n} joints, got {Q.shape}"
-            )
-        try:
-            batch = np.broadcast_shapes(T.shape[:-2], Q.shape[:-1])
-        except ValueError:
-            raise ValueError(
-                f"{what}: the batch shapes of target {T.shape} and q0 {Q.shape} do not broadcast together"
-            ) from None
-        Tb = np.ascontiguousarray(np.broadcast_to(T, batch + (4, 4)))
-        Qb = np.ascontiguousarray(np.broadcast_to(Q, batch + (n,)))
-        flat = Tb.reshape(-1, 4, 4)
-        for i, Ti in enumerate(flat):
-            d = _core.SE3.transform_defect(Ti)
-            if not d <= _ROTATION_TOLERANCE:
-                at = f" at index {i}" if len(flat) > 1 else ""
-                raise ValueError(
-                    f"{what}(target): not a rigid motion (defect {_short(d)}{at}); SE3.from_matrix_projected makes one"
-                )
-        if not np.isfinite(Qb).all():
-            raise ValueError(f"{what}(q0): expected finite numbers")
-        seeds = (np.uint64(seed) + np.arange(math.prod(batch), dtype=np.uint64)).reshape(batch)
-        S, M = self._model[0], np.asarray(self.home)
-        q, converged, iterations, error = _core._inverse_kinematics(
-            S,
-            M,
-            self._model[3],
-            self._model[4],
-            position_tolerance,
-            orientation_tolerance,
-            np.int32(max_iterations),
-            Tb,
-            Qb,
-            np.int32(restarts),
-            seeds,
-        )
-        if not batch:
-            return IKResult(q, bool(converged), int(iterations), error)
-        return IKResult(q, converged, iterations, error)
 
     # ---- URDF --------------------------------------------------------------------------------
 
@@ -914,43 +792,6 @@ def _m(chain: Any) -> tuple:
     """The chain's model arrays; TypeError for an object made by __new__ alone."""
     _require(chain)
     return chain.__dict__["_model"]
-
-
-def _float64(a: Any, what: str) -> np.ndarray:
-    """np.asarray(a) as float64, for real input; TypeError otherwise, naming what."""
-    if a is None or isinstance(a, (str, bytes)):
-        raise TypeError(f"{what}: expected real numbers (float64), got {_tp_name(a)}")
-    try:
-        m = np.asarray(a)
-    except Exception as e:
-        if isinstance(e, MemoryError):
-            raise
-        raise (TypeError if isinstance(e, TypeError) else ValueError)(
-            f"{what}: expected an array-like of real numbers (float64), could not convert {_tp_name(a)} to an "
-            f"array: {e}"
-        ) from e
-    if m.dtype.kind not in "biuf":
-        raise TypeError(f"{what}: expected real numbers (float64), got dtype {m.dtype} ({_tp_name(a)})")
-    return m.astype(np.float64)
-
-
-def _real(x: Any, what: str) -> float:
-    if isinstance(x, (str, bytes)):
-        raise TypeError(f"{what}: expected a real number (float), got {_tp_name(x)}")
-    try:
-        return float(x)
-    except (TypeError, ValueError):
-        raise TypeError(f"{what}: expected a real number (float), got {_tp_name(x)}") from None
-
-
-def _integer(x: Any, what: str, high: int, low: Optional[int] = None) -> int:
-    try:
-        x = operator.index(x)
-    except TypeError:
-        raise TypeError(f"{what}: expected an integer, got {_tp_name(x)}") from None
-    if x > high or x < (-high - 1 if low is None else low):
-        raise TypeError(f"{what}: {x} is out of range")
-    return x
 
 
 # Pickles of chasles 0.1.0 name the class chasles._core.Chain: it is this one.

@@ -4055,6 +4055,65 @@ class _Chain:
         An array function: (n,) gives one result, (..., n) one per configuration,
         by numpy's rules (broadcasting, dtypes, the GIL released; NaN gives NaN). ValueError: a chain without link inertias, shapes that do not match.
         """
+    def inverse_kinematics(self, target: typing.Any, q0: typing.Any, *, position_tolerance: float = 3.666852862501036e-11, orientation_tolerance: float = 3.666852862501036e-11, max_iterations: typing.SupportsIndex = 100, restarts: typing.SupportsIndex = 0, seed: typing.SupportsIndex = 0, max_time: float | None = None) -> typing.Any:
+        """
+        Inverse kinematics: joint positions q with forward(q) = target, within the joint limits.
+        
+        Levenberg-Marquardt on the body error e(q) = log(forward(q)^-1 target)
+        (twist (v, w) in the tool frame) with its exact Jacobian -J_l(e)^-1 J_b(q),
+        each step projected onto [lower, upper], at most max_iterations iterations
+        per attempt; then, while not converged, up to ``restarts`` more attempts
+        from seeds uniform within the limits ([-pi, pi] where a limit is infinite),
+        drawn from a 64-bit Mersenne twister seeded with ``seed``; all within
+        ``max_time`` seconds when given (checked before each iteration). The C++
+        solver (chasles/inverse_kinematics.hpp) runs with the GIL released.
+        
+        The field's protocols (TRAC-IK's: 5 ms per solve) read
+        ``inverse_kinematics(T, q0, restarts=2**31 - 1, max_time=0.005)``: restart
+        until solved or out of time.
+        
+        Targets and seeds broadcast: one target (an SE3 or (4, 4)) and q0 (n,) give
+        one solve; (..., 4, 4) targets and/or (..., n) seeds give a batch (the
+        private gufunc ``chasles._core._inverse_kinematics``). Element i of a batch
+        (in C order) draws its restarts from a generator seeded with ``seed + i``
+        and has a budget of its own: it equals the single solve with that seed.
+        
+        Args:
+            target: SE3 or array_like of shape (4, 4) or (..., 4, 4), the tool pose(s).
+            q0: array_like of shape (n,) or (..., n), the seed(s) (clamped into the limits).
+            position_tolerance: |e_v| at a solution (the chain's length unit); default 3.7e-11.
+            orientation_tolerance: |e_w| at a solution (radians); default 3.7e-11.
+            max_iterations: iterations per attempt (>= 0).
+            restarts: further attempts from random seeds while not converged (>= 0).
+            seed: the seed of those random seeds (0 <= seed < 2**64; seed + i for
+                element i of a batch).
+            max_time: the time budget of a solve in seconds, restarts included
+                (None: none). A solve ends at most one iteration after it.
+        
+        Returns:
+            IKResult: a named tuple (q, converged, status, iterations,
+            total_iterations, attempts, error): q of shape (n,); converged a bool;
+            status why it stopped, a str: "converged", "iteration_bound" (the last
+            attempt ran max_iterations iterations), "time_budget" (max_time ran out)
+            or "no_progress" (a step below rounding: a local minimum of |e|);
+            iterations of the attempt that gave q; total_iterations of all
+            attempts; attempts made (1 + the restarts taken); the body error twist e
+            of shape (6,). For a batch, arrays of shapes (..., n), (...) (status:
+            str), and (..., 6).
+        
+        Raises:
+            ValueError: a target that is not a rigid motion, shapes that do not
+                match or broadcast, a non-finite seed, negative counts, tolerances
+                or time.
+            TypeError: an argument of the wrong type.
+        
+        Example:
+            >>> arm = Chain([Chain.revolute_screw([0, 0, 0], [0, 0, 1]),
+            ...              Chain.revolute_screw([1, 0, 0], [0, 0, 1])], SE3(SO3(), [2, 0, 0]))
+            >>> r = arm.inverse_kinematics(arm.forward([0.3, -0.5]), [0.0, -0.2])
+            >>> r.converged, r.status, np.round(r.q, 12) + 0.0
+            (True, 'converged', array([ 0.3, -0.5]))
+        """
     def jacobian_body(self, theta: numpy.typing.ArrayLike) -> typing.Any:
         """
         The body Jacobian J_b: (g^-1 g')^vee = J_b theta'.

@@ -296,6 +296,8 @@ class IKTarget(Arg):
         return np.asarray(CHAIN_HOME)
 
     def judge(self, value):
+        if isinstance(value, chasles.SE3) and not is_initialized(value):
+            return Refused(TypeError, (self.label, "not initialized"))
         a = real_array(value, self.label)
         if isinstance(a, Refused):
             return a

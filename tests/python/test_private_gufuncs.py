@@ -40,8 +40,8 @@ PRIVATE = {
     ),
     "_mass_matrix_inverse": ("(n,6),(4,4),(n,6,6),(n)->(n,n),()", ["dddd->di"]),
     "_inverse_kinematics": (
-        "(n,6),(4,4),(n),(n),(),(),(),(4,4),(n),(),()->(n),(),(),(6)",
-        ["ddddddiddi" + np.dtype(np.uint64).char + "->d?id"],
+        "(n,6),(4,4),(n),(n),(),(),(),(),(4,4),(n),(),()->(n),(),(),(),(),(),(6)",
+        ["ddddddidddi" + np.dtype(np.uint64).char + "->d?iiiid"],
     ),
     "_so3_spline": ("(n),(n,3,3),(n,9),()->(3,3)", ["dddd->d"]),
     "_so3_spline_rates": ("(n),(n,3,3),(n,9),()->(3,3),(3),(3)", ["dddd->ddd"]),
@@ -140,10 +140,12 @@ def test_several_results_with_their_own_dtypes_and_out():
     q_true = rng.uniform(-1, 1, size=(3, ARM.n_joints))
     targets = ARM.forward(q_true)
     seeds = q_true + rng.uniform(-0.2, 0.2, q_true.shape)
-    args = (S, M, ARM.lower, ARM.upper, 1e-10, 1e-10, np.int32(100), targets, seeds, np.int32(0), np.uint64(0))
-    q, converged, iterations, error = _core._inverse_kinematics(*args)
+    args = (S, M, ARM.lower, ARM.upper, 1e-10, 1e-10, np.int32(100), np.inf, targets, seeds, np.int32(0), np.uint64(0))
+    q, converged, status, iterations, total, attempts, error = _core._inverse_kinematics(*args)
     assert (q.dtype, converged.dtype, iterations.dtype, error.dtype) == (np.float64, np.bool_, np.int32, np.float64)
+    assert status.dtype == total.dtype == attempts.dtype == np.int32
     assert q.shape == (3, ARM.n_joints) and converged.shape == iterations.shape == (3,) and error.shape == (3, 6)
+    assert (status == 0).all() and (attempts == 1).all() and (total == iterations).all()
     r = ARM.inverse_kinematics(
         targets, seeds, position_tolerance=1e-10, orientation_tolerance=1e-10, max_iterations=100
     )
@@ -152,11 +154,12 @@ def test_several_results_with_their_own_dtypes_and_out():
     np.testing.assert_array_equal(iterations, r.iterations)
     np.testing.assert_array_equal(error, r.error)
     assert converged.all()
-    outs = (np.empty((3, ARM.n_joints)), np.empty(3, bool), np.empty(3, np.int32), np.empty((3, 6)))
+    outs = (np.empty((3, ARM.n_joints)), np.empty(3, bool)) + tuple(np.empty(3, np.int32) for _ in range(4))
+    outs += (np.empty((3, 6)),)
     got = _core._inverse_kinematics(*args, out=outs)
     assert all(a is b for a, b in zip(got, outs))
     np.testing.assert_array_equal(outs[0], q)
-    np.testing.assert_array_equal(outs[2], iterations)
+    np.testing.assert_array_equal(outs[3], iterations)
 
 
 def test_ik_batch_element_i_draws_its_restarts_from_seed_plus_i():
@@ -164,11 +167,12 @@ def test_ik_batch_element_i_draws_its_restarts_from_seed_plus_i():
     targets = ARM.forward(rng.uniform(-2, 2, size=(6, ARM.n_joints)))
     seeds = rng.uniform(-3, 3, size=(6, ARM.n_joints))
     batch = ARM.inverse_kinematics(targets, seeds, max_iterations=3, restarts=4, seed=11)
-    assert (batch.iterations > 3).any()  # some elements restarted
+    assert (batch.attempts > 1).any()  # some elements restarted
     for i in range(6):
         one = ARM.inverse_kinematics(targets[i], seeds[i], max_iterations=3, restarts=4, seed=11 + i)
         np.testing.assert_array_equal(batch.q[i], one.q)
         assert batch.iterations[i] == one.iterations and batch.converged[i] == one.converged
+        assert batch.total_iterations[i] == one.total_iterations and batch.attempts[i] == one.attempts
     again = ARM.inverse_kinematics(
         targets.reshape(2, 3, 4, 4), seeds.reshape(2, 3, -1), max_iterations=3, restarts=4, seed=11
     )
@@ -185,12 +189,14 @@ def test_more_joints_than_the_bound_give_nan_results_in_every_output():
         0.0,
         0.0,
         np.int32(1),
+        np.inf,
         np.eye(4),
         np.zeros(n),
         np.int32(0),
         np.uint64(0),
     )
-    assert np.isnan(outs[0]).all() and not outs[1] and outs[2] == 0 and np.isnan(outs[3]).all()
+    assert np.isnan(outs[0]).all() and not outs[1] and np.isnan(outs[6]).all()
+    assert outs[2] == outs[3] == outs[4] == outs[5] == 0
     assert np.isnan(_core._mass_matrix(np.zeros((n, 6)), np.eye(4), np.zeros((n, 6, 6)), np.zeros(n))).all()
 
 

@@ -15,6 +15,7 @@ loaded with Chain.from_urdf.
 """
 
 import importlib.metadata
+import time
 
 import modern_robotics as mr
 import numpy as np
@@ -83,10 +84,63 @@ def test_ik_from_nearby_seeds_reaches_every_target(arms, key):
 
 def test_ik_result_is_a_named_tuple(arms):
     chain = arms["ur5"]
-    q, converged, iterations, error = r = chain.inverse_kinematics(chain.forward(np.full(6, 0.4)), np.full(6, 0.5))
-    assert type(r).__name__ == "IKResult" and r._fields == ("q", "converged", "iterations", "error")
-    assert converged and iterations == r.iterations > 0 and np.array_equal(q, r.q) and error is r.error
+    r = chain.inverse_kinematics(chain.forward(np.full(6, 0.4)), np.full(6, 0.5))
+    q, converged, status, iterations, total_iterations, attempts, error = r
+    assert type(r).__name__ == "IKResult"
+    assert r._fields == ("q", "converged", "status", "iterations", "total_iterations", "attempts", "error")
+    assert converged and status == "converged" and iterations == r.iterations > 0
+    assert total_iterations == iterations and attempts == 1
+    assert np.array_equal(q, r.q) and error is r.error
+    assert type(status) is str and type(iterations) is int and type(attempts) is int
     assert repr(r).startswith("IKResult(q=array([")
+
+
+def test_ik_status_attempts_and_time_budget(arms):
+    chain = arms["ur5"]
+    far = np.asarray(chain.home).copy()
+    far[:3, 3] += 5.0  # 8.7 m from a 1 m arm: unreachable
+    r = chain.inverse_kinematics(far, np.zeros(6), max_iterations=20)
+    assert r.status == "iteration_bound" and not r.converged and r.iterations == 20 and r.attempts == 1
+    stalled = chain.inverse_kinematics(far, np.zeros(6), max_iterations=5000)
+    assert stalled.status == "no_progress" and stalled.iterations < 5000
+    # Restarts: iterations count the attempt returned, total_iterations all of them.
+    again = chain.inverse_kinematics(far, np.zeros(6), max_iterations=20, restarts=3, seed=5)
+    assert again.attempts == 4 and again.iterations <= 20 and again.total_iterations == 80
+    assert again.status == "iteration_bound"
+    # A spent budget stops before the first step; a solution is still found at q0.
+    spent = chain.inverse_kinematics(far, np.zeros(6), max_time=0.0)
+    assert spent.status == "time_budget" and spent.iterations == 0 and spent.attempts == 1
+    q = np.full(6, 0.3)
+    assert chain.inverse_kinematics(chain.forward(q), q, max_time=0).status == "converged"
+    # Unbounded restarts end with the budget (20 ms), the field's protocol form.
+    t0 = time.perf_counter()
+    timed = chain.inverse_kinematics(far, np.zeros(6), max_iterations=10, restarts=2**31 - 1, max_time=0.02)
+    assert time.perf_counter() - t0 >= 0.02
+    assert timed.status == "time_budget" and timed.attempts > 1 and timed.total_iterations >= timed.iterations
+    # A batch: a status array of str, and each element its own budget.
+    batch = chain.inverse_kinematics(np.stack([far, chain.forward(q)]), np.stack([np.zeros(6), q]), max_time=0.0)
+    assert batch.status.tolist() == ["time_budget", "converged"] and batch.attempts.tolist() == [1, 1]
+
+
+def test_ik_protocol_form_solves_random_targets(arms):
+    # TRAC-IK's protocol on the Panda: seed at the middle of the limits,
+    # restarts within 5 ms, tolerance 1e-10 (the script bench/ik_protocols.py
+    # runs 10,000 targets beside TRAC-IK and KDL).
+    chain = arms["panda"]
+    rng = np.random.default_rng(4)
+    q_true = np.array([within_limits(chain, rng) for _ in range(100)])
+    middle = (chain.lower + chain.upper) / 2
+    r = chain.inverse_kinematics(
+        chain.forward(q_true),
+        middle,
+        position_tolerance=1e-10,
+        orientation_tolerance=1e-10,
+        restarts=2**31 - 1,
+        max_time=0.005,
+        seed=1,
+    )
+    assert r.converged.all(), r.status[~r.converged]
+    assert np.all(r.q >= chain.lower) and np.all(r.q <= chain.upper)
 
 
 def test_ik_batches_equal_single_solves(arms):
@@ -103,6 +157,7 @@ def test_ik_batches_equal_single_solves(arms):
         np.testing.assert_array_equal(batch.q[i], one.q)
         np.testing.assert_array_equal(batch.error[i], one.error)
         assert batch.converged[i] == one.converged and batch.iterations[i] == one.iterations
+        assert batch.status[i] == one.status and batch.attempts[i] == one.attempts
     # One seed broadcast against many targets, and an SE3 target.
     shared = chain.inverse_kinematics(targets, seeds[0, 0])
     assert shared.q.shape == (2, 3, 7)
@@ -118,7 +173,8 @@ def test_ik_random_seeds_with_restarts(arms):
     first = chain.inverse_kinematics(targets, seeds)
     again = chain.inverse_kinematics(targets, seeds, restarts=10, seed=7)
     assert again.converged.sum() >= 49 and again.converged.sum() > first.converged.sum()
-    assert np.all(again.iterations >= first.iterations)
+    assert np.all(again.total_iterations >= first.iterations) and np.all(again.iterations <= 100)
+    assert np.all(again.attempts[first.converged] == 1) and again.attempts.max() > 1
     np.testing.assert_array_equal(again.q[first.converged], first.q[first.converged])
     repeat = chain.inverse_kinematics(targets, seeds, restarts=10, seed=7)
     np.testing.assert_array_equal(repeat.q, again.q)
@@ -133,7 +189,7 @@ def test_ik_reports_an_unreachable_target_and_bounds_iterations(arms):
     assert not r.converged and r.iterations <= 20 and np.linalg.norm(r.error[:3]) > 3
     assert np.all(np.isfinite(r.q))
     r0 = chain.inverse_kinematics(far, np.zeros(6), max_iterations=0)
-    assert r0.iterations == 0 and not r0.converged
+    assert r0.iterations == 0 and not r0.converged and r0.status == "iteration_bound"
 
 
 @pytest.mark.parametrize(
@@ -143,15 +199,62 @@ def test_ik_reports_an_unreachable_target_and_bounds_iterations(arms):
         (np.diag([2.0, 1, 1, 1]), np.zeros(6), {}, r"target\): not a rigid motion"),
         (np.eye(4), np.zeros(5), {}, r"q0\): expected shape \(6,\)"),
         (np.eye(4), np.full(6, np.nan), {}, r"q0\): expected finite"),
-        (np.eye(4), np.zeros(6), {"restarts": -1}, r"restarts\): expected >= 0"),
+        (np.eye(4), np.zeros(6), {"restarts": -1}, r"restarts\): expected >= 0, got -1"),
+        (np.eye(4), np.zeros(6), {"restarts": 2**31}, r"restarts\): expected at most 2147483647"),
         (np.eye(4), np.zeros(6), {"max_iterations": -1}, r"max_iterations\): expected >= 0"),
-        (np.eye(4), np.zeros(6), {"position_tolerance": -1.0}, r"expected tolerances >= 0"),
+        (np.eye(4), np.zeros(6), {"seed": -1}, r"seed\): expected >= 0"),
+        (np.eye(4), np.zeros(6), {"seed": 2**64}, r"seed\): expected at most 18446744073709551615"),
+        (np.eye(4), np.zeros(6), {"position_tolerance": -1.0}, r"position_tolerance\): expected a tolerance >= 0"),
+        (np.eye(4), np.zeros(6), {"orientation_tolerance": np.nan}, r"orientation_tolerance\): expected a tolerance"),
+        (np.eye(4), np.zeros(6), {"max_time": -0.1}, r"max_time\): expected a time >= 0 in seconds, or None"),
+        (np.eye(4), np.zeros(6), {"max_time": np.nan}, r"max_time\): expected a time >= 0"),
         (np.broadcast_to(np.eye(4), (2, 4, 4)), np.zeros((3, 6)), {}, r"do not broadcast"),
+        (
+            np.stack([np.eye(4), np.diag([2.0, 1, 1, 1])]),
+            np.zeros(6),
+            {},
+            r"not a rigid motion \(defect 3 at index 1\)",
+        ),
+        ([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 2]], np.zeros(6), {}, r"target\): not a rigid motion"),
     ],
 )
 def test_ik_errors(arms, target, q0, kwargs, message):
     with pytest.raises(ValueError, match=message):
         arms["ur5"].inverse_kinematics(target, q0, **kwargs)
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "message"),
+    [
+        ({"max_iterations": 2.5}, r"max_iterations\): expected an integer, got float"),
+        ({"seed": "1"}, r"seed\): expected an integer, got str"),
+        ({"position_tolerance": "x"}, r"position_tolerance\): expected real numbers \(float64\), got str"),
+        ({"max_time": "1"}, r"max_time\): expected real numbers \(float64\), got str"),
+    ],
+)
+def test_ik_type_errors(arms, kwargs, message):
+    with pytest.raises(TypeError, match=message):
+        arms["ur5"].inverse_kinematics(np.eye(4), np.zeros(6), **kwargs)
+
+
+def test_ik_single_solve_paths_agree(arms):
+    # One solve is computed without numpy for an SE3 or a float64 (4, 4)
+    # target and a float64 (n,) or list seed; any other form goes through the
+    # gufunc: the same kernel, the same bits, the same types for one solve.
+    chain = arms["ur5"]
+    q = np.array([0.3, -0.2, 0.5, 0.1, -0.4, 0.2])
+    T = chain.forward(q)
+    fast = chain.inverse_kinematics(T, q + 0.1, restarts=2, seed=3)
+    for target, q0 in ((SE3.from_matrix(T), list(q + 0.1)), (T.tolist(), q + 0.1), (T, (q + 0.1).astype(np.float32))):
+        other = chain.inverse_kinematics(target, q0, restarts=2, seed=3)
+        assert type(other.converged) is bool and type(other.status) is str and type(other.attempts) is int
+    slow = chain.inverse_kinematics(T.tolist(), q + 0.1, restarts=2, seed=3)
+    np.testing.assert_array_equal(slow.q, fast.q)
+    np.testing.assert_array_equal(slow.error, fast.error)
+    assert slow[1:6] == fast[1:6]
+    batch = chain.inverse_kinematics(T[None], (q + 0.1)[None], restarts=2, seed=3)
+    np.testing.assert_array_equal(batch.q[0], fast.q)
+    assert (batch.status[0], batch.iterations[0], batch.attempts[0]) == (fast.status, fast.iterations, fast.attempts)
 
 
 # ---- dynamics --------------------------------------------------------------------
