@@ -32,5 +32,6 @@
 #include "chasles/so3.hpp"
 #include "chasles/spatial_inertia.hpp"
 #include "chasles/spline.hpp"
+#include "chasles/time_scaling.hpp"
 #include "chasles/twist.hpp"
 #include "chasles/wrench.hpp"
