@@ -973,30 +973,22 @@ UrdfDescription read(const std::string& source, const std::string& tip_link, con
   if (screws.empty())
     fail("no revolute, continuous or prismatic joint from " + quoted(base_link) + " to " + quoted(tip_link));
 
-  const auto n = static_cast<Eigen::Index>(screws.size());
-  d.screws.resize(6, n);
-  d.lower.resize(n);
-  d.upper.resize(n);
-  d.velocity.resize(n);
-  d.effort.resize(n);
-  d.mass.resize(n);
-  d.com.resize(3, n);
-  d.inertia.resize(9, n);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    d.screws.col(i) = screws[k];
-    d.lower(i) = lower[k];
-    d.upper(i) = upper[k];
-    d.velocity(i) = velocity[k];
-    d.effort(i) = effort[k];
+  d.joints.resize(screws.size());
+  for (std::size_t k = 0; k < screws.size(); ++k) {
+    UrdfDescription::Joint& j = d.joints[k];
+    Eigen::Map<Eigen::Matrix<double, 6, 1>>(j.screw.data()) = screws[k];
+    j.lower = lower[k];
+    j.upper = upper[k];
+    j.velocity = velocity[k];
+    j.effort = effort[k];
     const Part body = merge(bodies[k]);
     if (!(std::isfinite(body.mass) && body.com.allFinite() && body.inertia.allFinite()))
       fail("joint " + quoted(d.names[k]) + ": the mass properties of the links it moves are not finite (overflow)");
-    d.mass(i) = body.mass;
-    d.com.col(i) = body.com;
-    d.inertia.col(i) = Eigen::Map<const Eigen::Matrix<double, 9, 1>>(body.inertia.data());
+    j.mass = body.mass;
+    Eigen::Map<Vector3>(j.com.data()) = body.com;
+    std::copy(body.inertia.data(), body.inertia.data() + 9, j.inertia.begin());
   }
-  d.home = T;
+  Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(d.home.data()) = T;
   return d;
 }
 

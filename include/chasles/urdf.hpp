@@ -122,16 +122,25 @@ namespace chasles {
 namespace detail {
 
 /// What src/urdf.cpp reads, in double: n moving joints from base to tip.
+/// Standard containers of doubles only, no Eigen type: src/urdf.cpp and the
+/// code that includes this header may be compiled with different flags
+/// (-march=native with AVX-512 aligns an Eigen::Matrix4d to 64 bytes and
+/// moves the members after it, and Eigen's dynamic matrices then allocate
+/// with Eigen's aligned allocator), and this struct crosses between them.
 struct UrdfDescription {
-  std::string error;                       ///< empty on success
-  std::vector<std::string> names;          ///< n joint names
-  std::vector<JointType> types;            ///< n joint types
-  Eigen::Matrix<double, 6, Eigen::Dynamic> screws;  ///< 6 x n, (v, w), base frame at home
-  Eigen::Matrix4d home = Eigen::Matrix4d::Identity();  ///< the tip link frame at home
-  Eigen::VectorXd lower, upper, velocity, effort;      ///< n each
-  Eigen::VectorXd mass;                                ///< n link masses
-  Eigen::Matrix<double, 3, Eigen::Dynamic> com;        ///< 3 x n centers of mass (base frame)
-  Eigen::Matrix<double, 9, Eigen::Dynamic> inertia;    ///< 9 x n rotational inertias about com (column-major 3x3)
+  /// One moving joint and the body it moves.
+  struct Joint {
+    std::array<double, 6> screw;           ///< (v, w), base frame at home
+    double lower, upper, velocity, effort;  ///< limits
+    double mass;                            ///< of the links it moves
+    std::array<double, 3> com;              ///< their center of mass (base frame)
+    std::array<double, 9> inertia;          ///< their rotational inertia about com (column-major 3x3)
+  };
+  std::string error;                     ///< empty on success
+  std::vector<std::string> names;        ///< n joint names
+  std::vector<JointType> types;          ///< n joint types
+  std::vector<Joint> joints;             ///< n joints
+  std::array<double, 16> home{};         ///< the tip link frame at home (row-major 4x4)
 };
 
 /// Reads the description (compiled in src/urdf.cpp; never throws: every
@@ -200,7 +209,7 @@ UrdfChain<Scalar, MaxJoints> chain_from_urdf(const std::string& xml_or_path, con
     out.error = std::move(d.error);
     return out;
   }
-  const Eigen::Index n = d.screws.cols();
+  const auto n = static_cast<Eigen::Index>(d.joints.size());
   if (n > MaxJoints) {
     out.error = "chain_from_urdf: the chain from the base to '" + tip_link + "' has " + std::to_string(n) +
                 " moving joints, more than MaxJoints = " + std::to_string(MaxJoints);
@@ -212,23 +221,26 @@ UrdfChain<Scalar, MaxJoints> chain_from_urdf(const std::string& xml_or_path, con
   typename ChainType::Inertias inertias{};
   for (Eigen::Index i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    for (Eigen::Index r = 0; r < 6; ++r) S(r, i) = Scalar(d.screws(r, i));
+    const detail::UrdfDescription::Joint& joint = d.joints[k];
+    for (std::size_t r = 0; r < 6; ++r) S(static_cast<Eigen::Index>(r), i) = Scalar(joint.screw[r]);
     types[k] = d.types[k];
-    lower(i) = Scalar(d.lower(i));
-    upper(i) = Scalar(d.upper(i));
-    velocity(i) = Scalar(d.velocity(i));
-    effort(i) = Scalar(d.effort(i));
+    lower(i) = Scalar(joint.lower);
+    upper(i) = Scalar(joint.upper);
+    velocity(i) = Scalar(joint.velocity);
+    effort(i) = Scalar(joint.effort);
     Vector3 c;
     Matrix3 I;
-    for (Eigen::Index r = 0; r < 3; ++r) c(r) = Scalar(d.com(r, i));
-    for (Eigen::Index r = 0; r < 9; ++r) I(r % 3, r / 3) = Scalar(d.inertia(r, i));
-    inertias[k] = SpatialInertia<Scalar>(Scalar(d.mass(i)), c, I);
+    for (std::size_t r = 0; r < 3; ++r) c(static_cast<Eigen::Index>(r)) = Scalar(joint.com[r]);
+    for (std::size_t r = 0; r < 9; ++r)
+      I(static_cast<Eigen::Index>(r % 3), static_cast<Eigen::Index>(r / 3)) = Scalar(joint.inertia[r]);
+    inertias[k] = SpatialInertia<Scalar>(Scalar(joint.mass), c, I);
   }
   Matrix3 R;
   Vector3 p;
-  for (Eigen::Index r = 0; r < 3; ++r) {
-    p(r) = Scalar(d.home(r, 3));
-    for (Eigen::Index c = 0; c < 3; ++c) R(r, c) = Scalar(d.home(r, c));
+  for (std::size_t r = 0; r < 3; ++r) {
+    p(static_cast<Eigen::Index>(r)) = Scalar(d.home[4 * r + 3]);
+    for (std::size_t c = 0; c < 3; ++c)
+      R(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = Scalar(d.home[4 * r + c]);
   }
   const std::string last = "chain_from_urdf: joint '" + d.names[static_cast<std::size_t>(n - 1)] + "'";
   // Finite in double, the home pose may overflow Scalar (float).
