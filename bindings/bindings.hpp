@@ -46,6 +46,7 @@ void bind_dynamics(py::module_& m);      // bind_dynamics.cpp: class SpatialIner
 void bind_threads(py::module_& m);       // bind_threads.cpp: set_num_threads, get_num_threads
 void bind_align(py::module_& m);         // bind_align.cpp: the kernels of so3_align, se3_align, sim3_align
 void bind_gaussian(py::module_& m);      // bind_gaussian.cpp: <g>_compose_cov, ..., the kernels of Gaussian
+void bind_trajectory(py::module_& m);    // bind_trajectory.cpp: the kernels of time_scaling, joint_trajectory
 
 /// What the bindings call each group, written once (the classes' docstrings,
 /// the array functions' names, the error messages): its Python class, the

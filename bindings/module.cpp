@@ -37,5 +37,6 @@ PYBIND11_MODULE(_core, m) {
   cp::bind_threads(m);
   cp::bind_align(m);
   cp::bind_gaussian(m);
+  cp::bind_trajectory(m);
   cp::finish_functions(m);  // last: signatures for help() and inspect (signatures.hpp)
 }

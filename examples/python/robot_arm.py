@@ -8,8 +8,8 @@ between its fingers (panda_hand_tcp). Then:
    Franka's "ready" configuration: the solution reaches the target (checked
    with forward kinematics) within the joint limits;
 2. the joint torques along a quintic time scaling from "ready" to the
-   solution, q(t) = q_ready + s(t / T) (q_ik - q_ready) with
-   s(u) = 10 u^3 - 15 u^4 + 6 u^5 (Lynch and Park, Modern Robotics, 9.2.2:
+   solution (chasles.joint_trajectory), q(t) = q_ready + s(t / T) (q_ik - q_ready)
+   with s(u) = 10 u^3 - 15 u^4 + 6 u^5 (Lynch and Park, Modern Robotics, 9.2.2:
    zero velocity and acceleration at both ends), by inverse dynamics batched
    over the trajectory's samples in one call; checked: at both ends, where
    the arm is at rest, they are the gravity torques, and everywhere
@@ -49,17 +49,6 @@ def panda_path():
         if str(f).endswith("panda_description/urdf/panda.urdf"):
             return f.locate()
     raise SystemExit("example-robot-data has no Panda")
-
-
-def quintic(q0, q1, duration, samples):
-    """Times (samples,), and q, qd, qdd (samples, n) of the quintic time scaling from q0 to q1."""
-    t = np.linspace(0.0, duration, samples)
-    u = t / duration
-    s = 10 * u**3 - 15 * u**4 + 6 * u**5
-    sd = (30 * u**2 - 60 * u**3 + 30 * u**4) / duration
-    sdd = (60 * u - 180 * u**2 + 120 * u**3) / duration**2
-    dq = q1 - q0
-    return t, q0 + s[:, None] * dq, sd[:, None] * dq, sdd[:, None] * dq
 
 
 def draw(arm, q, trajectory, path):
@@ -116,7 +105,8 @@ def main():
     print(f"   q = {np.array2string(ik.q, precision=4)} rad, within the joint limits")
 
     # 2. Joint torques along the trajectory, in one batched call.
-    t, q, qd, qdd = quintic(Q_READY, ik.q, args.duration, 201)
+    t = np.linspace(0.0, args.duration, 201)
+    q, qd, qdd = chasles.joint_trajectory(Q_READY, ik.q, t, args.duration, "quintic")  # (201, 7) each
     start = time.perf_counter()
     tau = arm.inverse_dynamics(q, qd, qdd)  # (201, 7)
     elapsed = time.perf_counter() - start

@@ -11,7 +11,10 @@ Two layers over the same C++ kernels:
   ... (and the methods of ``Chain``);
 - ``Gaussian(mean, cov)``: uncertainty on any of the groups, propagated
   through their operations; ``PoseGraph``, ``read_g2o``: pose graphs solved
-  with the analytic Jacobians (docs/estimation.md).
+  with the analytic Jacobians (docs/estimation.md);
+- ``time_scaling``, ``joint_trajectory``: rest-to-rest motions (cubic,
+  quintic, trapezoidal time scalings, Modern Robotics ch. 9) and the
+  straight-line joint trajectories they time (docs/robots.md).
 
 The array functions are numpy generalized ufuncs over the C++ kernels, each
 with a core signature, ``so3_exp`` ``(3)->(3,3)``, ``se3_compose``
@@ -221,6 +224,7 @@ from chasles._random import (
 )
 from chasles._spline import SE2Spline, SE3Spline, SE23Spline, Sim3Spline, SO2Spline, SO3Spline
 from chasles._threads import set_num_threads
+from chasles._trajectory import joint_trajectory, time_scaling
 
 __all__ = [
     "SE2",
@@ -257,6 +261,7 @@ __all__ = [
     "interpolate",
     "interpolate_jacobian_t",
     "inverse_jacobian",
+    "joint_trajectory",
     "lminus",
     "lminus_jacobians",
     "log_jacobian",
@@ -401,6 +406,7 @@ __all__ = [
     "so3_random",
     "so3_rminus_jacobians",
     "so3_vee",
+    "time_scaling",
     "write_g2o",
 ]
 

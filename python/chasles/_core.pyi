@@ -4922,6 +4922,7 @@ _gravity_torques: numpy.ufunc
 _inverse_dynamics: numpy.ufunc
 _inverse_dynamics_derivatives: numpy.ufunc
 _inverse_kinematics: numpy.ufunc
+_joint_trajectory: numpy.ufunc
 _mass_matrix: numpy.ufunc
 _mass_matrix_inverse: numpy.ufunc
 _max_threads: int = 1024
@@ -5016,6 +5017,7 @@ _so3_log_cov: numpy.ufunc
 _so3_mahalanobis: numpy.ufunc
 _so3_spline: numpy.ufunc
 _so3_spline_rates: numpy.ufunc
+_time_scaling: numpy.ufunc
 # se23_act(X, points): (5,5),(3)->(3)
 se23_act: _GUFunc_Nin2_Nout1[typing.Literal["se23_act"], typing.Literal["(5,5),(3)->(3)"]]
 # se23_between_cov(a, cov_a, b, cov_b): (5,5),(9,9),(5,5),(9,9)->(5,5),(9,9)

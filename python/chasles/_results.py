@@ -32,3 +32,36 @@ class IKResult(NamedTuple):
     total_iterations: Union[int, np.ndarray]
     attempts: Union[int, np.ndarray]
     error: np.ndarray
+
+
+class TimeScalingResult(NamedTuple):
+    """The result of ``time_scaling``: the path parameter and its time
+    derivatives, each of the broadcast shape of the times and durations
+    (a numpy float64 when all are scalars).
+
+    Attributes:
+        s: the path parameter s(t) in [0, 1]: 0 at and before t = 0, 1 at
+            and after t = duration.
+        s_dot: ds/dt, per unit of time.
+        s_ddot: d^2s/dt^2, per unit of time squared.
+    """
+
+    s: Union[float, np.ndarray]
+    s_dot: Union[float, np.ndarray]
+    s_ddot: Union[float, np.ndarray]
+
+
+class JointTrajectoryResult(NamedTuple):
+    """The result of ``joint_trajectory``: joint positions, velocities and
+    accelerations, each of shape (..., n), the batch shape (...) the
+    broadcast of the times' and the joint vectors' leading axes.
+
+    Attributes:
+        q: the joint positions q_start + s (q_end - q_start).
+        qd: the joint velocities s_dot (q_end - q_start).
+        qdd: the joint accelerations s_ddot (q_end - q_start).
+    """
+
+    q: np.ndarray
+    qd: np.ndarray
+    qdd: np.ndarray

@@ -2239,6 +2239,7 @@ def _build_spec():
                 passes_arguments=False,
             )
         spec[f"{name}.{what}"] = Entry([[]], call=lambda s=spline, w=what: getattr(s, w), passes_arguments=False)
+    spec.update(_trajectory_spec())
     return spec
 
 
@@ -2309,6 +2310,164 @@ class EvalTimes(Arg):
         if isinstance(a, Refused):
             return a
         return finite_or_refused(a, self.label)
+
+
+# ---- time scalings and joint trajectories (time_scaling, joint_trajectory) -------------------
+
+SCALING_KINDS = ("cubic", "quintic", "trapezoidal")
+# Times before, during and after a motion of 1.5 s; two joints.
+TRAJECTORY_T = np.array([-0.5, 0.0, 0.3, 1.0, 1.5, 2.0])
+TRAJECTORY_Q = (np.array([0.3, -0.7]), np.array([1.0, 0.5]))
+MAX_TRAJECTORY_JOINTS = 32  # a Chain's bound
+
+
+def _broadcast_refusal(label, shapes):
+    """The refusal (naming the function) of shapes that do not broadcast together, or None."""
+    try:
+        np.broadcast_shapes(*shapes)
+    except ValueError:
+        return Refused(ValueError, (label.split("(")[0], "broadcast together"))
+    return None
+
+
+@dataclass
+class ScalingKind(Arg):
+    """The kind of time_scaling / joint_trajectory: a str (subclasses
+    included), 'cubic', 'quintic' or 'trapezoidal'; another str is a
+    ValueError, anything else a TypeError, both naming the argument.
+    `ratio_given`: the call passes a peak_velocity_ratio, which
+    'trapezoidal' requires (a ValueError naming peak_velocity_ratio)."""
+
+    valid: str = "quintic"
+    ratio_given: bool = False
+
+    def good(self):
+        return self.valid
+
+    def variants(self):
+        """Values to try: the kinds, near misses, str subclasses and other types."""
+        return [*SCALING_KINDS, "Cubic", "QUINTIC", "quintic ", "trapezoid", "linear", "", "cubic\0",
+                np.str_("cubic"), np.str_("trapezoid"), StrKind("quintic"), StrKind("septic"), b"cubic",
+                ["cubic"], np.array("quintic"), 3, 5]  # fmt: skip
+
+    def judge(self, value):
+        if not isinstance(value, str):
+            return Refused(TypeError, (self.label, "str"))
+        if value not in SCALING_KINDS:
+            return Refused(ValueError, (self.label, "'cubic', 'quintic' or 'trapezoidal'", "got"))
+        if value == "trapezoidal" and not self.ratio_given:
+            return Refused(ValueError, (self.label.replace("(kind)", "(peak_velocity_ratio)"), "required"))
+        return Accepted(str(value))
+
+
+class StrKind(str):
+    """A str subclass (a kind is taken as the plain str)."""
+
+
+@dataclass
+class ScalingArray(Arg):
+    """t, duration or peak_velocity_ratio of time_scaling / joint_trajectory:
+    real numbers of any shape (any real dtype, layout or container), read as
+    float64; each number checked by `rule` ('time': not NaN, infinities
+    allowed; 'duration': finite and > 0; 'ratio': in (1, 2], None refused
+    as the trapezoid requires one); the shape broadcasting together with
+    `others`, the shapes of the other arguments' valid values (a joint
+    vector's without its last axis). `ignored`: the peak_velocity_ratio of
+    a kind that does not read it: anything is the same as None."""
+
+    rule: str = "time"
+    valid: Callable[[], Any] | None = None
+    others: tuple = ()
+    ignored: bool = False
+
+    def good(self):
+        return self.valid()
+
+    def judge(self, value):
+        if self.ignored:
+            return Accepted(None)
+        if self.rule == "ratio" and value is None:
+            return Refused(ValueError, (self.label, "required", "trapezoidal"))
+        a = real_array(value, self.label)
+        if isinstance(a, Refused):
+            return a
+        c = plain(a, np.float64)
+        if self.rule == "time" and np.isnan(c).any():
+            return Refused(ValueError, (self.label, "not NaN"))
+        if self.rule == "duration" and not (np.isfinite(c) & (c > 0)).all():
+            return Refused(ValueError, (self.label, "finite and > 0"))
+        if self.rule == "ratio" and not ((c > 1) & (c <= 2)).all():
+            return Refused(ValueError, (self.label, "(1, 2]"))
+        return _broadcast_refusal(self.label, (c.shape, *self.others)) or Accepted(c)
+
+
+@dataclass
+class TrajectoryJoints(Arg):
+    """q_start or q_end of joint_trajectory: real numbers of shape (n,) or
+    (..., n), n <= 32, finite, read as float64; n the other vector's (2),
+    the leading axes broadcasting together with `others` (the shapes of
+    the other arguments' valid values, the joint vector's without its last
+    axis)."""
+
+    valid: Callable[[], Any] | None = None
+    others: tuple = ()
+
+    def good(self):
+        return self.valid()
+
+    def judge(self, value):
+        a = real_array(value, self.label)
+        if isinstance(a, Refused):
+            return a
+        if a.ndim < 1:
+            return Refused(ValueError, (self.label, "(n,) or (..., n)", "got ()"))
+        if a.shape[-1] > MAX_TRAJECTORY_JOINTS:
+            return Refused(ValueError, (self.label, f"at most {MAX_TRAJECTORY_JOINTS} joints"))
+        c = finite_or_refused(a, self.label)
+        if isinstance(c, Refused):
+            return c
+        if a.shape[-1] != TRAJECTORY_Q[0].shape[0]:
+            return Refused(ValueError, ("joint_trajectory(q_start, q_end)", "same number of joints"))
+        return _broadcast_refusal(self.label, (a.shape[:-1], *self.others)) or c
+
+
+def _trajectory_spec():
+    """time_scaling and joint_trajectory: a signature of a kind that does not
+    read the ratio (quintic, given None), and one of the trapezoid ([1.5]);
+    durations [1.5] (shape (1,): every catalog variant of an array)."""
+    spec = {}
+    t_shape = TRAJECTORY_T.shape
+    for name in ("time_scaling", "joint_trajectory"):
+        signatures = []
+        for kind, ratio in (("quintic", None), ("trapezoidal", 1.5)):
+            trapezoid = ratio is not None
+            # the valid arguments and their (batch) shapes: (q_start, q_end), t, duration, ratio
+            joints = [(f"{name}(q_start)", 0), (f"{name}(q_end)", 1)] if name == "joint_trajectory" else []
+            shapes = {"t": t_shape, "duration": (1,), **({"ratio": (1,)} if trapezoid else {})}
+            shapes.update({label: () for label, _ in joints})
+
+            def others(skip, shapes=shapes):
+                return tuple(v for k, v in shapes.items() if k != skip)
+
+            signature = [
+                TrajectoryJoints(label, valid=lambda i=i: TRAJECTORY_Q[i].copy(), others=others(label))
+                for label, i in joints
+            ]
+            signature += [
+                ScalingArray(f"{name}(t)", "time", lambda: TRAJECTORY_T.copy(), others("t")),
+                ScalingArray(f"{name}(duration)", "duration", lambda: np.array([1.5]), others("duration")),
+                ScalingKind(f"{name}(kind)", kind, trapezoid),
+                ScalingArray(
+                    f"{name}(peak_velocity_ratio)",
+                    "ratio",
+                    lambda r=ratio: None if r is None else np.array([r]),
+                    others("ratio"),
+                    ignored=not trapezoid,
+                ),
+            ]
+            signatures.append(signature)
+        spec[name] = Entry(signatures, call=getattr(chasles, name))
+    return spec
 
 
 @dataclass

@@ -449,6 +449,8 @@ def catalog(arg):
             np.array([base.tolist(), base.tolist()[:1]], dtype=object),
             [base.tolist(), base.tolist()[:-1]],
         ]
+    elif isinstance(arg, A.ScalingKind):
+        out += arg.variants()
     elif isinstance(arg, A.State):
         good = arg.good()
         out += [good, list(good), good[:-1], good + (0.0,)]
@@ -659,7 +661,7 @@ def values_for(arg):
             st.tuples(*[st.one_of(st.just(x), st.sampled_from([1, "a", None, np.float64(1.0)])) for x in good]),
             others,
         )
-    if isinstance(arg, A.ScipyElement):
+    if isinstance(arg, (A.ScipyElement, A.ScalingKind)):
         return st.one_of(st.sampled_from(arg.variants()), others)
     if isinstance(arg, A.Instance):
         return others

@@ -1,5 +1,6 @@
 """The private gufuncs behind Chain's methods, its dynamics and inverse
-kinematics, the splines' evaluation and the Gaussians' propagation:
+kinematics, the splines' evaluation, the Gaussians' propagation and the
+time scalings:
 registered by the same mechanism as
 the public array functions (bindings/ufunc.hpp), with a core dimension n
 bound at run time and several results. What numpy gives every gufunc (out=,
@@ -51,6 +52,9 @@ PRIVATE = {
     "_so3_bspline_rates": ("(),(),(n,3,3),()->(3,3),(3),(3)", ["dddd->ddd"]),
     "_se3_bspline": ("(),(),(n,4,4),()->(4,4)", ["dddd->d"]),
     "_se3_bspline_rates": ("(),(),(n,4,4),()->(4,4),(6),(6)", ["dddd->ddd"]),
+    # time_scaling's kernel: scalar cores only, so numpy reports no core signature
+    "_time_scaling": (None, ["iddd->ddd"]),
+    "_joint_trajectory": ("(n),(n),(),(),(),()->(n),(n),(n)", ["ddiddd->ddd"]),
 }
 
 # Gaussian's kernels, on every group: (prefix, matrix size, tangent dimension, point size)

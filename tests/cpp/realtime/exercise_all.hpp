@@ -428,6 +428,23 @@ S exercise_all() noexcept {
     sum += rate_r.sum() + acc_r.sum() + rate_g.sum() + acc_g.sum();
   }
 
+  // Time scalings and the joint trajectories they time (time_scaling.hpp):
+  // each kind, inside the motion, at rest after it, and refused (NaN).
+  {
+    const TimeScaling<S> cubic = cubic_time_scaling(S(2), S(0.5)), quintic = quintic_time_scaling(S(2), S(1.5));
+    const TimeScaling<S> ramp = trapezoidal_time_scaling(S(2), S(1.5), S(0.2));
+    const TimeScaling<S> cruise = time_scaling(TimeScalingKind::trapezoidal, S(2), S(1), S(1.5));
+    const TimeScaling<S> rest = time_scaling(TimeScalingKind::quintic, S(2), S(3));
+    const TimeScaling<S> refused = time_scaling(TimeScalingKind::trapezoidal, S(2), S(1));  // no ratio: NaN
+    for (const TimeScaling<S>& x : {cubic, quintic, ramp, cruise, rest}) sum += x.s + x.s_dot + x.s_ddot;
+    sum += S(std::isnan(RealType<S>::value(refused.s)) ? 1 : 0);
+    const JointTrajectoryPoint<typename C6::JointVector> p6 =
+        joint_trajectory(th6, typename C6::JointVector(th6 * S(2)), quintic);
+    const JointTrajectoryPoint<typename CD::JointVector> pd =
+        joint_trajectory(thd, typename CD::JointVector(-thd), ramp);
+    sum += p6.q.sum() + p6.qd.sum() + p6.qdd.sum() + pd.q.sum() + pd.qd.sum() + pd.qdd.sum();
+  }
+
   // Cubic B-splines (bspline.hpp): the segment evaluators, the view, and a
   // time inside, before the start, after the end.
   {
