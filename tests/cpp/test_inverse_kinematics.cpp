@@ -281,7 +281,7 @@ TYPED_TEST(InverseKinematics, UnreachableTargetIsReportedWithinTheBound) {
 }
 
 // The time budget: a spent budget stops before the first step; a budget of
-// 20 ms with unbounded restarts on an unreachable target is spent (it
+// 0.2 s with unbounded restarts on an unreachable target is spent (it
 // cannot end otherwise), and the call returns after it. The seeds depend on
 // the generator only: equal generators, no budget, equal results.
 TYPED_TEST(InverseKinematics, TimeBudgetAndRestarts) {
@@ -304,7 +304,7 @@ TYPED_TEST(InverseKinematics, TimeBudgetAndRestarts) {
   EXPECT_EQ(spent.q, JV(JV::Constant(n, S(kPi))));
   EXPECT_EQ(spent.error, chasles::pose_error(chain, far, spent.q));
 
-  options.max_time = 0.02;
+  options.max_time = 0.2;  // restarts within it even when a loaded machine pauses the process
   options.max_iterations = 10;
   const auto t0 = std::chrono::steady_clock::now();
   const auto budget = chasles::inverse_kinematics(chain, far, q0, lower, upper, options, gen, 1 << 30);

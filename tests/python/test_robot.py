@@ -112,10 +112,11 @@ def test_ik_status_attempts_and_time_budget(arms):
     assert spent.status == "time_budget" and spent.iterations == 0 and spent.attempts == 1
     q = np.full(6, 0.3)
     assert chain.inverse_kinematics(chain.forward(q), q, max_time=0).status == "converged"
-    # Unbounded restarts end with the budget (20 ms), the field's protocol form.
+    # Unbounded restarts end with the budget, the field's protocol form (0.2 s:
+    # restarts within it even on a loaded machine that pauses the process).
     t0 = time.perf_counter()
-    timed = chain.inverse_kinematics(far, np.zeros(6), max_iterations=10, restarts=2**31 - 1, max_time=0.02)
-    assert time.perf_counter() - t0 >= 0.02
+    timed = chain.inverse_kinematics(far, np.zeros(6), max_iterations=10, restarts=2**31 - 1, max_time=0.2)
+    assert time.perf_counter() - t0 >= 0.2
     assert timed.status == "time_budget" and timed.attempts > 1 and timed.total_iterations >= timed.iterations
     # A batch: a status array of str, and each element its own budget.
     batch = chain.inverse_kinematics(np.stack([far, chain.forward(q)]), np.stack([np.zeros(6), q]), max_time=0.0)
@@ -124,8 +125,10 @@ def test_ik_status_attempts_and_time_budget(arms):
 
 def test_ik_protocol_form_solves_random_targets(arms):
     # TRAC-IK's protocol on the Panda: seed at the middle of the limits,
-    # restarts within 5 ms, tolerance 1e-10 (the script bench/ik_protocols.py
-    # runs 10,000 targets beside TRAC-IK and KDL).
+    # restarts within a budget, tolerance 1e-10 (the script
+    # bench/ik_protocols.py runs 10,000 targets with TRAC-IK's 5 ms beside
+    # TRAC-IK and KDL; a test takes 1 s, which a loaded machine cannot spend
+    # pausing the process: speed is the benchmark's to measure).
     chain = arms["panda"]
     rng = np.random.default_rng(4)
     q_true = np.array([within_limits(chain, rng) for _ in range(100)])
@@ -136,7 +139,7 @@ def test_ik_protocol_form_solves_random_targets(arms):
         position_tolerance=1e-10,
         orientation_tolerance=1e-10,
         restarts=2**31 - 1,
-        max_time=0.005,
+        max_time=1.0,
         seed=1,
     )
     assert r.converged.all(), r.status[~r.converged]
