@@ -33,6 +33,26 @@
 
 namespace chasles_py {
 
+/// The result of Chain.inverse_kinematics, a chasles._results.IKResult (a
+/// named tuple defined in Python), which signatures show by that name.
+struct CHASLES_PY_HIDDEN IKResultObject {
+  py::object obj;
+};
+
+}  // namespace chasles_py
+
+namespace pybind11 {
+namespace detail {
+template <>
+struct type_caster<chasles_py::IKResultObject> {
+  static constexpr auto name = const_name("chasles._results.IKResult");
+  static handle cast(const chasles_py::IKResultObject& src, return_value_policy, handle) { return src.obj.inc_ref(); }
+};
+}  // namespace detail
+}  // namespace pybind11
+
+namespace chasles_py {
+
 namespace {
 
 constexpr int kMaxJoints = 32;
@@ -864,11 +884,12 @@ theta: array_like (..., n); returns (..., 6, n).)doc");
 
   cls.def(
       "inverse_kinematics",
-      [](Obj<PyChain> c, py::object target, py::object q0, RealLike position_tolerance, RealLike orientation_tolerance,
+      [](Obj<PyChain> c, ArrayLike target, ArrayLike q0, RealLike position_tolerance, RealLike orientation_tolerance,
          IndexLike max_iterations, IndexLike restarts, IndexLike seed, OptionalRealLike max_time) {
-        return inverse_kinematics(*c, target, q0,
-                                  ik_arguments(position_tolerance.obj, orientation_tolerance.obj, max_iterations.obj,
-                                               restarts.obj, seed.obj, max_time.obj));
+        return IKResultObject{
+            inverse_kinematics(*c, target.obj, q0.obj,
+                               ik_arguments(position_tolerance.obj, orientation_tolerance.obj, max_iterations.obj,
+                                            restarts.obj, seed.obj, max_time.obj))};
       },
       py::arg("target"), py::arg("q0"), py::kw_only(),
       py::arg_v("position_tolerance", py::float_(chasles::Thresholds<double>::ik_tolerance), "3.666852862501036e-11"),

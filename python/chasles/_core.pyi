@@ -3,6 +3,7 @@ chasles C++ kernels (use the chasles package, which re-exports them).
 """
 from __future__ import annotations
 from chasles._chain import Chain
+import chasles._results
 import collections.abc
 import numpy
 import numpy.dtypes
@@ -4055,7 +4056,7 @@ class _Chain:
         An array function: (n,) gives one result, (..., n) one per configuration,
         by numpy's rules (broadcasting, dtypes, the GIL released; NaN gives NaN). ValueError: a chain without link inertias, shapes that do not match.
         """
-    def inverse_kinematics(self, target: typing.Any, q0: typing.Any, *, position_tolerance: float = 3.666852862501036e-11, orientation_tolerance: float = 3.666852862501036e-11, max_iterations: typing.SupportsIndex = 100, restarts: typing.SupportsIndex = 0, seed: typing.SupportsIndex = 0, max_time: float | None = None) -> typing.Any:
+    def inverse_kinematics(self, target: numpy.typing.ArrayLike, q0: numpy.typing.ArrayLike, *, position_tolerance: float = 3.666852862501036e-11, orientation_tolerance: float = 3.666852862501036e-11, max_iterations: typing.SupportsIndex = 100, restarts: typing.SupportsIndex = 0, seed: typing.SupportsIndex = 0, max_time: float | None = None) -> chasles._results.IKResult:
         """
         Inverse kinematics: joint positions q with forward(q) = target, within the joint limits.
         
