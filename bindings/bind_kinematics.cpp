@@ -555,11 +555,17 @@ bool single_target(py::handle h, SE3d& out) {
   return true;
 }
 
-/// chasles.IKResult(q, converged, status, iterations, total_iterations, attempts, error).
+/// The type chasles._results.IKResult, which the package hands over when
+/// it loads (_chain.py: _Chain._set_ik_result): the bindings import nothing
+/// of the package. Held for the process.
+PyObject* ik_result_type = nullptr;
+
+/// IKResult(q, converged, status, iterations, total_iterations, attempts, error).
 py::object ik_result(py::object q, py::object converged, py::object status, py::object iterations,
                      py::object total_iterations, py::object attempts, py::object error) {
-  static PyObject* type = py::module_::import("chasles._results").attr("IKResult").cast<py::object>().release().ptr();
-  return py::reinterpret_borrow<py::object>(type)(q, converged, status, iterations, total_iterations, attempts, error);
+  if (ik_result_type == nullptr) throw py::type_error("Chain.inverse_kinematics: chasles._chain is not loaded");
+  return py::reinterpret_borrow<py::object>(ik_result_type)(q, converged, status, iterations, total_iterations,
+                                                            attempts, error);
 }
 
 py::object inverse_kinematics(const PyChain& c, py::handle target, py::handle q0, const IKArguments& a) {
@@ -882,6 +888,9 @@ theta: array_like (..., n); returns (..., 6, n).)doc");
 Column i is Ad_{(exp([B_{i+1}] th_{i+1}) ... exp([B_n] th_n))^-1} B_i, rows (v, w).
 theta: array_like (..., n); returns (..., 6, n).)doc");
 
+  cls.def_static(
+      "_set_ik_result", [](py::object type) { ik_result_type = type.release().ptr(); }, py::arg("type"),
+      "Hands over chasles._results.IKResult, the result type of inverse_kinematics (called by chasles._chain).");
   cls.def(
       "inverse_kinematics",
       [](Obj<PyChain> c, ArrayLike target, ArrayLike q0, RealLike position_tolerance, RealLike orientation_tolerance,

@@ -25,6 +25,7 @@ from typing import Any, Optional
 import numpy as np
 
 from chasles import _core
+from chasles._results import IKResult
 
 _TYPES = ("revolute", "continuous", "prismatic", "helical")
 _MAX_JOINTS = 32
@@ -793,6 +794,9 @@ def _m(chain: Any) -> tuple:
     _require(chain)
     return chain.__dict__["_model"]
 
+
+# The result type of the extension's inverse_kinematics (the bindings import nothing of the package).
+_core._Chain._set_ik_result(IKResult)
 
 # Pickles of chasles 0.1.0 name the class chasles._core.Chain: it is this one.
 _core.Chain = Chain

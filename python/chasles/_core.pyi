@@ -3947,6 +3947,11 @@ class _Chain:
     """
     __array_ufunc__ = None
     @staticmethod
+    def _set_ik_result(type: typing.Any) -> None:
+        """
+        Hands over chasles._results.IKResult, the result type of inverse_kinematics (called by chasles._chain).
+        """
+    @staticmethod
     def prismatic_screw(direction: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
         """
         The screw (v, 0) of a prismatic joint, v = direction / |direction| (shape (3,), nonzero).
