@@ -58,6 +58,9 @@
 //   build/pinbench/bench/chasles_bench_vs_pinocchio_portable
 //   build/pinbench/bench/chasles_bench_vs_pinocchio_native
 //
+// (--arm UR5 times one arm, --op "mass matrix" the operations whose name
+// contains the text.)
+//
 // (cmake's arguments on one line). Options: --rounds R (15), --states N
 // (1000), --arm NAME (one arm), --robots DIR (example-robot-data's robots/
 // directory; default: the one CMake found), --seed S.
@@ -593,10 +596,15 @@ double pass_ns(const F& f, std::size_t count) {
   return std::chrono::duration<double, std::nano>(t1 - t0).count() / double(count);
 }
 
-/// chasles then Pinocchio, round after round (an untimed pass of each first).
+/// The operations to time (--op: those whose name contains it; all when empty).
+std::string g_op_filter;
+
+/// chasles then Pinocchio, round after round (an untimed pass of each first);
+/// a row of zeros, left out of the table, when --op excludes the operation.
 template <typename C, typename P>
 Row time_pair(const std::string& op, const std::string& chasles_call, const std::string& pinocchio_call,
               std::size_t count, int rounds, const C& c, const P& p) {
+  if (op.find(g_op_filter) == std::string::npos) return {op, chasles_call, pinocchio_call, 0, 0, 0, 0};
   pass_ns(c, count);
   pass_ns(p, count);
   std::vector<double> tc, tp;
@@ -693,7 +701,7 @@ std::vector<Row> time_arm(const Chain& chain, const pinocchio::Model& model, pin
 [[noreturn]] void usage(const char* what) {
   std::fprintf(stderr,
                "%s\nusage: chasles_bench_vs_pinocchio [--rounds R] [--states N] [--arm NAME] [--robots DIR] "
-               "[--seed S]\n",
+               "[--seed S] [--op TEXT]\n",
                what);
   std::exit(2);
 }
@@ -719,6 +727,8 @@ int main(int argc, char** argv) {
       robots = v;
     else if (a == "--seed")
       seed = std::uint64_t(std::atoll(v));
+    else if (a == "--op")
+      g_op_filter = v;
     else
       usage(("unknown option " + a).c_str());
   }
@@ -795,9 +805,10 @@ int main(int argc, char** argv) {
               "Pinocchio ns", "ratio");
   for (const ArmRows& result : results)
     for (const Row& r : result.rows)
-      std::printf("%-6s %-20s %-29s %-68s %7.1f (%7.1f) %7.1f (%7.1f) %5.2f (%5.2f)\n", result.arm.c_str(),
-                  r.op.c_str(), r.chasles_call.c_str(), r.pinocchio_call.c_str(), r.c_min, r.c_med, r.p_min, r.p_med,
-                  r.c_min / r.p_min, r.c_med / r.p_med);
+      if (r.p_min > 0)
+        std::printf("%-6s %-20s %-29s %-68s %7.1f (%7.1f) %7.1f (%7.1f) %5.2f (%5.2f)\n", result.arm.c_str(),
+                    r.op.c_str(), r.chasles_call.c_str(), r.pinocchio_call.c_str(), r.c_min, r.c_med, r.p_min, r.p_med,
+                    r.c_min / r.p_min, r.c_med / r.p_med);
   return 0;
 }
 

@@ -16,9 +16,12 @@ largest relative difference (max |a - b| / max(1, max |b|)) of
   the time derivatives of the tool's Jacobians
   (pin.getFrameJacobianTimeVariation, WORLD and LOCAL),
 and the time of each side's Python call: one configuration per call (the
-median over 7 runs of 2000 calls), and chasles' batched call on N = 1000
-configurations ((N, n) arrays) per configuration (Pinocchio's Python API
-has no batched call: a loop costs its per-call time); with the floor of a
+median and the minimum over 15 rounds of 1000 calls), and chasles' batched
+call on N = 1000 configurations ((N, n) arrays) per configuration
+(Pinocchio's Python API has no batched call: a loop costs its per-call
+time), the three interleaved round by round (chasles, Pinocchio, the batch,
+then again), so that a disturbance of the machine falls on both libraries
+alike; with the floor of a
 chasles method that returns a new (n,) array and computes nothing
 (Chain.lower), the cost of the pybind11 call and the array alone.
 
@@ -79,73 +82,82 @@ def rel(a, b) -> float:
     return float(np.max(np.abs(np.asarray(a) - np.asarray(b))) / max(1.0, float(np.max(np.abs(b)))))
 
 
-def per_call(fn, repeats=1000, runs=15) -> tuple[float, float]:
-    """The median and the minimum over `runs` of the mean time of `repeats`
-    calls (the minimum: the time on a machine that other processes leave
-    alone)."""
-    times = []
+def interleaved(*calls, runs=15) -> list[tuple[float, float]]:
+    """Each of `calls`, pairs (fn, repeats), timed round by round: in each of
+    `runs` rounds every fn runs its `repeats` calls in turn, so that a
+    disturbance of the machine falls on all of them alike. Per fn, the
+    median and the minimum over the rounds of the mean time of one call (the
+    minimum: the least-disturbed round)."""
+    times = [[] for _ in calls]
     for _ in range(runs):
-        t0 = time.perf_counter()
-        for _ in range(repeats):
-            fn()
-        times.append((time.perf_counter() - t0) / repeats)
-    return float(np.median(times)), float(np.min(times))
+        for k, (fn, repeats) in enumerate(calls):
+            t0 = time.perf_counter()
+            for _ in range(repeats):
+                fn()
+            times[k].append((time.perf_counter() - t0) / repeats)
+    return [(float(np.median(t)), float(np.min(t))) for t in times]
 
 
 BATCH = 1000
+REPEATS = 1000
 
 
 def timings(chain: Chain, model, data, rng):
-    """{operation: (chasles per call, Pinocchio per call, chasles batched per configuration)} in seconds."""
+    """{operation: (chasles per call, Pinocchio per call, chasles batched per configuration)}
+    in seconds, the three interleaved round by round."""
     n = chain.n_joints
     q, qd, qdd = rng.uniform(-1, 1, (3, n))
     qp = pin_configuration(model, q)
     Q, QD, QDD = rng.uniform(-1, 1, (3, BATCH, n))
-    batch = lambda fn: tuple(t / BATCH for t in per_call(fn, repeats=3))  # noqa: E731
-    return {
+    ops = {
         "rnea": (
-            per_call(lambda: chain.inverse_dynamics(q, qd, qdd)),
-            per_call(lambda: pin.rnea(model, data, qp, qd, qdd)),
-            batch(lambda: chain.inverse_dynamics(Q, QD, QDD)),
+            lambda: chain.inverse_dynamics(q, qd, qdd),
+            lambda: pin.rnea(model, data, qp, qd, qdd),
+            lambda: chain.inverse_dynamics(Q, QD, QDD),
         ),
         "crba": (
-            per_call(lambda: chain.mass_matrix(q)),
-            per_call(lambda: pin.crba(model, data, qp)),
-            batch(lambda: chain.mass_matrix(Q)),
+            lambda: chain.mass_matrix(q),
+            lambda: pin.crba(model, data, qp),
+            lambda: chain.mass_matrix(Q),
         ),
         "gravity": (
-            per_call(lambda: chain.gravity_torques(q)),
-            per_call(lambda: pin.computeGeneralizedGravity(model, data, qp)),
-            batch(lambda: chain.gravity_torques(Q)),
+            lambda: chain.gravity_torques(q),
+            lambda: pin.computeGeneralizedGravity(model, data, qp),
+            lambda: chain.gravity_torques(Q),
         ),
         # Pinocchio's C(q, qd) qd: nonLinearEffects (with gravity; no call without it)
         "coriolis": (
-            per_call(lambda: chain.coriolis(q, qd)),
-            per_call(lambda: pin.nonLinearEffects(model, data, qp, qd)),
-            batch(lambda: chain.coriolis(Q, QD)),
+            lambda: chain.coriolis(q, qd),
+            lambda: pin.nonLinearEffects(model, data, qp, qd),
+            lambda: chain.coriolis(Q, QD),
         ),
         "aba": (
-            per_call(lambda: chain.forward_dynamics(q, qd, qdd)),
-            per_call(lambda: pin.aba(model, data, qp, qd, qdd)),
-            batch(lambda: chain.forward_dynamics(Q, QD, QDD)),
+            lambda: chain.forward_dynamics(q, qd, qdd),
+            lambda: pin.aba(model, data, qp, qd, qdd),
+            lambda: chain.forward_dynamics(Q, QD, QDD),
         ),
         "d_rnea": (
-            per_call(lambda: chain.inverse_dynamics_derivatives(q, qd, qdd)),
-            per_call(lambda: pin.computeRNEADerivatives(model, data, qp, qd, qdd)),
-            batch(lambda: chain.inverse_dynamics_derivatives(Q, QD, QDD)),
+            lambda: chain.inverse_dynamics_derivatives(q, qd, qdd),
+            lambda: pin.computeRNEADerivatives(model, data, qp, qd, qdd),
+            lambda: chain.inverse_dynamics_derivatives(Q, QD, QDD),
         ),
         "d_aba": (
-            per_call(lambda: chain.forward_dynamics_derivatives(q, qd, qdd)),
-            per_call(lambda: pin.computeABADerivatives(model, data, qp, qd, qdd)),
-            batch(lambda: chain.forward_dynamics_derivatives(Q, QD, QDD)),
+            lambda: chain.forward_dynamics_derivatives(q, qd, qdd),
+            lambda: pin.computeABADerivatives(model, data, qp, qd, qdd),
+            lambda: chain.forward_dynamics_derivatives(Q, QD, QDD),
         ),
         "minv": (
-            per_call(lambda: chain.mass_matrix_inverse(q)),
-            per_call(lambda: pin.computeMinverse(model, data, qp)),
-            batch(lambda: chain.mass_matrix_inverse(Q)),
+            lambda: chain.mass_matrix_inverse(q),
+            lambda: pin.computeMinverse(model, data, qp),
+            lambda: chain.mass_matrix_inverse(Q),
         ),
-        "floor": (per_call(lambda: chain.lower), (np.nan, np.nan), (np.nan, np.nan)),
     }
+    out = {}
+    for op, (mine, theirs, batched) in ops.items():
+        a, b, c = interleaved((mine, REPEATS), (theirs, REPEATS), (batched, 3))
+        out[op] = (a, b, (c[0] / BATCH, c[1] / BATCH))
+    out["floor"] = (interleaved((lambda: chain.lower, REPEATS))[0], (np.nan, np.nan), (np.nan, np.nan))
+    return out
 
 
 def main() -> None:
@@ -203,7 +215,7 @@ def main() -> None:
         print(f"{name:6} {n:>2} " + " ".join(f"{worst[k]:8.1e}" for k in worst))
         if name in ("UR5", "Panda", "xArm7"):  # the arms of the issue's speed targets
             timing[name] = timings(chain, model, data, rng)
-    print("\nTime from Python, microseconds, median (minimum) of 15 runs: one configuration per call,")
+    print("\nTime from Python, microseconds, median (minimum) of 15 interleaved rounds: one configuration per call,")
     print(f"chasles and Pinocchio and their ratio; chasles batched on N = {BATCH} configurations, per configuration")
     print(f"{'arm':6} {'operation':9} {'chasles':>14} {'pinocchio':>14} {'ratio':>12} {'batched':>14}")
     for name, rows in timing.items():
