@@ -73,12 +73,17 @@ EIGEN_ALWAYS_INLINE SE3<typename ChainT::Scalar> space_pass(const ChainT& chain,
                                                             bool last = true) noexcept {
   using Scalar = typename ChainT::Scalar;
   using Group = SE3<Scalar>;
-  using Vector6 = Eigen::Matrix<Scalar, 6, 1>;
+  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
   const typename ChainT::Screws& S = chain.space_screws();
   const Eigen::Index n = S.cols();
   Group g;
   for (Eigen::Index i = 0; i < n; ++i) {
-    if (J != nullptr) J->col(i) = g.act(Twist<Scalar>(Vector6(S.col(i)))).vector();
+    if (J != nullptr) {  // Ad_g S_i = (R v + p x R w, R w), written as its halves (below)
+      const auto& R = g.rotation().matrix();
+      const Vector3 Rw = R * S.col(i).template tail<3>();
+      J->col(i).template head<3>() = R * S.col(i).template head<3>() + g.translation().cross(Rw);
+      J->col(i).template tail<3>() = Rw;
+    }
     if (!last && i + 1 == n) break;
     g *= Group::exp(S.col(i) * q(i));
     link(i, static_cast<const Group&>(g));
@@ -96,18 +101,27 @@ EIGEN_ALWAYS_INLINE SE3<typename ChainT::Scalar> body_pass(const ChainT& chain, 
                                                            typename ChainT::Jacobian* J, bool last = true) noexcept {
   using Scalar = typename ChainT::Scalar;
   using Group = SE3<Scalar>;
-  using Vector6 = Eigen::Matrix<Scalar, 6, 1>;
+  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
   const typename ChainT::Screws& B = chain.body_screws();
   Group h;
   for (Eigen::Index i = B.cols() - 1; i >= 0; --i) {
-    if (J != nullptr) J->col(i) = h.act_inv(Twist<Scalar>(Vector6(B.col(i)))).vector();
+    if (J != nullptr) {  // Ad_h^-1 B_i = (R^T (v - p x w), R^T w), written as its halves (below)
+      const auto Rt = h.rotation().matrix().transpose();
+      const Vector3 w = B.col(i).template tail<3>();
+      J->col(i).template head<3>() = Rt * (B.col(i).template head<3>() - h.translation().cross(w));
+      J->col(i).template tail<3>() = Rt * w;
+    }
     if (!last && i == 0) break;
     h = Group::exp(B.col(i) * q(i)) * h;
   }
   return chain.home() * h;
 }
 
-/// (Both passes are inlined into each caller, so that each gets the loop it
+/// (Each Jacobian column is written as its two halves, not as a 6-vector
+/// assembled from two 3-vectors and copied: that copy reads the halves back
+/// in packets that straddle their stores, a store-forwarding stall in
+/// every column, worst with AVX's 4-packets (-march=native).
+/// Both passes are inlined into each caller, so that each gets the loop it
 /// would have written alone: the Jacobian's column writes and the link
 /// callback vanish where they are not asked for. exp takes the product
 /// expression, one instantiation for every caller: GCC then inlines exp's
