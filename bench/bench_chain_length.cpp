@@ -1,5 +1,5 @@
 // Forward dynamics against the number of joints: the composite-rigid-body
-// algorithm with a Cholesky solve (forward_dynamics: O(n^2) + O(n^3)) beside
+// algorithm with a Cholesky solve (forward_dynamics_composite: O(n^2) + O(n^3)) beside
 // the articulated-body algorithm (forward_dynamics_articulated: O(n)), and
 // the derivatives of inverse dynamics (O(n^2)), on random chains of 2 to 32
 // joints (Chain<double, Dynamic, 32>: revolute joints about random axes,
@@ -12,7 +12,9 @@
 // (one command line)
 //
 // and compare the "min" rows (the least-disturbed repetition, a statistic
-// added here to Google Benchmark's mean, median and stddev).
+// added here to Google Benchmark's mean, median and stddev). The crossover
+// sets chasles::articulated_body_min_joints (dynamics.hpp), from which
+// forward_dynamics takes the articulated-body algorithm.
 #include <chasles/dynamics.hpp>
 #include <chasles/dynamics_derivatives.hpp>
 #include <chasles/kinematics.hpp>
@@ -66,7 +68,7 @@ void register_length(int n) {
   }
   const std::string tail = "/" + std::to_string(n);
   add("forward_dynamics/crba_cholesky" + tail, states,
-      [chain](const State& x) { return chasles::forward_dynamics(chain, x.q, x.qd, x.tau).qdd; });
+      [chain](const State& x) { return chasles::forward_dynamics_composite(chain, x.q, x.qd, x.tau).qdd; });
   add("forward_dynamics/articulated" + tail, states,
       [chain](const State& x) { return chasles::forward_dynamics_articulated(chain, x.q, x.qd, x.tau).qdd; });
   add("inverse_dynamics_derivatives" + tail, states,
@@ -76,7 +78,7 @@ void register_length(int n) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  for (const int n : {2, 4, 6, 7, 8, 10, 12, 16, 20, 24, 32}) register_length(n);
+  for (const int n : {2, 4, 6, 7, 8, 10, 12, 16, 20, 24, 26, 28, 30, 32}) register_length(n);
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

@@ -665,7 +665,7 @@ py::object joint_operand(py::handle x, py::ssize_t n, const std::string& what) {
 
 [[noreturn]] void raise_not_positive_definite(const char* method, const std::string& where, Eigen::Index joint) {
   raise_value_error(std::string("Chain.") + method + ": the mass matrix M(q) is not positive definite" + where +
-                    ": its Cholesky factorization fails at joint " + std::to_string(joint) +
+                    ": its factorization fails at joint " + std::to_string(joint) +
                     " (a link without mass, or without rotational inertia about its joint's axis, or an inertia "
                     "that no rigid body has?)");
 }
@@ -1019,8 +1019,10 @@ Returns (..., n), N m for revolute joints and N for prismatic ones.)doc") +
       },
       py::arg("q"), py::arg("qd"), py::arg("tau"), py::kw_only(), py::arg("tip_wrench") = py::none(),
       py::arg("on_failure") = "raise",
-      (std::string(R"doc(Forward dynamics: qdd = M(q)^-1 (tau - C(q, qd) qd - g(q) - J_b^T F_tip) (Cholesky).
+      (std::string(R"doc(Forward dynamics: qdd = M(q)^-1 (tau - C(q, qd) qd - g(q) - J_b^T F_tip).
 
+By the composite inertias and a Cholesky factorization of M(q), or from 30 joints on by the
+articulated-body algorithm, O(n) (the faster of the two; they agree to rounding).
 q, qd, tau: array_like (..., n); tip_wrench as in inverse_dynamics. Where M(q) is not
 positive definite (a massless link, a point mass on its axis, an inertia no rigid body has:
 chasles::DynamicsStatus) there are no accelerations: ValueError naming the joint (and the

@@ -1,7 +1,7 @@
 // chasles: rigid-body dynamics of serial chains given by their space screws:
 // inverse dynamics by the recursive Newton-Euler algorithm, the mass matrix
 // by the composite-rigid-body algorithm, forward dynamics by a Cholesky
-// solve. Written in the base (space) frame, Featherstone's spatial form
+// solve or the articulated-body algorithm. Written in the base (space) frame, Featherstone's spatial form
 // (R. Featherstone, "Rigid Body Dynamics Algorithms", 2008, ch. 5.3 and 6.2,
 // with the spatial quantities in base coordinates) on twists (v, w) and
 // wrenches (f, tau); the same recursion as Lynch and Park, "Modern Robotics",
@@ -29,7 +29,7 @@ enum class DynamicsStatus : unsigned char {
   ok,
   /// M(q) is not positive definite to working precision: a pivot of its
   /// Cholesky factorization is not above the rounding of its terms (see
-  /// forward_dynamics). A link without mass, or without
+  /// forward_dynamics_composite). A link without mass, or without
   /// rotational inertia about its joint's axis (a point mass on the axis),
   /// gives a zero pivot; an inertia that no rigid body has (a rotational
   /// inertia that is not positive definite: SpatialInertia::is_physical)
@@ -222,7 +222,7 @@ typename ChainT::MassMatrix composite(const DynamicsPass<ChainT>& pass, Eigen::I
 
 /// The Cholesky factorization M = L L^T in place on the lower triangle of
 /// A (Eigen's unblocked LLT, the same operations), stopping at the first
-/// pivot d_k <= floor(k) (forward_dynamics' comment; composite() computes
+/// pivot d_k <= floor(k) (forward_dynamics_composite's comment; composite() computes
 /// the floors): returns that k, or -1 when every pivot passes.
 template <typename MassMatrix, typename JointVector>
 Eigen::Index factorize(MassMatrix& A, const JointVector& floor) noexcept {
@@ -244,7 +244,7 @@ Eigen::Index factorize(MassMatrix& A, const JointVector& floor) noexcept {
   return -1;
 }
 
-/// forward_dynamics at the pass of q: M(q) = L L^T into `L` (composite,
+/// forward_dynamics_composite at the pass of q: M(q) = L L^T into `L` (composite,
 /// factorize) and qdd = M^-1 (tau - h - J_b^T F_tip) into `qdd`; returns -1,
 /// or the joint of the failed pivot (then `qdd` is not solved).
 template <typename ChainT, typename Qd, typename Tau>
@@ -351,8 +351,8 @@ typename Chain<Scalar, N, MaxN>::JointVector bias(const Chain<Scalar, N, MaxN>& 
   return detail::newton_euler(chain, pass, qd, JointVector::Zero(chain.n_joints()), true, Wrench<Scalar>());
 }
 
-/// qdd = M(q)^-1 (tau - h(q, qd) - J_b(q)^T F_tip), by a Cholesky
-/// factorization M(q) = L L^T (in place on the fixed-capacity matrix: no
+/// qdd = M(q)^-1 (tau - h(q, qd) - J_b(q)^T F_tip) by the composite inertias
+/// (mass_matrix) and a Cholesky factorization M(q) = L L^T (in place on the fixed-capacity matrix: no
 /// allocation; the operations of Eigen's unblocked LLT), with the status:
 /// ok, or mass_matrix_not_positive_definite with NaN accelerations and the
 /// joint k of the first pivot d_k = M_kk - sum_{j<k} L_kj^2 that is not
@@ -375,7 +375,7 @@ typename Chain<Scalar, N, MaxN>::JointVector bias(const Chain<Scalar, N, MaxN>& 
 /// accelerations with status ok (as everywhere: no check of the input).
 /// One space pass serves both M and h.
 template <typename Scalar, int N, int MaxN, typename Q, typename Qd, typename Tau>
-ForwardDynamicsResult<typename Chain<Scalar, N, MaxN>::JointVector> forward_dynamics(
+ForwardDynamicsResult<typename Chain<Scalar, N, MaxN>::JointVector> forward_dynamics_composite(
     const Chain<Scalar, N, MaxN>& chain, const Eigen::MatrixBase<Q>& q, const Eigen::MatrixBase<Qd>& qd,
     const Eigen::MatrixBase<Tau>& tau, const Wrench<Scalar>& tip_wrench = Wrench<Scalar>()) noexcept {
   using ChainT = Chain<Scalar, N, MaxN>;
@@ -394,7 +394,7 @@ ForwardDynamicsResult<typename Chain<Scalar, N, MaxN>::JointVector> forward_dyna
   return {qdd, DynamicsStatus::ok, -1};
 }
 
-/// qdd of forward_dynamics by the articulated-body algorithm (Featherstone
+/// qdd of forward_dynamics_composite by the articulated-body algorithm (Featherstone
 /// 2008, ch. 7.3), O(n), in the base frame, where no link frames are needed:
 /// with V_i and c_i = (V_i x S_i(q)) qd_i from the base out, the articulated
 /// inertias and bias forces from the tip in (I^A_i = G_i(q) plus the
@@ -404,14 +404,11 @@ ForwardDynamicsResult<typename Chain<Scalar, N, MaxN>::JointVector> forward_dyna
 ///   I^a_i = I^A_i - U_i U_i^T / D_i,  p^a_i = p^A_i + I^a_i c_i + U_i u_i / D_i,
 /// then from the base out, A_0 = (-gravity, 0):
 ///   qdd_i = (u_i - U_i . (A_{i-1} + c_i)) / D_i,  A_i = A_{i-1} + c_i + S_i qdd_i.
-/// The status is forward_dynamics', with the pivots D_i tested as its d_k
+/// The status is forward_dynamics_composite's, with the pivots D_i tested as its d_k
 /// are (D_i <= mass_matrix_pivot_tolerance * s_i, s_i from I^A_i's diagonal
 /// blocks), from the tip in: where M(q) is not positive definite the joint
-/// named may differ from forward_dynamics' (which factorizes from the base
-/// out). Equal to forward_dynamics to rounding (tests/cpp/test_dynamics.cpp);
-/// forward_dynamics' composite inertias and Cholesky factorization cost
-/// O(n^2) and O(n^3) with smaller constants (bench/bench_chain_length.cpp
-/// measures the crossover: about 24 joints).
+/// named may differ from forward_dynamics_composite's (which factorizes from the base
+/// out). Equal to forward_dynamics_composite to rounding (tests/cpp/test_dynamics.cpp).
 template <typename Scalar, int N, int MaxN, typename Q, typename Qd, typename Tau>
 ForwardDynamicsResult<typename Chain<Scalar, N, MaxN>::JointVector> forward_dynamics_articulated(
     const Chain<Scalar, N, MaxN>& chain, const Eigen::MatrixBase<Q>& q, const Eigen::MatrixBase<Qd>& qd,
@@ -466,6 +463,33 @@ ForwardDynamicsResult<typename Chain<Scalar, N, MaxN>::JointVector> forward_dyna
     A += pass.S.col(i) * qdd(i);
   }
   return {qdd, DynamicsStatus::ok, -1};
+}
+
+/// The number of joints from which forward_dynamics takes the
+/// articulated-body algorithm: the composite inertias and Cholesky
+/// factorization cost O(n^2) and O(n^3) with smaller constants, and are
+/// faster on shorter chains. Measured by bench/bench_chain_length.cpp
+/// (random revolute chains, double, g++ 12 -O3 portable, the least-disturbed
+/// of 10 interleaved repetitions), articulated-body over composite: 1.15 at
+/// 20 joints, 1.08 at 24, 1.01 at 28, 0.98 at 30, 0.96 at 32.
+inline constexpr Eigen::Index articulated_body_min_joints = 30;
+
+/// qdd = M(q)^-1 (tau - h(q, qd) - J_b(q)^T F_tip), the joint accelerations
+/// that the joint forces tau give at (q, qd) while the tool applies the
+/// wrench F_tip (tool frame) on the environment, with the status of
+/// forward_dynamics_composite: by forward_dynamics_composite below
+/// articulated_body_min_joints joints, by forward_dynamics_articulated from
+/// there on (the two agree to rounding; where M(q) is not positive definite
+/// they may name different joints).
+template <typename Scalar, int N, int MaxN, typename Q, typename Qd, typename Tau>
+ForwardDynamicsResult<typename Chain<Scalar, N, MaxN>::JointVector> forward_dynamics(
+    const Chain<Scalar, N, MaxN>& chain, const Eigen::MatrixBase<Q>& q, const Eigen::MatrixBase<Qd>& qd,
+    const Eigen::MatrixBase<Tau>& tau, const Wrench<Scalar>& tip_wrench = Wrench<Scalar>()) noexcept {
+  if constexpr (MaxN >= articulated_body_min_joints) {
+    if (chain.n_joints() >= articulated_body_min_joints)
+      return forward_dynamics_articulated(chain, q, qd, tau, tip_wrench);
+  }
+  return forward_dynamics_composite(chain, q, qd, tau, tip_wrench);
 }
 
 /// T = sum_i 1/2 V_i . G_i(q) V_i, the links' kinetic energy computed

@@ -191,7 +191,7 @@ InverseDynamicsDerivatives<typename Chain<Scalar, N, MaxN>::MassMatrix> inverse_
   return detail::newton_euler_derivatives(chain, pass, qd, qdd, tip_wrench);
 }
 
-/// M(q)^-1 by the Cholesky factorization of forward_dynamics (its status and
+/// M(q)^-1 by the Cholesky factorization of forward_dynamics_composite (its status and
 /// pivot test); Pinocchio's computeMinverse. O(n^3).
 template <typename Scalar, int N, int MaxN, typename Q>
 MassMatrixInverse<typename Chain<Scalar, N, MaxN>::MassMatrix> mass_matrix_inverse(
@@ -215,7 +215,7 @@ MassMatrixInverse<typename Chain<Scalar, N, MaxN>::MassMatrix> mass_matrix_inver
 /// - J_b^T F_tip), differentiating tau = ID(q, qd, qdd) gives
 ///   d qdd / d q = -M^-1 dtau/dq,  d qdd / d qd = -M^-1 dtau/dqd,  d qdd / d tau = M^-1
 /// (the inverse dynamics' derivatives at the accelerations computed). The
-/// status is forward_dynamics' (all NaN unless ok). O(n^3).
+/// status is forward_dynamics_composite's (all NaN unless ok). O(n^3).
 template <typename Scalar, int N, int MaxN, typename Q, typename Qd, typename Tau>
 ForwardDynamicsDerivatives<typename Chain<Scalar, N, MaxN>::MassMatrix> forward_dynamics_derivatives(
     const Chain<Scalar, N, MaxN>& chain, const Eigen::MatrixBase<Q>& q, const Eigen::MatrixBase<Qd>& qd,

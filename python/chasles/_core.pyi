@@ -4005,8 +4005,10 @@ class _Chain:
         """
     def forward_dynamics(self, q: typing.Any, qd: typing.Any, tau: typing.Any, *, tip_wrench: typing.Any = None, on_failure: typing.Any = 'raise') -> typing.Any:
         """
-        Forward dynamics: qdd = M(q)^-1 (tau - C(q, qd) qd - g(q) - J_b^T F_tip) (Cholesky).
+        Forward dynamics: qdd = M(q)^-1 (tau - C(q, qd) qd - g(q) - J_b^T F_tip).
         
+        By the composite inertias and a Cholesky factorization of M(q), or from 30 joints on by the
+        articulated-body algorithm, O(n) (the faster of the two; they agree to rounding).
         q, qd, tau: array_like (..., n); tip_wrench as in inverse_dynamics. Where M(q) is not
         positive definite (a massless link, a point mass on its axis, an inertia no rigid body has:
         chasles::DynamicsStatus) there are no accelerations: ValueError naming the joint (and the

@@ -958,6 +958,49 @@ TEST(ArticulatedBody, ReportsWhereTheArticulatedInertiaIsNotPositive) {
   EXPECT_TRUE(fails_at(chasles::forward_dynamics_articulated(panda_with<double>(I), x.q, x.qd, x.tau), 6));
 }
 
+TEST(ArticulatedBody, ForwardDynamicsTakesItOnLongChains) {
+  // forward_dynamics is forward_dynamics_composite below
+  // articulated_body_min_joints joints and forward_dynamics_articulated from
+  // there on (bit for bit: the same function runs), and the two agree on
+  // the long chains too (revolute joints about random axes, boxes of 1 to
+  // 4 kg, as bench/bench_chain_length.cpp): to cond(M) eps per joint.
+  using Long = Chain<double, Eigen::Dynamic, 32>;
+  constexpr Eigen::Index kFrom = chasles::articulated_body_min_joints;
+  static_assert(kFrom > 7 && kFrom < 32, "the arms of the field use the composite inertias");
+  std::mt19937 rng(57);
+  std::uniform_real_distribution<double> u(-1, 1), m(1, 4), side(0.05, 0.3);
+  for (const Eigen::Index n : {kFrom - 1, kFrom, Eigen::Index(32)}) {
+    Long::Screws S(6, n);
+    Long::Inertias inertias;
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();
+    for (Eigen::Index i = 0; i < n; ++i) {
+      S.col(i) = Long::revolute_screw(point, Eigen::Vector3d(u(rng), u(rng), u(rng)));
+      const double mass = m(rng), x = side(rng), y = side(rng), z = side(rng);
+      const Eigen::Vector3d moments(mass * (y * y + z * z) / 12, mass * (x * x + z * z) / 12,
+                                    mass * (x * x + y * y) / 12);
+      inertias[std::size_t(i)] =
+          SpatialInertia<double>(mass, point + Eigen::Vector3d(0.05, 0, 0), moments.asDiagonal());
+      point += Eigen::Vector3d(0.1, 0.02 * u(rng), 0.02 * u(rng));
+    }
+    const Long chain(S, SE3<double>(), inertias);
+    for (int trial = 0; trial < 5; ++trial) {
+      Long::JointVector q(n), qd(n), tau(n);
+      for (Eigen::Index j = 0; j < n; ++j) q(j) = 3 * u(rng), qd(j) = 2 * u(rng), tau(j) = 10 * u(rng);
+      Eigen::Matrix<double, 6, 1> wrench;
+      for (int k = 0; k < 6; ++k) wrench(k) = u(rng);
+      const Wrench<double> w(wrench);
+      const auto fd = chasles::forward_dynamics(chain, q, qd, tau, w);
+      const auto crba = chasles::forward_dynamics_composite(chain, q, qd, tau, w);
+      const auto aba = chasles::forward_dynamics_articulated(chain, q, qd, tau, w);
+      ASSERT_TRUE(fd && crba && aba) << "n = " << n;
+      EXPECT_EQ(fd.qdd, n >= kFrom ? aba.qdd : crba.qdd) << "n = " << n;
+      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(Eigen::MatrixXd(mass_matrix(chain, q)));
+      const LD cond = LD(es.eigenvalues().maxCoeff() / es.eigenvalues().minCoeff());
+      EXPECT_TRUE(near<double>(aba.qdd, crba.qdd, kPerJoint * LD(n) * cond, max_abs(tau))) << "n = " << n;
+    }
+  }
+}
+
 TEST(DynamicsDerivatives, FailuresAreForwardDynamicsFailures) {
   // A massless last link: forward_dynamics fails at joint 6, and so do its
   // derivatives and M(q)^-1, all NaN.

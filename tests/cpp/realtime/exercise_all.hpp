@@ -581,6 +581,8 @@ S exercise_all() noexcept {
     sum += idd.dtau_dq.sum() + idd.dtau_dqd.sum() + fdd.dqdd_dq.sum() + mass_matrix_inverse(dd, thd).inverse.sum();
     sum += forward_dynamics_articulated(d6, th6, qd6, qdd6, tip).qdd.sum() +
            forward_dynamics_articulated(dd, thd, qdd, qddd).qdd.sum();
+    sum += forward_dynamics_composite(d6, th6, qd6, qdd6, tip).qdd.sum() +
+           forward_dynamics_composite(dd, thd, qdd, qddd).qdd.sum();
     sum += d6.jacobian_space_dot(th6, qd6).sum() + d6.jacobian_body_dot(th6, qd6).sum();
     sum += dd.jacobian_space_dot(thd, qdd).sum() + dd.jacobian_body_dot(thd, qdd).sum();
   }
