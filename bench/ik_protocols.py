@@ -287,6 +287,7 @@ def main() -> None:
             chain = Chain.from_urdf(urdf, tip)
             targets, seeds = samples(chain, protocol, args.n)
             runs = [(s, 1e-5) for s in solvers] + ([("chasles", 1e-10)] if protocol == "a" else [])
+            medians = {}
             for solver, tol in runs:
                 try:
                     q, ok, t, note = solvers[solver](
@@ -296,10 +297,14 @@ def main() -> None:
                     print(f"{arm:6} {solver:8} {tol:6.0e} failed: {exc}")
                     continue
                 good = judge(chain, targets, q, tol)
+                medians[solver, tol] = float(np.median(t))
                 print(
                     f"{arm:6} {solver:8} {tol:6.0e} {100 * good.mean():7.2f}% {100 * ok.mean():6.2f}% "
                     f"{1e3 * np.median(t):10.3f} {1e3 * t.mean():8.3f}  {note}"
                 )
+            if ("TRAC-IK", 1e-5) in medians:
+                ratio = medians["chasles", 1e-5] / medians["TRAC-IK", 1e-5]
+                print(f"{arm:6} median time at 1e-5, chasles / TRAC-IK: {ratio:.3f}")
 
 
 if __name__ == "__main__":
