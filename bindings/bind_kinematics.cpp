@@ -55,7 +55,6 @@ namespace chasles_py {
 
 namespace {
 
-constexpr int kMaxJoints = 32;
 using ChainD = chasles::Chain<double, Eigen::Dynamic, kMaxJoints>;
 using InertiaD = chasles::SpatialInertia<double>;
 using chasles::SE3d;

@@ -288,8 +288,6 @@ using Vector2 = Eigen::Vector2d;
 using Matrix2 = Eigen::Matrix2d;
 using Matrix3 = Eigen::Matrix3d;
 
-constexpr double kRotationTolerance = chasles::Thresholds<double>::rotation_tolerance;
-
 /// The error of from_matrix and __setstate__: the defects, det and what to call.
 template <typename G, int N>
 [[noreturn]] void raise_not_in_group(const Eigen::Matrix<double, N, N>& M, double tol, const char* fn,

@@ -161,8 +161,6 @@ using Vector3 = Eigen::Vector3d;
 using Matrix3 = Eigen::Matrix3d;
 using Matrix5 = Eigen::Matrix<double, 5, 5>;
 
-constexpr double kRotationTolerance = chasles::Thresholds<double>::rotation_tolerance;
-
 /// The error of SE23.from_matrix and of __setstate__.
 [[noreturn]] void raise_not_extended_pose(const Matrix5& M, double tol, const char* fn, bool tol_argument) {
   double rows = 0.0;

@@ -27,8 +27,6 @@ using Vector6 = Eigen::Matrix<double, 6, 1>;
 using Matrix3 = Eigen::Matrix3d;
 using Matrix4 = Eigen::Matrix4d;
 
-constexpr double kRotationTolerance = chasles::Thresholds<double>::rotation_tolerance;
-
 const char* const kClassDoc = R"doc(A rigid motion of R^3: an element of SE(3), stored as a rotation R (an SO3)
 and a translation p (float64). Its 4x4 matrix is g = [[R, p], [0, 1]].
 

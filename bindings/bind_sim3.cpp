@@ -164,8 +164,6 @@ using Vector3 = Eigen::Vector3d;
 using Matrix3 = Eigen::Matrix3d;
 using Matrix4 = Eigen::Matrix4d;
 
-constexpr double kRotationTolerance = chasles::Thresholds<double>::rotation_tolerance;
-
 /// The error of Sim3.from_matrix and of __setstate__.
 [[noreturn]] void raise_not_similarity(const Matrix4& M, double tol, const char* fn, bool tol_argument) {
   const double s = Sim3d::matrix_scale(M);

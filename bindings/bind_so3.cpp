@@ -18,8 +18,6 @@ using chasles::SO3d;
 using Vector3 = Eigen::Vector3d;
 using Matrix3 = Eigen::Matrix3d;
 
-constexpr double kRotationTolerance = chasles::Thresholds<double>::rotation_tolerance;
-
 const char* const kClassDoc = R"doc(A rotation of R^3: an element of SO(3), stored as its 3x3 matrix (float64).
 
 ``R_ab`` maps coordinates in frame b to frame a: ``p_a = R_ab @ p_b``; its

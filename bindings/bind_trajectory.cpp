@@ -34,8 +34,7 @@ using ufunc::def_ufunc;
 using ufunc::Typed;
 using Kind = Typed<Core<>, int>;
 
-/// The joints of a joint vector: at most a Chain's 32 (bind_kinematics.cpp).
-constexpr int kMaxJoints = 32;
+/// The joints of a joint vector: at most a Chain's kMaxJoints.
 using Joints = Core<ufunc::upto<kMaxJoints>>;
 
 /// The time scaling of kind C (an index of chasles::TimeScalingKind) at t.

@@ -24,6 +24,13 @@ namespace chasles_py {
 
 namespace py = pybind11;
 
+/// The tolerance of every group's from_matrix check on matrices from Python
+/// (constructors, __setstate__).
+constexpr double kRotationTolerance = chasles::Thresholds<double>::rotation_tolerance;
+/// The joints a Chain can have (chasles::Chain<double, Dynamic, kMaxJoints>),
+/// and so a joint vector of the array functions.
+constexpr int kMaxJoints = 32;
+
 /// A value class held inside its Python object (instance.hpp).
 template <typename T>
 using Class = py::class_<T, InlineHolder<T>>;
