@@ -4103,7 +4103,8 @@ class _Chain:
             total_iterations, attempts, error): q of shape (n,); converged a bool;
             status why it stopped, a str: "converged", "iteration_bound" (the last
             attempt ran max_iterations iterations), "time_budget" (max_time ran out)
-            or "no_progress" (a step below rounding: a local minimum of |e|);
+            or "no_progress" (stalled at a local minimum of |e|: its step below
+            rounding, or |e|^2 above 0.9 of its value 8 iterations before);
             iterations of the attempt that gave q; total_iterations of all
             attempts; attempts made (1 + the restarts taken); the body error twist e
             of shape (6,). For a batch, arrays of shapes (..., n), (...) (status:

@@ -161,11 +161,13 @@ TYPED_TEST(InverseKinematics, RandomSeedsWithRestarts) {
   };
   int converged = 0, converged_first = 0;
   const IKOptions<S> options;
+  const auto no_deadline = chasles::detail::IKDeadline::after(options.max_time);
   for (int trial = 0; trial < 100; ++trial) {
     const SE3<S> T = chain.forward(uniform_within());
     const JV q0 = uniform_within();
     const auto r = chasles::inverse_kinematics(chain, T, q0, lower, upper, options, gen, 10);
-    const auto r1 = chasles::inverse_kinematics(chain, T, q0, lower, upper, options);
+    // The first attempt of r: one that a restart follows, so cut short when it stalls.
+    const auto r1 = chasles::detail::ik_attempt(chain, T, q0, lower, upper, options, no_deadline, true);
     converged += r.converged;
     converged_first += r1.converged;
     EXPECT_LE(r.iterations, options.max_iterations) << "iterations count the attempt returned";
@@ -278,6 +280,50 @@ TYPED_TEST(InverseKinematics, UnreachableTargetIsReportedWithinTheBound) {
     EXPECT_TRUE(stalled.status == IKStatus::iteration_bound || stalled.status == IKStatus::no_progress);
   }
   EXPECT_LE(stalled.error.norm(), r.error.norm());
+}
+
+// An attempt that a restart follows ends as soon as it stalls: on an
+// unreachable target its cost stops falling within a few windows of
+// ik_stall_iterations, where the same attempt with no restart after it runs
+// on until its step falls below rounding or to the bound. With restarts,
+// every attempt but the last is cut so.
+TYPED_TEST(InverseKinematics, AStalledAttemptEndsWhenARestartRemains) {
+  using C = typename TypeParam::Chain;
+  using S = typename C::Scalar;
+  using JV = typename C::JointVector;
+  const int n = TypeParam::joints;
+  const C chain = ur5_chain<C>(n);
+  const SE3<S> far(chain.home().rotation(), chain.home().translation() + Eigen::Matrix<S, 3, 1>(S(5), S(5), S(5)));
+  JV lower(n), upper(n);
+  for (int i = 0; i < n; ++i) lower(i) = S(-kPi), upper(i) = S(kPi);
+  IKOptions<S> options;
+  options.max_iterations = 2000;
+  constexpr int window = chasles::ThresholdsOf<S>::ik_stall_iterations;
+  const auto none = chasles::detail::IKDeadline::after(options.max_time);
+  const JV zero = JV::Zero(n);
+  const auto cut = chasles::detail::ik_attempt(chain, far, zero, lower, upper, options, none, true);
+  const auto last = chasles::detail::ik_attempt(chain, far, zero, lower, upper, options, none, false);
+  EXPECT_EQ(cut.status, IKStatus::no_progress);
+  EXPECT_GE(cut.iterations, window);
+  EXPECT_LE(cut.iterations, 4 * window);
+  EXPECT_GT(last.iterations, 4 * window);  // 48 to 143 iterations, by scalar and arm
+  EXPECT_LE(last.error.norm(), cut.error.norm());
+
+  // Two restarts: the attempts from q0 and from the first random seed are
+  // cut, the last is not. The seeds drawn as inverse_kinematics draws them
+  // (uniform within the limits, from the same generator state).
+  std::mt19937_64 gen(5), same(5);
+  std::uniform_real_distribution<chasles::RealOf<S>> uniform(0, 1);
+  JV seed[2] = {JV(n), JV(n)};
+  for (JV& s : seed)
+    for (int i = 0; i < n; ++i) s(i) = lower(i) + (upper(i) - lower(i)) * S(uniform(same));
+  const auto second = chasles::detail::ik_attempt(chain, far, seed[0], lower, upper, options, none, true);
+  const auto third = chasles::detail::ik_attempt(chain, far, seed[1], lower, upper, options, none, false);
+  const auto r = chasles::inverse_kinematics(chain, far, zero, lower, upper, options, gen, 2);
+  EXPECT_EQ(r.attempts, 3);
+  EXPECT_EQ(second.status, IKStatus::no_progress);
+  EXPECT_LE(second.iterations, 4 * window);
+  EXPECT_EQ(r.total_iterations, cut.iterations + second.iterations + third.iterations);
 }
 
 // The time budget: a spent budget stops before the first step; a budget of

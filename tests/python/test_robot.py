@@ -104,9 +104,12 @@ def test_ik_status_attempts_and_time_budget(arms):
     stalled = chain.inverse_kinematics(far, np.zeros(6), max_iterations=5000)
     assert stalled.status == "no_progress" and stalled.iterations < 5000
     # Restarts: iterations count the attempt returned, total_iterations all of them.
+    # Every attempt but the last ends once it stalls (its cost above 0.9 of
+    # its value 8 iterations before), the last runs to the bound: 56 here.
     again = chain.inverse_kinematics(far, np.zeros(6), max_iterations=20, restarts=3, seed=5)
-    assert again.attempts == 4 and again.iterations <= 20 and again.total_iterations == 80
-    assert again.status == "iteration_bound"
+    assert again.attempts == 4 and again.iterations <= 20 and 3 * 8 + 20 <= again.total_iterations < 80
+    # The attempt with the smallest error is returned, with its own status.
+    assert again.status == ("iteration_bound" if again.iterations == 20 else "no_progress")
     # A spent budget stops before the first step; a solution is still found at q0.
     spent = chain.inverse_kinematics(far, np.zeros(6), max_time=0.0)
     assert spent.status == "time_budget" and spent.iterations == 0 and spent.attempts == 1
@@ -176,9 +179,15 @@ def test_ik_random_seeds_with_restarts(arms):
     first = chain.inverse_kinematics(targets, seeds)
     again = chain.inverse_kinematics(targets, seeds, restarts=10, seed=7)
     assert again.converged.sum() >= 49 and again.converged.sum() > first.converged.sum()
-    assert np.all(again.total_iterations >= first.iterations) and np.all(again.iterations <= 100)
-    assert np.all(again.attempts[first.converged] == 1) and again.attempts.max() > 1
-    np.testing.assert_array_equal(again.q[first.converged], first.q[first.converged])
+    assert np.all(again.iterations <= 100) and np.all(again.total_iterations >= again.iterations)
+    # The first attempt of a call with restarts is the single call's, cut short
+    # if it stalls (a restart follows): one that fails alone fails there too,
+    # and when it converges there, it is the single call's solution.
+    assert np.all(again.attempts[~first.converged] > 1)
+    alone = again.attempts == 1
+    assert np.all(first.converged[alone]) and alone.sum() >= 25
+    np.testing.assert_array_equal(again.q[alone], first.q[alone])
+    np.testing.assert_array_equal(again.iterations[alone], first.iterations[alone])
     repeat = chain.inverse_kinematics(targets, seeds, restarts=10, seed=7)
     np.testing.assert_array_equal(repeat.q, again.q)
 
