@@ -109,7 +109,7 @@ def calls(n, rng):
 
 def test_eight_threads_give_bit_identical_results():
     rng = np.random.default_rng(5)
-    work = calls(20_000, rng)  # above the GIL threshold of every call (500 and 4096 elements)
+    work = calls(6_000, rng)  # above the GIL threshold of every call (500 and 4096 elements)
     reference = [as_bytes(f(*args)) for _, f, args in work]
     n_threads, rounds = 8, 3
     barrier = threading.Barrier(n_threads)
