@@ -49,6 +49,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <random>
 
@@ -186,7 +187,7 @@ inline IKResult<ChainT> ik_attempt(const ChainT& chain, const SE3<typename Chain
   // The costs of the last ik_stall_iterations iterations, a ring.
   constexpr int stall_iterations = ThresholdsOf<Scalar>::ik_stall_iterations;
   const Scalar stall_ratio(ThresholdsOf<Scalar>::ik_stall_ratio);
-  Scalar recent_cost[stall_iterations] = {};
+  Scalar recent_cost[static_cast<std::size_t>(stall_iterations)] = {};
   for (int k = 1; k <= options.max_iterations; ++k) {
     if (ik_converged(e, options)) return ik_result<ChainT>(q, IKStatus::converged, k - 1, e);
     if (deadline.passed()) return ik_result<ChainT>(q, IKStatus::time_budget, k - 1, e);
