@@ -118,13 +118,10 @@ class SpatialInertia {
   SpatialInertia transform(const SE3<Scalar>& g) const noexcept {
     const Matrix3& R = g.rotation().matrix();
     // Coefficient by coefficient: R is often a product just stored (the
-    // chain's pass), and Eigen's 3 x 3 products read it back in 2-packets
-    // that straddle those stores (a store-forwarding stall that cost the
-    // mass matrix a tenth of its time). R I_c R^T is formed as the upper
+    // chain's pass; detail::product3). R I_c R^T is formed as the upper
     // triangle of (R I_c) R^T, mirrored: exactly symmetric, 45 products.
-    Matrix3 A, I;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) A(i, j) = R(i, 0) * I_(0, j) + R(i, 1) * I_(1, j) + R(i, 2) * I_(2, j);
+    const Matrix3 A = detail::product3(R, I_);
+    Matrix3 I;
     for (int i = 0; i < 3; ++i)
       for (int j = i; j < 3; ++j) I(j, i) = I(i, j) = A(i, 0) * R(j, 0) + A(i, 1) * R(j, 1) + A(i, 2) * R(j, 2);
     Vector3 c;
