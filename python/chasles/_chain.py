@@ -585,7 +585,8 @@ class Chain(_core._Chain):
         gravity): its space screws row by row, then the home pose's rotation row by row and
         translation, 6 n + 12 floats. Any other: (numbers, names, inertias), numbers the screws
         and home as given, the type codes, the four limits, base and tool as given and gravity
-        (11 n + 39 floats), names None or n str, inertias None or 10 n floats."""
+        (11 n + 39 floats), names None or n str, inertias None or 10 n floats. A chain made
+        with unit_screws=False (which 0.1.0 could not make): (numbers, names, inertias, False)."""
         _require(self)
         S, _, codes, lower, upper, velocity, effort, base, tool, gravity = self._model
         screws, home, arguments = self._given
@@ -596,8 +597,10 @@ class Chain(_core._Chain):
             return [float(x) for x in m[:3, :3].ravel()] + [float(x) for x in m[:3, 3]]
 
         identity = lambda g: g is None or np.array_equal(np.asarray(g)[:3], np.eye(4)[:3])  # noqa: E731
+        unit = arguments["unit_screws"]
         plain = (
-            self._names is None
+            unit
+            and self._names is None
             and self._inertias is None
             and identity(arguments["base"])
             and identity(arguments["tool"])
@@ -615,10 +618,10 @@ class Chain(_core._Chain):
             numbers += [float(x) for x in v]
         numbers += pose(arguments["base"]) + pose(arguments["tool"]) + [float(x) for x in gravity]
         inertias = None if self._inertias is None else tuple(float(x) for x in self._inertias.ravel())
-        return (tuple(numbers), self._names, inertias)
+        return (tuple(numbers), self._names, inertias) + (() if unit else (False,))
 
     def __setstate__(self, state: Any) -> None:
-        """Unpickling a state of chasles 0.1.0 (__getstate__'s two layouts), checked as the
+        """Unpickling a state of chasles 0.1.0 (__getstate__'s layouts), checked as the
         constructor checks its arguments (a pickle is data from outside); the chain is rebuilt from
         them by the same arithmetic, so bit for bit."""
         _is_chain(self)
@@ -720,8 +723,8 @@ def _setstate(self: Any, state: Any) -> None:
     def bad() -> ValueError:
         return ValueError(
             f"Chain.__setstate__: expected a tuple of 6 n + 12 floats, 1 <= n <= {_MAX_JOINTS}, "
-            f"or (numbers, names, inertias): a tuple of 11 n + 39 floats, None or n str, None "
-            f"or 10 n floats"
+            f"or (numbers, names, inertias[, False]): a tuple of 11 n + 39 floats, None or n str, "
+            f"None or 10 n floats, and False for screws of any norm (unit_screws=False)"
         )
 
     def floats(t: tuple) -> np.ndarray:
@@ -736,7 +739,7 @@ def _setstate(self: Any, state: Any) -> None:
         M[:3, 3] = x[9:12]
         return M
 
-    model = isinstance(state, tuple) and len(state) == 3 and isinstance(state[0], tuple)
+    model = isinstance(state, tuple) and len(state) in (3, 4) and isinstance(state[0], tuple)
     if not model:
         size = len(state) if isinstance(state, tuple) else -1
         n = (size - 12) // 6
@@ -745,7 +748,9 @@ def _setstate(self: Any, state: Any) -> None:
         x = floats(state)
         _make(self, x[: 6 * n].reshape(n, 6), pose(x[6 * n :]), home_as_given=True)
         return
-    numbers, names, inertias = state
+    numbers, names, inertias = state[:3]
+    if len(state) == 4 and state[3] is not False:
+        raise bad()
     size = len(numbers)
     n = (size - 39) // 11
     if (size - 39) % 11 != 0 or not 1 <= n <= _MAX_JOINTS:
@@ -775,6 +780,7 @@ def _setstate(self: Any, state: Any) -> None:
         tool=pose(x[k + 12 : k + 24]),
         gravity=x[k + 24 : k + 27],
         link_inertias=inertias,
+        unit_screws=len(state) == 3,
     )
 
 

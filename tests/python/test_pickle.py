@@ -489,3 +489,23 @@ def test_a_tampered_legacy_spline_state_is_refused(name):
     good = {"_t": x.times, "_keys": keys, "_ends": x.ends}
     data = pickle.dumps(_Reduced((copyreg._reconstructor, (type(x), object, None), good)), protocol=1)
     assert snapshot(pickle.loads(data)) == snapshot(x)
+
+
+def test_a_chain_of_any_screw_norm_keeps_it_in_its_state():
+    """__getstate__ of a chain made with unit_screws=False (which 0.1.0 could
+    not make) ends in False, and __setstate__ rebuilds it bit for bit; without
+    that flag (0.1.0's layout) the same numbers are refused, as the
+    constructor refuses them. A chain of unit screws keeps 0.1.0's layouts."""
+    screws = [[0.0, 0.0, 0.0, 1.0, 0.0, 1.0], [0.0, 0.0, 2.0, 0.0, 0.0, 0.0]]  # |w| = sqrt(2); |v| = 2
+    x = chasles.Chain(screws, chasles.SE3(translation=[0.5, 0.0, 0.25]), unit_screws=False)
+    state = x.__getstate__()
+    assert len(state) == 4 and state[3] is False
+    y = chasles.Chain.__new__(chasles.Chain)
+    y.__setstate__(state)
+    assert snapshot(y) == snapshot(x)
+    np.testing.assert_array_equal(y.forward([0.3, 0.2]), x.forward([0.3, 0.2]))
+    with pytest.raises(ValueError, match=r"^Chain\.__setstate__: .*not a unit vector"):
+        chasles.Chain.__new__(chasles.Chain).__setstate__(state[:3])
+    with pytest.raises(ValueError, match=r"^Chain\.__setstate__: expected a tuple"):
+        chasles.Chain.__new__(chasles.Chain).__setstate__(state[:3] + (True,))
+    assert [len(example("Chain", key).__getstate__()) for key in ("plain", "model")] == [6 * 2 + 12, 3]
