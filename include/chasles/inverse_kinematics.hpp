@@ -37,9 +37,9 @@
 // position error in the tool frame, in the chain's length unit, and the
 // rotation angle in radians). The cost is bounded: at most max_iterations
 // iterations per attempt, each one or two n x n Cholesky factorizations
-// (Eigen's LLT on the chain's fixed-capacity matrices: no allocation) and one
-// body pass that gives the pose and the body Jacobian together
-// (Chain::forward_body(q, J_b)); and, when options.max_time is finite, at
+// (detail::cholesky_solve on the chain's fixed-capacity matrices: no
+// allocation) and one body pass that gives the pose and the body Jacobian
+// together (Chain::forward_body(q, J_b)); and, when options.max_time is finite, at
 // most that many seconds of std::chrono::steady_clock for the whole call,
 // restarts included (the clock is read before each iteration, so a call ends
 // at most one iteration after its budget). The result says why it stopped
@@ -53,10 +53,10 @@
 #include <limits>
 #include <random>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
 #include "chasles/constants.hpp"
+#include "chasles/detail/small_solve.hpp"
 #include "chasles/jacobians.hpp"
 #include "chasles/kinematics.hpp"
 #include "chasles/se3.hpp"
@@ -182,7 +182,6 @@ inline IKResult<ChainT> ik_attempt(const ChainT& chain, const SE3<typename Chain
   linearize();
   Scalar mu = options.initial_damping * JtJ.diagonal().maxCoeff();
   Scalar nu(2);
-  Eigen::LLT<Normal> llt(n);
   const Scalar eps(ThresholdsOf<Scalar>::epsilon);
   // The costs of the last ik_stall_iterations iterations, a ring.
   constexpr int stall_iterations = ThresholdsOf<Scalar>::ik_stall_iterations;
@@ -200,8 +199,7 @@ inline IKResult<ChainT> ik_attempt(const ChainT& chain, const SE3<typename Chain
     // system: an active set), and the step of the others solved again, so
     // that the joints left free make the descent; then projected onto the limits.
     Normal A = JtJ + mu * Normal::Identity(n, n);
-    llt.compute(A);
-    JointVector dq = -llt.solve(gradient);
+    JointVector dq = -cholesky_solve(A, gradient);
     JointVector reduced_gradient = gradient;
     bool held = false;
     for (Eigen::Index i = 0; i < n; ++i) {
@@ -214,8 +212,7 @@ inline IKResult<ChainT> ik_attempt(const ChainT& chain, const SE3<typename Chain
       }
     }
     if (held) {
-      llt.compute(A);
-      dq = -llt.solve(reduced_gradient);
+      dq = -cholesky_solve(A, reduced_gradient);
     }
     const JointVector trial = (q + dq).cwiseMax(lower).cwiseMin(upper);
     const JointVector step = trial - q;
