@@ -913,7 +913,9 @@ Levenberg-Marquardt on the body error e(q) = log(forward(q)^-1 target)
 each step projected onto [lower, upper], at most max_iterations iterations
 per attempt; then, while not converged, up to ``restarts`` more attempts
 from seeds uniform within the limits ([-pi, pi] where a limit is infinite),
-drawn from a 64-bit Mersenne twister seeded with ``seed``; all within
+drawn from a 64-bit Mersenne twister seeded with ``seed`` (an attempt that
+a restart follows ends as soon as it stalls, |e|^2 above 0.9 of its value
+8 iterations before; the last runs on); all within
 ``max_time`` seconds when given (checked before each iteration). The C++
 solver (chasles/inverse_kinematics.hpp) runs with the GIL released.
 
@@ -945,7 +947,8 @@ Returns:
     status why it stopped, a str: "converged", "iteration_bound" (the last
     attempt ran max_iterations iterations), "time_budget" (max_time ran out)
     or "no_progress" (stalled at a local minimum of |e|: its step below
-    rounding, or |e|^2 above 0.9 of its value 8 iterations before);
+    rounding, or, when a restart followed, |e|^2 above 0.9 of its value 8
+    iterations before);
     iterations of the attempt that gave q; total_iterations of all
     attempts; attempts made (1 + the restarts taken); the body error twist e
     of shape (6,). For a batch, arrays of shapes (..., n), (...) (status:

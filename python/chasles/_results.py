@@ -17,8 +17,9 @@ class IKResult(NamedTuple):
         status: str (or str array): why it stopped: "converged",
             "iteration_bound" (the last attempt ran max_iterations iterations),
             "time_budget" (max_time ran out first) or "no_progress" (stalled
-            at a local minimum of |e|: its step below rounding, or |e|^2
-            above 0.9 of its value 8 iterations before).
+            at a local minimum of |e|: its step below rounding, or, when a
+            restart followed, |e|^2 above 0.9 of its value 8 iterations
+            before).
         iterations: int (or int array): iterations of the attempt that gave q.
         total_iterations: int (or int array): iterations of every attempt.
         attempts: int (or int array): attempts made, 1 + the restarts taken.
